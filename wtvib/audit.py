@@ -1,0 +1,172 @@
+"""The only orchestrator: collect modes and checks, derive the verdict (DESIGN.md)."""
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from . import blade, drivetrain, tower, yaw
+from .excitation import excitations, operating_range
+from .resonance import Finding, assess_all, resonance_checks
+from .results import Check, Mode
+from .rules import MarginRule, Status, worst
+from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
+
+REPORT_SCHEMA = "wtvib-report/1"
+
+#: Subsystems in report order: name, mode builder, default damping ratio of the section.
+SUBSYSTEMS: tuple[tuple[str, Callable[[Spec], list[Mode]], Callable[[Spec], float]], ...] = (
+    ("tower", tower.modes, lambda s: s.tower.damping_ratio),
+    ("blade", blade.modes, lambda s: s.blade.damping_ratio),
+    ("drivetrain", drivetrain.modes, lambda s: s.drivetrain.damping_ratio),
+    ("yaw", yaw.modes, lambda s: s.yaw.damping_ratio),
+)
+
+
+@dataclass(frozen=True)
+class Report:
+    """The result of an audit; ``to_dict()`` is the JSON contract ``wtvib-report/1``."""
+
+    spec: Spec
+    settings: AuditSettings
+    modes: tuple[Mode, ...]
+    checks: tuple[Check, ...]
+    tower_class: str | None
+    findings: tuple[Finding, ...] = field(default_factory=tuple)
+    assumptions: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def rule(self) -> MarginRule:
+        return self.settings.margin_rule()
+
+    @property
+    def verdict(self) -> Status:
+        """Worst check status; ``info`` counts as a pass."""
+        w = worst([c.status for c in self.checks])
+        return "pass" if w == "info" else w
+
+    def to_dict(self) -> dict[str, Any]:
+        spec = self.spec
+        speed = spec.rotor.speed
+        rule = self.rule
+        return {
+            "schema": REPORT_SCHEMA,
+            "turbine": {
+                "name": spec.turbine.name,
+                "source_file": spec.source_file,
+                **spec.turbine.model_dump(exclude={"name"}, exclude_none=True),
+                "blades": spec.rotor.blades,
+                "orientation": spec.rotor.orientation,
+                "hub": spec.rotor.hub,
+            },
+            "verdict": self.verdict,
+            "tower_class": self.tower_class,
+            "operation": {
+                "steady_rpm": [list(p) for p in speed.steady_rpm],
+                "variable_speed": speed.fixed_rpm is None,
+                "overspeed_rpm": round(speed.overspeed, 6),
+                "quick_pass_rpm": [list(p) for p in speed.quick_pass_rpm],
+            },
+            "rule": {
+                "kind": rule.kind,
+                "margin": rule.margin,
+                "preset": rule.preset,
+                "source": rule.source,
+                "harmonics": self.settings.harmonics,
+                "severity": self.settings.severities(),
+            },
+            "modes": [m.to_dict() for m in self.modes],
+            "checks": [c.to_dict() for c in self.checks],
+            "assumptions": list(self.assumptions),
+            "inputs": {
+                path: {
+                    "value": q.value,
+                    "provenance": q.provenance,
+                    "source": spec.sources.get(q.source, q.source) if q.source else None,
+                    **({"note": q.note} if q.note else {}),
+                }
+                for path, q in sorted(spec.provenance.items())
+            },
+        }
+
+
+def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
+    """Audit a turbine: every subsystem's modes against every excitation, plus the class.
+
+    Parameters
+    ----------
+    spec
+        The validated turbine.
+    settings
+        Audit settings overriding the spec's own ``audit`` section.
+    """
+    settings = settings or spec.audit
+    rule = settings.margin_rule()
+    op = operating_range(spec.rotor.speed)
+    lines = excitations(spec)
+    all_modes: list[Mode] = []
+    checks: list[Check] = []
+    findings: list[Finding] = []
+    tower_class = None
+    for name, build, damping in SUBSYSTEMS:
+        sub_modes = build(spec)
+        all_modes += sub_modes
+        if name == "tower" and spec.rotor.orientation != "vertical-axis":
+            first = tower.first_bending(sub_modes)
+            if first is not None:
+                harmonics = [e for e in lines if e.acts_on("tower")]
+                c = tower.classify(first, harmonics, spec.rotor.blades, op, rule, damping(spec))
+                tower_class = c.tower_class
+                checks.append(tower.class_check(c, spec.rotor.blades, op, rule))
+        found = assess_all(sub_modes, lines, op, rule, settings.severities(), damping(spec))
+        findings += found
+        checks += resonance_checks(found, op, rule)
+    _assert_finite(all_modes)
+    return Report(
+        spec=spec,
+        settings=settings,
+        modes=tuple(all_modes),
+        checks=tuple(checks),
+        tower_class=tower_class,
+        findings=tuple(findings),
+        assumptions=tuple(_assumptions(spec, rule, all_modes)),
+    )
+
+
+def _assert_finite(modes: list[Mode]) -> None:
+    for m in modes:
+        if not (math.isfinite(m.frequency_hz) and m.frequency_hz >= 0):
+            raise AssertionError(f"mode {m.id} has frequency {m.frequency_hz}")
+
+
+def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
+    out = [f"Margin rule: {rule.label} — {rule.source}."]
+    speed = spec.rotor.speed
+    if speed.overspeed_rpm is None and speed.overspeed_factor is None:
+        out.append(
+            f"No overspeed given: a transient overspeed of {DEFAULT_OVERSPEED_FACTOR:.0%} of "
+            f"the highest steady speed ({speed.overspeed:.3g} rpm) is checked."
+        )
+    for name, _, damping in SUBSYSTEMS:
+        undamped = [m.id for m in modes if m.subsystem == name and m.damping_ratio is None]
+        if undamped:
+            out.append(
+                f"{name}: damping ratio {damping(spec):.3g} assumed for "
+                f"{', '.join(undamped)} (no value given)."
+            )
+    stiffened = [m.id for m in modes if m.curve is not None]
+    if stiffened:
+        out.append(
+            "Blade frequencies are standstill values raised by rotation with "
+            "f² = f₀² + K·(Ω/2π)² (Southwell); K = 1.19 flap / 0.19 edge unless given: "
+            + ", ".join(stiffened)
+            + "."
+        )
+    if any(m.subsystem in ("tower", "blade", "drivetrain", "yaw") for m in modes):
+        out.append("Natural frequencies are taken as given in the spec (not computed).")
+    if spec.rotor.orientation == "vertical-axis":
+        out.append(
+            "Vertical-axis rotor: no stiff/soft tower classification; resonance "
+            "checks against per-rev excitations only."
+        )
+    return out

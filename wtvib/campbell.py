@@ -1,0 +1,207 @@
+"""Campbell (resonance) diagrams: natural frequencies and excitation lines vs rotor speed.
+
+Calculate first, draw second: everything drawn comes from the audit
+:class:`~wtvib.audit.Report` (its modes, findings and operating range). matplotlib is
+imported lazily, with the Agg backend, so ``wtvib --help`` stays fast.
+"""
+
+import io
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from . import __version__
+from .audit import Report
+from .excitation import operating_range
+from .rules import STATUS_ORDER
+from .units import rad_s_to_rpm, rpm_to_rad_s
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+STATUS_COLOUR = {"pass": "#2e7d32", "info": "#1565c0", "warn": "#ef6c00", "fail": "#c62828"}
+SUBSYSTEM_TITLE = {
+    "tower": "tower and blades",
+    "blade": "blades",
+    "drivetrain": "drive train",
+    "yaw": "yaw system",
+}
+#: Subsystems drawn together on one diagram.
+DIAGRAMS: dict[str, tuple[str, ...]] = {
+    "campbell": ("tower", "blade"),
+    "campbell-drivetrain": ("drivetrain",),
+    "campbell-yaw": ("yaw",),
+}
+
+
+def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")) -> "Figure":
+    """Draw the Campbell diagram of some subsystems of an audited turbine.
+
+    Shows the mode curves with their margin bands, the excitation lines (dominant thick,
+    secondary medium, minor thin), the steady operating range shaded, overspeed hatched,
+    quick-pass bands, and each crossing marked in the colour of its status.
+    """
+    from matplotlib.figure import Figure
+
+    spec = report.spec
+    rule = report.rule
+    op = operating_range(spec.rotor.speed)
+    modes = [m for m in report.modes if m.subsystem in subsystems]
+    findings = [f for f in report.findings if f.mode.subsystem in subsystems]
+    rpm_top = float(rad_s_to_rpm(op.overspeed)) * 1.08
+    rpm = np.linspace(0.0, rpm_top, 400)
+    omega = rpm_to_rad_s(rpm)
+
+    top_mode = max((float(m.frequency_at(omega).max()) for m in modes), default=1.0)
+    blade_pass = spec.rotor.blades * rpm_top / 60.0
+    f_top = max(top_mode * 1.18, blade_pass * 1.1)
+
+    fig = Figure(figsize=(10, 7), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    for a, b in spec.rotor.speed.steady_rpm:
+        if b > a:
+            ax.axvspan(a, b, color="#c8e6c9", alpha=0.55, lw=0)
+        else:
+            ax.axvline(a, color="#66bb6a", lw=6, alpha=0.45)
+    for a, b in spec.rotor.speed.quick_pass_rpm:
+        ax.axvspan(a, b, facecolor="none", hatch="//", edgecolor="#81c784", lw=0)
+    ax.axvspan(
+        spec.rotor.speed.top_rpm,
+        spec.rotor.speed.overspeed,
+        facecolor="#fff3e0",
+        hatch="xx",
+        edgecolor="#ffcc80",
+        lw=0,
+    )
+
+    excitations = {f.excitation.id: f.excitation for f in findings}
+    for exc in excitations.values():
+        style = {
+            "dominant": dict(color="#212121", lw=1.8, ls="-"),
+            "secondary": dict(color="#424242", lw=1.2, ls="--"),
+            "minor": dict(color="#9e9e9e", lw=0.8, ls=":"),
+        }[exc.energy]
+        f_line = exc.frequency_hz(omega)
+        ax.plot(rpm, f_line, **style)  # type: ignore[arg-type]
+        _label_line(ax, exc.id, rpm, f_line, f_top, style["color"])  # type: ignore[arg-type]
+
+    colours = _palette(len(modes))
+    for mode, colour in zip(modes, colours, strict=True):
+        f_n = mode.frequency_at(omega)
+        lo, hi = rule.forbidden_band(1.0)
+        ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
+        ax.plot(rpm, f_n, color=colour, lw=2.2, label=f"{mode.id}  {mode.frequency_hz:.3g} Hz")
+
+    for f in findings:
+        for c in f.crossings:
+            f_c = float(f.excitation.frequency_hz(np.array([c]))[0])
+            if f_c > f_top:
+                continue
+            status = f.status_at(c, op)
+            colour = STATUS_COLOUR[status]
+            big = STATUS_ORDER[status] >= STATUS_ORDER["warn"]
+            ax.plot(
+                float(rad_s_to_rpm(c)),
+                f_c,
+                marker="X" if big else "o",
+                ms=11 if big else 6,
+                color=colour,
+                mec="white",
+                mew=0.8,
+                zorder=5,
+            )
+
+    ax.set_xlim(0, rpm_top)
+    ax.set_ylim(0, f_top)
+    ax.set_xlabel("rotor speed [rpm]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.grid(True, alpha=0.3)
+    verdict = report.verdict.upper()
+    cls = f", {report.tower_class} tower" if report.tower_class and "tower" in subsystems else ""
+    title = SUBSYSTEM_TITLE[subsystems[0]] if len(subsystems) == 1 else "tower and blades"
+    ax.set_title(
+        f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}",
+        color=STATUS_COLOUR[report.verdict],
+        fontweight="bold",
+    )
+    _legend(ax, rule.label)
+    return fig
+
+
+def _palette(n: int) -> list[str]:
+    base = [
+        "#1f77b4",
+        "#d62728",
+        "#9467bd",
+        "#8c564b",
+        "#e377c2",
+        "#17becf",
+        "#bcbd22",
+        "#ff7f0e",
+        "#7f7f7f",
+        "#2ca02c",
+    ]
+    return [base[i % len(base)] for i in range(n)]
+
+
+def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None:  # type: ignore[no-untyped-def]
+    inside = np.nonzero(f_line <= f_top * 0.97)[0]
+    if inside.size == 0:
+        return
+    i = inside[-1]
+    ax.annotate(
+        text,
+        (rpm[i], f_line[i]),
+        xytext=(2, 2),
+        textcoords="offset points",
+        fontsize=9,
+        color=colour,
+        fontweight="bold",
+    )
+
+
+def _legend(ax, rule_label: str) -> None:  # type: ignore[no-untyped-def]
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    handles, labels = ax.get_legend_handles_labels()
+    extra = [
+        (Patch(color="#c8e6c9"), "steady operation"),
+        (Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"), "overspeed (transient)"),
+        (Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
+        (Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),
+        (Line2D([], [], color="#9e9e9e", lw=0.8, ls=":"), "minor harmonic"),
+        (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["fail"]), "crossing: fail"),
+        (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["warn"]), "crossing: warn"),
+        (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["info"]), "crossing: info"),
+    ]
+    for h, label in extra:
+        handles.append(h)
+        labels.append(label)
+    ax.legend(
+        handles,
+        labels,
+        loc="upper center",
+        bbox_to_anchor=(0.5, -0.1),
+        fontsize=8,
+        ncol=4,
+        frameon=False,
+    )
+
+
+def png_bytes(fig: "Figure") -> bytes:
+    """The figure as PNG bytes, tagged as written by wtvib (see :mod:`wtvib.outputs`)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", metadata={"Software": f"wtvib {__version__}"})
+    return buf.getvalue()
+
+
+def diagrams(report: Report) -> dict[str, "Figure"]:
+    """Every Campbell diagram the report has modes for, keyed by file stem suffix."""
+    present = {m.subsystem for m in report.modes}
+    return {
+        name: campbell_plot(report, subs)
+        for name, subs in DIAGRAMS.items()
+        if present.intersection(subs)
+    }

@@ -1,0 +1,141 @@
+"""The command line: thin — load, call one library function, render, exit with a code.
+
+Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or output.
+Errors are caught in one place (:func:`main`); a traceback only with ``--debug``.
+"""
+
+import json
+import sys
+from enum import StrEnum
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+app = typer.Typer(
+    help="Vibration audit of wind turbines: natural frequencies against rotor excitations, "
+    "after Hau, Wind Turbines, ch. 7.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+
+EXIT_PASS, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
+
+
+class Format(StrEnum):
+    text = "text"
+    json = "json"
+
+
+class RuleKind(StrEnum):
+    band = "band"
+    ratio = "ratio"
+
+
+class PresetName(StrEnum):
+    hau = "hau"
+    gl2010 = "gl2010"
+
+
+_state = {"debug": False}
+
+
+@app.callback()
+def _root(
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    _state["debug"] = debug
+
+
+@app.command()
+def check(
+    spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
+    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    out: Annotated[
+        Path | None,
+        typer.Option("--out", "-o", help="Folder for the PNGs (default: next to the spec)."),
+    ] = None,
+    margin: Annotated[
+        float | None,
+        typer.Option(min=0.0, max=0.99, help="Margin m, e.g. 0.05 (overrides the spec)."),
+    ] = None,
+    rule: Annotated[RuleKind | None, typer.Option(help="Margin rule (overrides the spec).")] = None,
+    preset: Annotated[
+        PresetName | None, typer.Option(help="Code preset for rule and margin.")
+    ] = None,
+    plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write Campbell PNGs.")] = True,
+    strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
+    force: Annotated[
+        bool, typer.Option(help="Replace existing output files not written by wtvib.")
+    ] = False,
+    show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG."""
+    _state["debug"] = _state["debug"] or debug
+    from . import audit, spec
+    from .outputs import write_atomic
+
+    turbine = spec.load(spec_file)
+    settings = _settings(turbine.audit, margin, rule, preset)
+    report = audit.run(turbine, settings)
+    written: list[Path] = []
+    if plot:
+        from .campbell import diagrams, png_bytes
+
+        folder = out if out is not None else spec_file.parent
+        for suffix, fig in diagrams(report).items():
+            path = folder / f"{spec_file.stem}.{suffix}.png"
+            written.append(write_atomic(path, png_bytes(fig), force=force))
+    if format is Format.json:
+        from .report import to_json
+
+        sys.stdout.write(to_json(report))
+        for path in written:
+            typer.echo(f"wrote {path}", err=True)
+    else:
+        from rich.console import Console
+
+        from .report import terminal
+
+        terminal(report, Console(), written=written, show_all=show_all)
+    failing = report.verdict == "fail" or (strict and report.verdict == "warn")
+    raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
+
+
+def _settings(base, margin, rule, preset):  # type: ignore[no-untyped-def]
+    update = {}
+    if preset is not None:
+        update["preset"] = preset.value
+    if rule is not None:
+        update["rule"] = rule.value
+    if margin is not None:
+        if not 0 < margin < 1:
+            raise typer.BadParameter("--margin must lie between 0 and 1 (0.10 = 10 %)")
+        update["margin"] = margin
+    return base.model_validate({**base.model_dump(), **update})
+
+
+@app.command()
+def schema() -> None:
+    """Print the JSON Schema of the turbine spec (for editors and validators)."""
+    from .spec import json_schema
+
+    sys.stdout.write(json.dumps(json_schema(), indent=2, ensure_ascii=False) + "\n")
+
+
+def main() -> None:
+    """Console entry point: wtvib errors become one line on stderr and exit code 2.
+
+    Usage errors are click's (exit 2 as well); ``typer.Exit`` carries the verdict's code.
+    """
+    from .errors import WtvibError
+
+    try:
+        app()
+    except WtvibError as exc:
+        if _state["debug"]:
+            raise
+        typer.echo(f"error: {exc}", err=True)
+        sys.exit(EXIT_INPUT)

@@ -1,0 +1,48 @@
+"""Modes whose natural frequencies the spec gives directly (before any model computes them)."""
+
+from collections.abc import Callable, Mapping
+
+from .results import Mode, SpeedCurve
+from .spec import ModeEntry, ModeSpec
+
+
+def given_modes(
+    subsystem: str,
+    entries: Mapping[str, ModeEntry],
+    describe: Callable[[str], str],
+    curve: Callable[[str, float, ModeSpec | None], SpeedCurve | None] | None = None,
+) -> list[Mode]:
+    """Turn spec entries (a number, or a mapping with frequency and damping) into modes.
+
+    Parameters
+    ----------
+    subsystem
+        Subsystem name, also the prefix of each mode id (``tower`` → ``tower.fa1``).
+    entries
+        Mode name → spec entry.
+    describe
+        Mode name → human description.
+    curve
+        Optional: (name, standstill frequency, full entry) → frequency-vs-speed curve.
+    """
+    modes = []
+    for name, entry in entries.items():
+        full = entry if isinstance(entry, ModeSpec) else None
+        f0 = full.frequency_hz if full else float(entry)  # type: ignore[arg-type]
+        text = full.description if full and full.description else describe(name)
+        modes.append(
+            Mode(
+                id=f"{subsystem}.{name}",
+                subsystem=subsystem,
+                description=text,
+                frequency_hz=f0,
+                damping_ratio=full.damping_ratio if full else None,
+                curve=curve(name, f0, full) if curve else None,
+            )
+        )
+    return sorted(modes, key=lambda m: m.frequency_hz)
+
+
+def ordinal(k: int) -> str:
+    """1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
+    return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"

@@ -1,0 +1,74 @@
+"""Writing output files without losing anything: atomic replace, no silent overwrite.
+
+A file is written to a temporary name in the target folder and renamed over the target, so
+an interrupted run never leaves a half-written file. An existing file is replaced only if
+wtvib wrote it (a PNG whose ``Software`` text chunk names wtvib, a JSON report with a
+``wtvib-`` schema) or the caller passes ``force``.
+"""
+
+import os
+import struct
+import tempfile
+from pathlib import Path
+
+from .errors import OutputError
+
+SOFTWARE_TAG = "wtvib"
+
+
+def is_ours(path: Path) -> bool:
+    """True if ``path`` is a file wtvib wrote earlier."""
+    try:
+        with path.open("rb") as fh:
+            head = fh.read(65536)
+    except OSError:
+        return False
+    if head.startswith(b"\x89PNG\r\n\x1a\n"):
+        return _png_software(head).startswith(SOFTWARE_TAG)
+    return head.lstrip().startswith(b'{\n  "schema": "wtvib-')
+
+
+def _png_software(data: bytes) -> str:
+    pos = 8
+    while pos + 8 <= len(data):
+        (length,) = struct.unpack(">I", data[pos : pos + 4])
+        kind = data[pos + 4 : pos + 8]
+        body = data[pos + 8 : pos + 8 + length]
+        if kind == b"tEXt" and body.startswith(b"Software\x00"):
+            return body.split(b"\x00", 1)[1].decode("latin-1")
+        if kind == b"IDAT":
+            break
+        pos += 12 + length
+    return ""
+
+
+def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
+    """Write ``data`` to ``path`` atomically.
+
+    Raises
+    ------
+    OutputError
+        The folder cannot be written, or ``path`` exists, was not written by wtvib and
+        ``force`` is false.
+    """
+    path = Path(path)
+    if path.exists() and not force and not is_ours(path):
+        raise OutputError(f"{path} exists and was not written by wtvib; use --force to replace it")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as exc:
+        raise OutputError(f"cannot write to {path.parent}: {exc.strerror}") from None
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except OSError as exc:
+        Path(tmp).unlink(missing_ok=True)
+        raise OutputError(f"cannot write {path}: {exc.strerror}") from None
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path

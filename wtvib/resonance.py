@@ -1,0 +1,360 @@
+"""The one resonance routine: any natural frequency of any subsystem against any excitation.
+
+For a mode and an excitation line the routine finds the rotor speeds at which the margin
+rule is violated, splits them by operating regime (steady, quick-pass band, overspeed,
+start-up/shut-down), and turns them into a status by the excitation's energy class:
+
+=================  ==============================================================
+regime             status
+=================  ==============================================================
+steady             the severity of the energy class (default: dominant and
+                   secondary fail, minor info)
+quick-pass band    one step milder (fail → warn): the controller must not dwell
+overspeed only     one step milder: a transient state (Hau ch. 7.3.4, Growian)
+start-up only      info for dominant/secondary lines: the "encounter" of soft
+                   designs, passed quickly (Hau ch. 7.5.1); nothing for minor ones
+=================  ==============================================================
+"""
+
+import itertools
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.optimize import brentq
+
+from .excitation import Excitation, OperatingRange
+from .results import Check, Mode, Rule
+from .rules import STATUS_ORDER, MarginRule, Status, dynamic_amplification, worst
+from .units import rad_s_to_rpm
+
+Interval = tuple[float, float]
+
+_MILDER: dict[Status, Status] = {"fail": "warn", "warn": "info", "info": "info", "pass": "pass"}
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One mode against one excitation over the whole speed range (speeds in rad/s)."""
+
+    mode: Mode
+    excitation: Excitation
+    status: Status
+    regime: str | None
+    margin: float
+    speed: float
+    excitation_hz: float
+    natural_hz: float
+    daf: float
+    crossings: tuple[float, ...]
+    forbidden: tuple[Interval, ...]
+    violations: dict[str, tuple[Interval, ...]]
+    regime_status: dict[str, Status]
+
+    def status_at(self, omega: float, op: OperatingRange) -> Status:
+        """Status of a violation at one rotor speed, by the regime that speed is in."""
+        return self.regime_status[regime_of(omega, op)]
+
+
+def assess(
+    mode: Mode,
+    exc: Excitation,
+    op: OperatingRange,
+    rule: MarginRule,
+    severity: Mapping[str, Status],
+    default_damping: float,
+) -> Finding:
+    """Judge one mode against one excitation line over 0 → overspeed."""
+
+    def sep(omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        return rule.separation(exc.frequency_hz(omega), mode.frequency_at(omega))
+
+    def gap(omega: float) -> float:
+        return float(sep(np.array([omega]))[0] - rule.margin * (1.0 - 1e-9))
+
+    def diff(omega: float) -> float:
+        w = np.array([omega])
+        return float(exc.frequency_hz(w)[0] - mode.frequency_at(w)[0])
+
+    grid = _grid(op)
+    crossings = tuple(_roots(diff, grid, exc.frequency_hz(grid) - mode.frequency_at(grid)))
+    grid = np.union1d(grid, np.array(crossings, dtype=float))
+    forbidden = tuple(_runs(gap, grid, rule.violates(sep(grid))))
+
+    violations = _split_by_regime(forbidden, op, gap)
+    energy = severity[exc.energy]
+    regime_status: dict[str, Status] = {
+        "steady": energy,
+        "quick-pass": _MILDER[energy],
+        "overspeed": _MILDER[energy],
+        "start-up": "info" if exc.energy != "minor" and energy != "pass" else "pass",
+    }
+    hit = [name for name in regime_status if violations[name]]
+    status = worst([regime_status[name] for name in hit])
+    # The governing regime: the first (most steady) one whose status is the worst.
+    regime = next((n for n in hit if regime_status[n] == status), None)
+    if status == "pass":
+        regime = None
+
+    speed, margin = _worst_steady(sep, op, crossings)
+    w = np.array([speed])
+    f_e = float(exc.frequency_hz(w)[0])
+    f_n = float(mode.frequency_at(w)[0])
+    zeta = mode.damping_ratio if mode.damping_ratio is not None else default_damping
+    daf = float(dynamic_amplification(f_e / f_n, zeta)) if f_n > 0 else float("inf")
+    return Finding(
+        mode,
+        exc,
+        status,
+        regime,
+        margin,
+        speed,
+        f_e,
+        f_n,
+        daf,
+        crossings,
+        forbidden,
+        violations,
+        regime_status,
+    )
+
+
+def regime_of(omega: float, op: OperatingRange) -> str:
+    """Which regime a rotor speed belongs to: steady, quick-pass, overspeed or start-up."""
+    if any(a <= omega <= b for a, b in op.quick_pass):
+        return "quick-pass"
+    if any(a <= omega <= b for a, b in op.steady):
+        return "steady"
+    return "overspeed" if omega > op.highest else "start-up"
+
+
+def _grid(op: OperatingRange) -> NDArray[np.float64]:
+    top = op.overspeed
+    edges = [s for pair in op.steady + op.quick_pass for s in pair]
+    return np.unique(
+        np.concatenate(
+            [np.linspace(0.0, top, 801), np.geomspace(top * 1e-4, top, 200), np.array(edges)]
+        )
+    )
+
+
+ScalarFn = Callable[[float], float]
+ArrayFn = Callable[[NDArray[np.float64]], NDArray[np.float64]]
+
+
+def _roots(f: ScalarFn, grid: NDArray[np.float64], values: NDArray[np.float64]) -> list[float]:
+    """Zeros of ``f`` located by sign changes of ``values`` on ``grid``."""
+    out: list[float] = []
+    for i in np.nonzero(values == 0.0)[0]:
+        out.append(float(grid[i]))
+    change = np.nonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)[0]
+    for i in change:
+        out.append(float(brentq(f, grid[i], grid[i + 1], xtol=1e-12, rtol=1e-12)))
+    return sorted(out)
+
+
+def _runs(gap: ScalarFn, grid: NDArray[np.float64], bad: NDArray[np.bool_]) -> list[Interval]:
+    """Maximal speed intervals where ``bad`` holds, edges refined to the zeros of ``gap``."""
+    out: list[Interval] = []
+    idx = np.nonzero(bad)[0]
+    if idx.size == 0:
+        return out
+    breaks = [(a, b) for a, b in itertools.pairwise(idx) if b != a + 1]
+    starts = [idx[0], *(b for _, b in breaks)]
+    ends = [*(a for a, _ in breaks), idx[-1]]
+    for i, j in zip(starts, ends, strict=True):
+        lo = grid[i] if i == 0 else brentq(gap, grid[i - 1], grid[i], xtol=1e-12, rtol=1e-12)
+        last = len(grid) - 1
+        hi = grid[j] if j == last else brentq(gap, grid[j], grid[j + 1], xtol=1e-12, rtol=1e-12)
+        out.append((float(lo), float(hi)))
+    return out
+
+
+def _overlap(a: Interval, b: Interval) -> Interval | None:
+    lo, hi = max(a[0], b[0]), min(a[1], b[1])
+    return (lo, hi) if hi - lo > 1e-9 * max(abs(hi), 1.0) else None
+
+
+def _split_by_regime(
+    forbidden: Sequence[Interval], op: OperatingRange, gap: ScalarFn
+) -> dict[str, tuple[Interval, ...]]:
+    """Forbidden speeds of each regime: steady, quick-pass, overspeed, start-up."""
+    steady: list[Interval] = []
+    quick: list[Interval] = []
+    for a, b in op.steady:
+        if a == b:
+            if gap(a) < 0:
+                steady.append((a, a))
+            continue
+        for f in forbidden:
+            part = _overlap(f, (a, b))
+            if part is None:
+                continue
+            inside = [q for q in (_overlap(part, qp) for qp in op.quick_pass) if q]
+            quick += inside
+            steady += _subtract(part, inside)
+    over = [p for f in forbidden if (p := _overlap(f, (op.highest, op.overspeed)))]
+    transient = [p for f in forbidden if (p := _overlap(f, (0.0, op.highest)))]
+    startup = [piece for t in transient for piece in _subtract(t, op.steady)]
+    return {
+        "steady": tuple(steady),
+        "quick-pass": tuple(quick),
+        "overspeed": tuple(over),
+        "start-up": tuple(startup),
+    }
+
+
+def _subtract(part: Interval, holes: Sequence[Interval]) -> list[Interval]:
+    pieces = [part]
+    for h in holes:
+        nxt: list[Interval] = []
+        for p in pieces:
+            if h[1] <= p[0] or h[0] >= p[1]:
+                nxt.append(p)
+                continue
+            if h[0] > p[0]:
+                nxt.append((p[0], h[0]))
+            if h[1] < p[1]:
+                nxt.append((h[1], p[1]))
+        pieces = [p for p in nxt if p[1] - p[0] > 1e-9 * max(p[1], 1.0)]
+    return pieces
+
+
+def _worst_steady(
+    sep: ArrayFn, op: OperatingRange, crossings: Sequence[float]
+) -> tuple[float, float]:
+    """Speed of least separation in steady operation, and that separation."""
+    pts = [np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in op.steady]
+    inside = [c for c in crossings for a, b in op.steady if a <= c <= b]
+    speeds = np.concatenate([*pts, np.array(inside, dtype=float)])
+    s = sep(speeds)
+    i = int(np.argmin(s))
+    return float(speeds[i]), float(s[i])
+
+
+def assess_all(
+    modes: Sequence[Mode],
+    excitations: Sequence[Excitation],
+    op: OperatingRange,
+    rule: MarginRule,
+    severity: Mapping[str, Status],
+    default_damping: float,
+) -> list[Finding]:
+    """Every mode against every excitation that acts on its subsystem."""
+    return [
+        assess(m, e, op, rule, severity, default_damping)
+        for e in excitations
+        for m in modes
+        if e.acts_on(m.subsystem)
+    ]
+
+
+def resonance_checks(
+    findings: Sequence[Finding], op: OperatingRange, rule: MarginRule
+) -> list[Check]:
+    """One check per subsystem and excitation, judged on its worst mode."""
+    groups: dict[tuple[str, str], list[Finding]] = {}
+    for f in findings:
+        groups.setdefault((f.mode.subsystem, f.excitation.id), []).append(f)
+    return [_check(sub, fs[0].excitation, fs, op, rule) for (sub, _), fs in groups.items()]
+
+
+def _check(
+    subsystem: str,
+    exc: Excitation,
+    findings: Sequence[Finding],
+    op: OperatingRange,
+    rule: MarginRule,
+) -> Check:
+    gov = max(findings, key=lambda f: (STATUS_ORDER[f.status], -f.margin))
+    others = [f.mode.id for f in findings if f is not gov and f.status != "pass"]
+    message = _message(gov, op, rule)
+    if others:
+        message += f" (also: {', '.join(others)})"
+    exclude = [iv for f in findings for iv in f.violations["steady"] + f.violations["quick-pass"]]
+    numbers = {
+        "excitation": exc.id,
+        "energy": exc.energy,
+        "mode": gov.mode.id,
+        "frequency_hz": _r(gov.natural_hz),
+        "margin": _r(gov.margin),
+        "required_margin": rule.margin,
+        "speed_rpm": _r(float(rad_s_to_rpm(gov.speed))),
+        "excitation_hz": _r(gov.excitation_hz),
+        "daf": _r(gov.daf) if np.isfinite(gov.daf) else None,
+        "regime": gov.regime,
+        "crossings_rpm": [_r(float(rad_s_to_rpm(c))) for c in gov.crossings],
+        "exclude_rpm": [
+            [_r(float(rad_s_to_rpm(a))), _r(float(rad_s_to_rpm(b)))] for a, b in _merge(exclude)
+        ]
+        if op.variable
+        else [],
+        "modes": {f.mode.id: f.status for f in findings},
+    }
+    return Check(
+        id=f"{subsystem}.resonance.{exc.id}",
+        subsystem=subsystem,
+        status=gov.status,
+        message=message,
+        rule=Rule(rule.label, rule.source),
+        numbers=numbers,
+    )
+
+
+def _merge(intervals: Sequence[Interval]) -> list[Interval]:
+    out: list[Interval] = []
+    for a, b in sorted(intervals):
+        if out and a <= out[-1][1]:
+            out[-1] = (out[-1][0], max(out[-1][1], b))
+        else:
+            out.append((a, b))
+    return out
+
+
+def _r(x: float) -> float:
+    """Round for the report: 6 significant digits keep JSON stable and readable."""
+    return float(f"{x:.6g}")
+
+
+def _rpm(omega: float) -> str:
+    return f"{float(rad_s_to_rpm(omega)):.3g} rpm"
+
+
+def _span(iv: Interval) -> str:
+    a, b = (float(rad_s_to_rpm(x)) for x in iv)
+    return f"{a:.3g} rpm" if abs(b - a) < 1e-9 else f"{a:.3g}–{b:.3g} rpm"
+
+
+def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
+    name = f"{f.mode.id} ({f.natural_hz:.3g} Hz)"
+    need = f"needs {rule.margin:.0%}"
+    exc = f.excitation.id
+    if f.regime is None:
+        where = "at the operating speed" if not op.variable else "over the operating range"
+        return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
+    spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
+    if f.regime == "steady":
+        text = f"{name} within the margin of {exc} in steady operation at {spans}: "
+        text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
+        if f.excitation.energy == "minor":
+            text += "; a low-energy harmonic (Hau 7.2.2)"
+        elif f.excitation.energy == "secondary":
+            text += "; a secondary harmonic, resonant in practice (WKA-60, Hau 7.5.2)"
+        if op.variable:
+            text += f"; exclude {spans} to clear it"
+        return text
+    if f.regime == "quick-pass":
+        return (
+            f"{name} within the margin of {exc} only inside the quick-pass band at {spans}: "
+            "the speed controller must not dwell there"
+        )
+    if f.regime == "overspeed":
+        return (
+            f"{name} meets {exc} only at overspeed, {spans} (steady up to "
+            f"{_rpm(op.highest)}, overspeed limit {_rpm(op.overspeed)}): a transient state"
+        )
+    return (
+        f"{name} is crossed by {exc} during start-up/shut-down at {spans} "
+        f"(below {_rpm(op.lowest)}): passed quickly, not a steady resonance"
+    )

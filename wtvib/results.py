@@ -1,0 +1,107 @@
+"""The few result types every subsystem shares: modes and checks (DESIGN.md)."""
+
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .rules import Status
+
+
+class SpeedCurve(Protocol):
+    """Natural frequency [Hz] as a function of rotor speed Ω [rad/s] (vectorised)."""
+
+    def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]: ...
+
+
+@dataclass(frozen=True)
+class Southwell:
+    """Rotational stiffening of a blade mode: f² = f₀² + K·(Ω/2π)².
+
+    Parameters
+    ----------
+    f0_hz
+        Natural frequency at standstill. [Hz]
+    k
+        Southwell coefficient. [-]
+
+    References
+    ----------
+    R. Southwell & F. Gough (1921), as used for rotor blades in e.g. Hansen, *Aerodynamics
+    of Wind Turbines*; for a uniform cantilever hinged at the axis K ≈ 1.19 (flap) and
+    K_flap − 1 ≈ 0.19 (edge) (DOMAIN.md §3).
+    """
+
+    f0_hz: float
+    k: float
+
+    def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        rev_hz = np.asarray(omega, dtype=float) / (2.0 * np.pi)
+        return np.sqrt(self.f0_hz**2 + self.k * rev_hz**2)
+
+
+@dataclass(frozen=True)
+class Mode:
+    """A natural mode of one subsystem.
+
+    ``frequency_hz`` is the standstill value; ``curve``, where present, gives the frequency
+    over rotor speed (Campbell diagrams and resonance checks use it).
+    """
+
+    id: str
+    subsystem: str
+    description: str
+    frequency_hz: float
+    damping_ratio: float | None = None
+    curve: SpeedCurve | None = None
+
+    def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
+        """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
+        w = np.asarray(omega, dtype=float)
+        if self.curve is None:
+            return np.full_like(w, self.frequency_hz)
+        return np.asarray(self.curve(w), dtype=float)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "id": self.id,
+            "subsystem": self.subsystem,
+            "description": self.description,
+            "frequency_hz": round(self.frequency_hz, 6),
+            "damping_ratio": self.damping_ratio,
+            "speed_dependent": self.curve is not None,
+        }
+
+
+@dataclass(frozen=True)
+class Rule:
+    """The rule a check applied, and where it comes from."""
+
+    name: str
+    source: str
+
+    def to_dict(self) -> dict[str, str]:
+        return {"name": self.name, "source": self.source}
+
+
+@dataclass(frozen=True)
+class Check:
+    """One audit finding: a stable id, a status, a message, the rule and its numbers."""
+
+    id: str
+    subsystem: str
+    status: Status
+    message: str
+    rule: Rule
+    numbers: dict[str, Any] = field(default_factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "id": self.id,
+            "subsystem": self.subsystem,
+            "status": self.status,
+            "message": self.message,
+            "rule": self.rule.to_dict(),
+            **self.numbers,
+        }

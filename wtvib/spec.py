@@ -1,0 +1,551 @@
+"""The turbine spec: wtvib's input format (version 1), validated once, at the boundary.
+
+A spec is a YAML file written by hand. Units are in the key names (``_hz``, ``_rpm``,
+``_m``, ``_kg``, ``_kw``); ratios have no suffix. Any number may instead be written as a
+*quantity* mapping that records where it came from::
+
+    fa1: {value: 0.42, provenance: derived, source: hau, note: "between 1P and 2P (Fig. 7.22)"}
+
+``provenance`` is ``published`` (a number printed in the source), ``derived`` (computed or
+read from a statement in the source) or ``representative`` (a plausible value chosen where
+the source gives none). ``source`` names an entry of the top-level ``sources`` mapping.
+
+Validation errors become one :class:`~wtvib.errors.SpecError` line naming the field path and
+the YAML line. Past this module, code trusts the spec (STYLE.md habit 4).
+"""
+
+from collections.abc import Mapping
+from pathlib import Path as FsPath
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Discriminator,
+    Field,
+    PrivateAttr,
+    Tag,
+    ValidationError,
+    model_validator,
+)
+
+from .errors import SpecError
+from .rules import PRESETS, MarginRule, Status
+from .yamlio import Document, Path, format_path, parse
+
+FORMAT_VERSION = 1
+
+#: Files larger than this are refused before parsing (overridable by callers).
+MAX_FILE_BYTES = 20 * 1024 * 1024
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(
+        extra="forbid", frozen=True, allow_inf_nan=False, str_strip_whitespace=True
+    )
+
+
+Positive = Annotated[float, Field(gt=0)]
+Ratio = Annotated[float, Field(ge=0, lt=1)]
+
+
+class Quantity(_Strict):
+    """A number with its provenance (accepted wherever a number is)."""
+
+    value: float = Field(description="The number itself, in the unit its key names.")
+    provenance: Literal["published", "derived", "representative"] = Field(
+        description="published: printed in the source; derived: computed or read from a "
+        "statement in the source; representative: a plausible value where the source gives "
+        "none."
+    )
+    source: str | None = Field(None, description="Key of the top-level `sources` mapping.")
+    note: str | None = Field(None, description="How the value was obtained.")
+    tolerance: float | None = Field(
+        None, ge=0, description="Relative uncertainty (e.g. 0.15 for ±15 %). [-]"
+    )
+
+
+class ModeSpec(_Strict):
+    """A natural frequency given directly, with optional damping and stiffening."""
+
+    frequency_hz: Positive = Field(description="Natural frequency at standstill. [Hz]")
+    damping_ratio: Ratio | None = Field(
+        None,
+        description="Modal damping ratio (fraction of critical); subsystem default if omitted. [-]",
+    )
+    southwell: float | None = Field(
+        None,
+        ge=0,
+        description="Blade modes only: Southwell coefficient K in f² = f₀² + K·(Ω/2π)². "
+        "Default 1.19 for flap and 0.19 for edge modes (uniform cantilever), 0 for torsion. [-]",
+    )
+    description: str | None = Field(None, description="Free text shown in the report.")
+
+
+def _mode_tag(value: Any) -> str:
+    return "full" if isinstance(value, Mapping) else "number"
+
+
+ModeEntry = Annotated[
+    Annotated[Positive, Tag("number")] | Annotated[ModeSpec, Tag("full")],
+    Discriminator(_mode_tag),
+]
+
+TowerModeName = Annotated[str, Field(pattern=r"^(fa|ss|tor)[1-9]$")]
+BladeModeName = Annotated[str, Field(pattern=r"^(flap|edge|tor)[1-9]$")]
+YawModeName = Annotated[str, Field(pattern=r"^[1-9]$")]
+
+
+class TurbineInfo(_Strict):
+    """Identification of the turbine."""
+
+    name: str = Field(min_length=1, description="Name shown in reports.")
+    manufacturer: str | None = None
+    year: int | None = Field(None, ge=1800, le=2200, description="Year of commissioning.")
+    rated_power_kw: Positive | None = Field(None, description="Rated power. [kW]")
+    rotor_diameter_m: Positive | None = Field(None, description="Rotor diameter. [m]")
+    hub_height_m: Positive | None = Field(None, description="Hub height. [m]")
+    description: str | None = None
+
+
+class RotorSpeed(_Strict):
+    """Rotor speed: a fixed speed (or several, for pole-changing generators) or a range."""
+
+    fixed_rpm: Positive | list[Positive] | None = Field(
+        None, description="Fixed operating speed(s). [rpm]"
+    )
+    min_rpm: Positive | None = Field(None, description="Lowest steady speed (variable). [rpm]")
+    rated_rpm: Positive | None = Field(None, description="Rated speed (variable). [rpm]")
+    max_rpm: Positive | None = Field(None, description="Highest steady speed (variable). [rpm]")
+    overspeed_rpm: Positive | None = Field(None, description="Transient overspeed limit. [rpm]")
+    overspeed_factor: float | None = Field(
+        None,
+        gt=1,
+        description="Transient overspeed as a factor on the highest steady speed; default "
+        "1.15 when neither this nor overspeed_rpm is given (Hau ch. 7.3.4, Growian). [-]",
+    )
+    quick_pass_rpm: list[tuple[Positive, Positive]] = Field(
+        default_factory=list,
+        description="Speed bands [low, high] the controller passes through quickly without "
+        "steady operation (variable speed). [rpm]",
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "RotorSpeed":
+        fixed = self.fixed_rpm is not None
+        ranged = self.min_rpm is not None or self.max_rpm is not None
+        if fixed == ranged:
+            raise ValueError("give either fixed_rpm, or min_rpm and max_rpm")
+        if ranged:
+            if self.min_rpm is None or self.max_rpm is None:
+                raise ValueError("a variable-speed rotor needs both min_rpm and max_rpm")
+            if self.min_rpm > self.max_rpm:
+                raise ValueError(f"min_rpm ({self.min_rpm}) exceeds max_rpm ({self.max_rpm})")
+            if self.rated_rpm is not None and not self.min_rpm <= self.rated_rpm <= self.max_rpm:
+                raise ValueError("rated_rpm must lie between min_rpm and max_rpm")
+        elif self.rated_rpm is not None:
+            raise ValueError("rated_rpm belongs to a variable-speed rotor; use fixed_rpm")
+        if self.overspeed_rpm is not None and self.overspeed_factor is not None:
+            raise ValueError("give overspeed_rpm or overspeed_factor, not both")
+        top = self.top_rpm
+        if self.overspeed_rpm is not None and self.overspeed_rpm <= top:
+            raise ValueError(f"overspeed_rpm must exceed the highest steady speed ({top} rpm)")
+        for low, high in self.quick_pass_rpm:
+            if not low < high:
+                raise ValueError(f"quick_pass_rpm band [{low}, {high}] must be increasing")
+            if not ranged or low < (self.min_rpm or 0) or high > top:
+                raise ValueError(
+                    f"quick_pass_rpm band [{low}, {high}] must lie inside min_rpm..max_rpm"
+                )
+        return self
+
+    @property
+    def steady_rpm(self) -> list[tuple[float, float]]:
+        """Steady operating speeds as closed intervals (a fixed speed is a point). [rpm]"""
+        if self.fixed_rpm is not None:
+            speeds = self.fixed_rpm if isinstance(self.fixed_rpm, list) else [self.fixed_rpm]
+            return [(s, s) for s in sorted(speeds)]
+        assert self.min_rpm is not None and self.max_rpm is not None
+        return [(self.min_rpm, self.max_rpm)]
+
+    @property
+    def top_rpm(self) -> float:
+        """Highest steady speed. [rpm]"""
+        return self.steady_rpm[-1][1]
+
+    @property
+    def overspeed(self) -> float:
+        """Transient overspeed limit, explicit or from the factor (default 1.15). [rpm]"""
+        if self.overspeed_rpm is not None:
+            return self.overspeed_rpm
+        return self.top_rpm * (self.overspeed_factor or DEFAULT_OVERSPEED_FACTOR)
+
+
+#: Default transient overspeed factor: Hau ch. 7.3.4 discusses Growian at 115 % overspeed.
+DEFAULT_OVERSPEED_FACTOR = 1.15
+
+
+class Rotor(_Strict):
+    """The rotor: blade number, layout, hub and speed."""
+
+    blades: int = Field(ge=1, le=20, description="Number of blades N_b.")
+    orientation: Literal["upwind", "downwind", "vertical-axis"] = Field(
+        description="Rotor position relative to the tower, or a vertical-axis (Darrieus) rotor."
+    )
+    hub: Literal["hingeless", "rigid", "teetered", "hinged"] = Field(
+        description="Hub type; 'rigid' and 'hingeless' mean the same."
+    )
+    speed: RotorSpeed
+
+
+class Tower(_Strict):
+    """The tower with its tower head (rotor–nacelle mass), by its natural frequencies."""
+
+    construction: (
+        Literal[
+            "steel-tube", "concrete", "lattice", "guyed-tube", "hybrid", "rotor-column", "other"
+        ]
+        | None
+    ) = Field(None, description="Type of tower.")
+    height_m: Positive | None = Field(None, description="Tower height. [m]")
+    mass_kg: Positive | None = Field(None, description="Tower mass. [kg]")
+    damping_ratio: Ratio = Field(
+        0.01, description="Default modal damping ratio of the tower modes. [-]"
+    )
+    modes: dict[TowerModeName, ModeEntry] = Field(
+        default_factory=dict,
+        description="Natural frequencies [Hz]: fa1, fa2 (fore-aft), ss1, ss2 (side-side), "
+        "tor1 (torsion).",
+    )
+
+
+class Blade(_Strict):
+    """The blades, by their natural frequencies at standstill."""
+
+    length_m: Positive | None = Field(None, description="Blade length. [m]")
+    mass_kg: Positive | None = Field(None, description="Mass of one blade. [kg]")
+    damping_ratio: Ratio = Field(
+        0.005, description="Default modal damping ratio of the blade modes. [-]"
+    )
+    modes: dict[BladeModeName, ModeEntry] = Field(
+        default_factory=dict,
+        description="Standstill natural frequencies [Hz]: flap1, flap2, edge1, edge2, tor1.",
+    )
+
+
+class GearStage(_Strict):
+    """One gearbox stage, for its tooth-mesh excitation."""
+
+    name: str = Field(min_length=1, description="Stage name used in the excitation id.")
+    teeth: int = Field(gt=0, description="Teeth on the gear whose shaft speed is given.")
+    shaft_speed_ratio: Positive = Field(
+        description="Speed of that gear's shaft divided by rotor speed. [-]"
+    )
+
+
+class InertiaFractions(_Strict):
+    """Shares of the drive train's total inertia (Hau Table 7.8). [-]"""
+
+    blades: Ratio
+    hub: Ratio
+    generator: Ratio
+    rest: Ratio
+
+    @model_validator(mode="after")
+    def _sum_to_one(self) -> "InertiaFractions":
+        total = self.blades + self.hub + self.generator + self.rest
+        if abs(total - 1.0) > 0.011:
+            raise ValueError(f"inertia fractions must add up to 1 (they add up to {total:.3f})")
+        return self
+
+
+class Drivetrain(_Strict):
+    """The drive train: generator, gearbox and natural frequencies per operating condition."""
+
+    generator: Literal["synchronous", "induction", "converter", "dc"] | None = Field(
+        None, description="Generator type."
+    )
+    grid_coupling: Literal["direct", "converter", "isolated"] | None = Field(
+        None, description="How the generator is tied to the grid or load."
+    )
+    gear_ratio: Positive | None = Field(None, description="Generator speed / rotor speed. [-]")
+    gear_stages: list[GearStage] = Field(
+        default_factory=list, description="Stages whose mesh frequencies excite the train."
+    )
+    inertia_fractions: InertiaFractions | None = None
+    damping_ratio: Ratio = Field(
+        0.02, description="Default modal damping ratio of the drive-train modes. [-]"
+    )
+    modes: dict[Literal["grid", "free", "locked"], list[ModeEntry]] = Field(
+        default_factory=dict,
+        description="Natural frequencies [Hz] per condition: grid (generator on the grid), "
+        "free (idling / isolated), locked (brake applied), lowest first, rigid-body 0 Hz "
+        "modes omitted.",
+    )
+
+
+class Yaw(_Strict):
+    """The yaw system, by its natural frequencies."""
+
+    drive: Literal["active", "fantail", "free"] | None = Field(None, description="Yaw drive.")
+    damping_ratio: Ratio = Field(0.02, description="Default modal damping ratio. [-]")
+    modes: dict[YawModeName, ModeEntry] = Field(
+        default_factory=dict, description="Yaw natural frequencies [Hz], keyed 1, 2, …"
+    )
+
+
+class Severity(_Strict):
+    """Status given to a margin violation in steady operation, by excitation energy."""
+
+    dominant: Status = Field("fail", description="1P and N_b·P (Hau ch. 7.1).")
+    secondary: Status | None = Field(
+        None,
+        description="kP with 1 < k < N_b, e.g. 2P on a three-bladed rotor (Hau ch. 7.5.2: "
+        "WKA-60's tower met 2P and resonated). Default: the preset's (hau: fail, "
+        "gl2010: warn).",
+    )
+    minor: Status = Field(
+        "info", description="Higher harmonics above N_b·P (Hau ch. 7.2.2: little energy)."
+    )
+
+
+class AuditSettings(_Strict):
+    """How strictly to judge: the margin rule, its margin, and how many harmonics."""
+
+    preset: Literal["hau", "gl2010"] = Field(
+        "hau", description="Code whose rule and margin are the defaults: " + ", ".join(PRESETS)
+    )
+    rule: Literal["band", "ratio"] | None = Field(
+        None, description="band: |f_n−f_exc| ≥ m·f_exc; ratio: f_exc/f_n outside 1 ± m."
+    )
+    margin: float | None = Field(None, gt=0, lt=1, description="Margin m (0.10 = 10 %). [-]")
+    harmonics: int = Field(6, ge=1, le=60, description="Highest rotor harmonic kP checked.")
+    severity: Severity = Field(default_factory=Severity)
+
+    def severities(self) -> dict[str, Status]:
+        """Status of a steady-state margin violation per energy class, preset applied."""
+        out = self.severity.model_dump()
+        if out["secondary"] is None:
+            out["secondary"] = PRESETS[self.preset].secondary
+        return out
+
+    def margin_rule(self) -> MarginRule:
+        """The rule in force: the preset's, with the explicit rule and margin on top."""
+        preset = PRESETS[self.preset]
+        kind = self.rule or preset.rule
+        margin = self.margin if self.margin is not None else preset.margin
+        if kind == preset.rule and margin == preset.margin:
+            return MarginRule(kind, margin, preset.source, preset.name)
+        return MarginRule(kind, margin, f"user setting (preset {preset.name} overridden)")
+
+
+class Spec(_Strict):
+    """A wind turbine to audit (wtvib spec format version 1)."""
+
+    wtvib: Literal[1] = Field(description="Spec format version; this is version 1.")
+    turbine: TurbineInfo
+    sources: dict[str, str] = Field(
+        default_factory=dict, description="Citations, by a short key used in quantities."
+    )
+    rotor: Rotor
+    tower: Tower = Field(default_factory=Tower)
+    blade: Blade = Field(default_factory=Blade)
+    drivetrain: Drivetrain = Field(default_factory=Drivetrain)
+    yaw: Yaw = Field(default_factory=Yaw)
+    audit: AuditSettings = Field(default_factory=AuditSettings)
+    notes: str | None = Field(None, description="Anything else worth keeping with the spec.")
+
+    _source_file: str | None = PrivateAttr(None)
+    _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
+
+    @property
+    def source_file(self) -> str | None:
+        """The file this spec was read from."""
+        return self._source_file
+
+    @property
+    def provenance(self) -> dict[str, Quantity]:
+        """Provenance of each annotated value, by dotted field path."""
+        return dict(self._provenance)
+
+
+# ---------------------------------------------------------------------------------------
+# Loading
+
+
+def load(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> Spec:
+    """Read and validate a wtvib spec file.
+
+    Raises
+    ------
+    SpecError
+        Unreadable, oversized, non-UTF-8 or invalid file; the message names field and line.
+    """
+    text = read_text(path, max_bytes=max_bytes)
+    return from_document(parse(text, source=str(path)))
+
+
+def read_text(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> str:
+    """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
+    p = FsPath(path)
+    try:
+        size = p.stat().st_size
+        if size > max_bytes:
+            raise SpecError(
+                f"file is {size:,} bytes, over the {max_bytes:,}-byte limit", source=str(p)
+            )
+        raw = p.read_bytes()
+    except IsADirectoryError:
+        raise SpecError("is a folder, not a file", source=str(p)) from None
+    except FileNotFoundError:
+        raise SpecError("no such file", source=str(p)) from None
+    except OSError as exc:
+        raise SpecError(f"cannot read: {exc.strerror}", source=str(p)) from None
+    if b"\x00" in raw:
+        raise SpecError("binary file, not a YAML text file", source=str(p))
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
+
+
+def from_document(doc: Document) -> Spec:
+    """Validate a parsed document as a :class:`Spec`."""
+    if not isinstance(doc.data, dict):
+        raise SpecError(
+            "expected a mapping of fields (wtvib:, turbine:, rotor:, …) at the top",
+            line=doc.line_of(()),
+            source=doc.source,
+        )
+    version = doc.data.get("wtvib")
+    if "wtvib" not in doc.data:
+        raise SpecError(
+            "not a wtvib spec: the version key 'wtvib: 1' is missing", line=1, source=doc.source
+        )
+    if version != FORMAT_VERSION:
+        raise SpecError(
+            f"unsupported spec format version {version!r}; this wtvib reads version "
+            f"{FORMAT_VERSION}",
+            path="wtvib",
+            line=doc.line_of(("wtvib",)),
+            source=doc.source,
+        )
+    provenance: dict[str, Quantity] = {}
+    data = _extract_quantities(doc, doc.data, (), provenance)
+    try:
+        spec = Spec.model_validate(data)
+    except ValidationError as exc:
+        raise _spec_error(exc, doc) from None
+    _check_sources(spec, provenance, doc)
+    spec._source_file = doc.source
+    spec._provenance = provenance
+    return spec
+
+
+def _extract_quantities(doc: Document, node: Any, path: Path, out: dict[str, Quantity]) -> Any:
+    """Replace each ``{value: …, provenance: …}`` mapping by its number, recording it."""
+    if isinstance(node, dict):
+        if "value" in node and "provenance" in node:
+            try:
+                q = Quantity.model_validate(node)
+            except ValidationError as exc:
+                raise _spec_error(exc, doc, prefix=path) from None
+            out[format_path(path)] = q
+            return q.value
+        return {k: _extract_quantities(doc, v, (*path, k), out) for k, v in node.items()}
+    if isinstance(node, list):
+        return [_extract_quantities(doc, v, (*path, i), out) for i, v in enumerate(node)]
+    return node
+
+
+def _check_sources(spec: Spec, provenance: dict[str, Quantity], doc: Document) -> None:
+    for where, q in provenance.items():
+        if q.source is not None and q.source not in spec.sources:
+            known = ", ".join(spec.sources) or "none"
+            raise SpecError(
+                f"source {q.source!r} is not a key of the top-level 'sources' (known: {known})",
+                path=f"{where}.source",
+                line=doc.line_of(_split(where)),
+                source=doc.source,
+            )
+
+
+def _split(dotted: str) -> Path:
+    parts: list[str | int] = []
+    for piece in dotted.replace("]", "").replace("[", ".").split("."):
+        parts.append(int(piece) if piece.isdigit() else piece)
+    return tuple(parts)
+
+
+def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecError:
+    """The first validation error as one line with field path and YAML line."""
+    errors = exc.errors(include_url=False)
+    err = errors[0]
+    loc: list[str | int] = []
+    for part in err["loc"]:
+        if part in ("number", "full", "[key]") or (
+            isinstance(part, str) and part.startswith(("function-", "tuple["))
+        ):
+            continue
+        loc.append(part)
+    path: Path = (*prefix, *loc)
+    message = _message(err)
+    extra = len(errors) - 1
+    more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra else ""
+    return SpecError(
+        message + more,
+        path=format_path(path) or None,
+        line=doc.line_of(path),
+        source=doc.source,
+    )
+
+
+def _message(err: Any) -> str:
+    kind = err["type"]
+    got = err.get("input")
+    if kind == "missing":
+        return "required field is missing"
+    if kind == "extra_forbidden":
+        return "unknown field (not part of the wtvib spec; check the spelling)"
+    if kind == "string_pattern_mismatch":
+        pattern = err.get("ctx", {}).get("pattern", "")
+        names = {
+            r"^(fa|ss|tor)[1-9]$": "fa1…fa9, ss1…ss9, tor1…tor9",
+            r"^(flap|edge|tor)[1-9]$": "flap1…flap9, edge1…edge9, tor1…tor9",
+            r"^[1-9]$": "1…9",
+        }.get(pattern, pattern)
+        return f"{got!r} is not a known mode name (expected {names})"
+    if kind == "finite_number":
+        return "must be a finite number (NaN and infinity are not allowed)"
+    text = str(err["msg"])
+    if kind.startswith("value_error"):
+        text = text.removeprefix("Value error, ")
+    if got is not None and not isinstance(got, dict | list) and kind != "literal_error":
+        return f"{text} (got {got!r})"
+    if kind == "literal_error":
+        return f"{text} (got {got!r})"
+    return text
+
+
+def json_schema() -> dict[str, Any]:
+    """JSON Schema of the spec, with every number also accepting a quantity mapping."""
+    schema = Spec.model_json_schema()
+    defs = schema.setdefault("$defs", {})
+    quantity = Quantity.model_json_schema()
+    defs["Quantity"] = quantity
+    ref = {"$ref": "#/$defs/Quantity"}
+
+    def widen(node: Any) -> Any:
+        if isinstance(node, dict):
+            if node.get("type") in ("number", "integer") and node is not quantity:
+                return {"anyOf": [node, ref]}
+            return {k: widen(v) if k != "Quantity" else v for k, v in node.items()}
+        if isinstance(node, list):
+            return [widen(v) for v in node]
+        return node
+
+    out = widen(schema)
+    out["$schema"] = "https://json-schema.org/draft/2020-12/schema"
+    out["title"] = "wtvib turbine spec, format version 1"
+    return out  # type: ignore[no-any-return]

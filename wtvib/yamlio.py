@@ -1,0 +1,138 @@
+"""Safe YAML reading that remembers where every value came from.
+
+PyYAML's ``safe_load`` forgets line numbers and silently keeps the last of two duplicate
+keys. Users' mistakes must name the field and the line (STYLE.md habit 4), so the document
+is composed into nodes and converted here, keeping a map from field path to line, refusing
+duplicate keys, object-constructing tags and documents that expand past a node budget
+(alias bombs).
+"""
+
+from collections.abc import Hashable
+from dataclasses import dataclass, field
+from typing import Any
+
+import yaml
+
+from .errors import SpecError
+
+Path = tuple[str | int, ...]
+
+#: Largest number of nodes (after alias expansion) a document may have. The catalogue specs
+#: have a few hundred; windIO files tens of thousands. Guards against "billion laughs".
+MAX_NODES = 1_000_000
+
+_MAP_TAG = "tag:yaml.org,2002:map"
+_SEQ_TAG = "tag:yaml.org,2002:seq"
+
+
+@dataclass(frozen=True)
+class Document:
+    """A parsed YAML document with the 1-based line of each field path."""
+
+    data: Any
+    lines: dict[Path, int] = field(default_factory=dict)
+    source: str | None = None
+
+    def line_of(self, path: Path) -> int | None:
+        """Line of ``path`` or of its nearest ancestor that has one."""
+        for cut in range(len(path), -1, -1):
+            line = self.lines.get(tuple(path[:cut]))
+            if line is not None:
+                return line
+        return None
+
+
+def format_path(path: Path) -> str:
+    """``("rotor", "speed", 0)`` -> ``rotor.speed[0]``."""
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out
+
+
+def parse(text: str, source: str | None = None) -> Document:
+    """Parse one YAML document safely, keeping line numbers.
+
+    Raises
+    ------
+    SpecError
+        Empty document, YAML syntax error, several documents, an unsafe tag, a duplicate
+        key, a non-string key or a document larger than :data:`MAX_NODES` nodes.
+    """
+    loader = yaml.SafeLoader(text)
+    try:
+        node = loader.get_single_node()
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        line = mark.line + 1 if mark is not None else None
+        problem = exc.problem or exc.context or "invalid YAML"
+        raise SpecError(f"not valid YAML: {problem}", line=line, source=source) from None
+    except yaml.YAMLError as exc:
+        raise SpecError(f"not valid YAML: {exc}", source=source) from None
+    finally:
+        loader.dispose()
+    if node is None:
+        raise SpecError("the file is empty (no YAML document in it)", source=source)
+    walker = _Walker(loader, source)
+    data = walker.convert(node, ())
+    return Document(data=data, lines=walker.lines, source=source)
+
+
+class _Walker:
+    def __init__(self, loader: yaml.SafeLoader, source: str | None) -> None:
+        self.loader = loader
+        self.source = source
+        self.lines: dict[Path, int] = {}
+        self.count = 0
+
+    def fail(self, message: str, path: Path, node: yaml.Node) -> SpecError:
+        return SpecError(
+            message,
+            path=format_path(path) or None,
+            line=node.start_mark.line + 1,
+            source=self.source,
+        )
+
+    def convert(self, node: yaml.Node, path: Path) -> Any:
+        self.count += 1
+        if self.count > MAX_NODES:
+            raise self.fail(
+                f"the document expands to more than {MAX_NODES:,} values (an alias bomb?); refused",
+                path,
+                node,
+            )
+        self.lines.setdefault(path, node.start_mark.line + 1)
+        if isinstance(node, yaml.MappingNode):
+            return self._mapping(node, path)
+        if isinstance(node, yaml.SequenceNode):
+            if node.tag != _SEQ_TAG:
+                raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+            return [self.convert(item, (*path, i)) for i, item in enumerate(node.value)]
+        try:
+            return self.loader.construct_object(node, deep=True)
+        except yaml.constructor.ConstructorError as exc:
+            raise self.fail(f"not allowed: {exc.problem}", path, node) from None
+
+    def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[Hashable, Any]:
+        if node.tag != _MAP_TAG:
+            raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+        try:
+            self.loader.flatten_mapping(node)  # resolves YAML merge keys (<<)
+        except yaml.constructor.ConstructorError as exc:
+            raise self.fail(f"bad merge key: {exc.problem}", path, node) from None
+        out: dict[Hashable, Any] = {}
+        for key_node, value_node in node.value:
+            key = self.loader.construct_object(key_node, deep=True)
+            if not isinstance(key, str | int | float | bool):
+                raise self.fail("a key must be a plain name", path, key_node)
+            key = str(key) if not isinstance(key, str) else key
+            if key in out:
+                first = self.lines.get((*path, key))
+                raise self.fail(
+                    f"duplicate key {key!r} (first given on line {first})",
+                    (*path, key),
+                    key_node,
+                )
+            self.lines[(*path, key)] = key_node.start_mark.line + 1
+            out[key] = self.convert(value_node, (*path, key))
+        return out
