@@ -112,8 +112,26 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
                 zorder=5,
             )
 
+    for f in findings:
+        if f.regime in ("steady", "quick-pass"):
+            ax.plot(
+                float(rad_s_to_rpm(f.speed)),
+                f.excitation_hz,
+                marker="D",
+                ms=9,
+                color=STATUS_COLOUR[f.status],
+                mec="black",
+                mew=0.8,
+                zorder=6,
+            )
+
     ax.set_xlim(0, rpm_top)
-    ax.set_ylim(0, f_top)
+    low = min((m.frequency_hz for m in modes), default=f_top)
+    if top_mode / low > 20:  # modes spanning decades (drive trains): log scale
+        ax.set_yscale("log")
+        ax.set_ylim(low * 0.5, f_top)
+    else:
+        ax.set_ylim(0, f_top)
     ax.set_xlabel("rotor speed [rpm]")
     ax.set_ylabel("frequency [Hz]")
     ax.grid(True, alpha=0.3)
@@ -171,7 +189,12 @@ def _legend(ax, rule_label: str) -> None:  # type: ignore[no-untyped-def]
         (Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"), "overspeed (transient)"),
         (Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
         (Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),
+        (Line2D([], [], color="#424242", lw=1.2, ls="--"), "secondary (kP, 1<k<N_b)"),
         (Line2D([], [], color="#9e9e9e", lw=0.8, ls=":"), "minor harmonic"),
+        (
+            Line2D([], [], marker="D", ls="", color="#9e9e9e", mec="black"),
+            "least margin in operation",
+        ),
         (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["fail"]), "crossing: fail"),
         (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["warn"]), "crossing: warn"),
         (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["info"]), "crossing: info"),

@@ -20,7 +20,9 @@ class OperatingRange:
     """Rotor speeds the turbine runs at, in rad/s.
 
     ``steady`` holds closed intervals (a fixed speed is a zero-width interval);
-    ``quick_pass`` the bands inside them that the controller crosses without dwelling.
+    ``quick_pass`` the bands inside them that the controller crosses without dwelling;
+    ``dwell`` the speeds the turbine spends most time at (each fixed speed, or the rated
+    speed of a variable-speed rotor).
     Start-up and shut-down sweep 0 → lowest steady speed; ``overspeed`` is the transient
     limit above the highest steady speed.
     """
@@ -29,6 +31,7 @@ class OperatingRange:
     quick_pass: tuple[tuple[float, float], ...]
     overspeed: float
     variable: bool
+    dwell: tuple[float, ...] = ()
 
     @property
     def lowest(self) -> float:
@@ -50,6 +53,7 @@ def operating_range(speed: RotorSpeed) -> OperatingRange:
         quick_pass=conv(speed.quick_pass_rpm),
         overspeed=float(rpm_to_rad_s(speed.overspeed)),
         variable=speed.fixed_rpm is None,
+        dwell=tuple(float(rpm_to_rad_s(s)) for s in speed.dwell_rpm),
     )
 
 

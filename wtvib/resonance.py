@@ -8,7 +8,9 @@ start-up/shut-down), and turns them into a status by the excitation's energy cla
 regime             status
 =================  ==============================================================
 steady             the severity of the energy class (default: dominant and
-                   secondary fail, minor info)
+                   secondary fail, minor info); a secondary line (2P on three
+                   blades) met only away from the dwell speeds (fixed or rated
+                   speed) of a variable-speed rotor is one step milder
 quick-pass band    one step milder (fail → warn): the controller must not dwell
 overspeed only     one step milder: a transient state (Hau ch. 7.3.4, Growian)
 start-up only      info for dominant/secondary lines: the "encounter" of soft
@@ -84,6 +86,8 @@ def assess(
 
     violations = _split_by_regime(forbidden, op, gap)
     energy = severity[exc.energy]
+    if exc.energy == "secondary" and not any(gap(w) < 0 for w in op.dwell):
+        energy = _MILDER[energy]  # swept through in partial load, not dwelt at (Hau 7.5.2)
     regime_status: dict[str, Status] = {
         "steady": energy,
         "quick-pass": _MILDER[energy],
@@ -122,9 +126,10 @@ def assess(
 
 def regime_of(omega: float, op: OperatingRange) -> str:
     """Which regime a rotor speed belongs to: steady, quick-pass, overspeed or start-up."""
-    if any(a <= omega <= b for a, b in op.quick_pass):
+    tol = 1e-9 * op.overspeed
+    if any(a - tol <= omega <= b + tol for a, b in op.quick_pass):
         return "quick-pass"
-    if any(a <= omega <= b for a, b in op.steady):
+    if any(a - tol <= omega <= b + tol for a, b in op.steady):
         return "steady"
     return "overspeed" if omega > op.highest else "start-up"
 
@@ -268,7 +273,7 @@ def _check(
     rule: MarginRule,
 ) -> Check:
     gov = max(findings, key=lambda f: (STATUS_ORDER[f.status], -f.margin))
-    others = [f.mode.id for f in findings if f is not gov and f.status != "pass"]
+    others = [f.mode.id for f in findings if f is not gov and f.status == gov.status != "pass"]
     message = _message(gov, op, rule)
     if others:
         message += f" (also: {', '.join(others)})"
@@ -340,7 +345,13 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         if f.excitation.energy == "minor":
             text += "; a low-energy harmonic (Hau 7.2.2)"
         elif f.excitation.energy == "secondary":
-            text += "; a secondary harmonic, resonant in practice (WKA-60, Hau 7.5.2)"
+            dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
+            text += (
+                "; a secondary harmonic at the rated speed: resonant in practice (WKA-60, "
+                "Hau 7.5.2)"
+                if dwelt
+                else "; a secondary harmonic swept in partial load, not at rated speed: milder"
+            )
         if op.variable:
             text += f"; exclude {spans} to clear it"
         return text

@@ -169,6 +169,13 @@ class RotorSpeed(_Strict):
         return [(self.min_rpm, self.max_rpm)]
 
     @property
+    def dwell_rpm(self) -> list[float]:
+        """Speeds the rotor spends most time at: each fixed speed, or rated (default max)."""
+        if self.fixed_rpm is not None:
+            return [a for a, _ in self.steady_rpm]
+        return [self.rated_rpm if self.rated_rpm is not None else self.top_rpm]
+
+    @property
     def top_rpm(self) -> float:
         """Highest steady speed. [rpm]"""
         return self.steady_rpm[-1][1]
@@ -300,9 +307,10 @@ class Severity(_Strict):
     dominant: Status = Field("fail", description="1P and N_b·P (Hau ch. 7.1).")
     secondary: Status | None = Field(
         None,
-        description="kP with 1 < k < N_b, e.g. 2P on a three-bladed rotor (Hau ch. 7.5.2: "
-        "WKA-60's tower met 2P and resonated). Default: the preset's (hau: fail, "
-        "gl2010: warn).",
+        description="kP with 1 < k < N_b, e.g. 2P on a three-bladed rotor, at a dwell speed "
+        "(fixed or rated speed); one step milder elsewhere in a variable-speed range (Hau "
+        "ch. 7.5.2: 'basically considered less critical', yet WKA-60's tower met 2P at rated "
+        "speed and resonated). Default: the preset's (hau: fail, gl2010: warn).",
     )
     minor: Status = Field(
         "info", description="Higher harmonics above N_b·P (Hau ch. 7.2.2: little energy)."

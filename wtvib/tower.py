@@ -59,9 +59,9 @@ def classify(
 
     Notes
     -----
-    *resonant*: a dominant (1P, N_b·P) or secondary (kP, 1 < k < N_b) excitation violates the
-    margin in steady operation. Otherwise, at the highest steady speed: *stiff* above N_b·P,
-    *soft-soft* below 1P, *soft* between them.
+    *resonant*: a dominant (1P, N_b·P) excitation violates the margin in steady operation,
+    or a secondary one (kP, 1 < k < N_b) at a dwell speed. Otherwise, at the highest
+    steady speed: *stiff* above N_b·P, *soft-soft* below 1P, *soft* between them.
     """
     strong = [e for e in harmonics if e.energy != "minor" and e.order <= blades]
     # Judged with fixed severities so that a relaxed severity setting cannot hide a
@@ -70,7 +70,7 @@ def classify(
     findings = tuple(assess(mode, e, op, rule, judge, default_damping) for e in strong)
     f_t = mode.frequency_hz
     top_1p = float(rad_s_to_hz(op.highest))
-    if any(f.regime == "steady" for f in findings):
+    if any(f.status == "fail" for f in findings):
         cls: TowerClass = "resonant"
     elif f_t > blades * top_1p:
         cls = "stiff"
@@ -93,7 +93,7 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     )
     crossed = f"; {' and '.join(startup)} sweep through it at start-up" if startup else ""
     if c.tower_class == "resonant":
-        hit = [f for f in c.findings if f.regime == "steady"]
+        hit = [f for f in c.findings if f.status == "fail"]
         names = ", ".join(f.excitation.id for f in hit)
         status, text = "fail", f"resonant: {head} within the margin of {names} ({where})"
     elif c.tower_class == "stiff":
