@@ -1,14 +1,16 @@
 """The command line: thin — load, call one library function, render, exit with a code.
 
 Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or output.
-Errors are caught in one place (:func:`main`); a traceback only with ``--debug``.
+Errors are caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
 """
 
+import functools
 import json
 import sys
+from collections.abc import Callable
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, TypeVar
 
 import typer
 
@@ -40,6 +42,26 @@ class PresetName(StrEnum):
 
 _state = {"debug": False}
 
+F = TypeVar("F", bound=Callable[..., None])
+
+
+def _user_errors(command: F) -> F:
+    """Turn a wtvib error into one line on stderr and exit code 2 (traceback with --debug)."""
+
+    @functools.wraps(command)
+    def wrapper(*args: object, **kwargs: object) -> None:
+        from .errors import WtvibError
+
+        try:
+            command(*args, **kwargs)
+        except WtvibError as exc:
+            if _state["debug"] or kwargs.get("debug"):
+                raise
+            typer.echo(f"error: {exc}", err=True)
+            raise typer.Exit(EXIT_INPUT) from None
+
+    return wrapper  # type: ignore[return-value]
+
 
 @app.callback()
 def _root(
@@ -49,6 +71,7 @@ def _root(
 
 
 @app.command()
+@_user_errors
 def check(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
@@ -73,7 +96,6 @@ def check(
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG."""
-    _state["debug"] = _state["debug"] or debug
     from . import audit, spec
     from .outputs import write_atomic
 
@@ -118,6 +140,7 @@ def _settings(base, margin, rule, preset):  # type: ignore[no-untyped-def]
 
 
 @app.command()
+@_user_errors
 def schema() -> None:
     """Print the JSON Schema of the turbine spec (for editors and validators)."""
     from .spec import json_schema
@@ -126,16 +149,5 @@ def schema() -> None:
 
 
 def main() -> None:
-    """Console entry point: wtvib errors become one line on stderr and exit code 2.
-
-    Usage errors are click's (exit 2 as well); ``typer.Exit`` carries the verdict's code.
-    """
-    from .errors import WtvibError
-
-    try:
-        app()
-    except WtvibError as exc:
-        if _state["debug"]:
-            raise
-        typer.echo(f"error: {exc}", err=True)
-        sys.exit(EXIT_INPUT)
+    """Console entry point."""
+    app()

@@ -546,7 +546,7 @@ def json_schema() -> dict[str, Any]:
 
     def widen(node: Any) -> Any:
         if isinstance(node, dict):
-            if node.get("type") in ("number", "integer") and node is not quantity:
+            if node.get("type") in ("number", "integer") and "const" not in node:
                 return {"anyOf": [node, ref]}
             return {k: widen(v) if k != "Quantity" else v for k, v in node.items()}
         if isinstance(node, list):

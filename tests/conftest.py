@@ -1,0 +1,71 @@
+"""Shared test helpers: spec files written on the fly, and the ../shared reference data."""
+
+import os
+import textwrap
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+TURBINES = ROOT / "turbines"
+SHARED = ROOT.parent / "shared"
+
+#: A minimal valid spec; tests format it with their own speed and tower blocks.
+BASE = """\
+wtvib: 1
+turbine: {{name: Test turbine}}
+rotor:
+  blades: {blades}
+  orientation: upwind
+  hub: rigid
+  speed:
+{speed}
+tower:
+  modes:
+{modes}
+"""
+
+
+def spec_text(
+    *,
+    blades: int = 3,
+    speed: str = "fixed_rpm: 20",
+    modes: str = "fa1: 0.5",
+    extra: str = "",
+) -> str:
+    """YAML text of a small spec (speed and mode lines are indented for the caller)."""
+    return (
+        BASE.format(
+            blades=blades,
+            speed=textwrap.indent(speed, "    "),
+            modes=textwrap.indent(modes, "    "),
+        )
+        + extra
+    )
+
+
+@pytest.fixture
+def write_spec(tmp_path: Path) -> Callable[..., Path]:
+    """Write a spec (text or keyword parts of :func:`spec_text`) and return its path."""
+
+    def write(text: str | None = None, name: str = "t.yaml", **parts: object) -> Path:
+        path = tmp_path / name
+        path.write_text(text if text is not None else spec_text(**parts), encoding="utf-8")  # type: ignore[arg-type]
+        return path
+
+    return write
+
+
+@pytest.fixture(scope="session")
+def shared() -> Path:
+    """The ../shared folder beside the clone; skipped where absent, failed in CI.
+
+    ``.ci/run`` sets WTVIB_REQUIRE_SHARED=1 so that CI never skips these tests silently.
+    """
+    if (SHARED / "reference").is_dir():
+        return SHARED
+    reason = f"reference data not found at {SHARED} (clone the project beside ../shared)"
+    if os.environ.get("WTVIB_REQUIRE_SHARED"):
+        pytest.fail(reason + "; WTVIB_REQUIRE_SHARED is set, so this is an error")
+    pytest.skip(reason)

@@ -1,0 +1,131 @@
+"""The CLI: JSON equals the library result, exit codes, PNG output, nothing overwritten."""
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from wtvib import audit, spec
+from wtvib.cli import app
+
+runner = CliRunner()
+
+
+def run(*args: str):
+    return runner.invoke(app, list(args))
+
+
+def test_json_output_equals_the_library_result(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    result = run("check", str(path), "--format", "json", "--no-plot")
+    assert result.exit_code == 0
+    assert json.loads(result.stdout) == audit.run(spec.load(path)).to_dict()
+
+
+def test_json_contract_fields(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75\nss1: 0.7\ntor1: 3")
+    data = json.loads(run("check", str(path), "-f", "json", "--no-plot").stdout)
+    assert data["schema"] == "wtvib-report/1"
+    assert data["turbine"]["name"] == "Test turbine"
+    assert data["turbine"]["source_file"] == str(path)
+    assert data["verdict"] in ("pass", "warn", "fail")
+    assert data["tower_class"] == "soft"
+    assert [m["id"] for m in data["modes"]] == ["tower.ss1", "tower.fa1", "tower.tor1"]
+    for m in data["modes"]:
+        assert {"id", "subsystem", "description", "frequency_hz", "damping_ratio"} <= set(m)
+    ids = [c["id"] for c in data["checks"]]
+    assert ids[:3] == ["tower.class", "tower.resonance.1P", "tower.resonance.2P"]
+    for c in data["checks"]:
+        assert {"id", "subsystem", "status", "message", "rule"} <= set(c)
+        assert c["rule"]["source"]
+
+
+@pytest.mark.parametrize(
+    ("f", "code", "strict_code"),
+    [(0.75, 0, 0), (0.3, 0, 1), (1.0, 1, 1)],  # soft: pass; soft-soft: warn; resonant: fail
+)
+def test_exit_codes(write_spec, f, code, strict_code):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes=f"fa1: {f}")
+    assert run("check", str(path), "--no-plot").exit_code == code
+    assert run("check", str(path), "--no-plot", "--strict").exit_code == strict_code
+
+
+def test_margin_option_overrides_the_spec(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.56")  # 12 % above 1P
+    assert run("check", str(path), "--no-plot").exit_code == 0
+    result = run("check", str(path), "--no-plot", "--margin", "0.15", "-f", "json")
+    assert result.exit_code == 1
+    assert json.loads(result.stdout)["rule"]["margin"] == 0.15
+
+
+def test_preset_option(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.53")  # 6 % above 1P
+    assert run("check", str(path), "--no-plot").exit_code == 1  # hau: 10 % band
+    result = run("check", str(path), "--no-plot", "--preset", "gl2010", "-f", "json")
+    assert result.exit_code == 0  # ratio 0.5/0.53 = 0.943 ≤ 0.95
+    assert json.loads(result.stdout)["rule"]["preset"] == "gl2010"
+
+
+def test_bad_margin_is_a_usage_error(write_spec):
+    path = write_spec()
+    assert run("check", str(path), "--margin", "1.5").exit_code == 2
+
+
+def test_png_written_next_to_the_spec_and_to_out(write_spec, tmp_path):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    assert run("check", str(path)).exit_code == 0
+    png = path.with_name("t.campbell.png")
+    assert png.read_bytes().startswith(b"\x89PNG")
+    out = tmp_path / "reports"
+    result = run("check", str(path), "--out", str(out))
+    assert (out / "t.campbell.png").exists()
+    assert "wrote" in result.stdout
+
+
+def test_rerun_replaces_own_png_but_not_a_foreign_file(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    assert run("check", str(path)).exit_code == 0
+    assert run("check", str(path)).exit_code == 0  # our own PNG: replaced atomically
+    png = path.with_name("t.campbell.png")
+    png.write_bytes(b"a photo the user keeps here")
+    result = run("check", str(path))
+    assert result.exit_code == 2
+    assert "was not written by wtvib; use --force" in result.stderr
+    assert png.read_bytes() == b"a photo the user keeps here"
+    assert run("check", str(path), "--force").exit_code == 0
+    assert png.read_bytes().startswith(b"\x89PNG")
+
+
+def test_unwritable_output_folder_is_one_line(write_spec, tmp_path):
+    path = write_spec()
+    blocker = tmp_path / "file-not-folder"
+    blocker.write_text("x")
+    result = run("check", str(path), "--out", str(blocker / "sub"))
+    assert result.exit_code == 2
+    assert result.stderr.startswith("error: cannot write to")
+
+
+def test_terminal_report_shows_verdict_class_and_checks(write_spec):
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 1.0")
+    out = run("check", str(path), "--no-plot").stdout
+    assert "FAIL" in out and "resonant" in out and "tower.resonance.2P" in out
+
+
+def test_schema_command_prints_json_schema():
+    result = run("schema")
+    assert result.exit_code == 0
+    schema = json.loads(result.stdout)
+    assert schema["properties"]["wtvib"]["const"] == 1
+
+
+def test_help_is_fast_to_import():
+    """``wtvib --help`` must not import matplotlib or scipy (lazy imports)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from wtvib import cli; "
+        "print(any(m in sys.modules for m in ('matplotlib', 'scipy')))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"

@@ -1,0 +1,143 @@
+"""The one resonance routine on hand-checked cases.
+
+Speeds in rpm in the test names and comments; the routine works in rad/s.
+Forbidden speed intervals follow from the band rule by hand: with natural frequency f_n
+and harmonic k, the margin m is violated for k·n/60 in (f_n/(1+m), f_n/(1−m)).
+"""
+
+import math
+
+import pytest
+
+from wtvib.excitation import Excitation, OperatingRange, harmonic_energy
+from wtvib.resonance import assess, regime_of, resonance_checks
+from wtvib.results import Mode, Southwell
+from wtvib.rules import MarginRule
+from wtvib.units import rad_s_to_rpm, rpm_to_rad_s
+
+BAND = MarginRule("band", 0.10, "Hau 7.5.1")
+SEVERITY = {"dominant": "fail", "secondary": "fail", "minor": "info"}
+
+
+def op(steady, overspeed, quick=(), variable=True, dwell=None):
+    w = lambda x: float(rpm_to_rad_s(x))  # noqa: E731
+    steady = tuple((w(a), w(b)) for a, b in steady)
+    dwell = tuple(w(x) for x in dwell) if dwell else (steady[-1][1],)
+    return OperatingRange(
+        steady, tuple((w(a), w(b)) for a, b in quick), w(overspeed), variable, dwell
+    )
+
+
+def harmonic(k, blades=3):
+    return Excitation(f"{k}P", float(k), harmonic_energy(k, blades), "test")
+
+
+def mode(f, zeta=0.01, curve=None):
+    return Mode("tower.fa1", "tower", "test mode", f, zeta, curve)
+
+
+def rpm(x):
+    return float(rad_s_to_rpm(x))
+
+
+def test_fixed_speed_on_blade_passing_fails_with_resonant_daf():
+    # 3P at 20 rpm = 1.0 Hz = f_n: separation 0, DAF = 1/(2·0.01) = 50
+    f = assess(mode(1.0), harmonic(3), op([(20, 20)], 23, variable=False), BAND, SEVERITY, 0.01)
+    assert f.status == "fail" and f.regime == "steady"
+    assert f.margin == pytest.approx(0.0, abs=1e-12)
+    assert f.daf == pytest.approx(50.0)
+
+
+@pytest.mark.parametrize(("f_n", "inside"), [(1.1, False), (0.9, False), (1.0999, True)])
+def test_fixed_speed_exactly_at_the_margin_passes(f_n, inside):
+    # 3P at 20 rpm = 1.0 Hz; f_n = 1.1 and 0.9 are exactly 10 % away: no steady violation
+    # (neighbouring speeds in start-up or overspeed may still be inside the band)
+    f = assess(mode(f_n), harmonic(3), op([(20, 20)], 20.5, variable=False), BAND, SEVERITY, 0.01)
+    assert bool(f.violations["steady"]) is inside
+    assert (f.status == "fail") is inside
+    assert f.margin == pytest.approx(abs(f_n - 1.0))
+
+
+def test_variable_speed_forbidden_interval_matches_hand_computation():
+    # f_n = 1 Hz, 3P: forbidden 60/(3·1.1) = 18.1818 … 60/(3·0.9) = 22.2222 rpm
+    f = assess(mode(1.0), harmonic(3), op([(10, 30)], 34.5), BAND, SEVERITY, 0.01)
+    ((lo, hi),) = f.violations["steady"]
+    assert rpm(lo) == pytest.approx(60 / 3.3, rel=1e-9)
+    assert rpm(hi) == pytest.approx(60 / 2.7, rel=1e-9)
+    assert [rpm(c) for c in f.crossings] == pytest.approx([20.0])
+    assert f.status == "fail"
+
+
+def test_exclusion_band_is_reported_for_variable_speed():
+    f = assess(mode(1.0), harmonic(3), op([(10, 30)], 34.5), BAND, SEVERITY, 0.01)
+    [check] = resonance_checks([f], op([(10, 30)], 34.5), BAND)
+    assert check.numbers["exclude_rpm"] == [
+        [pytest.approx(18.1818, abs=1e-4), pytest.approx(22.2222, abs=1e-4)]
+    ]
+    assert check.id == "tower.resonance.3P"
+
+
+def test_overspeed_only_warns():
+    # forbidden from 18.18 rpm; steady up to 16 rpm, overspeed to 20 rpm
+    f = assess(mode(1.0), harmonic(3), op([(10, 16)], 20), BAND, SEVERITY, 0.01)
+    assert (f.status, f.regime) == ("warn", "overspeed")
+    assert rpm(f.violations["overspeed"][0][0]) == pytest.approx(60 / 3.3)
+
+
+def test_start_up_only_is_info():
+    # forbidden 18.18 … 22.22 rpm lies below the 25 rpm minimum: the soft-tower encounter
+    f = assess(mode(1.0), harmonic(3), op([(25, 30)], 34), BAND, SEVERITY, 0.01)
+    assert (f.status, f.regime) == ("info", "start-up")
+
+
+def test_quick_pass_band_covering_the_violation_warns():
+    f = assess(mode(1.0), harmonic(3), op([(10, 30)], 34, quick=[(18, 23)]), BAND, SEVERITY, 0.01)
+    assert (f.status, f.regime) == ("warn", "quick-pass")
+
+
+def test_partial_quick_pass_still_fails_outside_it():
+    f = assess(mode(1.0), harmonic(3), op([(10, 30)], 34, quick=[(19, 23)]), BAND, SEVERITY, 0.01)
+    assert f.status == "fail"
+    ((lo, hi),) = f.violations["steady"]
+    assert (rpm(lo), rpm(hi)) == pytest.approx((60 / 3.3, 19.0))
+
+
+def test_minor_harmonic_in_steady_operation_is_info():
+    # 5P on a three-bladed rotor at 12 rpm = 1.0 Hz
+    f = assess(mode(1.0), harmonic(5), op([(12, 12)], 13, variable=False), BAND, SEVERITY, 0.01)
+    assert (f.status, f.regime) == ("info", "steady")
+
+
+def test_secondary_harmonic_fails_at_rated_but_warns_when_only_swept():
+    # 2P of a three-bladed rotor: f_n = 1 Hz meets 2P at 30 rpm
+    at_rated = assess(mode(1.0), harmonic(2), op([(10, 30)], 34), BAND, SEVERITY, 0.01)
+    assert at_rated.status == "fail"
+    # rated 40 rpm: 2P only sweeps through f_n at 30 rpm in partial load
+    swept = assess(mode(1.0), harmonic(2), op([(10, 40)], 44), BAND, SEVERITY, 0.01)
+    assert swept.status == "warn"
+
+
+def test_southwell_crossing_speed_is_analytic():
+    # f² = f0² + K·(n/60)², 3P meets it where 9·x² = f0² + K·x², x = f0/√(9 − K) rev/s
+    f0, k = 0.8, 1.19
+    crossing = 60 * f0 / math.sqrt(9 - k)
+    f = assess(
+        mode(f0, curve=Southwell(f0, k)), harmonic(3), op([(5, 25)], 28), BAND, SEVERITY, 0.005
+    )
+    assert [rpm(c) for c in f.crossings] == pytest.approx([crossing], rel=1e-9)
+
+
+def test_ratio_rule_gives_its_own_interval():
+    # ratio rule m = 5 %: forbidden 3·n/60 in (0.95, 1.05) → n in (19, 21) rpm
+    rule = MarginRule("ratio", 0.05, "test")
+    f = assess(mode(1.0), harmonic(3), op([(10, 30)], 34), rule, SEVERITY, 0.01)
+    ((lo, hi),) = f.violations["steady"]
+    assert (rpm(lo), rpm(hi)) == pytest.approx((19.0, 21.0), rel=1e-9)
+
+
+def test_regime_of_speed():
+    o = op([(10, 20)], 23, quick=[(14, 15)])
+    assert regime_of(float(rpm_to_rad_s(5)), o) == "start-up"
+    assert regime_of(float(rpm_to_rad_s(12)), o) == "steady"
+    assert regime_of(float(rpm_to_rad_s(14.5)), o) == "quick-pass"
+    assert regime_of(float(rpm_to_rad_s(22)), o) == "overspeed"

@@ -1,0 +1,64 @@
+"""Margin rules: separations, forbidden bands and the exact edge of the margin."""
+
+import numpy as np
+import pytest
+
+from wtvib.rules import PRESETS, MarginRule, worst
+
+
+def band(m: float = 0.10) -> MarginRule:
+    return MarginRule("band", m, "test")
+
+
+def ratio(m: float = 0.05) -> MarginRule:
+    return MarginRule("ratio", m, "test")
+
+
+def test_band_separation_is_relative_to_the_excitation():
+    # |1.1 - 1.0| / 1.0 = 0.1 (hand computation)
+    assert band().separation(1.0, 1.1) == pytest.approx(0.1)
+
+
+def test_ratio_separation_is_the_frequency_ratio_offset():
+    # 0.95 / 1.0 - 1 = -0.05 -> 0.05
+    assert ratio().separation(0.95, 1.0) == pytest.approx(0.05)
+
+
+@pytest.mark.parametrize(
+    ("rule", "f_exc", "f_n", "violates"),
+    [
+        (band(0.10), 1.0, 1.1, False),  # exactly 10 % above: "at least 10 %" passes
+        (band(0.10), 1.0, 0.9, False),  # exactly 10 % below
+        (band(0.10), 1.0, 1.0999, True),  # just inside
+        (ratio(0.05), 0.95, 1.0, False),  # f_exc/f_n = 0.95 exactly passes
+        (ratio(0.05), 1.05, 1.0, False),  # = 1.05 exactly passes
+        (ratio(0.05), 0.9501, 1.0, True),
+    ],
+)
+def test_edge_of_the_margin_passes(rule, f_exc, f_n, violates):
+    assert bool(rule.violates(rule.separation(f_exc, f_n))) is violates
+
+
+def test_forbidden_band_edges_are_exactly_at_the_margin():
+    for rule in (band(0.1), ratio(0.05), band(0.2)):
+        lo, hi = rule.forbidden_band(2.0)
+        sep = rule.separation(np.array([lo, hi]), 2.0)
+        assert sep == pytest.approx([rule.margin, rule.margin])
+
+
+def test_natural_band_is_the_inverse_view_of_the_forbidden_band():
+    for rule in (band(0.1), ratio(0.05)):
+        lo, hi = rule.natural_band(1.0)
+        assert rule.separation(1.0, np.array([lo, hi])) == pytest.approx([rule.margin] * 2)
+
+
+def test_presets_name_their_source():
+    assert PRESETS["hau"].margin == 0.10 and PRESETS["hau"].rule == "band"
+    assert PRESETS["gl2010"].margin == 0.05 and PRESETS["gl2010"].rule == "ratio"
+    assert "not verified" in PRESETS["gl2010"].source
+
+
+def test_worst_orders_statuses():
+    assert worst(["pass", "info", "warn"]) == "warn"
+    assert worst(["info", "fail", "pass"]) == "fail"
+    assert worst([]) == "pass"

@@ -1,0 +1,174 @@
+"""Spec errors: one readable line naming the field and the YAML line, exit code 2."""
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import spec_text
+from wtvib import spec
+from wtvib.cli import app
+from wtvib.errors import SpecError
+
+runner = CliRunner()
+
+GOOD = spec_text(speed="min_rpm: 10\nmax_rpm: 20", modes="fa1: 0.5")
+
+
+def error_of(write_spec, text: str) -> SpecError:
+    with pytest.raises(SpecError) as info:
+        spec.load(write_spec(text))
+    return info.value
+
+
+CASES = [
+    # (edit of GOOD, field path, line, words in the message); a missing field or a
+    # cross-field error points at the line of the enclosing mapping
+    (lambda t: t.replace("  blades: 3\n", ""), "rotor.blades", 3, "required field is missing"),
+    (lambda t: t.replace("blades: 3", "blades: three"), "rotor.blades", 4, "valid integer"),
+    (lambda t: t.replace("fa1: 0.5", "fa1: -0.5"), "tower.modes.fa1", 12, "greater than 0"),
+    (lambda t: t.replace("min_rpm: 10", "min_rpm: 25"), "rotor.speed", 7, "exceeds max_rpm"),
+    (
+        lambda t: t.replace("fa1: 0.5", "fa1: 0.5\n    fa1: 0.6"),
+        "tower.modes.fa1",
+        13,
+        "duplicate key 'fa1' (first given on line 12)",
+    ),
+    (
+        lambda t: t.replace("hub: rigid", "hub: rigid\n  hubtype: x"),
+        "rotor.hubtype",
+        7,
+        "unknown field",
+    ),
+    (lambda t: t.replace("fa1: 0.5", "fb1: 0.5"), "tower.modes.fb1", 12, "not a known mode"),
+    (lambda t: t.replace("fa1: 0.5", "fa1: .nan"), "tower.modes.fa1", 12, "finite number"),
+    (
+        lambda t: t.replace("orientation: upwind", "orientation: sideways"),
+        "rotor.orientation",
+        5,
+        "'upwind', 'downwind' or 'vertical-axis'",
+    ),
+    (
+        lambda t: t.replace("fa1: 0.5", "fa1: {value: 0.5, provenance: guessed}"),
+        "tower.modes.fa1.provenance",
+        12,
+        "'published', 'derived' or 'representative'",
+    ),
+    (
+        lambda t: t.replace("fa1: 0.5", "fa1: {value: 0.5, provenance: published, source: x}"),
+        "tower.modes.fa1.source",
+        12,
+        "not a key of the top-level 'sources'",
+    ),
+    (
+        lambda t: t.replace("fa1: 0.5", "fa1: !!python/object:os.system ls"),
+        "tower.modes.fa1",
+        12,
+        "not allowed",
+    ),
+]
+
+
+@pytest.mark.parametrize(("edit", "path", "line", "words"), CASES)
+def test_spec_error_names_field_and_line(write_spec, edit, path, line, words):
+    err = error_of(write_spec, edit(GOOD))
+    assert err.path == path
+    assert err.line == line
+    assert words in err.message
+
+
+def test_the_good_spec_loads(write_spec):
+    s = spec.load(write_spec(GOOD))
+    assert s.rotor.speed.steady_rpm == [(10.0, 20.0)]
+
+
+@pytest.mark.parametrize(
+    ("content", "words"),
+    [
+        (b"", "the file is empty"),
+        (b"# only a comment\n", "the file is empty"),
+        (b"rotor: [1, 2\n", "not valid YAML"),
+        (b"\x89PNG\r\n\x1a\n\x00\x00binary", "binary file"),
+        (b"wtvib: 1\nturbine: {name: \xff\xfe}\n", "not UTF-8"),
+        (b"- just\n- a list\n", "expected a mapping"),
+        (b"turbine: {name: x}\n", "not a wtvib spec"),
+        (b"wtvib: 7\n", "unsupported spec format version 7"),
+    ],
+)
+def test_files_that_are_not_specs(tmp_path, content, words):
+    path = tmp_path / "bad.yaml"
+    path.write_bytes(content)
+    with pytest.raises(SpecError, match=words):
+        spec.load(path)
+
+
+def test_missing_file(tmp_path):
+    with pytest.raises(SpecError, match="no such file"):
+        spec.load(tmp_path / "nope.yaml")
+
+
+def test_oversized_file_is_refused_before_parsing(tmp_path):
+    path = tmp_path / "big.yaml"
+    path.write_text("a: 1\n" * 100)
+    with pytest.raises(SpecError, match="over the 100-byte limit"):
+        spec.load(path, max_bytes=100)
+
+
+def test_alias_bomb_is_refused(tmp_path, monkeypatch):
+    from wtvib import yamlio
+
+    monkeypatch.setattr(yamlio, "MAX_NODES", 10_000)
+    lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]
+    for i in range(1, 8):
+        lines.append(f"a{i}: &a{i} [" + ", ".join([f"*a{i - 1}"] * 10) + "]")
+    path = tmp_path / "bomb.yaml"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(SpecError, match="alias bomb"):
+        spec.load(path)
+
+
+@pytest.mark.parametrize(("edit", "path", "line", "words"), CASES[:6])
+def test_cli_gives_one_line_and_exit_2(write_spec, edit, path, line, words):
+    file = write_spec(edit(GOOD))
+    result = runner.invoke(app, ["check", str(file), "--no-plot"])
+    assert result.exit_code == 2
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in result.output
+    assert lines[0].startswith(f"error: {file}:{line}: {path}: ")
+    assert words in lines[0]
+
+
+def test_main_prints_one_line_without_traceback(write_spec, capsys):
+    from wtvib.cli import main
+
+    file = write_spec(GOOD.replace("fa1: 0.5", "fa1: -0.5"))
+    import sys
+
+    argv = sys.argv
+    sys.argv = ["wtvib", "check", str(file), "--no-plot"]
+    try:
+        with pytest.raises(SystemExit) as exit_info:
+            main()
+    finally:
+        sys.argv = argv
+    err = capsys.readouterr().err
+    assert exit_info.value.code == 2
+    assert err.count("\n") == 1 and "Traceback" not in err
+    assert f"{file}:12: tower.modes.fa1: Input should be greater than 0" in err
+
+
+def test_provenance_is_kept(write_spec):
+    text = (
+        GOOD.replace(
+            "fa1: 0.5", "fa1: {value: 0.5, provenance: derived, source: h, note: from a statement}"
+        )
+        + "sources: {h: Hau}\n"
+    )
+    s = spec.load(write_spec(text))
+    q = s.provenance["tower.modes.fa1"]
+    assert (q.value, q.provenance, q.source, q.note) == (0.5, "derived", "h", "from a statement")
+    assert s.tower.modes["fa1"] == 0.5
+
+
+def test_json_schema_accepts_quantities():
+    schema = spec.json_schema()
+    assert "Quantity" in schema["$defs"]
+    assert schema["title"].startswith("wtvib turbine spec")

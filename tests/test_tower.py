@@ -1,0 +1,83 @@
+"""Tower classification on hand-checked cases (Hau ch. 7.5.1)."""
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from wtvib import audit, spec
+
+
+def classify(write_spec, f, blades=2, speed="fixed_rpm: 30", margin=None):
+    extra = f"audit: {{margin: {margin}}}\n" if margin else ""
+    path = write_spec(blades=blades, speed=speed, modes=f"fa1: {f}", extra=extra)
+    return audit.run(spec.load(path))
+
+
+# Two blades at 30 rpm: 1P = 0.5 Hz, 2P = 1.0 Hz; overspeed 34.5 rpm: 2P = 1.15 Hz.
+@pytest.mark.parametrize(
+    ("f", "cls"),
+    [
+        (1.3, "stiff"),  # above 2P, also at overspeed (1.15 Hz)
+        (0.75, "soft"),  # between 1P and 2P
+        (0.3, "soft-soft"),  # below 1P
+        (1.0, "resonant"),  # on 2P
+        (0.52, "resonant"),  # 4 % from 1P
+        (0.55, "soft"),  # exactly 10 % above 1P: the edge passes
+        (0.45, "soft-soft"),  # exactly 10 % below 1P
+    ],
+)
+def test_two_bladed_classes(write_spec, f, cls):
+    assert classify(write_spec, f).tower_class == cls
+
+
+def test_class_statuses(write_spec):
+    statuses = {
+        c: next(ch for ch in classify(write_spec, f).checks if ch.id == "tower.class").status
+        for f, c in [(1.3, "stiff"), (0.75, "soft"), (0.3, "soft-soft"), (1.0, "resonant")]
+    }
+    assert statuses == {"stiff": "pass", "soft": "pass", "soft-soft": "warn", "resonant": "fail"}
+
+
+def test_soft_tower_notes_the_start_up_encounter(write_spec):
+    check = next(c for c in classify(write_spec, 0.75).checks if c.id == "tower.class")
+    assert check.numbers["startup_crossings"] == ["2P"]
+    assert "start-up" in check.message
+
+
+def test_soft_soft_tower_is_crossed_by_1p_and_2p(write_spec):
+    check = next(c for c in classify(write_spec, 0.3).checks if c.id == "tower.class")
+    assert check.numbers["startup_crossings"] == ["1P", "2P"]
+
+
+def test_three_bladed_soft_tower_on_2p_at_fixed_speed_is_resonant(write_spec):
+    # three blades at 20 rpm: 2P = 0.667 Hz (Hau 7.5.2, the WKA-60 case)
+    r = classify(write_spec, 0.667, blades=3, speed="fixed_rpm: 20")
+    assert r.tower_class == "resonant"
+    assert next(c for c in r.checks if c.id == "tower.resonance.2P").status == "fail"
+
+
+def test_margin_setting_changes_the_class(write_spec):
+    # 0.56 Hz is 12 % above 1P (0.5 Hz): soft with 10 %, resonant with 15 %
+    assert classify(write_spec, 0.56).tower_class == "soft"
+    assert classify(write_spec, 0.56, margin=0.15).tower_class == "resonant"
+
+
+ORDER = {"soft-soft": 0, "soft": 1, "stiff": 2}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(0.05, 3.0), st.floats(1.01, 3.0))
+def test_stiffer_tower_never_classifies_softer(tmp_path_factory, f, factor):
+    """A stiffer tower (higher frequency) never lands in a softer class."""
+    folder = tmp_path_factory.mktemp("mono")
+
+    def cls(freq: float) -> str | None:
+        path = folder / "t.yaml"
+        from conftest import spec_text
+
+        path.write_text(spec_text(blades=2, speed="fixed_rpm: 30", modes=f"fa1: {freq}"))
+        return audit.run(spec.load(path)).tower_class
+
+    a, b = cls(f), cls(f * factor)
+    if "resonant" not in (a, b):
+        assert ORDER[b] >= ORDER[a]  # type: ignore[index]
