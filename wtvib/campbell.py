@@ -143,7 +143,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         color=STATUS_COLOUR[report.verdict],
         fontweight="bold",
     )
-    _legend(ax, rule.label)
+    _legend(ax, rule.label, {e.energy for e in excitations.values()})
     return fig
 
 
@@ -179,7 +179,7 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None: 
     )
 
 
-def _legend(ax, rule_label: str) -> None:  # type: ignore[no-untyped-def]
+def _legend(ax, rule_label: str, energies: set[str]) -> None:  # type: ignore[no-untyped-def]
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -189,7 +189,11 @@ def _legend(ax, rule_label: str) -> None:  # type: ignore[no-untyped-def]
         (Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"), "overspeed (transient)"),
         (Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
         (Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),
-        (Line2D([], [], color="#424242", lw=1.2, ls="--"), "secondary (kP, 1<k<N_b)"),
+        *(
+            [(Line2D([], [], color="#424242", lw=1.2, ls="--"), "secondary (kP, 1<k<N_b)")]
+            if "secondary" in energies
+            else []
+        ),
         (Line2D([], [], color="#9e9e9e", lw=0.8, ls=":"), "minor harmonic"),
         (
             Line2D([], [], marker="D", ls="", color="#9e9e9e", mec="black"),
