@@ -129,3 +129,15 @@ def test_help_is_fast_to_import():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize(
+    ("content", "words"),
+    [(b"", "the file is empty"), (b"rotor: [1, 2\n", "not valid YAML"), (b"\x00\x01", "binary")],
+)
+def test_unusable_files_are_one_line_and_exit_2(tmp_path, content, words):
+    path = tmp_path / "bad.yaml"
+    path.write_bytes(content)
+    result = run("check", str(path))
+    assert result.exit_code == 2
+    assert result.stderr.count("\n") == 1 and words in result.stderr

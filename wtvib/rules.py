@@ -58,7 +58,7 @@ PRESETS: dict[str, Preset] = {
         0.10,
         "Hau, Wind Turbines, ch. 7.5.1: safety distance of at least 10 % from the "
         "dominant excitation frequency (guide value from experience); 2P on three-bladed "
-        "rotors fails too (ch. 7.5.2, WKA-60)",
+        "rotors fails at rated speed too (ch. 7.5.2, WKA-60)",
     ),
     "gl2010": Preset(
         "gl2010",
