@@ -20,8 +20,8 @@ demo: $(STAMP)
 	@echo "Campbell diagram written to demo/"
 
 lint: $(STAMP)
-	$(BIN)/ruff check wtvib tests
-	$(BIN)/ruff format --check wtvib tests
+	$(BIN)/ruff check wtvib tests bench
+	$(BIN)/ruff format --check wtvib tests bench
 	$(BIN)/mypy
 
 test: lint

@@ -35,6 +35,12 @@ class RuleKind(StrEnum):
     ratio = "ratio"
 
 
+class SortBy(StrEnum):
+    file = "file"
+    verdict = "verdict"
+    name = "name"
+
+
 class PresetName(StrEnum):
     hau = "hau"
     gl2010 = "gl2010"
@@ -124,6 +130,147 @@ def check(
         terminal(report, Console(), written=written, show_all=show_all)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")
     raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
+
+
+@app.command()
+@_user_errors
+def report(
+    spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
+    output: Annotated[Path, typer.Option("--output", "-o", help="PDF file to write.")],
+    force: Annotated[
+        bool, typer.Option(help="Replace an existing file not written by wtvib.")
+    ] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Write the PDF audit report of one turbine."""
+    from . import batch, pdfreport
+    from .outputs import write_atomic
+
+    item = batch.audit_one(str(spec_file), spec_file.stem, plots=True)
+    if item.report is None:
+        from .errors import SpecError
+
+        raise SpecError(str(item.error))
+    write_atomic(output, pdfreport.build([(item.report, item.pngs)]), force=force)
+    typer.echo(f"wrote {output} (verdict {item.report['verdict']})")
+    raise typer.Exit(EXIT_FAIL if item.report["verdict"] == "fail" else EXIT_PASS)
+
+
+@app.command("batch")
+@_user_errors
+def batch_command(
+    inputs: Annotated[list[Path], typer.Argument(help="Spec files or folders (searched).")],
+    out: Annotated[
+        Path | None, typer.Option("--out", "-o", help="Folder for JSON, PNG, CSV and PDF.")
+    ] = None,
+    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    jobs: Annotated[
+        int | None, typer.Option("--jobs", "-j", min=1, help="Processes (default: all cores).")
+    ] = None,
+    plots: Annotated[
+        bool, typer.Option("--plots/--no-plots", help="Campbell PNGs and the PDF report.")
+    ] = True,
+    sort: Annotated[SortBy, typer.Option(help="Order of the summary table.")] = SortBy.file,
+    strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
+    force: Annotated[
+        bool, typer.Option(help="Replace existing output files not written by wtvib.")
+    ] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Audit a catalogue: every spec found, in parallel, with a summary and reports."""
+    from rich.console import Console
+
+    from . import batch
+    from .report import batch_progress, batch_summary
+
+    paths = batch.discover(inputs)
+    if not paths:
+        from .errors import SpecError
+
+        raise SpecError(f"no spec files ({', '.join(batch.SPEC_SUFFIXES)}) found in the inputs")
+    err = Console(stderr=True)
+    writer = _BatchWriter(out, force) if out is not None else None
+    done: list[batch.Item] = []
+    with batch_progress(err, len(paths)) as advance:
+
+        def on_done(item: batch.Item) -> None:
+            if writer is not None:
+                writer.item(item)
+            done.append(item)
+            advance(item)
+
+        try:
+            items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done)
+        except KeyboardInterrupt:
+            err.print(
+                f"interrupted: {len(done)} of {len(paths)} inputs completed; "
+                f"their files are complete, nothing is half-written"
+            )
+            raise typer.Exit(130) from None
+    if writer is not None:
+        writer.finish(items, plots)
+    if format is Format.json:
+        sys.stdout.write(batch.results_json(items))
+    else:
+        batch_summary(
+            Console(), batch.sort_items(items, sort.value), writer.written if writer else []
+        )
+    raise typer.Exit(batch.exit_code(items, strict))
+
+
+class _BatchWriter:
+    """Writes a batch's files atomically as results arrive, then the summaries."""
+
+    def __init__(self, folder: Path, force: bool) -> None:
+        self.folder = folder
+        self.force = force
+        self.written: list[Path] = []
+        self.timings: dict[str, dict[str, float]] = {}
+
+    def _write(self, name: str, data: bytes) -> None:
+        import time
+
+        from .outputs import write_atomic
+
+        t0 = time.perf_counter()
+        self.written.append(write_atomic(self.folder / name, data, force=self.force))
+        key = name.split(".")[0]
+        self.timings.setdefault(key, {}).setdefault("write", 0.0)
+        self.timings[key]["write"] += time.perf_counter() - t0
+
+    def item(self, item: "batch.Item") -> None:  # type: ignore[name-defined]  # noqa: F821
+        if item.report is not None:
+            text = json.dumps(item.report, indent=2, ensure_ascii=False) + "\n"
+            self._write(f"{item.key}.json", text.encode())
+        for suffix, png in item.pngs.items():
+            self._write(f"{item.key}.{suffix}.png", png)
+        self.timings.setdefault(item.key, {}).update(item.timings)
+
+    def finish(self, items: list, plots: bool) -> None:  # type: ignore[type-arg]
+        import platform
+
+        from . import __version__, batch, pdfreport
+
+        summary = json.dumps(batch.summary(items), indent=2, ensure_ascii=False) + "\n"
+        self._write("summary.json", summary.encode())
+        self._write("summary.csv", batch.summary_csv(items).encode())
+        if plots:
+            import time
+
+            entries = [(it.report, it.pngs) for it in items if it.report is not None]
+            errors = [(it.path, str(it.error)) for it in items if it.report is None]
+            t0 = time.perf_counter()
+            pdf = pdfreport.build(entries, errors=errors)
+            self.timings["audit"] = {"build": time.perf_counter() - t0}
+            self._write("audit.pdf", pdf)
+        meta = {
+            "schema": "wtvib-run/1",
+            "wtvib": __version__,
+            "python": platform.python_version(),
+            "machine": platform.machine(),
+            "timings_s": self.timings,
+        }
+        self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
 
 
 def _settings(base, margin, rule, preset):  # type: ignore[no-untyped-def]

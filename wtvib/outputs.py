@@ -2,10 +2,11 @@
 
 A file is written to a temporary name in the target folder and renamed over the target, so
 an interrupted run never leaves a half-written file. An existing file is replaced only if
-wtvib wrote it (a PNG whose ``Software`` text chunk names wtvib, a JSON report with a
-``wtvib-`` schema) or the caller passes ``force``.
+wtvib wrote it (a PNG whose ``Software`` text chunk names wtvib, a PDF whose creator is wtvib, a
+JSON document with a ``wtvib-`` schema, the summary CSV) or the caller passes ``force``.
 """
 
+import mmap
 import os
 import struct
 import tempfile
@@ -14,6 +15,8 @@ from pathlib import Path
 from .errors import OutputError
 
 SOFTWARE_TAG = "wtvib"
+#: First line of the batch summary CSV (recognised as a wtvib output).
+CSV_HEADER = b"file,turbine,tower_class,verdict,worst_check,margin,message"
 
 
 def is_ours(path: Path) -> bool:
@@ -21,11 +24,14 @@ def is_ours(path: Path) -> bool:
     try:
         with path.open("rb") as fh:
             head = fh.read(65536)
-    except OSError:
+            if head.startswith(b"%PDF"):  # the document info dictionary can be anywhere
+                with mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ) as whole:
+                    return whole.find(b"/Creator (wtvib") >= 0
+    except (OSError, ValueError):
         return False
     if head.startswith(b"\x89PNG\r\n\x1a\n"):
         return _png_software(head).startswith(SOFTWARE_TAG)
-    return head.lstrip().startswith(b'{\n  "schema": "wtvib-')
+    return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER))
 
 
 def _png_software(data: bytes) -> str:

@@ -4,8 +4,10 @@ Rendering never decides: everything shown here is read from :class:`~wtvib.audit
 """
 
 import json
-from collections.abc import Sequence
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from rich.console import Console, Group
 from rich.panel import Panel
@@ -105,3 +107,55 @@ def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-a
             Text(c["status"].upper(), style=STYLE[c["status"]]), c["id"], margin, daf, c["message"]
         )
     return Group(table)
+
+
+@contextmanager
+def batch_progress(console: Console, total: int) -> Iterator[Callable[[Any], None]]:
+    """A progress bar on ``console``; yields ``advance(item)``."""
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    with Progress(
+        TextColumn("auditing"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TextColumn("{task.description}"),
+        console=console,
+        transient=True,
+    ) as progress:
+        task = progress.add_task("", total=total)
+
+        def advance(item: Any) -> None:
+            progress.update(task, advance=1, description=Path(item.path).name)
+
+        yield advance
+
+
+def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path]) -> None:
+    """The batch summary table: verdict, turbine, tower class, worst check, margin."""
+    table = Table(title="Batch summary", title_justify="left")
+    table.add_column("verdict", no_wrap=True)
+    table.add_column("turbine")
+    table.add_column("tower class", no_wrap=True)
+    table.add_column("worst check", overflow="fold")
+    table.add_column("margin", justify="right", no_wrap=True)
+    counts: dict[str, int] = {}
+    errors = []
+    for it in items:
+        row = it.row()
+        counts[row["verdict"]] = counts.get(row["verdict"], 0) + 1
+        verdict = Text(row["verdict"].upper(), style=STYLE.get(row["verdict"], "magenta"))
+        if row["verdict"] == "input-error":
+            errors.append(row)
+            table.add_row(verdict, Path(row["file"]).name, "—", "input error (below)", "")
+            continue
+        margin = "" if row["margin"] is None else f"{row['margin']:.1%}"
+        table.add_row(
+            verdict, row["turbine"], row["tower_class"] or "—", row["worst_check"] or "—", margin
+        )
+    console.print(table)
+    for row in errors:
+        console.print(Text(f"input error: {row['message']}", style="magenta"))
+    console.print(", ".join(f"{n} {k}" for k, n in sorted(counts.items())))
+    if written:
+        folder = {p.parent for p in written}
+        console.print(f"[dim]wrote {len(written)} files to {', '.join(map(str, folder))}[/dim]")

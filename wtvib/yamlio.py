@@ -66,6 +66,8 @@ def parse(text: str, source: str | None = None) -> Document:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else None
         problem = exc.problem or exc.context or "invalid YAML"
+        if exc.context and exc.context_mark and exc.problem:
+            problem += f" ({exc.context} on line {exc.context_mark.line + 1})"
         raise SpecError(f"not valid YAML: {problem}", line=line, source=source) from None
     except yaml.YAMLError as exc:
         raise SpecError(f"not valid YAML: {exc}", source=source) from None

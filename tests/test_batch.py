@@ -1,0 +1,121 @@
+"""Batch audits: a catalogue folder with a corrupt file and a failing turbine."""
+
+import json
+import shutil
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import TURBINES, spec_text
+from wtvib import batch
+from wtvib.cli import app
+
+runner = CliRunner()
+
+
+@pytest.fixture
+def folder(tmp_path):
+    """Three good specs (pass, warn, fail), one corrupt file, one non-spec YAML."""
+    d = tmp_path / "cat"
+    d.mkdir()
+    for name in ("mod-2", "wts-4", "wka-60"):
+        shutil.copy(TURBINES / f"{name}.yaml", d)
+    (d / "corrupt.yaml").write_bytes(b"wtvib: 1\nturbine: {name: [unclosed\n")
+    (d / "sub").mkdir()
+    (d / "sub" / "other.yml").write_text(
+        spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    )
+    return d
+
+
+def test_discover_finds_specs_recursively_in_a_stable_order(folder):
+    names = [p.name for p in batch.discover([folder])]
+    assert names == ["corrupt.yaml", "mod-2.yaml", "other.yml", "wka-60.yaml", "wts-4.yaml"]
+
+
+def test_output_keys_are_unique():
+    from pathlib import Path
+
+    keys = batch.output_keys([Path("a/x.yaml"), Path("b/x.yaml"), Path("b/y.yaml")])
+    assert keys == ["a__x", "b__x", "y"]
+
+
+def test_one_bad_file_never_stops_the_run(folder):
+    items = batch.run(batch.discover([folder]), jobs=2, plots=False)
+    outcomes = {i.key: i.outcome for i in items}
+    assert outcomes == {
+        "corrupt": "input-error",
+        "mod-2": "pass",
+        "other": "pass",
+        "wka-60": "fail",
+        "wts-4": "warn",
+    }
+    bad = items[0]
+    assert "corrupt.yaml:3: not valid YAML" in str(bad.error)
+    assert "while parsing a flow sequence on line 2" in str(bad.error)
+    assert batch.exit_code(items) == 2
+    assert batch.exit_code([i for i in items if i.outcome != "input-error"]) == 1
+
+
+def test_parallel_and_serial_runs_agree(folder):
+    paths = batch.discover([folder])
+    serial = [i.report for i in batch.run(paths, jobs=1, plots=False)]
+    parallel = [i.report for i in batch.run(paths, jobs=2, plots=False)]
+    assert serial == parallel
+
+
+def test_cli_batch_writes_every_output_and_exits_with_the_worst(folder, tmp_path):
+    out = tmp_path / "audit"
+    result = runner.invoke(app, ["batch", str(folder), "--out", str(out), "-j", "2"])
+    assert result.exit_code == 2
+    assert "input error" in result.stdout and "corrupt.yaml" in result.stdout
+    files = {p.name for p in out.iterdir()}
+    for key in ("mod-2", "wts-4", "wka-60", "other"):
+        assert f"{key}.json" in files and f"{key}.campbell.png" in files
+    assert {"summary.json", "summary.csv", "audit.pdf", "run-metadata.json"} <= files
+    assert not [f for f in files if f.endswith(".tmp")]
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["counts"] == {"pass": 2, "info": 0, "warn": 1, "fail": 1, "input-error": 1}
+    meta = json.loads((out / "run-metadata.json").read_text())
+    assert set(meta["timings_s"]["wka-60"]) == {"load", "solve", "plot", "write"}
+
+
+def test_batch_outputs_are_byte_identical_across_runs(folder, tmp_path):
+    a, b = tmp_path / "a", tmp_path / "b"
+    for out in (a, b):
+        runner.invoke(app, ["batch", str(folder), "--out", str(out), "--no-plots"])
+    for name in ("summary.json", "summary.csv", "wka-60.json", "mod-2.json"):
+        assert (a / name).read_bytes() == (b / name).read_bytes()
+
+
+def test_batch_json_is_one_document(folder):
+    result = runner.invoke(app, ["batch", str(folder), "--format", "json", "--no-plots"])
+    doc = json.loads(result.stdout)
+    assert doc["schema"] == "wtvib-batch/1"
+    assert [r["outcome"] for r in doc["results"]] == ["input-error", "pass", "pass", "fail", "warn"]
+
+
+def test_sort_by_verdict_puts_the_worst_first(folder):
+    items = batch.run(batch.discover([folder]), jobs=1, plots=False)
+    assert [i.outcome for i in batch.sort_items(items, "verdict")] == [
+        "input-error",
+        "fail",
+        "warn",
+        "pass",
+        "pass",
+    ]
+
+
+def test_rerun_into_the_same_folder_replaces_only_own_files(folder, tmp_path):
+    out = tmp_path / "audit"
+    assert runner.invoke(app, ["batch", str(folder), "-o", str(out), "--no-plots"]).exit_code == 2
+    assert runner.invoke(app, ["batch", str(folder), "-o", str(out), "--no-plots"]).exit_code == 2
+    (out / "summary.csv").write_text("my own notes\n")
+    result = runner.invoke(app, ["batch", str(folder), "-o", str(out), "--no-plots"])
+    assert "was not written by wtvib" in result.stderr
+    assert (out / "summary.csv").read_text() == "my own notes\n"
+
+
+def test_empty_folder_is_an_input_error(tmp_path):
+    result = runner.invoke(app, ["batch", str(tmp_path)])
+    assert result.exit_code == 2 and "no spec files" in result.stderr

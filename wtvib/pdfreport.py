@@ -1,0 +1,329 @@
+"""PDF audit reports (reportlab): a document to hand to a certification reviewer.
+
+Built from the report's JSON (``to_dict()``) and the Campbell PNGs (150 dpi), so a batch
+can assemble one document from the results of its worker processes. Tables are real text.
+The file is reproducible: reportlab's invariant mode drops creation dates and random ids.
+"""
+
+import io
+from collections.abc import Sequence
+from typing import Any
+
+from . import __version__
+
+STATUS_HEX = {
+    "pass": "#2e7d32",
+    "info": "#1565c0",
+    "warn": "#ef6c00",
+    "fail": "#c62828",
+    "input-error": "#6a1b9a",
+}
+SUBSYSTEM_NAMES = {
+    "tower": "Tower",
+    "blade": "Blades",
+    "drivetrain": "Drive train",
+    "yaw": "Yaw system",
+}
+DIAGRAM_FOR = {
+    "tower": "campbell",
+    "blade": "campbell",
+    "drivetrain": "campbell-drivetrain",
+    "yaw": "campbell-yaw",
+}
+
+
+class _Kit:
+    """reportlab pieces and the house style, imported lazily (reportlab is slow to import)."""
+
+    def __init__(self) -> None:
+        from reportlab import rl_config
+
+        rl_config.invariant = 1  # reproducible files: no dates, fixed document id
+        from reportlab.lib import colors
+        from reportlab.lib.pagesizes import A4
+        from reportlab.lib.styles import getSampleStyleSheet
+        from reportlab.lib.units import mm
+        from reportlab.platypus import (
+            Image,
+            KeepTogether,
+            PageBreak,
+            Paragraph,
+            SimpleDocTemplate,
+            Spacer,
+            Table,
+            TableStyle,
+        )
+
+        self.colors, self.A4, self.mm = colors, A4, mm
+        self.Image, self.KeepTogether, self.PageBreak = Image, KeepTogether, PageBreak
+        self.Paragraph, self.Spacer, self.Table, self.TableStyle = (
+            Paragraph,
+            Spacer,
+            Table,
+            TableStyle,
+        )
+        self.SimpleDocTemplate = SimpleDocTemplate
+        self.styles = getSampleStyleSheet()
+        for name in ("Heading1", "Heading2"):
+            self.styles[name].keepWithNext = 1
+        self.small = self.styles["BodyText"].clone("small", fontSize=8, leading=9.6)
+        self.width = A4[0] - 36 * mm
+
+    def p(self, text: Any, style: str | None = None) -> Any:
+        """A paragraph of plain text (escaped)."""
+        return self.raw(_esc(str(text)), style)
+
+    def raw(self, markup: str, style: str | None = None) -> Any:
+        """A paragraph of reportlab mini-markup."""
+        return self.Paragraph(markup, self.styles[style] if style else self.small)
+
+    def status(self, s: str) -> Any:
+        label = s.upper().replace("-", " ")
+        return self.raw(f'<font color="{STATUS_HEX[s]}"><b>{label}</b></font>')
+
+    def table(self, rows: list[list[Any]], widths: list[float]) -> Any:
+        t = self.Table(rows, colWidths=[w * self.width for w in widths], repeatRows=1)
+        t.setStyle(
+            self.TableStyle(
+                [
+                    ("BACKGROUND", (0, 0), (-1, 0), self.colors.HexColor("#eceff1")),
+                    ("GRID", (0, 0), (-1, -1), 0.25, self.colors.HexColor("#b0bec5")),
+                    ("VALIGN", (0, 0), (-1, -1), "TOP"),
+                ]
+            )
+        )
+        return t
+
+    def header(self, *names: str) -> list[Any]:
+        return [self.raw(f"<b>{_esc(n)}</b>") for n in names]
+
+
+def build(
+    entries: Sequence[tuple[dict[str, Any], dict[str, bytes]]],
+    *,
+    errors: Sequence[tuple[str, str]] = (),
+    title: str = "wtvib vibration audit",
+) -> bytes:
+    """PDF bytes for one or many audited turbines (and the inputs that failed to load).
+
+    Parameters
+    ----------
+    entries
+        (report dict, {diagram suffix: PNG bytes}) per turbine.
+    errors
+        (file, one-line message) per input that could not be audited.
+    """
+    k = _Kit()
+    story: list[Any] = [k.p(title, "Title")]
+    names = ", ".join(r["turbine"]["name"] for r, _ in entries) or "—"
+    story.append(k.p(f"Turbines: {names}", "BodyText"))
+    story.append(
+        k.p(
+            f"Produced by wtvib {__version__}. Natural frequencies are checked against "
+            "rotor and drive-train excitations after Hau, Wind Turbines, ch. 7; each "
+            "check names its rule and source, and every annotated input its "
+            "provenance.",
+            "BodyText",
+        )
+    )
+    story.append(k.Spacer(1, 4 * k.mm))
+    rows = [k.header("turbine", "file", "tower class", "verdict", "worst check", "margin")]
+    for r, _ in entries:
+        worst = _worst(r["checks"])
+        rows.append(
+            [
+                k.p(r["turbine"]["name"]),
+                k.p(r["turbine"]["source_file"]),
+                k.p(r["tower_class"] or "—"),
+                k.status(r["verdict"]),
+                k.p(worst["id"] if worst else "—"),
+                k.p(_pct(worst.get("margin")) if worst else ""),
+            ]
+        )
+    for file, message in errors:
+        rows.append([k.p("—"), k.p(file), k.p("—"), k.status("input-error"), k.p(message), k.p("")])
+    story.append(k.table(rows, [0.2, 0.28, 0.1, 0.1, 0.24, 0.08]))
+    for r, pngs in entries:
+        story += [k.PageBreak(), *_turbine(k, r, pngs)]
+
+    buf = io.BytesIO()
+    doc = k.SimpleDocTemplate(
+        buf,
+        pagesize=k.A4,
+        leftMargin=18 * k.mm,
+        rightMargin=18 * k.mm,
+        topMargin=16 * k.mm,
+        bottomMargin=16 * k.mm,
+        title=title,
+        author="wtvib",
+        creator=f"wtvib {__version__}",
+        subject="Vibration audit after Hau, Wind Turbines, ch. 7",
+    )
+    doc.build(story, onFirstPage=_footer, onLaterPages=_footer)
+    return buf.getvalue()
+
+
+def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
+    t, op, rule = r["turbine"], r["operation"], r["rule"]
+    out: list[Any] = [
+        k.KeepTogether(
+            [
+                k.p(t["name"], "Heading1"),
+                k.raw(
+                    f'Verdict: <font color="{STATUS_HEX[r["verdict"]]}"><b>'
+                    f"{r['verdict'].upper()}</b></font>",
+                    "Heading2",
+                ),
+            ]
+        )
+    ]
+    speeds = (
+        f"{op['steady_rpm'][0][0]:g}–{op['steady_rpm'][-1][1]:g} rpm, variable"
+        if op["variable_speed"]
+        else ", ".join(f"{a:g}" for a, _ in op["steady_rpm"]) + " rpm, fixed"
+    )
+    ident = [
+        ["source file", t["source_file"]],
+        ["rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub"],
+        [
+            "operation",
+            f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm; quick-pass bands "
+            f"{op['quick_pass_rpm'] or 'none'}",
+        ],
+        ["tower class", r["tower_class"] or "—"],
+        [
+            "margin rule",
+            f"{rule['kind']}, m = {rule['margin']:.0%} "
+            f"({rule['preset'] or 'custom'}): {rule['source']}",
+        ],
+    ]
+    ident += [
+        [key.replace("_", " "), t[key]]
+        for key in ("manufacturer", "year", "rated_power_kw", "rotor_diameter_m", "hub_height_m")
+        if key in t
+    ]
+    out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
+
+    out.append(k.p("Summary of checks", "Heading2"))
+    rows = [k.header("status", "check", "margin", "DAF", "finding")]
+    rows += [
+        [
+            k.status(c["status"]),
+            k.p(c["id"]),
+            k.p(_pct(c.get("margin"))),
+            k.p(_num(c.get("daf"))),
+            k.p(c["message"]),
+        ]
+        for c in r["checks"]
+    ]
+    out.append(k.table(rows, [0.08, 0.2, 0.08, 0.07, 0.57]))
+
+    drawn: set[str] = set()
+    for sub, title in SUBSYSTEM_NAMES.items():
+        modes = [m for m in r["modes"] if m["subsystem"] == sub]
+        if not modes:
+            continue
+        out.append(k.p(title, "Heading2"))
+        rows = [k.header("mode", "description", "f [Hz]", "ζ")]
+        rows += [
+            [
+                k.p(m["id"]),
+                k.p(m["description"]),
+                k.p(f"{m['frequency_hz']:.4g}"),
+                k.p(_num(m["damping_ratio"])),
+            ]
+            for m in modes
+        ]
+        out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
+        diagram = DIAGRAM_FOR[sub]
+        if diagram in pngs and diagram not in drawn:
+            drawn.add(diagram)
+            out += [
+                k.Spacer(1, 2 * k.mm),
+                k.Image(io.BytesIO(pngs[diagram]), width=k.width, height=k.width * 0.7),
+            ]
+        rows = [k.header("status", "check", "numbers", "rule and source")]
+        rows += [
+            [
+                k.status(c["status"]),
+                k.p(c["id"]),
+                k.p(_numbers(c)),
+                k.p(_rule_text(c["rule"], rule)),
+            ]
+            for c in r["checks"]
+            if c["subsystem"] == sub
+        ]
+        out += [k.Spacer(1, 2 * k.mm), k.table(rows, [0.08, 0.2, 0.36, 0.36])]
+
+    out.append(k.p("Inputs and their provenance", "Heading2"))
+    if r["inputs"]:
+        rows = [k.header("field", "value", "provenance", "source and note")]
+        rows += [
+            [
+                k.p(path),
+                k.p(f"{q['value']:g}"),
+                k.p(q["provenance"]),
+                k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
+            ]
+            for path, q in r["inputs"].items()
+        ]
+        out.append(k.table(rows, [0.26, 0.1, 0.12, 0.52]))
+    else:
+        out.append(
+            k.p("No provenance was recorded in the spec: all values are as given.", "BodyText")
+        )
+    out.append(k.p("Assumptions", "Heading2"))
+    out += [k.p(f"• {a}", "BodyText") for a in r["assumptions"]]
+    return out
+
+
+def _footer(canvas, doc) -> None:  # type: ignore[no-untyped-def]
+    canvas.saveState()
+    canvas.setFont("Helvetica", 7)
+    canvas.drawString(doc.leftMargin, 10, f"wtvib {__version__} — vibration audit")
+    canvas.drawRightString(doc.pagesize[0] - doc.rightMargin, 10, f"page {doc.page}")
+    canvas.restoreState()
+
+
+def _rule_text(check_rule: dict[str, str], margin_rule: dict[str, Any]) -> str:
+    """The check's rule; its source only where it is not the margin rule stated above."""
+    if check_rule["source"] == margin_rule["source"]:
+        return f"{check_rule['name']} (margin rule above)"
+    return f"{check_rule['name']} — {check_rule['source']}"
+
+
+def _worst(checks: list[dict[str, Any]]) -> dict[str, Any] | None:
+    from .batch import worst_check
+
+    return worst_check(checks)
+
+
+def _numbers(c: dict[str, Any]) -> str:
+    keys = (
+        "mode",
+        "frequency_hz",
+        "margin",
+        "required_margin",
+        "speed_rpm",
+        "excitation_hz",
+        "daf",
+        "regime",
+        "crossings_rpm",
+        "exclude_rpm",
+        "tower_class",
+        "startup_crossings",
+    )
+    return "; ".join(f"{k} = {c[k]}" for k in keys if c.get(k) not in (None, [], ""))
+
+
+def _pct(x: float | None) -> str:
+    return "" if x is None else f"{x:.1%}"
+
+
+def _num(x: float | None) -> str:
+    return "—" if x is None else f"{x:.3g}"
+
+
+def _esc(text: str) -> str:
+    """Escape plain text for reportlab's mini-markup."""
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
