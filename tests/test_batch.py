@@ -119,3 +119,23 @@ def test_rerun_into_the_same_folder_replaces_only_own_files(folder, tmp_path):
 def test_empty_folder_is_an_input_error(tmp_path):
     result = runner.invoke(app, ["batch", str(tmp_path)])
     assert result.exit_code == 2 and "no spec files" in result.stderr
+
+
+def test_interrupted_batch_says_what_was_completed(folder, tmp_path, monkeypatch):
+    real_run = batch.run
+
+    def interrupted(paths, **kw):
+        def stop_after_first(item):
+            kw_done(item)
+            raise KeyboardInterrupt
+
+        kw_done = kw["on_done"]
+        return real_run(paths, **{**kw, "jobs": 1, "on_done": stop_after_first})
+
+    monkeypatch.setattr(batch, "run", interrupted)
+    out = tmp_path / "audit"
+    result = runner.invoke(app, ["batch", str(folder), "--out", str(out), "--no-plots"])
+    assert result.exit_code == 130
+    assert "interrupted: 1 of 5 inputs completed" in result.stderr
+    assert not (out / "summary.json").exists()
+    assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
