@@ -138,4 +138,4 @@ def test_interrupted_batch_says_what_was_completed(folder, tmp_path, monkeypatch
     assert result.exit_code == 130
     assert "interrupted: 1 of 5 inputs completed" in result.stderr
     assert not (out / "summary.json").exists()
-    assert not [p for p in out.iterdir() if p.name.endswith(".tmp")]
+    assert list(out.glob(".*.tmp")) == []
