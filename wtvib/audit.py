@@ -8,7 +8,7 @@ from typing import Any
 from . import blade, drivetrain, tower, yaw
 from .excitation import excitations, operating_range
 from .resonance import Finding, assess_all, resonance_checks
-from .results import Check, Mode
+from .results import Check, Mode, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
 
@@ -154,7 +154,7 @@ def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
                 f"{name}: damping ratio {damping(spec):.3g} assumed for "
                 f"{', '.join(undamped)} (no value given)."
             )
-    stiffened = [m.id for m in modes if m.curve is not None]
+    stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:
         out.append(
             "Blade frequencies are standstill values raised by rotation with "
@@ -162,11 +162,46 @@ def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
             + ", ".join(stiffened)
             + "."
         )
-    if any(m.subsystem in ("tower", "blade", "drivetrain", "yaw") for m in modes):
-        out.append("Natural frequencies are taken as given in the spec (not computed).")
+    out += _model_statements(spec, modes)
+    out += spec.assumptions
     if spec.rotor.orientation == "vertical-axis":
         out.append(
             "Vertical-axis rotor: no stiff/soft tower classification; resonance "
             "checks against per-rev excitations only."
         )
+    return out
+
+
+def _model_statements(spec: Spec, modes: list[Mode]) -> list[str]:
+    """Say which frequencies were computed, how, and which were taken as given."""
+    out = []
+    t = spec.tower
+    if t.has_structure:
+        kind = "tapered tube sections" if t.sections is not None else "distributed properties"
+        head = spec.tower_head
+        head_text = (
+            f"tower head {head.mass_kg:,.0f} kg as a rigid body (CM {head.cm_downwind_m:+.2f} m "
+            f"downwind, {head.cm_above_top_m:+.2f} m above the top)"
+            if head
+            else "no tower head given (bare tower)"
+        )
+        base = (
+            "clamped base"
+            if t.foundation.kind == "clamped"
+            else f"base on springs (lateral {t.foundation.lateral_n_m or '—'} N/m, rocking "
+            f"{t.foundation.rocking_nm_rad or '—'} N·m/rad)"
+        )
+        out.append(
+            f"Tower modes computed: Euler–Bernoulli beam, {tower.DEFAULT_ELEMENTS} elements, from "
+            f"{kind}; {head_text}; foundation: {base}; gravity "
+            f"{'included' if t.gravity else 'not included'}."
+        )
+    if spec.blade.structure is not None:
+        out.append(
+            "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with centrifugal "
+            f"stiffening and in-plane softening at {blade.SPEED_SAMPLES} speeds, followed by MAC."
+        )
+    given = sorted({m.subsystem for m in modes if "(computed)" not in m.description})
+    if given:
+        out.append(f"Natural frequencies taken as given in the spec: {', '.join(given)}.")
     return out

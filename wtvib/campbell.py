@@ -55,7 +55,11 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
 
     top_mode = max((float(m.frequency_at(omega).max()) for m in modes), default=1.0)
     blade_pass = spec.rotor.blades * rpm_top / 60.0
-    f_top = max(top_mode * 1.18, blade_pass * 1.1)
+    top_line = max((f.excitation.order for f in findings), default=1.0) * rpm_top / 60.0
+    # Modes above every excitation line cannot resonate: the axis stops there.
+    f_top = max(min(top_mode * 1.18, top_line * 1.05), blade_pass * 1.1)
+    hidden = [m for m in modes if m.frequency_hz > f_top]
+    modes = [m for m in modes if m.frequency_hz <= f_top]
 
     fig = Figure(figsize=(10, 7), dpi=150, layout="constrained")
     ax = fig.add_subplot()
@@ -113,7 +117,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             )
 
     for f in findings:
-        if f.regime in ("steady", "quick-pass"):
+        if f.regime in ("steady", "quick-pass") and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:
             ax.plot(
                 float(rad_s_to_rpm(f.speed)),
                 f.excitation_hz,
@@ -143,6 +147,18 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         color=STATUS_COLOUR[report.verdict],
         fontweight="bold",
     )
+    if hidden:
+        names = ", ".join(f"{m.id} {m.frequency_hz:.3g} Hz" for m in hidden)
+        ax.text(
+            0.99,
+            0.99,
+            f"above every excitation line, not drawn: {names}",
+            transform=ax.transAxes,
+            ha="right",
+            va="top",
+            fontsize=8,
+            color="#616161",
+        )
     _legend(ax, rule.label, {e.energy for e in excitations.values()})
     return fig
 

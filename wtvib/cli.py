@@ -99,13 +99,21 @@ def check(
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
     show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
+    rpm: Annotated[
+        str | None,
+        typer.Option(help="Operating range MIN:MAX [rpm] (or one fixed speed) for imports."),
+    ] = None,
+    rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
-    """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG."""
-    from . import audit, spec
+    """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG.
+
+    SPEC_FILE may be a wtvib spec, a windIO turbine YAML or an OpenFAST ElastoDyn deck.
+    """
+    from . import audit, importers
     from .outputs import write_atomic
 
-    turbine = spec.load(spec_file)
+    turbine = importers.load(spec_file, rpm=_rpm_range(rpm), rated=rated)
     settings = _settings(turbine.audit, margin, rule, preset)
     report = audit.run(turbine, settings)
     written: list[Path] = []
@@ -271,6 +279,55 @@ class _BatchWriter:
             "timings_s": self.timings,
         }
         self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
+
+
+def _rpm_range(text: str | None) -> tuple[float, float] | None:
+    """``--rpm 6.9:12.1`` → (6.9, 12.1); ``--rpm 20`` → (20, 20)."""
+    if text is None:
+        return None
+    try:
+        parts = [float(x) for x in text.split(":")]
+    except ValueError:
+        raise typer.BadParameter(
+            f"--rpm takes MIN:MAX in rpm, e.g. 6.9:12.1 (got {text!r})"
+        ) from None
+    if len(parts) == 1:
+        parts *= 2
+    if len(parts) != 2 or not 0 < parts[0] <= parts[1]:
+        raise typer.BadParameter(f"--rpm takes MIN:MAX with 0 < MIN <= MAX (got {text!r})")
+    return parts[0], parts[1]
+
+
+@app.command()
+@_user_errors
+def convert(
+    source: Annotated[Path, typer.Argument(help="windIO YAML or ElastoDyn deck to convert.")],
+    output: Annotated[Path, typer.Option("--output", "-o", help="wtvib spec to write.")],
+    rpm: Annotated[
+        str | None, typer.Option(help="Operating range MIN:MAX [rpm] to put in the spec.")
+    ] = None,
+    rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
+    force: Annotated[bool, typer.Option(help="Replace an existing file.")] = False,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Write an imported turbine as an editable wtvib spec (validated before writing)."""
+    import yaml
+
+    from . import importers
+    from .outputs import write_atomic
+    from .spec import from_data
+
+    data = importers.to_data(source, rpm=_rpm_range(rpm), rated=rated)
+    from_data(data, source=str(source))  # refuse to write a spec that would not load
+    text = f"# wtvib spec converted from {source.name}\n" + yaml.safe_dump(
+        data, sort_keys=False, allow_unicode=True, width=100
+    )
+    if output.exists() and not force:
+        from .errors import OutputError
+
+        raise OutputError(f"{output} exists; use --force to replace it")
+    write_atomic(output, text.encode(), force=True)
+    typer.echo(f"wrote {output}")
 
 
 def _settings(base, margin, rule, preset):  # type: ignore[no-untyped-def]

@@ -42,6 +42,28 @@ class Southwell:
 
 
 @dataclass(frozen=True)
+class Sampled:
+    """A frequency-vs-speed curve computed at some rotor speeds, linear in between.
+
+    ``omega`` [rad/s] ascending, ``hz`` [Hz]; held constant beyond the sampled range.
+    """
+
+    omega: tuple[float, ...]
+    hz: tuple[float, ...]
+
+    def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        return np.interp(np.asarray(omega, dtype=float), self.omega, self.hz)
+
+
+@dataclass(frozen=True)
+class Shape:
+    """A mode shape: positions along a member [m] and the normalised deflection there."""
+
+    position_m: tuple[float, ...]
+    deflection: tuple[float, ...]
+
+
+@dataclass(frozen=True)
 class Mode:
     """A natural mode of one subsystem.
 
@@ -55,6 +77,7 @@ class Mode:
     frequency_hz: float
     damping_ratio: float | None = None
     curve: SpeedCurve | None = None
+    shape: Shape | None = field(default=None, compare=False)
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""

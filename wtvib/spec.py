@@ -14,6 +14,7 @@ Validation errors become one :class:`~wtvib.errors.SpecError` line naming the fi
 the YAML line. Past this module, code trusts the spec (STYLE.md habit 4).
 """
 
+import itertools
 from collections.abc import Mapping
 from pathlib import Path as FsPath
 from typing import Annotated, Any, Literal
@@ -205,6 +206,144 @@ class Rotor(_Strict):
     speed: RotorSpeed
 
 
+def _increasing(name: str, values: list[float]) -> None:
+    if len(values) < 2:
+        raise ValueError(f"{name} needs at least two stations")
+    if any(b <= a for a, b in itertools.pairwise(values)):
+        raise ValueError(f"{name} must increase strictly from station to station")
+
+
+def _same_length(model: BaseModel, reference: str) -> None:
+    n = len(getattr(model, reference))
+    for name, value in model:
+        if isinstance(value, list) and len(value) != n:
+            raise ValueError(f"{name} has {len(value)} values but {reference} has {n}")
+
+
+class Material(_Strict):
+    """An isotropic material (steel by default values in the catalogue)."""
+
+    youngs_modulus_pa: Positive = Field(description="Young's modulus E. [Pa]")
+    shear_modulus_pa: Positive | None = Field(
+        None, description="Shear modulus G; default E / (2·(1 + 0.3)). [Pa]"
+    )
+    density_kg_m3: Positive = Field(description="Density. [kg/m³]")
+    mass_factor: Positive = Field(
+        1.0, description="Outfitting factor on the shell mass (flanges, paint, bolts). [-]"
+    )
+
+    @property
+    def shear(self) -> float:
+        """G, given or from E with Poisson's ratio 0.3 (steel). [Pa]"""
+        return self.shear_modulus_pa or self.youngs_modulus_pa / 2.6
+
+
+class TubularSections(_Strict):
+    """A tapered tube: outer diameter and wall thickness at stations, linear in between."""
+
+    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
+    outer_diameter_m: list[Positive] = Field(description="Outer diameter. [m]")
+    wall_thickness_m: list[Positive] = Field(description="Wall thickness. [m]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "TubularSections":
+        _increasing("height_m", self.height_m)
+        _same_length(self, "height_m")
+        for i, (d, t) in enumerate(zip(self.outer_diameter_m, self.wall_thickness_m, strict=True)):
+            if 2 * t >= d:
+                raise ValueError(
+                    f"station {i}: wall thickness {t} m is not less than half the diameter {d} m"
+                )
+        return self
+
+
+class DistributedTower(_Strict):
+    """A tower as a table of distributed properties (as in ElastoDyn tower files)."""
+
+    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
+    mass_per_length_kg_m: list[Positive] = Field(description="Mass per length. [kg/m]")
+    ei_fa_nm2: list[Positive] = Field(description="Fore-aft bending stiffness. [N·m²]")
+    ei_ss_nm2: list[Positive] = Field(description="Side-side bending stiffness. [N·m²]")
+    gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
+    polar_inertia_kgm: list[Positive] | None = Field(
+        None, description="Polar mass moment of inertia per length. [kg·m]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "DistributedTower":
+        _increasing("height_m", self.height_m)
+        _same_length(self, "height_m")
+        if (self.gj_nm2 is None) != (self.polar_inertia_kgm is None):
+            raise ValueError("give gj_nm2 and polar_inertia_kgm together (torsion needs both)")
+        return self
+
+
+class PointMass(_Strict):
+    """A concentrated mass on the tower (flange, platform, transition piece)."""
+
+    height_m: float = Field(description="Height above the tower base. [m]")
+    mass_kg: Positive = Field(description="Mass. [kg]")
+
+
+class Foundation(_Strict):
+    """How the tower base is held: clamped, or on springs."""
+
+    kind: Literal["clamped", "springs"] = Field("clamped", description="Base condition.")
+    lateral_n_m: Positive | None = Field(None, description="Lateral spring. [N/m]")
+    rocking_nm_rad: Positive | None = Field(None, description="Rocking spring. [N·m/rad]")
+    torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
+
+    @model_validator(mode="after")
+    def _springs(self) -> "Foundation":
+        if self.kind == "springs" and self.lateral_n_m is None and self.rocking_nm_rad is None:
+            raise ValueError("a 'springs' foundation needs lateral_n_m and/or rocking_nm_rad")
+        return self
+
+
+class TowerHead(_Strict):
+    """The rotor–nacelle assembly as a rigid body on the tower top."""
+
+    mass_kg: Positive = Field(description="Total tower-head mass (rotor, hub, nacelle). [kg]")
+    cm_downwind_m: float = Field(0.0, description="CM downwind of the tower axis. [m]")
+    cm_above_top_m: float = Field(0.0, description="CM above the tower top. [m]")
+    inertia_pitch_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the lateral (nodding) axis through the CM. [kg·m²]"
+    )
+    inertia_roll_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the fore-aft (roll) axis through the CM. [kg·m²]"
+    )
+    inertia_yaw_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the vertical (yaw) axis through the CM. [kg·m²]"
+    )
+
+
+class BladeStructure(_Strict):
+    """A blade as a table of distributed properties along its span (cantilevered at the root)."""
+
+    hub_radius_m: float = Field(0.0, ge=0, description="Rotor axis to blade root. [m]")
+    span_m: list[float] = Field(description="Distance from the blade root. [m]")
+    mass_per_length_kg_m: list[Positive] = Field(description="Mass per length. [kg/m]")
+    ei_flap_nm2: list[Positive] = Field(description="Flapwise bending stiffness. [N·m²]")
+    ei_edge_nm2: list[Positive] = Field(description="Edgewise bending stiffness. [N·m²]")
+    twist_deg: list[float] | None = Field(
+        None, description="Structural twist of the principal axes to the rotor plane. [deg]"
+    )
+    gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
+    torsional_inertia_kgm: list[Positive] | None = Field(
+        None, description="Mass moment of inertia per length about the pitch axis. [kg·m]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "BladeStructure":
+        _increasing("span_m", self.span_m)
+        if self.span_m[0] != 0:
+            raise ValueError("span_m must start at 0 (the blade root)")
+        _same_length(self, "span_m")
+        if (self.gj_nm2 is None) != (self.torsional_inertia_kgm is None):
+            raise ValueError("give gj_nm2 and torsional_inertia_kgm together")
+        return self
+
+
 class Tower(_Strict):
     """The tower with its tower head (rotor–nacelle mass), by its natural frequencies."""
 
@@ -219,11 +358,33 @@ class Tower(_Strict):
     damping_ratio: Ratio = Field(
         0.01, description="Default modal damping ratio of the tower modes. [-]"
     )
+    sections: TubularSections | None = Field(None, description="Tapered tube geometry.")
+    material: Material | None = Field(None, description="Material of the tube sections.")
+    distributed: DistributedTower | None = Field(
+        None, description="Distributed properties (instead of sections)."
+    )
+    point_masses: list[PointMass] = Field(default_factory=list)
+    foundation: Foundation = Field(default_factory=Foundation)
+    gravity: bool = Field(
+        True, description="Include the softening of the tower by its own and the head's weight."
+    )
     modes: dict[TowerModeName, ModeEntry] = Field(
         default_factory=dict,
         description="Natural frequencies [Hz]: fa1, fa2 (fore-aft), ss1, ss2 (side-side), "
-        "tor1 (torsion).",
+        "tor1 (torsion). Ignored for modes the structural model computes.",
     )
+
+    @model_validator(mode="after")
+    def _one_structure(self) -> "Tower":
+        if self.sections is not None and self.distributed is not None:
+            raise ValueError("give either sections (with material) or distributed, not both")
+        if self.sections is not None and self.material is None:
+            raise ValueError("tube sections need a material")
+        return self
+
+    @property
+    def has_structure(self) -> bool:
+        return self.sections is not None or self.distributed is not None
 
 
 class Blade(_Strict):
@@ -236,7 +397,11 @@ class Blade(_Strict):
     )
     modes: dict[BladeModeName, ModeEntry] = Field(
         default_factory=dict,
-        description="Standstill natural frequencies [Hz]: flap1, flap2, edge1, edge2, tor1.",
+        description="Standstill natural frequencies [Hz]: flap1, flap2, edge1, edge2, tor1. "
+        "Ignored for modes the structural model computes.",
+    )
+    structure: BladeStructure | None = Field(
+        None, description="Distributed properties: frequencies computed, rotation included."
     )
 
 
@@ -357,11 +522,18 @@ class Spec(_Strict):
     )
     rotor: Rotor
     tower: Tower = Field(default_factory=Tower)
+    tower_head: TowerHead | None = Field(
+        None, description="Rotor–nacelle assembly on the tower top (for the tower model)."
+    )
     blade: Blade = Field(default_factory=Blade)
     drivetrain: Drivetrain = Field(default_factory=Drivetrain)
     yaw: Yaw = Field(default_factory=Yaw)
     audit: AuditSettings = Field(default_factory=AuditSettings)
     notes: str | None = Field(None, description="Anything else worth keeping with the spec.")
+    assumptions: list[str] = Field(
+        default_factory=list,
+        description="How the spec was made (e.g. by an importer): shown in the report.",
+    )
 
     _source_file: str | None = PrivateAttr(None)
     _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
@@ -416,6 +588,16 @@ def read_text(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> str:
     except UnicodeDecodeError as exc:
         line = raw[: exc.start].count(b"\n") + 1
         raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
+
+
+def load_document(path: str | FsPath, text: str) -> Document:
+    """Parse a file's text as a YAML document (safe, with line numbers)."""
+    return parse(text, source=str(path))
+
+
+def from_data(data: dict[str, Any], source: str | None = None) -> Spec:
+    """Validate a wtvib-format dictionary made by a program (an importer), not a file."""
+    return from_document(Document(data=data, lines={}, source=source))
 
 
 def from_document(doc: Document) -> Spec:

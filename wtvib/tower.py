@@ -9,21 +9,41 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Literal
 
+import numpy as np
+from numpy.typing import NDArray
+
+from . import beam, modal
+from . import spec as spec_mod
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
 from .resonance import Finding, assess
-from .results import Check, Mode, Rule
+from .results import Check, Mode, Rule, Shape
 from .rules import MarginRule, Status
 from .spec import Spec
 from .units import rad_s_to_hz, rad_s_to_rpm
 
 TowerClass = Literal["stiff", "soft", "soft-soft", "resonant"]
+Array = NDArray[np.float64]
 
 _KIND = {"fa": "fore-aft bending", "ss": "side-side bending", "tor": "torsion"}
 
 
 def modes(spec: Spec) -> list[Mode]:
-    """Tower modes given in the spec (ids ``tower.fa1``, ``tower.ss1``, ``tower.tor1`` …)."""
+    """Tower modes (ids ``tower.fa1``, ``tower.ss1``, ``tower.tor1`` …).
+
+    Computed from the structure where the spec gives one; the given frequencies of modes the
+    model does not compute (e.g. ``tor1`` without torsional data) are kept.
+    """
+    if spec.tower.has_structure:
+        computed = structural_modes(spec)
+        ids = {m.id for m in computed}
+        return sorted(
+            computed + [m for m in _given(spec) if m.id not in ids], key=lambda m: m.frequency_hz
+        )
+    return _given(spec)
+
+
+def _given(spec: Spec) -> list[Mode]:
 
     def describe(name: str) -> str:
         kind, k = name.rstrip("0123456789"), int(name.lstrip("afsort"))
@@ -129,3 +149,183 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
 def _between(f_t: float, blades: int, p1: float) -> str:
     k = int(f_t // p1)
     return f"between {k}P and {k + 1}P" if k >= 1 else "below 1P"
+
+
+# ---------------------------------------------------------------------------------------
+# The structural model: a beam on its foundation with the tower head as a rigid body.
+
+#: Elements of the default mesh: the first two bending frequencies of the NREL 5-MW tower
+#: change by less than 0.01 % from 40 to 160 elements (tests/validation).
+DEFAULT_ELEMENTS = 40
+
+G = 9.80665  # standard gravity [m/s²]
+
+
+@dataclass(frozen=True)
+class Beam:
+    """A tower discretised into elements: nodes and per-element properties (SI)."""
+
+    nodes: Array
+    mass: Array
+    ei_fa: Array
+    ei_ss: Array
+    gj: Array | None
+    polar: Array | None
+
+
+def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
+    """Mesh a tower given by tube sections or distributed properties.
+
+    Notes
+    -----
+    Tubes: A = π/4·(D² − d²), I = π/64·(D⁴ − d⁴), J = 2I with d = D − 2t, D and t linear
+    between stations; mass per length ρ·A·(outfitting factor), polar mass inertia ρ·J·factor.
+    """
+    extra = np.array([pm.height_m for pm in t.point_masses], dtype=float)
+    if t.sections is not None:
+        sec, mat = t.sections, t.material
+        assert mat is not None
+        stations = np.asarray(sec.height_m, dtype=float)
+        nodes = beam.mesh(np.union1d(stations, extra), elements)
+        d = beam.midpoint_values(nodes, stations, np.asarray(sec.outer_diameter_m))
+        w = beam.midpoint_values(nodes, stations, np.asarray(sec.wall_thickness_m))
+        inner = d - 2 * w
+        area = np.pi / 4 * (d**2 - inner**2)
+        second = np.pi / 64 * (d**4 - inner**4)
+        return Beam(
+            nodes,
+            mat.density_kg_m3 * area * mat.mass_factor,
+            mat.youngs_modulus_pa * second,
+            mat.youngs_modulus_pa * second,
+            mat.shear * 2 * second,
+            mat.density_kg_m3 * 2 * second * mat.mass_factor,
+        )
+    dist = t.distributed
+    assert dist is not None
+    stations = np.asarray(dist.height_m, dtype=float)
+    nodes = beam.mesh(np.union1d(stations, extra), elements)
+
+    def mid(values: list[float] | None) -> Array | None:
+        return None if values is None else beam.midpoint_values(nodes, stations, np.asarray(values))
+
+    return Beam(
+        nodes,
+        mid(dist.mass_per_length_kg_m),  # type: ignore[arg-type]
+        mid(dist.ei_fa_nm2),  # type: ignore[arg-type]
+        mid(dist.ei_ss_nm2),  # type: ignore[arg-type]
+        mid(dist.gj_nm2),
+        mid(dist.polar_inertia_kgm),
+    )
+
+
+def bending_modes(
+    b: Beam,
+    head: "spec_mod.TowerHead | None",
+    point_masses: Sequence["spec_mod.PointMass"],
+    foundation: "spec_mod.Foundation",
+    direction: Literal["fa", "ss"],
+    gravity: bool = True,
+    count: int = 2,
+) -> modal.Modes:
+    """Bending modes of the tower with its head, fore-aft or side-side.
+
+    Notes
+    -----
+    The head is a rigid body at the top node with dofs (u, θ = u'): mass matrix
+    [[M, M·z], [M·z, I + M·(z² + x²)]] with CM height z above the top and, fore-aft only,
+    downwind offset x (x does not move in side-side rolling); I is the head's inertia about
+    its CM (pitch for fore-aft, roll for side-side). Gravity: the tower is compressed by the
+    weight above each element (geometric stiffness) and the head weight adds −M·g·z to the
+    rotational stiffness at the top (P-δ). Base: clamped, or lateral and rocking springs.
+    """
+    ei = b.ei_fa if direction == "fa" else b.ei_ss
+    lengths = np.diff(b.nodes)
+    m_head = head.mass_kg if head else 0.0
+    axial = None
+    if gravity:
+        above = np.cumsum((b.mass * lengths)[::-1])[::-1] - 0.5 * b.mass * lengths
+        mids = 0.5 * (b.nodes[1:] + b.nodes[:-1])
+        pm_above = np.array([sum(p.mass_kg for p in point_masses if p.height_m > z) for z in mids])
+        axial = -G * (above + pm_above + m_head)
+    k, m = beam.assemble_bending(b.nodes, ei, b.mass, axial)
+    for p in point_masses:
+        i = 2 * int(np.argmin(np.abs(b.nodes - p.height_m)))
+        m[i, i] += p.mass_kg
+    if head is not None:
+        z, x = head.cm_above_top_m, head.cm_downwind_m if direction == "fa" else 0.0
+        inertia = head.inertia_pitch_kgm2 if direction == "fa" else head.inertia_roll_kgm2
+        top = slice(-2, None)
+        m[top, top] += np.array(
+            [[m_head, m_head * z], [m_head * z, inertia + m_head * (z**2 + x**2)]]
+        )
+        if gravity:
+            k[-1, -1] -= m_head * G * z
+    if foundation.kind == "springs":
+        k[0, 0] += foundation.lateral_n_m or 0.0
+        k[1, 1] += foundation.rocking_nm_rad or 0.0
+        free = slice(0, None)
+        if not foundation.lateral_n_m:
+            free = slice(1, None)  # no lateral spring given: base held laterally
+        k, m = _keep(k, m, free)
+    else:
+        k, m = _keep(k, m, slice(2, None))
+    return modal.solve(k, m, count)
+
+
+def torsion_modes(
+    b: Beam, head: "spec_mod.TowerHead | None", foundation: "spec_mod.Foundation", count: int = 1
+) -> modal.Modes:
+    """Torsion modes of the tower with the head's yaw inertia (I_yaw + M·x²) at the top."""
+    assert b.gj is not None and b.polar is not None
+    k, m = beam.assemble_torsion(b.nodes, b.gj, b.polar)
+    if head is not None:
+        m[-1, -1] += head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
+    if foundation.kind == "springs" and foundation.torsional_nm_rad:
+        k[0, 0] += foundation.torsional_nm_rad
+        return modal.solve(k, m, count)
+    k, m = _keep(k, m, slice(1, None))
+    return modal.solve(k, m, count)
+
+
+def _keep(k: Array, m: Array, dofs: slice) -> tuple[Array, Array]:
+    return k[dofs, dofs], m[dofs, dofs]
+
+
+def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]:
+    """Tower modes computed from the spec's structure: fa1, fa2, ss1, ss2 and tor1."""
+    t = spec.tower
+    b = discretise(t, elements)
+    out: list[Mode] = []
+    for direction in ("fa", "ss"):
+        res = bending_modes(
+            b,
+            spec.tower_head,
+            t.point_masses,
+            t.foundation,
+            direction,  # type: ignore[arg-type]
+            t.gravity,
+        )
+        for k, f in enumerate(res.frequency_hz, start=1):
+            shape = res.shapes[0::2, k - 1]
+            out.append(_computed(spec, f"{direction}{k}", float(f), b.nodes, shape))
+    if b.gj is not None:
+        res = torsion_modes(b, spec.tower_head, t.foundation)
+        out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
+    return sorted(out, key=lambda m: m.frequency_hz)
+
+
+def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
+    given = spec.tower.modes.get(name)
+    zeta = given.damping_ratio if isinstance(given, spec_mod.ModeSpec) else None
+    full = np.zeros(len(nodes))
+    full[len(nodes) - len(shape) :] = shape
+    peak = full[np.argmax(np.abs(full))] or 1.0
+    kind, k = name.rstrip("0123456789"), int(name.lstrip("afsort"))
+    return Mode(
+        id=f"tower.{name}",
+        subsystem="tower",
+        description=f"{ordinal(k)} tower {_KIND[kind]} (computed)",
+        frequency_hz=f,
+        damping_ratio=zeta,
+        shape=Shape(tuple(nodes.tolist()), tuple((full / peak).tolist())),
+    )

@@ -27,11 +27,16 @@ _SEQ_TAG = "tag:yaml.org,2002:seq"
 
 @dataclass(frozen=True)
 class Document:
-    """A parsed YAML document with the 1-based line of each field path."""
+    """A parsed YAML document with the 1-based line of each field path.
+
+    ``redefined_anchors`` lists anchors defined twice (YAML 1.2 allows it: an alias refers
+    to the latest definition; PyYAML's composer refuses it, wtvib accepts and reports it).
+    """
 
     data: Any
     lines: dict[Path, int] = field(default_factory=dict)
     source: str | None = None
+    redefined_anchors: tuple[str, ...] = ()
 
     def line_of(self, path: Path) -> int | None:
         """Line of ``path`` or of its nearest ancestor that has one."""
@@ -40,6 +45,22 @@ class Document:
             if line is not None:
                 return line
         return None
+
+
+class _Loader(yaml.SafeLoader):
+    """SafeLoader that accepts a redefined anchor (the IEA-10 windIO 1.x file has one)."""
+
+    def __init__(self, stream: str) -> None:
+        super().__init__(stream)
+        self.redefined: list[str] = []
+
+    def compose_node(self, parent: Any, index: Any) -> Any:  # type: ignore[override]
+        event = self.peek_event()
+        anchor = getattr(event, "anchor", None)
+        if anchor is not None and not isinstance(event, yaml.AliasEvent) and anchor in self.anchors:
+            self.redefined.append(anchor)
+            del self.anchors[anchor]
+        return super().compose_node(parent, index)
 
 
 def format_path(path: Path) -> str:
@@ -59,9 +80,17 @@ def parse(text: str, source: str | None = None) -> Document:
         Empty document, YAML syntax error, several documents, an unsafe tag, a duplicate
         key, a non-string key or a document larger than :data:`MAX_NODES` nodes.
     """
-    loader = yaml.SafeLoader(text)
+    fast = getattr(yaml, "CSafeLoader", None)  # libyaml: ~10× faster on windIO files
+    loader: Any = fast(text) if fast else _Loader(text)
     try:
-        node = loader.get_single_node()
+        try:
+            node = loader.get_single_node()
+        except yaml.composer.ComposerError as exc:
+            if "duplicate anchor" not in str(exc) or isinstance(loader, _Loader):
+                raise
+            loader.dispose()
+            loader = _Loader(text)
+            node = loader.get_single_node()
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         line = mark.line + 1 if mark is not None else None
@@ -77,11 +106,12 @@ def parse(text: str, source: str | None = None) -> Document:
         raise SpecError("the file is empty (no YAML document in it)", source=source)
     walker = _Walker(loader, source)
     data = walker.convert(node, ())
-    return Document(data=data, lines=walker.lines, source=source)
+    redefined = tuple(dict.fromkeys(getattr(loader, "redefined", ())))
+    return Document(data, walker.lines, source, redefined)
 
 
 class _Walker:
-    def __init__(self, loader: yaml.SafeLoader, source: str | None) -> None:
+    def __init__(self, loader: Any, source: str | None) -> None:
         self.loader = loader
         self.source = source
         self.lines: dict[Path, int] = {}

@@ -1,0 +1,81 @@
+"""Reading the files users already have: wtvib specs, OpenFAST ElastoDyn decks, windIO.
+
+:func:`load` detects the format and returns a validated :class:`~wtvib.spec.Spec`. An
+importer produces a plain wtvib-format dictionary first, so ``wtvib convert`` can write
+it out as an editable spec.
+"""
+
+from pathlib import Path
+from typing import Any
+
+from ..errors import SpecError
+from ..spec import Spec, from_data, load_document, read_text
+
+FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x) or an "
+FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst)"
+
+
+def detect(path: Path, text: str) -> str:
+    """``wtvib``, ``windio`` or ``elastodyn`` by content; SpecError for anything else."""
+    head = text[:4000]
+    deck_like = path.suffix.lower() in (".dat", ".fst") or "ELASTODYN" in head.upper()
+    if deck_like and ("TwrFile" in text or "NumBl" in text):
+        return "elastodyn"
+    if path.suffix.lower() in (".yaml", ".yml"):
+        windio_like = "components:" in text and ("assembly:" in text or "windIO" in text)
+        return "windio" if windio_like and "wtvib:" not in head else "wtvib"
+    first = next((ln for ln in head.splitlines() if ln.strip() and ln.lstrip()[0] != "#"), "")
+    if first.replace(" ", "").startswith("wtvib:"):
+        return "wtvib"
+    raise SpecError(f"not a format wtvib reads; expected {FORMATS}", source=str(path))
+
+
+def to_data(
+    path: str | Path, *, rpm: tuple[float, float] | None = None, rated: float | None = None
+) -> dict[str, Any]:
+    """The wtvib-format dictionary of any supported file (for ``wtvib convert``)."""
+    p = Path(path)
+    text = read_text(p)
+    kind = detect(p, text)
+    if kind == "elastodyn":
+        from . import elastodyn
+
+        data = elastodyn.to_spec_data(p, text)
+    elif kind == "windio":
+        from . import windio
+
+        data = windio.to_spec_data(p, text)
+    else:
+        doc = load_document(p, text)
+        data = doc.data
+    return _with_speed(data, rpm, rated) if (rpm or rated) else data
+
+
+def load(
+    path: str | Path, *, rpm: tuple[float, float] | None = None, rated: float | None = None
+) -> Spec:
+    """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range."""
+    p = Path(path)
+    text = read_text(p)
+    kind = detect(p, text)
+    if kind == "wtvib" and rpm is None and rated is None:
+        from ..spec import from_document
+
+        return from_document(load_document(p, text))
+    return from_data(to_data(p, rpm=rpm, rated=rated), source=str(p))
+
+
+def _with_speed(
+    data: dict[str, Any], rpm: tuple[float, float] | None, rated: float | None
+) -> dict[str, Any]:
+    speed = dict(data["rotor"]["speed"])
+    if rpm is not None:
+        low, high = rpm
+        speed = {"fixed_rpm": low} if low == high else {"min_rpm": low, "max_rpm": high}
+    if rated is not None:
+        if "fixed_rpm" in speed:
+            speed = {"fixed_rpm": rated}
+        else:
+            speed["rated_rpm"] = rated
+    notes = [*data.get("assumptions", []), "Operating speeds set on the command line."]
+    return {**data, "rotor": {**data["rotor"], "speed": speed}, "assumptions": notes}
