@@ -17,11 +17,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import SpecError, WtvibError
+from .errors import WtvibError
 from .rules import STATUS_ORDER
 
 BATCH_SCHEMA = "wtvib-batch/1"
-SPEC_SUFFIXES = (".yaml", ".yml")
+SPEC_SUFFIXES = (".yaml", ".yml", ".dat", ".fst")
 
 #: Outcome order for sorting and exit codes: input errors are worst.
 OUTCOME_ORDER = {**STATUS_ORDER, "input-error": 4}
@@ -77,11 +77,14 @@ def worst_check(checks: Sequence[dict[str, Any]]) -> dict[str, Any] | None:
 
 
 def discover(paths: Iterable[Path]) -> list[Path]:
-    """Input files: files as given, folders searched recursively for spec files."""
+    """Input files: files as given; folders searched recursively for specs, windIO files and
+    ElastoDyn main decks (``.dat``/``.fst`` files that name a ``TwrFile``)."""
     found: list[Path] = []
+    from .importers import is_main_input
+
     for p in paths:
         if p.is_dir():
-            found += sorted(q for q in p.rglob("*") if q.suffix in SPEC_SUFFIXES and q.is_file())
+            found += sorted(q for q in p.rglob("*") if q.is_file() and is_main_input(q))
         else:
             found.append(p)
     seen: set[Path] = set()
@@ -102,12 +105,12 @@ def output_keys(paths: Sequence[Path]) -> list[str]:
 
 def audit_one(path: str, key: str, plots: bool) -> Item:
     """Load, audit and (optionally) plot one input. Never raises for a user's mistake."""
-    from . import audit, spec
+    from . import audit, importers
 
     t0 = time.perf_counter()
     try:
-        turbine = spec.load(path)
-    except SpecError as exc:
+        turbine = importers.load(path)
+    except WtvibError as exc:
         return Item(path, key, error=str(exc), timings={"load": time.perf_counter() - t0})
     t1 = time.perf_counter()
     try:

@@ -104,6 +104,10 @@ def check(
         typer.Option(help="Operating range MIN:MAX [rpm] (or one fixed speed) for imports."),
     ] = None,
     rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
+    head_mass: Annotated[
+        float | None,
+        typer.Option(min=0.0, help="Tower-head mass [kg] for windIO 1.x files (no hub/nacelle)."),
+    ] = None,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG.
@@ -113,7 +117,7 @@ def check(
     from . import audit, importers
     from .outputs import write_atomic
 
-    turbine = importers.load(spec_file, rpm=_rpm_range(rpm), rated=rated)
+    turbine = importers.load(spec_file, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass)
     settings = _settings(turbine.audit, margin, rule, preset)
     report = audit.run(turbine, settings)
     written: list[Path] = []
@@ -307,6 +311,10 @@ def convert(
         str | None, typer.Option(help="Operating range MIN:MAX [rpm] to put in the spec.")
     ] = None,
     rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
+    head_mass: Annotated[
+        float | None,
+        typer.Option(min=0.0, help="Tower-head mass [kg] for windIO 1.x files (no hub/nacelle)."),
+    ] = None,
     force: Annotated[bool, typer.Option(help="Replace an existing file.")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
@@ -317,7 +325,7 @@ def convert(
     from .outputs import write_atomic
     from .spec import from_data
 
-    data = importers.to_data(source, rpm=_rpm_range(rpm), rated=rated)
+    data = importers.to_data(source, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass)
     from_data(data, source=str(source))  # refuse to write a spec that would not load
     text = f"# wtvib spec converted from {source.name}\n" + yaml.safe_dump(
         data, sort_keys=False, allow_unicode=True, width=100

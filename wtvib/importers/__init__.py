@@ -31,9 +31,17 @@ def detect(path: Path, text: str) -> str:
 
 
 def to_data(
-    path: str | Path, *, rpm: tuple[float, float] | None = None, rated: float | None = None
+    path: str | Path,
+    *,
+    rpm: tuple[float, float] | None = None,
+    rated: float | None = None,
+    head_mass: float | None = None,
 ) -> dict[str, Any]:
-    """The wtvib-format dictionary of any supported file (for ``wtvib convert``)."""
+    """The wtvib-format dictionary of any supported file (for ``wtvib convert``).
+
+    ``head_mass`` [kg] replaces the tower-head assembly of a windIO file (needed for 1.x
+    files, which hold no hub or nacelle masses).
+    """
     p = Path(path)
     text = read_text(p)
     kind = detect(p, text)
@@ -44,7 +52,7 @@ def to_data(
     elif kind == "windio":
         from . import windio
 
-        data = windio.to_spec_data(p, text)
+        data = windio.to_spec_data(p, text, head_mass)
     else:
         doc = load_document(p, text)
         data = doc.data
@@ -52,7 +60,11 @@ def to_data(
 
 
 def load(
-    path: str | Path, *, rpm: tuple[float, float] | None = None, rated: float | None = None
+    path: str | Path,
+    *,
+    rpm: tuple[float, float] | None = None,
+    rated: float | None = None,
+    head_mass: float | None = None,
 ) -> Spec:
     """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range."""
     p = Path(path)
@@ -62,7 +74,21 @@ def load(
         from ..spec import from_document
 
         return from_document(load_document(p, text))
-    return from_data(to_data(p, rpm=rpm, rated=rated), source=str(p))
+    return from_data(to_data(p, rpm=rpm, rated=rated, head_mass=head_mass), source=str(p))
+
+
+def is_main_input(path: Path) -> bool:
+    """True for files a batch should audit: specs, windIO files and ElastoDyn main decks."""
+    suffix = path.suffix.lower()
+    if suffix in (".yaml", ".yml"):
+        return True
+    if suffix in (".dat", ".fst"):
+        try:
+            head = path.read_bytes()[:200_000]
+        except OSError:
+            return True  # let the audit report the read error
+        return b"TwrFile" in head
+    return False
 
 
 def _with_speed(

@@ -126,6 +126,9 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
     ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
     ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
+    if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
+        frac = np.array([0.0, 1.0])
+        mass, ei_fa, ei_ss = (np.repeat(a, 2) for a in (mass, ei_fa, ei_ss))
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r

@@ -1,0 +1,400 @@
+"""windIO turbine YAML (1.x and 2.x) → wtvib spec data.
+
+The two major versions differ: 2.x has ``components.tower.outer_shape`` and
+``structure.layers``, component masses under ``elastic_properties`` and rotor speeds in rpm
+under ``control``; 1.x has ``outer_shape_bem`` / ``internal_structure_2d_fem``, blade
+properties under ``elastic_properties_mb.six_x_six`` (upper-triangle 6×6 per station) and
+speeds in rad/s under ``control.torque`` or ``control.supervisory``, and no hub or nacelle
+masses (WISDEM computes those), which must then be given with ``head_mass``.
+
+References
+----------
+IEA Wind Task 37, windIO turbine schema (``windIO/schemas/turbine/turbine_schema.yaml``,
+windio 2.1.1): K44 and K55 are the two bending stiffnesses of a blade section, K66 the
+torsional stiffness; ``reference_axis.z`` heights in m. The schema text calls K44 flapwise,
+while the IEA-15 and IEA-22 example files hold the edgewise values in K44 (as BeamDyn
+does); wtvib takes the lower of the two over most of the span as flapwise.
+"""
+
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import SpecError
+from ..spec import load_document
+
+#: Index of K44, K55, K66 and of the mass and polar inertia in a row-major upper triangle.
+_UT = {"K44": 15, "K55": 18, "K66": 20, "mass": 0, "i_plr": 20}
+
+
+def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[str, Any]:
+    """wtvib spec data from a windIO turbine file."""
+    doc = load_document(path, text)
+    d = doc.data
+    if not isinstance(d, dict) or "components" not in d:
+        raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
+    v2 = "outer_shape" in d["components"].get("tower", {})
+    version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
+    notes = [f"Imported from the {version} file {path.name}."]
+    if doc.redefined_anchors:
+        notes.append(
+            "The file defines the YAML anchor(s) "
+            + ", ".join(repr(a) for a in doc.redefined_anchors)
+            + " twice; as YAML 1.2 allows, each alias uses the latest definition (PyYAML's "
+            "safe_load would refuse the file)."
+        )
+    reader = _Reader(d, path, v2)
+    asm = d.get("assembly", {})
+    blades = int(asm.get("number_of_blades", 3))
+    speed, speed_note = reader.speed()
+    notes.append(speed_note)
+    tower, tower_notes = reader.tower()
+    notes += tower_notes
+    structure, blade_mass, blade_len = reader.blade()
+    if structure is None:
+        notes.append("No blade structural properties in the file: blade modes not computed.")
+    head, head_note = reader.head(blades, blade_mass, structure, head_mass)
+    notes.append(head_note)
+    src = {"file": f"{path.name} ({version})"}
+    data: dict[str, Any] = {
+        "wtvib": 1,
+        "turbine": {
+            "name": str(d.get("name", path.stem)),
+            **_opt("rated_power_kw", asm.get("rated_power"), 1e-3),
+            **_opt("rotor_diameter_m", asm.get("rotor_diameter")),
+            **_opt("hub_height_m", asm.get("hub_height")),
+        },
+        "sources": src,
+        "rotor": {
+            "blades": blades,
+            "orientation": "downwind"
+            if str(asm.get("rotor_orientation", "upwind")).lower() == "downwind"
+            else "upwind",
+            "hub": "hingeless",
+            "speed": speed,
+        },
+        "tower": tower,
+        "tower_head": head,
+        "blade": {"structure": structure, **_opt("length_m", blade_len)} if structure else {},
+        "assumptions": notes,
+    }
+    gear = reader.gear_ratio()
+    if gear:
+        data["drivetrain"] = {"gear_ratio": gear}
+    return data
+
+
+def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
+    return {} if value is None else {key: float(value) * scale}
+
+
+def _at(field: dict[str, Any], grid: np.ndarray) -> np.ndarray:
+    """A windIO ``{grid, values}`` field evaluated on another grid (linear)."""
+    return np.interp(grid, np.asarray(field["grid"], float), np.asarray(field["values"], float))
+
+
+class _Reader:
+    def __init__(self, d: dict[str, Any], path: Path, v2: bool) -> None:
+        self.d, self.path, self.v2 = d, path, v2
+        self.c = d["components"]
+
+    def fail(self, message: str) -> SpecError:
+        return SpecError(message, source=str(self.path))
+
+    def material(self, name: str) -> dict[str, Any]:
+        for m in self.d.get("materials", []):
+            if m.get("name") == name:
+                return dict(m)
+        raise self.fail(f"material {name!r} is not in the file's materials")
+
+    # -- rotor speed ------------------------------------------------------------------
+    def speed(self) -> tuple[dict[str, float], str]:
+        ctl = self.d.get("control", {})
+        if "min_rotor_speed" in ctl and "rated_rotor_speed" in ctl:
+            lo, rated = float(ctl["min_rotor_speed"]), float(ctl["rated_rotor_speed"])
+            speed = {"min_rpm": lo, "rated_rpm": rated, "max_rpm": rated}
+            top = float(ctl.get("max_rotor_speed", 0.0))
+            note = (
+                f"Operating range from control.min_rotor_speed/rated_rotor_speed: "
+                f"{lo:.3g}–{rated:.3g} rpm"
+            )
+            if top > rated:
+                speed["overspeed_rpm"] = top
+                note += f"; control.max_rotor_speed {top:.3g} rpm checked as the overspeed limit"
+            return speed, note + "."
+        to_rpm = 60.0 / (2.0 * math.pi)
+        for block, lo_key, hi_key in (
+            ("torque", "VS_minspd", "VS_maxspd"),
+            ("supervisory", "minOmega", "maxOmega"),
+        ):
+            sub = ctl.get(block, {})
+            lo, hi = sub.get(lo_key), sub.get(hi_key)
+            if lo and hi and 0 < lo < hi:
+                return (
+                    {"min_rpm": lo * to_rpm, "max_rpm": hi * to_rpm},
+                    f"Operating range from control.{block}.{lo_key}/{hi_key} (rad/s): "
+                    f"{lo * to_rpm:.3g}–{hi * to_rpm:.3g} rpm.",
+                )
+        raise self.fail(
+            "no rotor speed range in 'control' (min/rated_rotor_speed, "
+            "torque.VS_minspd/VS_maxspd or supervisory.minOmega/maxOmega); give "
+            "--rpm MIN:MAX"
+        )
+
+    # -- tower and monopile ---------------------------------------------------------
+    def member(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any], float]:
+        """Heights, outer diameters and wall thicknesses at the member's stations."""
+        comp = self.c[name]
+        shape = comp["outer_shape"] if self.v2 else comp["outer_shape_bem"]
+        struct = comp["structure"] if self.v2 else comp["internal_structure_2d_fem"]
+        axis = comp["reference_axis"] if self.v2 else shape["reference_axis"]
+        grid = np.asarray(axis["z"]["grid"], float)
+        z = np.asarray(axis["z"]["values"], float)
+        keep = np.concatenate([[True], np.diff(z) > 0.01])  # drop 1 mm "step" duplicates
+        grid, z = grid[keep], z[keep]
+        diameter = _at(shape["outer_diameter"], grid)
+        layers = struct["layers"]
+        thickness = sum(_at(layer["thickness"], grid) for layer in layers)
+        mat = self.material(layers[0]["material"])
+        return z, diameter, np.asarray(thickness), mat, float(struct.get("outfitting_factor", 1.0))
+
+    def tower(self) -> tuple[dict[str, Any], list[str]]:
+        z, dia, t, mat, factor = self.member("tower")
+        notes = [
+            f"Tower from {len(z)} stations of outer diameter and wall thickness, "
+            f"{mat['name']} (E = {float(mat['E']):.3g} Pa, ρ = {float(mat['rho']):.4g} "
+            f"kg/m³), outfitting factor {factor:g}."
+        ]
+        base = z[0]
+        masses = []
+        if "monopile" in self.c:
+            mz, mdia, mt, mmat, mfactor = self.member("monopile")
+            mudline, how = self.mudline(mz)
+            keep = mz >= mudline - 1e-9
+            if mudline not in mz:
+                cut = np.interp(mudline, mz, np.arange(len(mz)))
+                i = int(cut)
+                frac = cut - i
+                mdia_m = mdia[i] + frac * (mdia[i + 1] - mdia[i])
+                mt_m = mt[i] + frac * (mt[i + 1] - mt[i])
+                mz = np.concatenate([[mudline], mz[keep]])
+                mdia = np.concatenate([[mdia_m], mdia[keep]])
+                mt = np.concatenate([[mt_m], mt[keep]])
+            else:
+                mz, mdia, mt = mz[keep], mdia[keep], mt[keep]
+            upper = z > mz[-1] + 1e-9
+            z = np.concatenate([mz, z[upper]])
+            dia = np.concatenate([mdia, dia[upper]])
+            t = np.concatenate([mt, t[upper]])
+            base = mudline
+            tp = float(self.c["monopile"].get("transition_piece_mass", 0.0))
+            if tp:
+                masses.append({"height_m": float(mz[-1] - base), "mass_kg": tp})
+            notes.append(
+                f"Monopile included from the mudline ({how}) up to the tower base; the "
+                "foundation is clamped at the mudline (rigid soil, the default soil treatment: "
+                "no soil springs are in the file), so frequencies are an upper bound; "
+                f"transition piece {tp:,.0f} kg as a point mass."
+            )
+            if mmat["name"] != mat["name"] or mfactor != factor:
+                notes.append("Monopile material/outfitting taken equal to the tower's.")
+        tower = {
+            "height_m": float(z[-1] - base),
+            "sections": {
+                "height_m": _list(z - base),
+                "outer_diameter_m": _list(dia),
+                "wall_thickness_m": _list(t),
+            },
+            "material": {
+                "youngs_modulus_pa": float(mat["E"])
+                if not isinstance(mat["E"], list)
+                else float(mat["E"][0]),
+                **(
+                    {
+                        "shear_modulus_pa": float(
+                            mat["G"] if not isinstance(mat["G"], list) else mat["G"][0]
+                        )
+                    }
+                    if mat.get("G")
+                    else {}
+                ),
+                "density_kg_m3": float(mat["rho"]),
+                "mass_factor": factor,
+            },
+            "point_masses": masses,
+        }
+        return tower, notes
+
+    def mudline(self, mz: np.ndarray) -> tuple[float, str]:
+        depth = self.d.get("environment", {}).get("water_depth")
+        if depth is not None:
+            return -float(depth), f"environment.water_depth = {float(depth):g} m"
+        if len(mz) > 2:
+            return float(mz[1]), (
+                "no water depth in the file: taken at the top of the lowest "
+                f"(embedded) monopile segment, z = {mz[1]:g} m"
+            )
+        return float(mz[0]), "no water depth in the file: taken at the pile's lowest station"
+
+    # -- blade -----------------------------------------------------------------------
+    def blade(self) -> tuple[dict[str, Any] | None, float | None, float | None]:
+        b = self.c["blade"]
+        axis = b["reference_axis"] if self.v2 else b["outer_shape_bem"]["reference_axis"]
+        z = axis["z"]
+        length = float(np.asarray(z["values"], float)[-1] - np.asarray(z["values"], float)[0])
+        hub_r = float(self.c.get("hub", {}).get("diameter", 0.0)) / 2.0
+        if self.v2:
+            ep = b.get("structure", {}).get("elastic_properties")
+            if not ep:
+                return None, None, length
+            grid = np.asarray(ep["stiffness_matrix"]["grid"], float)
+            k = ep["stiffness_matrix"]
+            im = ep["inertia_matrix"]
+            mass = _at({"grid": im["grid"], "values": im["mass"]}, grid)
+            flap = np.asarray(k["K44"], float)
+            edge = np.asarray(k["K55"], float)
+            gj = np.asarray(k["K66"], float)
+            ip = _at({"grid": im["grid"], "values": im["i_plr"]}, grid) if "i_plr" in im else None
+            twist = _at(b["outer_shape"]["twist"], grid)  # degrees in 2.x
+        else:
+            six = b.get("elastic_properties_mb", {}).get("six_x_six", {})
+            if "stiff_matrix" not in six:
+                return None, None, length
+            grid = np.asarray(six["stiff_matrix"]["grid"], float)
+            kv = np.asarray(six["stiff_matrix"]["values"], float)
+            mv = np.asarray(six["inertia_matrix"]["values"], float)
+            flap, edge, gj = kv[:, _UT["K44"]], kv[:, _UT["K55"]], kv[:, _UT["K66"]]
+            mass, ip = mv[:, _UT["mass"]], mv[:, _UT["i_plr"]]
+            twist = np.degrees(_at(six["twist"], grid))  # radians in 1.x
+        if np.count_nonzero(flap > edge) > len(flap) / 2:
+            # The schema text calls K44 flapwise, but the published IEA-15/22 files follow
+            # BeamDyn (K44 edgewise): the lower stiffness over most of the span is flapwise.
+            flap, edge = edge, flap
+        span = grid * length
+        structure: dict[str, Any] = {
+            "hub_radius_m": hub_r,
+            "span_m": _list(span),
+            "mass_per_length_kg_m": _list(np.maximum(mass, 1e-6)),
+            "ei_flap_nm2": _list(flap),
+            "ei_edge_nm2": _list(edge),
+            "twist_deg": _list(twist),
+        }
+        if ip is not None and np.all(ip > 0) and np.all(gj > 0):
+            structure["gj_nm2"] = _list(gj)
+            structure["torsional_inertia_kgm"] = _list(ip)
+        return structure, float(np.trapezoid(mass, span)), length
+
+    # -- tower head ---------------------------------------------------------------------
+    def head(
+        self,
+        blades: int,
+        blade_mass: float | None,
+        structure: dict[str, Any] | None,
+        head_mass: float | None,
+    ) -> tuple[dict[str, float], str]:
+        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        shape = dt.get("outer_shape", dt)
+        tilt = math.radians(float(shape.get("uptilt", shape.get("uptilt_angle", 0.0)) or 0.0))
+        if not self.v2 and tilt > 0.5:  # 1.x gives radians; 2.x degrees
+            tilt = math.radians(tilt)
+        overhang = float(shape.get("overhang", 0.0))
+        hub_x = -overhang
+        hub_z = float(shape.get("distance_tt_hub", 0.0))
+        if head_mass is not None:
+            return (
+                {"mass_kg": head_mass, "cm_downwind_m": hub_x / 2, "cm_above_top_m": hub_z / 2},
+                f"Tower head mass {head_mass:,.0f} kg given on the command line (CM taken "
+                "half-way to the hub; inertias neglected).",
+            )
+        parts: list[tuple[str, float, float, float, float, float, float]] = []
+        # name, mass, x, z, own pitch, own roll, own yaw inertia
+        for name, comp in (
+            ("hub", self.c.get("hub", {})),
+            ("nacelle", dt),
+            ("yaw", self.c.get("yaw", {})),
+        ):
+            ep = comp.get("elastic_properties") if isinstance(comp, dict) else None
+            if not ep or "mass" not in ep:
+                continue
+            m = float(ep["mass"])
+            if name == "hub":
+                x, z = hub_x, hub_z
+                ii = ep.get("inertia", [0, 0, 0])
+                parts.append((name, m, x, z, float(ii[1]), float(ii[0]), float(ii[2])))
+            elif name == "nacelle":
+                loc = ep.get("location", [0.0, 0.0, 0.0])
+                x, z = float(loc[0]), float(loc[2])
+                tt = ep.get("inertia_tt", ep.get("inertia", [0, 0, 0]))
+                parts.append(
+                    (
+                        name,
+                        m,
+                        x,
+                        z,
+                        float(tt[1]) - m * (x * x + z * z),
+                        float(tt[0]) - m * z * z,
+                        float(tt[2]) - m * x * x,
+                    )
+                )
+            else:
+                loc = ep.get("location", [0.0, 0.0, 0.0])
+                parts.append((name, m, float(loc[0]), float(loc[2]), 0.0, 0.0, 0.0))
+        if not any(p[0] == "nacelle" for p in parts):
+            raise self.fail(
+                "the file gives no nacelle/hub masses (windIO 1.x leaves them to WISDEM); give "
+                "the tower-head mass with --head-mass KG, or convert and edit tower_head"
+            )
+        j_polar = 0.0
+        if blade_mass and structure:
+            span = np.asarray(structure["span_m"])
+            m = np.asarray(structure["mass_per_length_kg_m"])
+            j_polar = blades * float(
+                np.trapezoid(m * (structure["hub_radius_m"] + span) ** 2, span)
+            )
+            parts.append(
+                (
+                    f"{blades} blades",
+                    blades * blade_mass,
+                    hub_x,
+                    hub_z,
+                    0.5 * j_polar,
+                    j_polar,
+                    0.5 * j_polar,
+                )
+            )
+        mass = sum(p[1] for p in parts)
+        x = sum(p[1] * p[2] for p in parts) / mass
+        z = sum(p[1] * p[3] for p in parts) / mass
+        pitch = sum(p[4] + p[1] * ((p[2] - x) ** 2 + (p[3] - z) ** 2) for p in parts)
+        roll = sum(p[5] + p[1] * (p[3] - z) ** 2 for p in parts)
+        yaw = sum(p[6] + p[1] * (p[2] - x) ** 2 for p in parts)
+        text = (
+            "Tower head assembled from its parts: "
+            + ", ".join(
+                f"{p[0]} {p[1]:,.0f} kg at x = {p[2]:.2f} m, z = {p[3]:.2f} m" for p in parts
+            )
+            + f"; total {mass:,.0f} kg (rotor polar inertia {j_polar:,.0f} kg·m², shaft tilt "
+            f"neglected)."
+        )
+        return (
+            {
+                "mass_kg": mass,
+                "cm_downwind_m": x,
+                "cm_above_top_m": z,
+                "inertia_pitch_kgm2": max(pitch, 0.0),
+                "inertia_roll_kgm2": max(roll, 0.0),
+                "inertia_yaw_kgm2": max(yaw, 0.0),
+            },
+            text,
+        )
+
+    def gear_ratio(self) -> float | None:
+        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        ratio = (dt.get("gearbox") or {}).get("gear_ratio", dt.get("gear_ratio"))
+        return float(ratio) if ratio else None
+
+
+def _list(a: np.ndarray) -> list[float]:
+    return [float(f"{v:.10g}") for v in np.asarray(a, float)]
