@@ -11,6 +11,8 @@ J. S. Przemieniecki, *Theory of Matrix Structural Analysis*, McGraw-Hill 1968, c
 al., *Concepts and Applications of Finite Element Analysis*, 4th ed., §16.
 """
 
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -67,29 +69,25 @@ def torsion_mass(inertia_per_length: float, length: float) -> Array:
 
 
 def mesh(stations: Array, elements: int) -> Array:
-    """Node positions: ``elements`` equal divisions, plus every input station.
+    """Node positions: every input station, plus equal divisions between them.
 
-    Nodes closer than 1/10,000 of the member length are merged (a near-zero element — e.g.
-    a property step tabulated as two stations 1 mm apart — would make the stiffness matrix
-    ill-conditioned), keeping an input station's position.
+    Stations closer than 1/10,000 of the member length are merged (a property step
+    tabulated as two stations 1 mm apart). A division node closer than a quarter of the
+    nominal element length to a station is dropped: very short elements make the stiffness
+    matrix ill-conditioned (12·EI/L³ swamps the low eigenvalues in double precision).
     """
-    nodes = np.union1d(np.linspace(stations[0], stations[-1], elements + 1), stations)
-    tol = 1e-4 * (stations[-1] - stations[0])
-    keep = np.concatenate([[True], np.diff(nodes) > tol])
-    for s in stations:  # a merged pair keeps the input station's exact position
-        i = int(np.argmin(np.abs(nodes - s)))
-        nodes[i] = s
-    return nodes[keep] if keep.all() else _merge(nodes, stations, tol)
-
-
-def _merge(nodes: Array, stations: Array, tol: float) -> Array:
-    out = [nodes[0]]
-    for x in nodes[1:]:
-        if x - out[-1] > tol:
-            out.append(x)
-        elif np.any(np.abs(stations - x) <= tol):
-            out[-1] = x
-    return np.asarray(out)
+    length = stations[-1] - stations[0]
+    merged = [stations[0]]
+    for s in stations[1:]:
+        if s - merged[-1] > 1e-4 * length:
+            merged.append(s)
+        else:
+            merged[-1] = s if s == stations[-1] else merged[-1]
+    fixed = np.asarray(merged)
+    grid = np.linspace(stations[0], stations[-1], elements + 1)
+    gap = 0.25 * length / elements
+    far = np.min(np.abs(fixed[:, None] - grid[None, :]), axis=0) > gap
+    return np.union1d(fixed, grid[far])
 
 
 #: 4-point Gauss–Legendre rule on [0, 1]: exact for the degree-7 integrands of a consistent
@@ -138,8 +136,27 @@ def _hermite(lengths: Array) -> tuple[Array, Array, Array]:
     return n, d1, d2
 
 
+@dataclass(frozen=True)
+class Basis:
+    """Gauss points and Hermite shape functions of a mesh, computed once per mesh."""
+
+    nodes: Array
+    x: Array
+    w: Array
+    n: Array
+    d1: Array
+    d2: Array
+
+
+def basis(nodes: Array) -> Basis:
+    """The quadrature and shape-function data of a mesh (reused for every property set)."""
+    x, w = gauss_points(nodes)
+    n, d1, d2 = _hermite(np.diff(nodes))
+    return Basis(nodes, x, w, n, d1, d2)
+
+
 def bending_elements(
-    nodes: Array, ei: Array, m: Array, axial: Array | None = None
+    nodes: Array | Basis, ei: Array, m: Array, axial: Array | None = None
 ) -> tuple[Array, Array, Array]:
     """Element stiffness (bending), geometric stiffness and mass, each (n, 4, 4).
 
@@ -147,11 +164,12 @@ def bending_elements(
     Integrating with the Gauss rule makes linearly tapered properties exact; for constant
     properties the matrices equal :func:`bending_stiffness` and :func:`bending_mass`.
     """
-    _, w = gauss_points(nodes)
-    n, d1, d2 = _hermite(np.diff(nodes))
-    k = np.einsum("eg,egi,egj->eij", w * ei, d2, d2)
-    mass = np.einsum("eg,egi,egj->eij", w * m, n, n)
-    geo = np.zeros_like(k) if axial is None else np.einsum("eg,egi,egj->eij", w * axial, d1, d1)
+    b = nodes if isinstance(nodes, Basis) else basis(nodes)
+    k = np.einsum("eg,egi,egj->eij", b.w * ei, b.d2, b.d2)
+    mass = np.einsum("eg,egi,egj->eij", b.w * m, b.n, b.n)
+    geo = (
+        np.zeros_like(k) if axial is None else np.einsum("eg,egi,egj->eij", b.w * axial, b.d1, b.d1)
+    )
     return k, geo, mass
 
 
@@ -170,11 +188,9 @@ def assemble(elements: Array, dofs: Array, size: int) -> Array:
 
     ``dofs`` (n, k) holds the global dof of each element dof.
     """
-    out = np.zeros((size, size))
-    rows = np.repeat(dofs[:, :, None], dofs.shape[1], axis=2)
-    cols = np.repeat(dofs[:, None, :], dofs.shape[1], axis=1)
-    np.add.at(out, (rows, cols), elements)
-    return out
+    flat = (dofs[:, :, None] * size + dofs[:, None, :]).ravel()
+    summed = np.bincount(flat, weights=elements.ravel(), minlength=size * size)
+    return summed.reshape(size, size)
 
 
 def chain_dofs(elements: int, per_node: int, picks: tuple[int, ...]) -> Array:
@@ -193,15 +209,16 @@ def interpolate(nodes_x: Array, stations: Array, values: Array) -> Array:
 
 
 def assemble_bending(
-    nodes: Array, ei: Array, m: Array, axial: Array | None = None
+    nodes: Array | Basis, ei: Array, m: Array, axial: Array | None = None
 ) -> tuple[Array, Array]:
     """Global K (bending + geometric) and M of a beam in one plane, dofs (w, w′) per node.
 
     Properties are given at the Gauss points, shape (elements, 4).
     """
     k, geo, mass = bending_elements(nodes, ei, m, axial)
-    dofs = chain_dofs(len(nodes) - 1, 2, (0, 1))
-    size = 2 * len(nodes)
+    count = len(nodes.nodes if isinstance(nodes, Basis) else nodes)
+    dofs = chain_dofs(count - 1, 2, (0, 1))
+    size = 2 * count
     return assemble(k + geo, dofs, size), assemble(mass, dofs, size)
 
 

@@ -159,7 +159,12 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             fontsize=8,
             color="#616161",
         )
-    _legend(ax, rule.label, {e.energy for e in excitations.values()})
+    _legend(
+        ax,
+        rule.label,
+        {e.energy for e in excitations.values()},
+        bool(spec.rotor.speed.quick_pass_rpm),
+    )
     return fig
 
 
@@ -195,13 +200,18 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None: 
     )
 
 
-def _legend(ax, rule_label: str, energies: set[str]) -> None:  # type: ignore[no-untyped-def]
+def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # type: ignore[no-untyped-def]
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     handles, labels = ax.get_legend_handles_labels()
     extra = [
         (Patch(color="#c8e6c9"), "steady operation"),
+        *(
+            [(Patch(facecolor="none", hatch="//", edgecolor="#81c784"), "quick-pass band")]
+            if quick
+            else []
+        ),
         (Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"), "overspeed (transient)"),
         (Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
         (Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),

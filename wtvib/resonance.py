@@ -24,7 +24,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import brentq
 
 from .excitation import Excitation, OperatingRange
 from .results import Check, Mode, Rule
@@ -145,6 +144,31 @@ def _grid(op: OperatingRange) -> NDArray[np.float64]:
 
 
 ScalarFn = Callable[[float], float]
+
+
+def bisect(f: ScalarFn, a: float, b: float, xtol: float = 1e-12, rtol: float = 1e-12) -> float:
+    """Root of ``f`` in [a, b] (a sign change) by bisection to ``xtol + rtol·|x|``.
+
+    Plain bisection keeps scipy.optimize (0.2 s to import) off the check's start-up path;
+    the brackets are fine grid cells, so some 40 halvings reach 1e-12.
+    """
+    fa = f(a)
+    if fa == 0.0:
+        return a
+    for _ in range(200):
+        mid = 0.5 * (a + b)
+        if b - a <= xtol + rtol * abs(mid):
+            return mid
+        fm = f(mid)
+        if fm == 0.0:
+            return mid
+        if (fm < 0) == (fa < 0):
+            a, fa = mid, fm
+        else:
+            b = mid
+    return 0.5 * (a + b)
+
+
 ArrayFn = Callable[[NDArray[np.float64]], NDArray[np.float64]]
 
 
@@ -155,7 +179,7 @@ def _roots(f: ScalarFn, grid: NDArray[np.float64], values: NDArray[np.float64]) 
         out.append(float(grid[i]))
     change = np.nonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)[0]
     for i in change:
-        out.append(float(brentq(f, grid[i], grid[i + 1], xtol=1e-12, rtol=1e-12)))
+        out.append(float(bisect(f, grid[i], grid[i + 1], xtol=1e-12, rtol=1e-12)))
     return sorted(out)
 
 
@@ -169,9 +193,9 @@ def _runs(gap: ScalarFn, grid: NDArray[np.float64], bad: NDArray[np.bool_]) -> l
     starts = [idx[0], *(b for _, b in breaks)]
     ends = [*(a for a, _ in breaks), idx[-1]]
     for i, j in zip(starts, ends, strict=True):
-        lo = grid[i] if i == 0 else brentq(gap, grid[i - 1], grid[i], xtol=1e-12, rtol=1e-12)
+        lo = grid[i] if i == 0 else bisect(gap, grid[i - 1], grid[i], xtol=1e-12, rtol=1e-12)
         last = len(grid) - 1
-        hi = grid[j] if j == last else brentq(gap, grid[j], grid[j + 1], xtol=1e-12, rtol=1e-12)
+        hi = grid[j] if j == last else bisect(gap, grid[j], grid[j + 1], xtol=1e-12, rtol=1e-12)
         out.append((float(lo), float(hi)))
     return out
 

@@ -63,6 +63,26 @@ class _Loader(yaml.SafeLoader):
         return super().compose_node(parent, index)
 
 
+def parse_plain(text: str, source: str | None = None) -> Document:
+    """Parse a large machine-written document (windIO) without line tracking.
+
+    Same safety as :func:`parse` (safe constructors only; aliases are shared, not copied, so
+    alias bombs cost no memory) but ~3× faster; duplicate keys are not checked. Falls back
+    to :func:`parse` where the fast path refuses the file (e.g. a redefined anchor), so that
+    errors still name a line.
+    """
+    fast = getattr(yaml, "CSafeLoader", None)
+    if fast is None:
+        return parse(text, source)
+    try:
+        data = yaml.load(text, Loader=fast)
+    except yaml.YAMLError:
+        return parse(text, source)
+    if data is None:
+        raise SpecError("the file is empty (no YAML document in it)", source=source)
+    return Document(data, {}, source)
+
+
 def format_path(path: Path) -> str:
     """``("rotor", "speed", 0)`` -> ``rotor.speed[0]``."""
     out = ""

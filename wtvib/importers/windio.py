@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..spec import load_document
+from ..yamlio import parse_plain
 
 #: Index of K44, K55, K66 and of the mass and polar inertia in a row-major upper triangle.
 _UT = {"K44": 15, "K55": 18, "K66": 20, "mass": 0, "i_plr": 20}
@@ -31,7 +31,7 @@ _UT = {"K44": 15, "K55": 18, "K66": 20, "mass": 0, "i_plr": 20}
 
 def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file."""
-    doc = load_document(path, text)
+    doc = parse_plain(text, str(path))
     d = doc.data
     if not isinstance(d, dict) or "components" not in d:
         raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
