@@ -183,23 +183,23 @@ def torsion_elements(nodes: Array, gj: Array, ip: Array) -> tuple[Array, Array]:
     return (np.einsum("eg,egi,egj->eij", w * gj, d, d), np.einsum("eg,egi,egj->eij", w * ip, n, n))
 
 
-def assemble(elements: Array, dofs: Array, size: int) -> Array:
+def assemble(elements: Array, dofs: NDArray[np.intp], size: int) -> Array:
     """Scatter element matrices (n, k, k) into a global (size, size) matrix.
 
     ``dofs`` (n, k) holds the global dof of each element dof.
     """
     flat = (dofs[:, :, None] * size + dofs[:, None, :]).ravel()
     summed = np.bincount(flat, weights=elements.ravel(), minlength=size * size)
-    return summed.reshape(size, size)
+    return np.asarray(summed.reshape(size, size), dtype=float)
 
 
-def chain_dofs(elements: int, per_node: int, picks: tuple[int, ...]) -> Array:
+def chain_dofs(elements: int, per_node: int, picks: tuple[int, ...]) -> NDArray[np.intp]:
     """Global dofs of each element for a chain of nodes with ``per_node`` dofs each.
 
     ``picks`` are the node-local dof indices used by the element, e.g. (0, 1) for (w, w′).
     """
-    first = np.arange(elements)[:, None] * per_node
-    local = np.array(picks)
+    first = np.arange(elements, dtype=np.intp)[:, None] * per_node
+    local = np.array(picks, dtype=np.intp)
     return np.concatenate([first + local, first + per_node + local], axis=1)
 
 

@@ -292,8 +292,8 @@ def bending_system(
     m_head = head.mass_kg if head else 0.0
     axial = None
     if gravity:
-        x = b.basis.x
-        pm_above = sum((p.mass_kg * (x < p.height_m) for p in point_masses), np.zeros_like(x))
+        xg = b.basis.x
+        pm_above = sum((p.mass_kg * (xg < p.height_m) for p in point_masses), np.zeros_like(xg))
         axial = -G * (b.mass_above() + pm_above + m_head)
     k, m = beam.assemble_bending(b.basis, ei, b.mass, axial)
     for p in point_masses:

@@ -349,9 +349,9 @@ class _Reader:
         j_polar = 0.0
         if blade_mass and structure:
             span = np.asarray(structure["span_m"])
-            m = np.asarray(structure["mass_per_length_kg_m"])
+            per_length = np.asarray(structure["mass_per_length_kg_m"])
             j_polar = blades * float(
-                np.trapezoid(m * (structure["hub_radius_m"] + span) ** 2, span)
+                np.trapezoid(per_length * (structure["hub_radius_m"] + span) ** 2, span)
             )
             parts.append(
                 (
