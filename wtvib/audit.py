@@ -14,12 +14,19 @@ from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
 
 REPORT_SCHEMA = "wtvib-report/1"
 
-#: Subsystems in report order: name, mode builder, default damping ratio of the section.
-SUBSYSTEMS: tuple[tuple[str, Callable[[Spec], list[Mode]], Callable[[Spec], float]], ...] = (
-    ("tower", tower.modes, lambda s: s.tower.damping_ratio),
-    ("blade", blade.modes, lambda s: s.blade.damping_ratio),
-    ("drivetrain", drivetrain.modes, lambda s: s.drivetrain.damping_ratio),
-    ("yaw", yaw.modes, lambda s: s.yaw.damping_ratio),
+Built = dict[str, list[Mode]]
+
+#: Subsystems in report order: name, mode builder (given the modes built so far), default
+#: damping ratio of the section.
+SUBSYSTEMS: tuple[tuple[str, Callable[[Spec, Built], list[Mode]], Callable[[Spec], float]], ...] = (
+    ("tower", lambda s, b: tower.modes(s), lambda s: s.tower.damping_ratio),
+    ("blade", lambda s, b: blade.modes(s), lambda s: s.blade.damping_ratio),
+    (
+        "drivetrain",
+        lambda s, b: drivetrain.modes(s, b["blade"]),
+        lambda s: s.drivetrain.damping_ratio,
+    ),
+    ("yaw", lambda s, b: yaw.modes(s), lambda s: s.yaw.damping_ratio),
 )
 
 
@@ -108,8 +115,10 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
     checks: list[Check] = []
     findings: list[Finding] = []
     tower_class = None
+    built: Built = {}
     for name, build, damping in SUBSYSTEMS:
-        sub_modes = build(spec)
+        sub_modes = build(spec, built)
+        built[name] = sub_modes
         all_modes += sub_modes
         if name == "tower" and spec.rotor.orientation != "vertical-axis":
             first = tower.first_bending(sub_modes)
@@ -121,6 +130,10 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
         found = assess_all(sub_modes, lines, op, rule, settings.severities(), damping(spec))
         findings += found
         checks += resonance_checks(found, op, rule)
+        if name == "drivetrain":
+            checks = drivetrain.annotate(spec, built["blade"], checks)
+            power = drivetrain.power_check(spec, op, rule, lines)
+            checks += [power] if power else []
     _assert_finite(all_modes)
     return Report(
         spec=spec,

@@ -1,25 +1,372 @@
-"""Drive-train torsion: modes per generator condition (grid, free, locked)."""
+"""Drive-train torsion: N-mass chain, reduction to one shaft, generator coupling, modes.
 
+The chain runs from the rotor end (blades) to the generator; every inertia, stiffness and
+damping is reduced to the reference shaft conserving energy, J′ = i²J, k′ = i²k, d′ = i²d,
+with i = (speed of its shaft) / (reference speed) (Hau ch. 7.3.1). The blades' edgewise
+flexibility enters as a spring k_b = J_b·ω_edge² between blades and hub (Hau ch. 7.3.1;
+DOMAIN.md §3). The generator's electrical coupling (Hau Fig. 7.11) makes the conditions:
+
+* ``grid`` — synchronous on the grid: a torsion spring to ground (:func:`synchronous_stiffness`,
+  power dependent); induction on the grid: a damper to ground (:func:`induction_damping`),
+  which leaves a 0 Hz rigid-body root; converter-fed: free end with the controller's damping;
+* ``free`` — idling, isolated operation or after a grid loss: free end;
+* ``locked`` — brake applied: the generator end clamped.
+"""
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+from numpy.typing import NDArray
+
+from . import modal
+from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
-from .results import Mode
+from .results import Check, Mode, Rule, Shape
+from .rules import MarginRule
 from .spec import Spec
+
+Array = NDArray[np.float64]
 
 CONDITIONS = {
     "grid": "generator on the grid",
     "free": "idling / isolated operation (free end)",
     "locked": "brake applied (clamped end)",
 }
+#: Regimes in which each condition exists: on the grid in operation; free while idling,
+#: starting, stopping and after a grid loss (overspeed); locked only at standstill.
+REGIMES = {
+    "grid": frozenset({"steady", "quick-pass", "overspeed"}),
+    "free": frozenset({"start-up", "overspeed"}),
+    "locked": frozenset(),
+}
 
 
-def modes(spec: Spec) -> list[Mode]:
-    """Drive-train modes given in the spec (ids ``drivetrain.<condition>.<k>``)."""
+def synchronous_stiffness(
+    pull_out_power_w: float, power_w: float, pole_pairs: int, grid_hz: float
+) -> float:
+    """Magnetic torsional stiffness of a grid-coupled synchronous generator. [N·m/rad]
+
+    Notes
+    -----
+    Electrical torque T = (P_max/Ω_s)·sin δ with Ω_s = 2πf/p and electrical angle δ = p·θ;
+    for small oscillations about δ₀ = asin(P/P_max): c_m = dT/dθ = p²·P_max·cos δ₀/(2πf),
+    on the generator shaft. Example: P_max 3 MW, P 1.5 MW, p = 2, 50 Hz → δ₀ = 30°,
+    c_m ≈ 33,080 N·m/rad.
+
+    References
+    ----------
+    Hau ch. 7.3.2, Fig. 7.11 (magnetic torsion spring c_m); DOMAIN.md §3.
+    """
+    if not 0 <= power_w < pull_out_power_w:
+        raise ValueError("power must lie between 0 and the pull-out power")
+    delta0 = math.asin(power_w / pull_out_power_w)
+    return pole_pairs**2 * pull_out_power_w * math.cos(delta0) / (2 * math.pi * grid_hz)
+
+
+def induction_damping(rated_power_w: float, slip: float, pole_pairs: int, grid_hz: float) -> float:
+    """Magnetic damping of a grid-coupled induction generator. [N·m·s/rad]
+
+    Notes
+    -----
+    In the linear part of the torque–slip curve T = d_m·(Ω − Ω_s), so d_m = T_rated/(s·Ω_s)
+    with Ω_s = 2πf/p. The rated torque is taken at the rated, supersynchronous (generating)
+    speed Ω_s·(1 + s): T_rated = P/(Ω_s·(1 + s)). Example: 1.5 MW, s = 1 %, p = 2, 50 Hz →
+    d_m ≈ 6,019 N·m·s/rad.
+
+    References
+    ----------
+    Hau ch. 7.3.2, Fig. 7.11 (magnetic damper d_m); DOMAIN.md §3.
+    """
+    omega_s = 2 * math.pi * grid_hz / pole_pairs
+    torque = rated_power_w / (omega_s * (1 + slip))
+    return torque / (slip * omega_s)
+
+
+class ModelInputError(modal.ModalError):
+    """A drive-train model that lacks an input it needs for a condition."""
+
+
+@dataclass(frozen=True)
+class Chain:
+    """A drive train reduced to the reference shaft: inertias, and springs/dampers between."""
+
+    names: tuple[str, ...]
+    inertia: Array
+    stiffness: Array
+    damping: Array
+    generator_factor: float  # i² of the generator shaft, to reduce generator-side values
+
+    def matrices(self) -> tuple[Array, Array, Array]:
+        """M, K, D of the free–free chain."""
+        n = len(self.names)
+        k = np.zeros((n, n))
+        d = np.zeros((n, n))
+        for j, (kj, dj) in enumerate(zip(self.stiffness, self.damping, strict=True)):
+            for mat, val in ((k, kj), (d, dj)):
+                mat[j, j] += val
+                mat[j + 1, j + 1] += val
+                mat[j, j + 1] -= val
+                mat[j + 1, j] -= val
+        return np.diag(self.inertia), k, d
+
+
+def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
+    """The spec's chain reduced to its reference shaft.
+
+    With a first mass named ``blades`` and the blades' first edgewise frequency known, the
+    blade–hub connection gets the edgewise spring k_b = J_b·ω_edge² (in series with a given
+    shaft; alone where the connection is rigid). Other rigid connections merge their masses.
+    """
+    dt = spec.drivetrain
+    ref = 1.0 if dt.reference_shaft == "rotor" else dt.chain[-1].speed_ratio
+    names = [dt.chain[0].name]
+    inertia = [dt.chain[0].inertia_kgm2 * (dt.chain[0].speed_ratio / ref) ** 2]
+    stiffness: list[float] = []
+    damping: list[float] = []
+    for j, (shaft, mass) in enumerate(zip(dt.shafts, dt.chain[1:], strict=True)):
+        i2 = (shaft.speed_ratio / ref) ** 2
+        k = None if shaft.stiffness_nm_rad is None else shaft.stiffness_nm_rad * i2
+        if j == 0 and dt.blade_edge_spring and edge_hz and names[0] == "blades":
+            k_b = inertia[0] * (2 * math.pi * edge_hz) ** 2
+            k = k_b if k is None else 1.0 / (1.0 / k_b + 1.0 / k)
+        j_mass = mass.inertia_kgm2 * (mass.speed_ratio / ref) ** 2
+        if k is None:  # rigid: one mass
+            names[-1] = f"{names[-1]}+{mass.name}"
+            inertia[-1] += j_mass
+            continue
+        names.append(mass.name)
+        inertia.append(j_mass)
+        stiffness.append(k)
+        damping.append(shaft.damping_nms_rad * i2)
+    if not stiffness:
+        raise ModelInputError("the drive-train chain has no flexible connection left")
+    gen = (dt.chain[-1].speed_ratio / ref) ** 2
+    return Chain(tuple(names), np.array(inertia), np.array(stiffness), np.array(damping), gen)
+
+
+def conditions(spec: Spec) -> list[str]:
+    """The conditions the turbine can be in: grid (if coupled), free, locked."""
+    dt = spec.drivetrain
+    out = []
+    if dt.grid_coupling != "isolated" and (
+        dt.generator in ("synchronous", "induction", "converter") or dt.grid_coupling == "converter"
+    ):
+        out.append("grid")
+    return [*out, "free", "locked"]
+
+
+def system(
+    chain: Chain, spec: Spec, condition: str, power_fraction: float = 1.0
+) -> tuple[Array, Array, Array]:
+    """M, K, D of the chain in one condition (generator coupling applied to the last mass)."""
+    m, k, d = chain.matrices()
+    dt = spec.drivetrain
+    g = dt.generator_model
+    if condition == "locked":
+        return m[:-1, :-1], k[:-1, :-1], d[:-1, :-1]
+    if condition == "grid" and g is not None:
+        if dt.generator == "synchronous" and dt.grid_coupling == "direct":
+            if g.pull_out_power_kw is None:
+                raise ModelInputError(
+                    "drivetrain.generator_model.pull_out_power_kw is needed "
+                    "for a grid-coupled synchronous generator"
+                )
+            c_m = synchronous_stiffness(
+                g.pull_out_power_kw * 1e3,
+                power_fraction * g.rated_power_kw * 1e3,
+                g.pole_pairs,
+                g.grid_frequency_hz,
+            )
+            k[-1, -1] += c_m * chain.generator_factor
+        elif dt.generator == "induction" and dt.grid_coupling == "direct":
+            if g.rated_slip is None:
+                raise ModelInputError(
+                    "drivetrain.generator_model.rated_slip is needed for a "
+                    "grid-coupled induction generator"
+                )
+            d_m = induction_damping(
+                g.rated_power_kw * 1e3, g.rated_slip, g.pole_pairs, g.grid_frequency_hz
+            )
+            d[-1, -1] += d_m * chain.generator_factor
+        else:
+            d[-1, -1] += g.controller_damping_nms_rad * chain.generator_factor
+    return m, k, d
+
+
+def describe(shape: Array, names: tuple[str, ...], inertia: Array, condition: str) -> str:
+    """Which masses swing against which (Hau Fig. 7.12 wording), from a real mode shape.
+
+    Each side is named by the mass with the largest kinetic-energy share J·a² among those
+    moving that way; masses with under 1 % of the mode's energy count as standing still.
+    """
+    energy = inertia * shape**2
+    total = float(energy.sum()) or 1.0
+    moving = energy > 0.01 * total
+    pos = [i for i in range(len(shape)) if moving[i] and shape[i] > 0]
+    neg = [i for i in range(len(shape)) if moving[i] and shape[i] < 0]
+    ground = {"grid": "the grid", "locked": "the brake",
+              "free": "the nearly still rest of the train"}[condition]
+    if not pos or not neg:
+        side = pos or neg
+        if len(side) == len(shape):
+            return f"whole train against {ground}"
+        return f"{names[max(side, key=lambda i: energy[i])]} against {ground}"
+    return (
+        f"{names[max(pos, key=lambda i: energy[i])]} against "
+        f"{names[max(neg, key=lambda i: energy[i])]}"
+    )
+
+
+def edge_frequency(spec: Spec, blade_modes: list[Mode]) -> float | None:
+    """The blades' first edgewise frequency at standstill, computed or given. [Hz]"""
+    return next((m.frequency_hz for m in blade_modes if m.id == "blade.edge1"), None)
+
+
+def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
+    """Drive-train modes per condition (ids ``drivetrain.<condition>.<k>``)."""
+    if not spec.drivetrain.chain:
+        return _given(spec)
+    chain = reduce(spec, edge_frequency(spec, blade_modes or []))
+    out: list[Mode] = []
+    for condition in conditions(spec):
+        m, k, d = system(chain, spec, condition)
+        res = modal.damped(k, m, d)
+        names = chain.names[: m.shape[0]]
+        positions = tuple(float(i) for i in range(len(names)))
+        for j, f in enumerate(res.frequency_hz, start=1):
+            zeta = float(res.damping_ratio[j - 1])
+            out.append(
+                Mode(
+                    id=f"drivetrain.{condition}.{j}",
+                    subsystem="drivetrain",
+                    description=f"{ordinal(j)} drive-train torsion, {CONDITIONS[condition]}: "
+                    f"{describe(res.shapes[:, j - 1], names, np.diag(m), condition)} (computed)",
+                    frequency_hz=float(f),
+                    damping_ratio=zeta if zeta > 1e-6 else None,
+                    shape=Shape(positions, tuple(res.shapes[:, j - 1].tolist()), names),
+                    regimes=REGIMES[condition],
+                )
+            )
+    return out
+
+
+def _given(spec: Spec) -> list[Mode]:
     out: list[Mode] = []
     for condition, entries in spec.drivetrain.modes.items():
-        out += given_modes(
+        found = given_modes(
             "drivetrain",
             {f"{condition}.{k}": e for k, e in enumerate(entries, start=1)},
             lambda name, c=condition: (  # type: ignore[misc]
                 f"{ordinal(int(name.split('.')[1]))} drive-train torsion, {CONDITIONS[c]}"
             ),
         )
+        out += [replace(m, regimes=REGIMES[condition]) for m in found]
     return out
+
+
+def power_check(
+    spec: Spec, op: OperatingRange, rule: MarginRule, lines: list[Excitation]
+) -> Check | None:
+    """Synchronous generator on the grid: the first grid mode over the power range.
+
+    The magnetic stiffness falls with power (cos δ₀), so the grid modes sweep a band at a
+    fixed speed (Hau Fig. 7.14, MOD-0). Checked at 0–95 % power against the dominant
+    excitations over the steady operating speeds.
+    """
+    dt = spec.drivetrain
+    if not (
+        dt.chain
+        and dt.generator == "synchronous"
+        and dt.grid_coupling == "direct"
+        and dt.generator_model
+    ):
+        return None
+    chain = reduce(spec, None)
+    fractions = np.linspace(0.0, 0.95, 20)
+    curve = []
+    for p in fractions:
+        m, k, d = system(chain, spec, "grid", float(p))
+        curve.append(float(modal.damped(k, m, d).frequency_hz[0]))
+    speeds = np.concatenate([np.linspace(a, b, 25) for a, b in op.steady])
+    dominant = [e for e in lines if e.energy == "dominant" and e.acts_on("drivetrain")]
+    hits = [
+        (float(p), e.id)
+        for f, p in zip(curve, fractions, strict=True)
+        for e in dominant
+        if np.any(rule.violates(rule.separation(e.frequency_hz(speeds), f)))
+    ]
+    span = f"{min(curve):.3g}–{max(curve):.3g} Hz"
+    if hits:
+        powers = [p for p, _ in hits]
+        excs = ", ".join(sorted({e for _, e in hits}))
+        msg = (
+            f"1st grid mode spans {span} over 0–95 % power and comes within the margin "
+            f"of {excs} between {100 * min(powers):.0f} and {100 * max(powers):.0f} % "
+            "power: the power-dependent resonance of Hau Fig. 7.14"
+        )
+    else:
+        msg = f"1st grid mode spans {span} over 0–95 % power, clear of the dominant lines"
+    return Check(
+        id="drivetrain.grid.power",
+        subsystem="drivetrain",
+        status="fail" if hits else "pass",
+        message=msg,
+        rule=Rule(
+            f"synchronous c_m = p²·P_max·cos δ₀/(2πf); {rule.label}",
+            "Hau ch. 7.3.2–7.3.3, Figs. 7.11, 7.14",
+        ),
+        numbers={
+            "power_fraction": [round(float(p), 4) for p in fractions],
+            "frequency_hz": [round(f, 6) for f in curve],
+        },
+    )
+
+
+def annotate(spec: Spec, blade_modes: list[Mode], checks: list[Check]) -> list[Check]:
+    """Add the forced-response torque amplification to each drive-train resonance check."""
+    if not spec.drivetrain.chain:
+        return checks
+    chain = reduce(spec, edge_frequency(spec, blade_modes))
+    out = []
+    for c in checks:
+        mode = str(c.numbers.get("mode", ""))
+        if (
+            c.subsystem == "drivetrain"
+            and mode.startswith("drivetrain.")
+            and "excitation_hz" in c.numbers
+        ):
+            condition = mode.split(".")[1]
+            amp = torque_amplification(spec, chain, condition, float(c.numbers["excitation_hz"]))
+            c = replace(
+                c,
+                numbers={**c.numbers, "torque_amplification": round(amp, 4)},
+                message=f"{c.message}; shaft torque amplification {amp:.3g}",
+            )
+        out.append(c)
+    return out
+
+
+def torque_amplification(spec: Spec, chain: Chain, condition: str, f_hz: float) -> float:
+    """Largest shaft torque over an input torque of unit amplitude at the rotor end.
+
+    Notes
+    -----
+    Steady harmonic response (K − ω²M + iωD)·q = F with F = (1, 0, …); shaft torque
+    k_j·(q_j − q_{j+1}) + iω·d_j·(q_j − q_{j+1}). Below the first mode a grid-coupled train
+    passes the torque on (≈1); at a lightly damped resonance it is amplified.
+    """
+    m, k, d = system(chain, spec, condition)
+    w = 2 * math.pi * f_hz
+    force = np.zeros(m.shape[0], dtype=complex)
+    force[0] = 1.0
+    try:
+        q = np.linalg.solve(k - w**2 * m + 1j * w * d, force)
+    except np.linalg.LinAlgError:
+        return float("inf")
+    n = m.shape[0]
+    twist = q[: n - 1] - q[1:n]
+    torques = (chain.stiffness[: n - 1] + 1j * w * chain.damping[: n - 1]) * twist
+    if condition == "locked":
+        torques = np.append(torques, (chain.stiffness[-1] + 1j * w * chain.damping[-1]) * q[-1])
+    return float(np.max(np.abs(torques)))

@@ -107,3 +107,52 @@ def track(previous: Array, current: Array) -> NDArray[np.intp]:
         order[i] = j
         free.remove(j)
     return order
+
+
+@dataclass(frozen=True)
+class DampedModes:
+    """Oscillatory modes of M q̈ + D q̇ + K q = 0: natural frequency |λ|/2π, damping
+    ratio −Re λ/|λ| and (real, phase-aligned) shapes; ``rigid`` counts non-oscillatory
+    roots (rigid-body motion, or overdamped)."""
+
+    frequency_hz: Array
+    damping_ratio: Array
+    shapes: Array
+    rigid: int
+
+
+def damped(k: Array, m: Array, d: Array) -> DampedModes:
+    """Damped modes by the state-space eigenproblem (first-order form).
+
+    Notes
+    -----
+    A = [[0, I], [−M⁻¹K, −M⁻¹D]]; eigenvalues λ = −ζω ± iω√(1−ζ²). Each conjugate pair is
+    one mode; real eigenvalues (λ ≈ 0 rigid-body rotation, or overdamped motion) are counted
+    in ``rigid``.
+
+    References
+    ----------
+    D. J. Inman, *Engineering Vibration*, §4.10 (state-space modal analysis).
+    """
+    n = k.shape[0]
+    if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m)) and np.all(np.isfinite(d))):
+        raise ModalError("the drive-train matrices hold NaN or infinite values")
+    try:
+        minv = np.linalg.inv(m)
+    except np.linalg.LinAlgError:
+        raise ModalError("the inertia matrix is singular (a zero inertia?)") from None
+    a = np.block([[np.zeros((n, n)), np.eye(n)], [-minv @ k, -minv @ d]])
+    lam, vec = np.linalg.eig(a)
+    scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
+    osc = lam.imag > 1e-9 * scale
+    if np.any(lam.real > 1e-9 * scale):
+        raise ModalError("the drive train is unstable (an eigenvalue with positive real part)")
+    lam, vec = lam[osc], vec[:n, osc]
+    order = np.argsort(np.abs(lam))
+    lam, vec = lam[order], vec[:, order]
+    shapes = np.empty((n, len(lam)))
+    for j in range(len(lam)):
+        v = vec[:, j]
+        v = v * np.exp(-1j * np.angle(v[np.argmax(np.abs(v))]))  # align the phase
+        shapes[:, j] = v.real / np.max(np.abs(v.real))
+    return DampedModes(np.abs(lam) / (2 * np.pi), -lam.real / np.abs(lam), shapes, n - len(lam))

@@ -84,6 +84,8 @@ def assess(
     forbidden = tuple(_runs(gap, grid, rule.violates(sep(grid))))
 
     violations = _split_by_regime(forbidden, op, gap)
+    if mode.regimes is not None:  # a condition that exists only in some regimes
+        violations = {k: (v if k in mode.regimes else ()) for k, v in violations.items()}
     energy = severity[exc.energy]
     if exc.energy == "secondary" and not any(gap(w) < 0 for w in op.dwell):
         energy = _MILDER[energy]  # swept through in partial load, not dwelt at (Hau 7.5.2)

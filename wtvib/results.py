@@ -61,6 +61,7 @@ class Shape:
 
     position_m: tuple[float, ...]
     deflection: tuple[float, ...]
+    labels: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -78,6 +79,7 @@ class Mode:
     damping_ratio: float | None = None
     curve: SpeedCurve | None = None
     shape: Shape | None = field(default=None, compare=False)
+    regimes: frozenset[str] | None = None  # operating regimes the mode exists in (None: all)
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
@@ -94,6 +96,7 @@ class Mode:
             "frequency_hz": round(self.frequency_hz, 6),
             "damping_ratio": self.damping_ratio,
             "speed_dependent": self.curve is not None,
+            **({"regimes": sorted(self.regimes)} if self.regimes is not None else {}),
         }
 
 

@@ -208,7 +208,28 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "damping_ratio": main_damping(blade, "BldFlDmp(1)"),
             "structure": structure,
         },
-        "drivetrain": {"gear_ratio": q(main.num("GBRatio"), "GBRatio")},
+        "drivetrain": {
+            "gear_ratio": q(main.num("GBRatio"), "GBRatio"),
+            "chain": [
+                {
+                    "name": "blades",
+                    "inertia_kgm2": q(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
+                },
+                {"name": "hub", "inertia_kgm2": q(main.num("HubIner"), "HubIner")},
+                {
+                    "name": "generator",
+                    "inertia_kgm2": q(main.num("GenIner"), "GenIner (HSS)"),
+                    "speed_ratio": q(main.num("GBRatio"), "GBRatio"),
+                },
+            ],
+            "shafts": [
+                {"stiffness_nm_rad": None},  # blades–hub: the blades' edgewise spring
+                {
+                    "stiffness_nm_rad": q(main.num("DTTorSpr"), "DTTorSpr (LSS equivalent)"),
+                    "damping_nms_rad": q(main.num("DTTorDmp", default=0.0), "DTTorDmp"),
+                },
+            ],
+        },
         "assumptions": [
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",
@@ -279,6 +300,7 @@ def tower_head(
         "roll": roll,
         "yaw": max(yaw, 0.0),
         "hub_above_top": z_apex,
+        "j_blades": j_blades,
     }, text
 
 
