@@ -127,12 +127,20 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
                 c = tower.classify(first, harmonics, spec.rotor.blades, op, rule, damping(spec))
                 tower_class = c.tower_class
                 checks.append(tower.class_check(c, spec.rotor.blades, op, rule))
-        found = assess_all(sub_modes, lines, op, rule, settings.severities(), damping(spec))
+        found = assess_all(
+            sub_modes,
+            lines,
+            op,
+            rule,
+            settings.severities(),
+            damping(spec),
+            settings.heavy_damping_ratio,
+        )
         findings += found
         checks += resonance_checks(found, op, rule)
         if name == "drivetrain":
             checks = drivetrain.annotate(spec, built["blade"], checks)
-            power = drivetrain.power_check(spec, op, rule, lines)
+            power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)
             checks += [power] if power else []
     _assert_finite(all_modes)
     return Report(

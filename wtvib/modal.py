@@ -144,8 +144,11 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
     a = np.block([[np.zeros((n, n)), np.eye(n)], [-minv @ k, -minv @ d]])
     lam, vec = np.linalg.eig(a)
     scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
-    osc = lam.imag > 1e-9 * scale
-    if np.any(lam.real > 1e-9 * scale):
+    # λ ≈ 0 (a rigid-body root: a defective double root that rounding splits into a pair of
+    # size ~√ε·|λ|max) is neither an oscillation nor an instability
+    tiny = 1e-5 * scale
+    osc = (lam.imag > 1e-9 * scale) & (np.abs(lam) > tiny)
+    if np.any((lam.real > 1e-9 * scale) & (np.abs(lam) > tiny)):
         raise ModalError("the drive train is unstable (an eigenvalue with positive real part)")
     lam, vec = lam[osc], vec[:n, osc]
     order = np.argsort(np.abs(lam))

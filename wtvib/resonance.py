@@ -65,6 +65,7 @@ def assess(
     rule: MarginRule,
     severity: Mapping[str, Status],
     default_damping: float,
+    heavy_damping: float = 0.3,
 ) -> Finding:
     """Judge one mode against one excitation line over 0 → overspeed."""
 
@@ -95,6 +96,9 @@ def assess(
         "overspeed": _MILDER[energy],
         "start-up": "info" if exc.energy != "minor" and energy != "pass" else "pass",
     }
+    if mode.damping_ratio is not None and mode.damping_ratio >= heavy_damping:
+        # no resonant peak to speak of: report, do not judge (see AuditSettings)
+        regime_status = {k: ("info" if v != "pass" else v) for k, v in regime_status.items()}
     hit = [name for name in regime_status if violations[name]]
     status = worst([regime_status[name] for name in hit])
     # The governing regime: the first (most steady) one whose status is the worst.
@@ -271,10 +275,11 @@ def assess_all(
     rule: MarginRule,
     severity: Mapping[str, Status],
     default_damping: float,
+    heavy_damping: float = 0.3,
 ) -> list[Finding]:
     """Every mode against every excitation that acts on its subsystem."""
     return [
-        assess(m, e, op, rule, severity, default_damping)
+        assess(m, e, op, rule, severity, default_damping, heavy_damping)
         for e in excitations
         for m in modes
         if e.acts_on(m.subsystem)
@@ -365,6 +370,12 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         where = "at the operating speed" if not op.variable else "over the operating range"
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
     spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
+    if f.mode.damping_ratio is not None and f.status == "info" and f.regime != "start-up":
+        zeta = f.mode.damping_ratio
+        return (
+            f"{name} within the margin of {exc} ({f.regime}, {spans}) but heavily damped "
+            f"(ζ = {zeta:.2f}): no resonant peak, info"
+        )
     if f.regime == "steady":
         text = f"{name} within the margin of {exc} in steady operation at {spans}: "
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"

@@ -558,6 +558,13 @@ class AuditSettings(_Strict):
     )
     margin: float | None = Field(None, gt=0, lt=1, description="Margin m (0.10 = 10 %). [-]")
     harmonics: int = Field(6, ge=1, le=60, description="Highest rotor harmonic kP checked.")
+    heavy_damping_ratio: float = Field(
+        0.3,
+        gt=0,
+        le=1,
+        description="A mode at least this damped (peak amplification 1/(2ζ√(1−ζ²)) ≤ 1.75 at "
+        "0.3) has no resonant peak: its margin violations are reported as info. [-]",
+    )
     severity: Severity = Field(default_factory=Severity)
 
     def severities(self) -> dict[str, Status]:
