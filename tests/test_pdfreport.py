@@ -39,8 +39,8 @@ def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
     images = [img for page in reader.pages for img in page.images]
     from wtvib.campbell import diagrams
 
-    # one image per Campbell diagram: tower and blades, drive train
-    assert len(images) == len(diagrams(audit.run(spec.load(TURBINES / "wka-60.yaml")))) == 2
+    # one image per diagram: tower and blades, drive-train Campbell and mode shapes
+    assert len(images) == len(diagrams(audit.run(spec.load(TURBINES / "wka-60.yaml")))) == 3
     assert images[0].image.size[0] >= 1500  # 10 in at 150 dpi
 
 

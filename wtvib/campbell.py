@@ -251,10 +251,17 @@ def png_bytes(fig: "Figure") -> bytes:
 
 
 def diagrams(report: Report) -> dict[str, "Figure"]:
-    """Every Campbell diagram the report has modes for, keyed by file stem suffix."""
+    """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
+    keyed by file stem suffix."""
+    from .modeshapes import drivetrain_shapes_plot
+
     present = {m.subsystem for m in report.modes}
-    return {
+    out = {
         name: campbell_plot(report, subs)
         for name, subs in DIAGRAMS.items()
         if present.intersection(subs)
     }
+    shapes = drivetrain_shapes_plot(report)
+    if shapes is not None:
+        out["drivetrain-modes"] = shapes
+    return out

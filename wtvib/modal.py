@@ -112,8 +112,8 @@ def track(previous: Array, current: Array) -> NDArray[np.intp]:
 @dataclass(frozen=True)
 class DampedModes:
     """Oscillatory modes of M q̈ + D q̇ + K q = 0: natural frequency |λ|/2π, damping
-    ratio −Re λ/|λ| and (real, phase-aligned) shapes; ``rigid`` counts non-oscillatory
-    roots (rigid-body motion, or overdamped)."""
+    ratio −Re λ/|λ| and (real, phase-aligned) shapes; ``rigid`` counts the degrees of
+    freedom without an oscillation (rigid-body motion, or overdamped)."""
 
     frequency_hz: Array
     damping_ratio: Array
@@ -127,8 +127,8 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
     Notes
     -----
     A = [[0, I], [−M⁻¹K, −M⁻¹D]]; eigenvalues λ = −ζω ± iω√(1−ζ²). Each conjugate pair is
-    one mode; real eigenvalues (λ ≈ 0 rigid-body rotation, or overdamped motion) are counted
-    in ``rigid``.
+    one mode; the degrees of freedom left over (λ ≈ 0 rigid-body rotation, or real roots of
+    overdamped motion) are counted in ``rigid``.
 
     References
     ----------

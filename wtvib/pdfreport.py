@@ -25,10 +25,10 @@ SUBSYSTEM_NAMES = {
     "yaw": "Yaw system",
 }
 DIAGRAM_FOR = {
-    "tower": "campbell",
-    "blade": "campbell",
-    "drivetrain": "campbell-drivetrain",
-    "yaw": "campbell-yaw",
+    "tower": ("campbell",),
+    "blade": ("campbell",),
+    "drivetrain": ("campbell-drivetrain", "drivetrain-modes"),
+    "yaw": ("campbell-yaw",),
 }
 
 
@@ -235,12 +235,17 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             for m in modes
         ]
         out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
-        diagram = DIAGRAM_FOR[sub]
-        if diagram in pngs and diagram not in drawn:
+        for diagram in DIAGRAM_FOR[sub]:
+            if diagram not in pngs or diagram in drawn:
+                continue
             drawn.add(diagram)
             out += [
                 k.Spacer(1, 2 * k.mm),
-                k.Image(io.BytesIO(pngs[diagram]), width=k.width, height=k.width * 0.7),
+                k.Image(
+                    io.BytesIO(pngs[diagram]),
+                    width=k.width,
+                    height=k.width * _aspect(pngs[diagram]),
+                ),
             ]
         rows = [k.header("status", "check", "numbers", "rule and source")]
         rows += [
@@ -283,6 +288,13 @@ def _footer(canvas, doc) -> None:  # type: ignore[no-untyped-def]
     canvas.drawString(doc.leftMargin, 10, f"wtvib {__version__} — vibration audit")
     canvas.drawRightString(doc.pagesize[0] - doc.rightMargin, 10, f"page {doc.page}")
     canvas.restoreState()
+
+
+def _aspect(png: bytes) -> float:
+    """Height over width of a PNG (from its IHDR chunk)."""
+    width = int.from_bytes(png[16:20], "big")
+    height = int.from_bytes(png[20:24], "big")
+    return height / width if width else 0.7
 
 
 def _rule_text(check_rule: dict[str, str], margin_rule: dict[str, Any]) -> str:

@@ -1,0 +1,49 @@
+"""Mode-shape drawings (drive train: which masses swing against which, Hau Fig. 7.12).
+
+Calculate first, draw second: the shapes come from :class:`~wtvib.results.Mode` objects.
+"""
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .audit import Report
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
+def drivetrain_shapes_plot(report: Report) -> "Figure | None":
+    """One panel per condition: each computed drive-train mode's twist amplitude per mass."""
+    from matplotlib.figure import Figure
+
+    modes = [m for m in report.modes if m.subsystem == "drivetrain" and m.shape is not None]
+    if not modes:
+        return None
+    conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
+    fig = Figure(figsize=(10, 2.6 * len(conditions) + 0.8), dpi=150, layout="constrained")
+    axes = fig.subplots(len(conditions), 1, squeeze=False)[:, 0]
+    for ax, condition in zip(axes, conditions, strict=True):
+        for m in (m for m in modes if m.id.split(".")[1] == condition):
+            assert m.shape is not None
+            x = np.arange(len(m.shape.deflection))
+            ax.plot(
+                x,
+                m.shape.deflection,
+                marker="o",
+                lw=2,
+                label=f"{m.id.split('.', 1)[1]}: {m.frequency_hz:.3g} Hz — "
+                f"{m.description.split(': ', 1)[-1].replace(' (computed)', '')}",
+            )
+            ax.set_xticks(x, m.shape.labels or [str(i) for i in x])
+        ax.axhline(0, color="#9e9e9e", lw=0.8)
+        ax.set_ylabel("twist amplitude")
+        ax.set_title(f"condition: {condition}", loc="left", fontsize=10)
+        ax.legend(fontsize=7, loc="best")
+        ax.grid(True, alpha=0.3)
+    fig.suptitle(
+        f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
+        f"{report.spec.drivetrain.reference_shaft} shaft)",
+        fontweight="bold",
+    )
+    return fig
