@@ -131,7 +131,8 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
 
     ax.set_xlim(0, rpm_top)
     low = min((m.frequency_hz for m in modes), default=f_top)
-    if top_mode / low > 20:  # modes spanning decades (drive trains): log scale
+    shown_top = max((m.frequency_hz for m in modes), default=low)
+    if shown_top / low > 20:  # modes spanning decades (drive trains): log scale
         ax.set_yscale("log")
         ax.set_ylim(low * 0.5, f_top)
     else:
@@ -148,11 +149,12 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         fontweight="bold",
     )
     if hidden:
-        names = ", ".join(f"{m.id} {m.frequency_hz:.3g} Hz" for m in hidden)
         ax.text(
             0.99,
             0.99,
-            f"above every excitation line, not drawn: {names}",
+            f"{len(hidden)} mode(s) above every excitation line not drawn "
+            f"({min(m.frequency_hz for m in hidden):.3g}–"
+            f"{max(m.frequency_hz for m in hidden):.3g} Hz)",
             transform=ax.transAxes,
             ha="right",
             va="top",
@@ -253,7 +255,7 @@ def png_bytes(fig: "Figure") -> bytes:
 def diagrams(report: Report) -> dict[str, "Figure"]:
     """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
     keyed by file stem suffix."""
-    from .modeshapes import drivetrain_shapes_plot
+    from .modeshapes import drivetrain_shapes_plot, power_curve_plot
 
     present = {m.subsystem for m in report.modes}
     out = {
@@ -261,7 +263,10 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         for name, subs in DIAGRAMS.items()
         if present.intersection(subs)
     }
-    shapes = drivetrain_shapes_plot(report)
-    if shapes is not None:
-        out["drivetrain-modes"] = shapes
+    for name, fig in (
+        ("drivetrain-modes", drivetrain_shapes_plot(report)),
+        ("drivetrain-power", power_curve_plot(report)),
+    ):
+        if fig is not None:
+            out[name] = fig
     return out

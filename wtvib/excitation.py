@@ -70,10 +70,11 @@ class Excitation:
     energy: Energy
     description: str
     subsystems: frozenset[str] | None = None
+    offset_hz: float = 0.0  # a fixed-frequency excitation has order 0 and this offset
 
     def frequency_hz(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Excitation frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
-        return self.order * np.asarray(omega, dtype=float) / (2.0 * np.pi)
+        return self.order * np.asarray(omega, dtype=float) / (2.0 * np.pi) + self.offset_hz
 
     def acts_on(self, subsystem: str) -> bool:
         return self.subsystems is None or subsystem in self.subsystems
@@ -134,6 +135,26 @@ def gear_mesh(spec: Spec) -> list[Excitation]:
     ]
 
 
+def electrical(spec: Spec) -> list[Excitation]:
+    """Generator-side excitations at fixed frequencies (Hau ch. 7.3.4: grid oscillations,
+    inverters, control), acting on the drive train."""
+    return [
+        Excitation(
+            f"electrical.{e.name}",
+            0.0,
+            e.energy,
+            f"generator side: {e.name}",
+            frozenset({"drivetrain"}),
+            e.frequency_hz,
+        )
+        for e in spec.drivetrain.electrical_excitations
+    ]
+
+
 def excitations(spec: Spec) -> list[Excitation]:
     """Every excitation the audit checks for this turbine."""
-    return rotor_harmonics(spec.rotor.blades, spec.audit.harmonics) + gear_mesh(spec)
+    return (
+        rotor_harmonics(spec.rotor.blades, spec.audit.harmonics)
+        + gear_mesh(spec)
+        + electrical(spec)
+    )

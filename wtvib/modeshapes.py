@@ -47,3 +47,42 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
         fontweight="bold",
     )
     return fig
+
+
+def power_curve_plot(report: Report) -> "Figure | None":
+    """The grid-coupled synchronous drive train's first mode over power (Hau Fig. 7.14)."""
+    from matplotlib.figure import Figure
+
+    check = next((c for c in report.checks if c.id == "drivetrain.grid.power"), None)
+    if check is None:
+        return None
+    power = 100 * np.asarray(check.numbers["power_fraction"])
+    freq = np.asarray(check.numbers["frequency_hz"])
+    fig = Figure(figsize=(8, 4.5), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    ax.plot(power, freq, lw=2.2, color="#1f77b4", label="1st grid mode")
+    speed = report.spec.rotor.speed
+    lo, hi = report.rule.natural_band(1.0)
+    for k in sorted({1, report.spec.rotor.blades}):
+        for a, _ in speed.steady_rpm:
+            f_e = k * a / 60.0
+            ax.axhline(f_e, color="#212121", lw=1.4)
+            ax.axhspan(f_e * lo, f_e * hi, color="#e53935", alpha=0.12, lw=0)
+            ax.annotate(
+                f"{k}P at {a:g} rpm",
+                (power[-1], f_e),
+                xytext=(-4, 3),
+                textcoords="offset points",
+                ha="right",
+                fontsize=9,
+            )
+    ax.set_xlabel("electrical power [% of rated]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.set_title(
+        f"{report.spec.turbine.name} — drive train on the grid: frequency vs power "
+        f"({check.status.upper()})",
+        fontweight="bold",
+    )
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    return fig

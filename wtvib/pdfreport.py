@@ -27,7 +27,7 @@ SUBSYSTEM_NAMES = {
 DIAGRAM_FOR = {
     "tower": ("campbell",),
     "blade": ("campbell",),
-    "drivetrain": ("campbell-drivetrain", "drivetrain-modes"),
+    "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
 }
 

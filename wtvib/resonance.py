@@ -54,8 +54,12 @@ class Finding:
     regime_status: dict[str, Status]
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
-        """Status of a violation at one rotor speed, by the regime that speed is in."""
-        return self.regime_status[regime_of(omega, op)]
+        """Status of a violation at one rotor speed, by the regime that speed is in (pass
+        where the mode does not exist, e.g. a grid mode during start-up)."""
+        regime = regime_of(omega, op)
+        if self.mode.regimes is not None and regime not in self.mode.regimes:
+            return "pass"
+        return self.regime_status[regime]
 
 
 def assess(

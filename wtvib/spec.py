@@ -452,6 +452,16 @@ class ChainShaft(_Strict):
     )
 
 
+class FixedExcitation(_Strict):
+    """An excitation at a fixed frequency (grid, converter switching, …)."""
+
+    name: str = Field(min_length=1, description="Used in the excitation id.")
+    frequency_hz: Positive = Field(description="Excitation frequency. [Hz]")
+    energy: Literal["dominant", "secondary", "minor"] = Field(
+        "dominant", description="How serious a resonance with it is."
+    )
+
+
 class GeneratorModel(_Strict):
     """The generator's electrical coupling (Hau Fig. 7.11), for small oscillations."""
 
@@ -508,6 +518,10 @@ class Drivetrain(_Strict):
         "rotor", description="Shaft all inertias and stiffnesses are reduced to."
     )
     generator_model: GeneratorModel | None = None
+    electrical_excitations: list[FixedExcitation] = Field(
+        default_factory=list,
+        description="Generator-side excitations at fixed frequencies (grid, converter).",
+    )
 
     @model_validator(mode="after")
     def _chain(self) -> "Drivetrain":
