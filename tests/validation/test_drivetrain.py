@@ -163,3 +163,13 @@ def test_forced_response_peaks_at_resonance():
     # undamped free–free train: far below resonance the shaft passes J₂/(J₁+J₂) of the torque
     assert below == pytest.approx(2e5 / 1.2e6, rel=0.05)
     assert near > 10 * below
+
+
+def test_fixed_frequency_electrical_excitation_is_checked():
+    # a converter-fed train (grid condition = free end) with a converter line on its mode
+    f_n = math.sqrt(180) / (2 * math.pi)
+    s = two_mass(generator="converter", grid_coupling="converter",
+                 electrical_excitations=[{"name": "converter", "frequency_hz": f_n * 1.02}])
+    c = next(c for c in audit.run(s).checks if c.id == "drivetrain.resonance.electrical.converter")
+    assert c.status == "fail" and c.numbers["mode"] == "drivetrain.grid.1"
+    assert c.numbers["excitation_hz"] == pytest.approx(f_n * 1.02, rel=1e-6)
