@@ -138,6 +138,8 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
         )
         findings += found
         checks += resonance_checks(found, op, rule)
+        if name == "yaw":
+            checks += yaw.checks(spec, op, rule, lines)
         if name == "drivetrain":
             checks = drivetrain.annotate(spec, built["blade"], checks)
             power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)

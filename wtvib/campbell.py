@@ -97,6 +97,17 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
         ax.plot(rpm, f_n, color=colour, lw=2.2, label=f"{mode.id}  {mode.frequency_hz:.3g} Hz")
 
+    by_id = {m.id: m for m in modes}
+    if "yaw.1" in by_id and "yaw.play.1" in by_id:  # Hau Fig. 7.18: the band play opens
+        ax.fill_between(
+            rpm,
+            by_id["yaw.play.1"].frequency_at(omega),
+            by_id["yaw.1"].frequency_at(omega),
+            color="#ff7043",
+            alpha=0.25,
+            lw=0,
+            label="yaw frequency range with gear play",
+        )
     for f in findings:
         for c in f.crossings:
             f_c = float(f.excitation.frequency_hz(np.array([c]))[0])

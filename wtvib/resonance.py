@@ -52,6 +52,7 @@ class Finding:
     forbidden: tuple[Interval, ...]
     violations: dict[str, tuple[Interval, ...]]
     regime_status: dict[str, Status]
+    heavily_damped: bool = False
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
         """Status of a violation at one rotor speed, by the regime that speed is in (pass
@@ -100,7 +101,8 @@ def assess(
         "overspeed": _MILDER[energy],
         "start-up": "info" if exc.energy != "minor" and energy != "pass" else "pass",
     }
-    if mode.damping_ratio is not None and mode.damping_ratio >= heavy_damping:
+    heavily_damped = mode.damping_ratio is not None and mode.damping_ratio >= heavy_damping
+    if heavily_damped:
         # no resonant peak to speak of: report, do not judge (see AuditSettings)
         regime_status = {k: ("info" if v != "pass" else v) for k, v in regime_status.items()}
     hit = [name for name in regime_status if violations[name]]
@@ -130,6 +132,7 @@ def assess(
         forbidden,
         violations,
         regime_status,
+        heavily_damped,
     )
 
 
@@ -374,8 +377,8 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         where = "at the operating speed" if not op.variable else "over the operating range"
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
     spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
-    if f.mode.damping_ratio is not None and f.status == "info" and f.regime != "start-up":
-        zeta = f.mode.damping_ratio
+    if f.heavily_damped and f.regime not in (None, "start-up"):
+        zeta = f.mode.damping_ratio or 0.0
         return (
             f"{name} within the margin of {exc} ({f.regime}, {spans}) but heavily damped "
             f"(ζ = {zeta:.2f}): no resonant peak, info"

@@ -25,7 +25,8 @@ STORIES = {
     "tjaereborg": ("soft", "pass"),  # "passes through the tower resonance during start-up"
     "wka-60": ("resonant", "fail"),  # "coincided precisely with the 2P excitation"
     "growian": ("soft", "warn"),  # soft tower; drive train meets 2P at 115 % overspeed
-    "aeroman": ("stiff", "fail"),  # 4th drive-train mode on the stage-2 mesh frequency
+    "aeroman": ("stiff", "fail"),  # 4th drive-train mode on the stage-2 mesh; yaw play
+    "aeroman-retrofit": ("stiff", "fail"),  # yaw cured by the active drive; gearbox unchanged
     "euros-44m": (None, "warn"),  # blade case: no tower; 3P meets flap only at 18 rpm
     "darrieus": (None, "pass"),  # vertical axis: no stiff/soft class
     "nrel-5mw": ("resonant", "fail"),  # 3P at 6.9 rpm is 6 % from the tower (< 10 %)

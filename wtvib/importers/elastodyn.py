@@ -230,6 +230,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
                 },
             ],
         },
+        **_yaw(main, path),
         "assumptions": [
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",
@@ -302,6 +303,32 @@ def tower_head(
         "hub_above_top": z_apex,
         "j_blades": j_blades,
     }, text
+
+
+def _yaw(main: Deck, path: Path) -> dict[str, Any]:
+    """Yaw spring from the deck (FAST v7) or a ServoDyn file beside it (OpenFAST)."""
+    decks = [main] + [parse(p) for p in sorted(path.parent.glob("*ServoDyn*.dat"))]
+    for deck in decks:
+        if "YawSpr" in deck.values and deck.num("YawSpr") > 0:
+            src = f"YawSpr in {deck.path.name}"
+            yaw: dict[str, Any] = {
+                "drive": "active",
+                "drive_stiffness_nm_rad": {
+                    "value": deck.num("YawSpr"),
+                    "provenance": "published",
+                    "source": "deck",
+                    "note": src,
+                },
+            }
+            if deck.num("YawManRat", default=0.0) > 0:
+                yaw["yaw_rate_deg_s"] = {
+                    "value": deck.num("YawManRat"),
+                    "provenance": "published",
+                    "source": "deck",
+                    "note": f"YawManRat in {deck.path.name}",
+                }
+            return {"yaw": yaw}
+    return {}
 
 
 def main_damping(deck: Deck, key: str) -> float:
