@@ -7,6 +7,7 @@ from typing import Any
 
 from . import blade, drivetrain, tower, yaw
 from .excitation import excitations, operating_range
+from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
 from .results import Check, Mode, Southwell
 from .rules import MarginRule, Status, worst
@@ -41,6 +42,7 @@ class Report:
     tower_class: str | None
     findings: tuple[Finding, ...] = field(default_factory=tuple)
     assumptions: tuple[str, ...] = field(default_factory=tuple)
+    warnings: tuple[str, ...] = field(default_factory=tuple)
 
     @property
     def rule(self) -> MarginRule:
@@ -85,6 +87,7 @@ class Report:
             "modes": [m.to_dict() for m in self.modes],
             "checks": [c.to_dict() for c in self.checks],
             "assumptions": list(self.assumptions),
+            "warnings": list(self.warnings),
             "inputs": {
                 path: {
                     "value": q.value,
@@ -153,13 +156,58 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
         tower_class=tower_class,
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes)),
+        warnings=tuple(suspicious(spec, all_modes)),
     )
 
 
 def _assert_finite(modes: list[Mode]) -> None:
+    """Every reported frequency is finite and non-negative (the report boundary)."""
     for m in modes:
         if not (math.isfinite(m.frequency_hz) and m.frequency_hz >= 0):
-            raise AssertionError(f"mode {m.id} has frequency {m.frequency_hz}")
+            raise ModalError(
+                f"mode {m.id} came out with frequency {m.frequency_hz}: the model "
+                "is ill-conditioned; check its stiffnesses and masses"
+            )
+
+
+def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
+    """Legal but suspicious inputs, each with the reason (issue 9: warn, do not refuse)."""
+    out = []
+    speed = spec.rotor.speed
+    diameter = spec.turbine.rotor_diameter_m
+    if diameter and diameter > 40 and speed.top_rpm > 100:
+        out.append(
+            f"rotor.speed: {speed.top_rpm:g} rpm for a {diameter:g} m rotor — probably "
+            "rad/s or the generator speed, not the rotor's rpm"
+        )
+    if diameter:
+        tip = math.pi * diameter * speed.top_rpm / 60
+        if tip > 120:
+            out.append(f"rotor.speed: tip speed {tip:.0f} m/s exceeds 120 m/s — unusual")
+    if speed.overspeed > 1.5 * speed.top_rpm:
+        out.append(
+            f"rotor.speed: overspeed {speed.overspeed:g} rpm is more than 150 % of the "
+            "highest steady speed"
+        )
+    for m in modes:
+        if m.subsystem == "tower" and m.id.endswith(("fa1", "ss1")):
+            if m.frequency_hz > 20:
+                out.append(
+                    f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
+                    "over 20 Hz is implausible (units? kHz, rad/s?)"
+                )
+            elif m.frequency_hz < 0.05:
+                out.append(
+                    f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
+                    "under 0.05 Hz is implausible"
+                )
+    head, blades = spec.tower_head, spec.blade.mass_kg
+    if head and blades and blades * spec.rotor.blades > 0.9 * head.mass_kg:
+        out.append(
+            f"blade.mass_kg: {spec.rotor.blades} blades of {blades:,.0f} kg outweigh the "
+            f"rest of the tower head ({head.mass_kg:,.0f} kg in all) — check the masses"
+        )
+    return out
 
 
 def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:

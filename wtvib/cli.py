@@ -140,6 +140,8 @@ def check(
         from .report import terminal
 
         terminal(report, Console(), written=written, show_all=show_all)
+    for warning in report.warnings:
+        typer.echo(f"warning: {warning}", err=True)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")
     raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
 

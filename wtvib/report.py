@@ -41,6 +41,8 @@ def terminal(
         console.print(
             f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
         )
+    for line in data.get("warnings", []):
+        console.print(Text(f"warning: {line}", style="yellow"))
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
         console.print(Text(f"  • {line}"))

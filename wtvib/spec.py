@@ -15,6 +15,7 @@ the YAML line. Past this module, code trusts the spec (STYLE.md habit 4).
 """
 
 import itertools
+import os
 from collections.abc import Mapping
 from pathlib import Path as FsPath
 from typing import Annotated, Any, Literal
@@ -36,8 +37,9 @@ from .yamlio import Document, Path, format_path, parse
 
 FORMAT_VERSION = 1
 
-#: Files larger than this are refused before parsing (overridable by callers).
-MAX_FILE_BYTES = 20 * 1024 * 1024
+#: Files larger than this are refused before parsing; override with the environment
+#: variable WTVIB_MAX_BYTES (bytes) or the ``max_bytes`` argument.
+MAX_FILE_BYTES = int(os.environ.get("WTVIB_MAX_BYTES", 20 * 1024 * 1024))
 
 
 class _Strict(BaseModel):

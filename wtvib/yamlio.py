@@ -17,9 +17,12 @@ from .errors import SpecError
 
 Path = tuple[str | int, ...]
 
-#: Largest number of nodes (after alias expansion) a document may have. The catalogue specs
-#: have a few hundred; windIO files tens of thousands. Guards against "billion laughs".
-MAX_NODES = 1_000_000
+#: Largest number of nodes (after alias expansion) a wtvib spec may have. The catalogue
+#: specs have a few hundred; machine-written windIO files go through :func:`parse_plain`,
+#: which shares aliases instead of expanding them. Guards against "billion laughs".
+MAX_NODES = 100_000
+#: Deepest nesting (mappings and lists in one another) a document may have.
+MAX_DEPTH = 64
 
 _MAP_TAG = "tag:yaml.org,2002:map"
 _SEQ_TAG = "tag:yaml.org,2002:seq"
@@ -71,6 +74,7 @@ def parse_plain(text: str, source: str | None = None) -> Document:
     to :func:`parse` where the fast path refuses the file (e.g. a redefined anchor), so that
     errors still name a line.
     """
+    _guard_depth(text, source)
     fast = getattr(yaml, "CSafeLoader", None)
     if fast is None:
         return parse(text, source)
@@ -91,6 +95,30 @@ def format_path(path: Path) -> str:
     return out
 
 
+def nesting_depth(text: str) -> int:
+    """A cheap upper estimate of a YAML text's nesting: flow brackets and block indents.
+
+    Run before parsing, so that a deeply nested document is refused without recursion.
+    """
+    flow = depth = 0
+    for ch in text:
+        if ch in "[{":
+            depth += 1
+            flow = max(flow, depth)
+        elif ch in "]}":
+            depth = max(depth - 1, 0)
+    indents = [len(ln) - len(ln.lstrip(" ")) for ln in text.splitlines() if ln.strip()]
+    levels = len(set(indents))
+    return max(flow, levels)
+
+
+def _guard_depth(text: str, source: str | None) -> None:
+    if nesting_depth(text) > MAX_DEPTH:
+        raise SpecError(
+            f"the document is nested more than {MAX_DEPTH} levels deep; refused", source=source
+        )
+
+
 def parse(text: str, source: str | None = None) -> Document:
     """Parse one YAML document safely, keeping line numbers.
 
@@ -100,6 +128,7 @@ def parse(text: str, source: str | None = None) -> Document:
         Empty document, YAML syntax error, several documents, an unsafe tag, a duplicate
         key, a non-string key or a document larger than :data:`MAX_NODES` nodes.
     """
+    _guard_depth(text, source)
     fast = getattr(yaml, "CSafeLoader", None)  # libyaml: ~10× faster on windIO files
     loader: Any = fast(text) if fast else _Loader(text)
     try:
@@ -120,6 +149,8 @@ def parse(text: str, source: str | None = None) -> Document:
         raise SpecError(f"not valid YAML: {problem}", line=line, source=source) from None
     except yaml.YAMLError as exc:
         raise SpecError(f"not valid YAML: {exc}", source=source) from None
+    except RecursionError:
+        raise SpecError("the document is nested too deeply; refused", source=source) from None
     finally:
         loader.dispose()
     if node is None:

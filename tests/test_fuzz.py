@@ -1,0 +1,146 @@
+"""Property-based fuzzing of the spec loader and the audit (issue 9).
+
+Generated valid specs always audit with finite, non-negative frequencies; mutated specs
+(deleted keys, wrong types, extreme numbers) and random bytes always end in a wtvib error
+(one line, exit 2) or a valid audit — never another exception. CI runs a short campaign;
+``make fuzz`` runs ≥ 100,000 cases (HYPOTHESIS_PROFILE=fuzz) and tests/FUZZ.md records it.
+"""
+
+import math
+import os
+
+import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from wtvib import audit, spec
+from wtvib.errors import WtvibError
+
+settings.register_profile(
+    "ci", max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.register_profile(
+    "fuzz", max_examples=40_000, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+positive = st.floats(min_value=1e-3, max_value=1e3, allow_nan=False)
+
+
+@st.composite
+def valid_specs(draw):  # type: ignore[no-untyped-def]
+    blades = draw(st.integers(1, 4))
+    if draw(st.booleans()):
+        speed = {"fixed_rpm": draw(st.floats(1, 80))}
+    else:
+        lo = draw(st.floats(1, 40))
+        speed = {"min_rpm": lo, "max_rpm": lo * draw(st.floats(1, 3))}
+    data = {
+        "wtvib": 1,
+        "turbine": {"name": draw(st.text(min_size=1, max_size=20).filter(str.strip))},
+        "rotor": {
+            "blades": blades,
+            "orientation": draw(st.sampled_from(["upwind", "downwind", "vertical-axis"])),
+            "hub": "rigid",
+            "speed": speed,
+        },
+        "tower": {"modes": {"fa1": draw(st.floats(0.01, 30)), "ss1": draw(st.floats(0.01, 30))}},
+        "blade": {
+            "modes": {"flap1": draw(st.floats(0.05, 20)), "edge1": draw(st.floats(0.05, 20))}
+        },
+    }
+    if draw(st.booleans()):
+        height = draw(st.floats(10, 200))
+        data["tower"]["distributed"] = {
+            "height_m": [0.0, height / 2, height],
+            "mass_per_length_kg_m": [draw(st.floats(50, 2e4))] * 3,
+            "ei_fa_nm2": [draw(st.floats(1e8, 1e13))] * 3,
+            "ei_ss_nm2": [draw(st.floats(1e8, 1e13))] * 3,
+        }
+        data["tower"]["gravity"] = False
+        data["tower_head"] = {
+            "mass_kg": draw(st.floats(10, 2e6)),
+            "cm_above_top_m": draw(st.floats(-3, 5)),
+        }
+    if draw(st.booleans()):
+        data["drivetrain"] = {
+            "chain": [
+                {"name": "blades", "inertia_kgm2": draw(st.floats(1e2, 1e8))},
+                {
+                    "name": "generator",
+                    "inertia_kgm2": draw(st.floats(1, 1e4)),
+                    "speed_ratio": draw(st.floats(1, 150)),
+                },
+            ],
+            "shafts": [{"stiffness_nm_rad": draw(st.floats(1e4, 1e11))}],
+        }
+    return data
+
+
+@given(valid_specs())
+def test_valid_specs_audit_with_finite_frequencies(data):
+    try:
+        report = audit.run(spec.from_data(data))
+    except WtvibError:
+        return  # e.g. a model that buckles: a clear, typed error is acceptable
+    for m in report.modes:
+        assert math.isfinite(m.frequency_hz) and m.frequency_hz >= 0
+    assert report.verdict in ("pass", "warn", "fail")
+    report.to_dict()
+
+
+junk = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.text(max_size=8),
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.integers(-(10**12), 10**12),
+    st.lists(st.integers(), max_size=3),
+    st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
+)
+
+
+@st.composite
+def mutated_specs(draw):  # type: ignore[no-untyped-def]
+    data = draw(valid_specs())
+    for _ in range(draw(st.integers(1, 3))):
+        node, path = data, []
+        while isinstance(node, dict) and node and draw(st.booleans()):
+            key = draw(st.sampled_from(sorted(node, key=str)))
+            path.append(key)
+            parent, node = node, node[key]
+        if not path:
+            continue
+        if draw(st.booleans()):
+            del parent[path[-1]]
+        else:
+            parent[path[-1]] = draw(junk)
+    return data
+
+
+@given(mutated_specs())
+def test_mutated_specs_fail_cleanly(data):
+    try:
+        text = yaml.safe_dump(data)
+    except yaml.YAMLError:
+        return
+    try:
+        loaded = spec.from_document(__import__("wtvib.yamlio", fromlist=["parse"]).parse(text))
+    except WtvibError:
+        return
+    try:
+        report = audit.run(loaded)
+    except WtvibError:
+        return
+    assert all(math.isfinite(m.frequency_hz) and m.frequency_hz >= 0 for m in report.modes)
+
+
+@given(st.binary(max_size=400))
+def test_random_bytes_are_a_spec_error(tmp_path_factory, raw):
+    path = tmp_path_factory.mktemp("bytes") / "x.yaml"
+    path.write_bytes(raw)
+    try:
+        spec.load(path)
+    except WtvibError:
+        return
+    raise AssertionError("random bytes loaded as a valid spec")  # pragma: no cover
