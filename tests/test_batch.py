@@ -2,6 +2,7 @@
 
 import json
 import shutil
+from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
@@ -139,3 +140,18 @@ def test_interrupted_batch_says_what_was_completed(folder, tmp_path, monkeypatch
     assert "interrupted: 1 of 5 inputs completed" in result.stderr
     assert not (out / "summary.json").exists()
     assert list(out.glob(".*.tmp")) == []
+
+
+def test_a_10_kw_and_a_22_mw_turbine_in_one_batch(tmp_path):
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    big = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-22-280-RWT.yaml"
+    small = tmp_path / "small.yaml"
+    small.write_text(
+        spec_text(blades=3, speed="fixed_rpm: 120", modes="fa1: 4.5\nss1: 4.4")
+        + "blade: {modes: {flap1: 6.0, edge1: 11.0}}\n"
+    )
+    items = batch.run([small, big], jobs=2, plots=False)
+    assert [i.outcome for i in items] != ["input-error", "input-error"]
+    for it in items:
+        assert it.report is not None, it.error
+        assert all(0 <= m["frequency_hz"] < 1e4 for m in it.report["modes"])
