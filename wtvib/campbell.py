@@ -281,3 +281,26 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         if fig is not None:
             out[name] = fig
     return out
+
+
+def windows_plot(report: Report, tower_windows: Sequence[object]) -> "Figure":
+    """The tower-and-blade Campbell diagram with the tower's allowed windows shaded."""
+    fig = campbell_plot(report, ("tower", "blade"))
+    ax = fig.axes[0]
+    top = ax.get_ylim()[1]
+    for w in tower_windows:
+        low, high = w.low, min(w.high, top)  # type: ignore[attr-defined]
+        if low >= top:
+            continue
+        ax.axhspan(low, high, color="#43a047", alpha=0.10, lw=0)
+        ax.annotate(
+            f"{w.name} window",
+            (0.01, 0.5 * (low + high)),  # type: ignore[attr-defined]
+            xycoords=("axes fraction", "data"),
+            fontsize=9,
+            color="#2e7d32",
+            fontweight="bold",
+            va="center",
+        )
+    ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10)
+    return fig

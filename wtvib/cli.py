@@ -287,6 +287,109 @@ class _BatchWriter:
         self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
 
 
+class Target(StrEnum):
+    soft_soft = "soft-soft"
+    soft = "soft"
+    stiff = "stiff"
+
+
+class ScaleWhat(StrEnum):
+    wall = "wall"
+    diameter = "diameter"
+    both = "both"
+
+
+@app.command()
+@_user_errors
+def window(
+    spec_file: Annotated[Path, typer.Argument(help="Turbine spec, windIO or ElastoDyn file.")],
+    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Folder for the PNG.")] = None,
+    plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write the windows PNG.")] = True,
+    force: Annotated[bool, typer.Option(help="Replace a file not written by wtvib.")] = False,
+    rpm: Annotated[str | None, typer.Option(help="Operating range MIN:MAX [rpm].")] = None,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Allowed frequency windows per subsystem, and where the design sits in them."""
+    from . import audit, design, importers
+
+    turbine = importers.load(spec_file, rpm=_rpm_range(rpm))
+    report = audit.run(turbine)
+    found = design.all_windows(turbine, report.modes)
+    doc = {
+        "schema": "wtvib-windows/1",
+        "turbine": turbine.turbine.name,
+        "rule": report.rule.label,
+        "subsystems": [w.to_dict() for w in found],
+    }
+    if format is Format.json:
+        sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
+    else:
+        from rich.console import Console
+
+        from .report import windows_table
+
+        windows_table(Console(), doc)
+    if plot:
+        from .campbell import png_bytes, windows_plot
+        from .outputs import write_atomic
+
+        tower_w = next(w for w in found if w.subsystem == "tower").allowed
+        folder = out if out is not None else spec_file.parent
+        path = write_atomic(
+            folder / f"{spec_file.stem}.windows.png",
+            png_bytes(windows_plot(report, tower_w)),
+            force=force,
+        )
+        typer.echo(f"wrote {path}", err=format is Format.json)
+
+
+@app.command("size")
+@_user_errors
+def size_command(
+    spec_file: Annotated[Path, typer.Argument(help="Turbine spec with tower sections.")],
+    target: Annotated[Target | None, typer.Option(help="Window to land in (its middle).")] = None,
+    target_hz: Annotated[
+        float | None, typer.Option(min=0.0, help="Or a first bending frequency [Hz].")
+    ] = None,
+    scale: Annotated[ScaleWhat, typer.Option(help="What to scale.")] = ScaleWhat.wall,
+    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+) -> None:
+    """Scale the tower's wall (or diameter, or both) to put its first bending in a window."""
+    from . import audit, design, importers
+
+    turbine = importers.load(spec_file)
+    if (target is None) == (target_hz is None):
+        raise typer.BadParameter("give --target WINDOW or --target-hz HZ")
+    goal = target_hz
+    if target is not None:
+        report = audit.run(turbine)
+        tw = next(w for w in design.all_windows(turbine, report.modes) if w.subsystem == "tower")
+        match = [
+            w
+            for w in tw.allowed
+            if w.name == target.value or w.name.startswith(f"{target.value} (")
+        ]
+        if target is Target.soft and not match:
+            raise design.DesignError("there is no soft window for this speed range and margin")
+        if not match:
+            raise design.DesignError(f"there is no {target.value} window")
+        goal = design.window_target(match[0])
+    assert goal is not None
+    result = design.size(turbine, goal, scale.value)  # type: ignore[arg-type]
+    doc = {"schema": "wtvib-size/1", "turbine": turbine.turbine.name, **result.to_dict()}
+    if format is Format.json:
+        sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
+        return
+    typer.echo(
+        f"{turbine.turbine.name}: scale the tower {scale.value} by {result.scale:.4f} → first "
+        f"bending {result.frequency_hz:.4f} Hz (target {goal:.4f} Hz); tower mass "
+        f"{result.mass_before_kg:,.0f} → {result.mass_after_kg:,.0f} kg "
+        f"({doc['mass_change_percent']:+.1f} %)"
+    )
+
+
 def _rpm_range(text: str | None) -> tuple[float, float] | None:
     """``--rpm 6.9:12.1`` → (6.9, 12.1); ``--rpm 20`` → (20, 20)."""
     if text is None:

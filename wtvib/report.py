@@ -161,3 +161,33 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     if written:
         folder = {p.parent for p in written}
         console.print(f"[dim]wrote {len(written)} files to {', '.join(map(str, folder))}[/dim]")
+
+
+def windows_table(console: Console, doc: dict[str, Any]) -> None:
+    """The allowed windows per subsystem and where the design sits."""
+    console.print(
+        Text(f"{doc['turbine']} — allowed frequency windows ({doc['rule']})", style="bold")
+    )
+    for sub in doc["subsystems"]:
+        table = Table(
+            title=f"{sub['subsystem']} ({sub['mode'] or 'no mode'})", title_justify="left"
+        )
+        table.add_column("window")
+        table.add_column("from [Hz]", justify="right")
+        table.add_column("to [Hz]", justify="right")
+        for w in sub["allowed"]:
+            high = "∞" if w["high_hz"] is None else f"{w['high_hz']:.4g}"
+            table.add_row(w["name"], f"{w['low_hz']:.4g}", high)
+        console.print(table)
+        pos = sub["position"]
+        if pos:
+            where = (
+                f"in the {pos['window']} window"
+                if pos["window"] and not pos["forbidden_by"]
+                else f"FORBIDDEN by {pos['forbidden_by']}"
+            )
+            console.print(
+                f"  {sub['mode']} = {pos['frequency_hz']:.4g} Hz: {where}; nearest "
+                f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
+                f"{pos['distance_percent']:.1f} %)"
+            )
