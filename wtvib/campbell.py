@@ -20,6 +20,8 @@ from .units import rad_s_to_rpm, rpm_to_rad_s
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
+    from .design import Band
+
 STATUS_COLOUR = {"pass": "#2e7d32", "info": "#1565c0", "warn": "#ef6c00", "fail": "#c62828"}
 SUBSYSTEM_TITLE = {
     "tower": "tower and blades",
@@ -283,13 +285,13 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
     return out
 
 
-def windows_plot(report: Report, tower_windows: Sequence[object]) -> "Figure":
+def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
     """The tower-and-blade Campbell diagram with the tower's allowed windows shaded."""
     fig = campbell_plot(report, ("tower", "blade"))
     ax = fig.axes[0]
     top = ax.get_ylim()[1]
     for w in tower_windows:
-        low, high = w.low, min(w.high, top)  # type: ignore[attr-defined]
+        low, high = w.low, min(w.high, top)
         if low >= top:
             continue
         ax.axhspan(low, high, color="#43a047", alpha=0.10, lw=0)

@@ -20,6 +20,7 @@ import numpy as np
 from . import beam, tower
 from .errors import WtvibError
 from .excitation import Excitation, OperatingRange, excitations, operating_range
+from .results import Mode
 from .rules import MarginRule
 from .spec import Spec
 
@@ -173,12 +174,12 @@ FIRST_MODES = {
 }
 
 
-def all_windows(spec: Spec, modes: Sequence[object]) -> list[SubsystemWindows]:
+def all_windows(spec: Spec, modes: Sequence[Mode]) -> list[SubsystemWindows]:
     """Windows for the tower and the first blade, drive-train and yaw modes."""
     rule = spec.audit.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
-    by_id = {m.id: m for m in modes}  # type: ignore[attr-defined]
+    by_id = {m.id: m for m in modes}
     out = []
     for sub, ids in FIRST_MODES.items():
         forbidden = forbidden_bands(lines, op, rule, sub)
