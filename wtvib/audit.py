@@ -43,6 +43,7 @@ class Report:
     findings: tuple[Finding, ...] = field(default_factory=tuple)
     assumptions: tuple[str, ...] = field(default_factory=tuple)
     warnings: tuple[str, ...] = field(default_factory=tuple)
+    uncertainty: dict[str, Any] | None = None
 
     @property
     def rule(self) -> MarginRule:
@@ -88,6 +89,7 @@ class Report:
             "checks": [c.to_dict() for c in self.checks],
             "assumptions": list(self.assumptions),
             "warnings": list(self.warnings),
+            **({"uncertainty": self.uncertainty} if self.uncertainty is not None else {}),
             "inputs": {
                 path: {
                     "value": q.value,
@@ -100,7 +102,13 @@ class Report:
         }
 
 
-def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
+def run(
+    spec: Spec,
+    settings: AuditSettings | None = None,
+    *,
+    samples: int | None = None,
+    seed: int = 0,
+) -> Report:
     """Audit a turbine: every subsystem's modes against every excitation, plus the class.
 
     Parameters
@@ -109,6 +117,10 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
         The validated turbine.
     settings
         Audit settings overriding the spec's own ``audit`` section.
+    samples
+        Monte Carlo samples of the spec's tolerances (``check --uncertainty``); none: skip.
+    seed
+        Seed of the Monte Carlo sampling (reproducible results).
     """
     settings = settings or spec.audit
     rule = settings.margin_rule()
@@ -157,7 +169,18 @@ def run(spec: Spec, settings: AuditSettings | None = None) -> Report:
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes)),
         warnings=tuple(suspicious(spec, all_modes)),
+        uncertainty=_uncertainty(spec, samples, seed) if samples else None,
     )
+
+
+def _uncertainty(spec: Spec, samples: int, seed: int) -> dict[str, Any]:
+    from . import uncertainty
+
+    drawn = uncertainty.sample(spec, samples, seed)
+    out = uncertainty.summary(spec, drawn)
+    out["seed"] = seed
+    out["sensitivities"] = uncertainty.sensitivities(spec)
+    return out
 
 
 def _assert_finite(modes: list[Mode]) -> None:

@@ -99,6 +99,18 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
         ax.plot(rpm, f_n, color=colour, lw=2.2, label=f"{mode.id}  {mode.frequency_hz:.3g} Hz")
 
+    spread = (report.uncertainty or {}).get("modes", {})
+    for mode in modes:
+        if mode.id in spread:  # the 5–95 % band of the sampled frequency
+            band = spread[mode.id]
+            ax.axhspan(
+                band["p5_hz"],
+                band["p95_hz"],
+                facecolor="none",
+                hatch="...",
+                edgecolor="#5c6bc0",
+                lw=0,
+            )
     by_id = {m.id: m for m in modes}
     if "yaw.1" in by_id and "yaw.play.1" in by_id:  # Hau Fig. 7.18: the band play opens
         ax.fill_between(

@@ -108,6 +108,11 @@ def check(
         float | None,
         typer.Option(min=0.0, help="Tower-head mass [kg] for windIO 1.x files (no hub/nacelle)."),
     ] = None,
+    uncertainty: Annotated[
+        bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
+    ] = False,
+    samples: Annotated[int, typer.Option(min=10, help="Monte Carlo samples.")] = 2000,
+    seed: Annotated[int, typer.Option(help="Seed of the sampling (reproducible).")] = 0,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG.
@@ -119,7 +124,7 @@ def check(
 
     turbine = importers.load(spec_file, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass)
     settings = _settings(turbine.audit, margin, rule, preset)
-    report = audit.run(turbine, settings)
+    report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
     written: list[Path] = []
     if plot:
         from .campbell import diagrams, png_bytes

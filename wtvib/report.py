@@ -41,6 +41,8 @@ def terminal(
         console.print(
             f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
         )
+    if data.get("uncertainty"):
+        console.print(_uncertainty(data["uncertainty"]))
     for line in data.get("warnings", []):
         console.print(Text(f"warning: {line}", style="yellow"))
     console.print(Text("Assumptions", style="bold"))
@@ -191,3 +193,23 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
                 f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
                 f"{pos['distance_percent']:.1f} %)"
             )
+
+
+def _uncertainty(u: dict[str, Any]) -> Table:
+    table = Table(
+        title=f"Uncertainty ({u['samples']} samples, seed {u['seed']})", title_justify="left"
+    )
+    for col in ("mode", "p5 [Hz]", "p50 [Hz]", "p95 [Hz]", "P(in a margin band)"):
+        table.add_column(col, justify="left" if col in ("mode", "P(in a margin band)") else "right")
+    for mode, s in u["modes"].items():
+        risky = sorted(s["in_margin_band"].items(), key=lambda kv: -kv[1]["probability"])
+        text = (
+            ", ".join(
+                f"{k} {v['probability']:.1%} [{v['ci95'][0]:.1%}–{v['ci95'][1]:.1%}]"
+                for k, v in risky
+                if v["probability"] > 0
+            )
+            or "none"
+        )
+        table.add_row(mode, f"{s['p5_hz']:.4g}", f"{s['p50_hz']:.4g}", f"{s['p95_hz']:.4g}", text)
+    return table

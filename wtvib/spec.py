@@ -64,7 +64,14 @@ class Quantity(_Strict):
     source: str | None = Field(None, description="Key of the top-level `sources` mapping.")
     note: str | None = Field(None, description="How the value was obtained.")
     tolerance: float | None = Field(
-        None, ge=0, description="Relative uncertainty (e.g. 0.15 for ±15 %). [-]"
+        None,
+        ge=0,
+        description="Uncertainty for `check --uncertainty`: normal — one standard deviation "
+        "as a fraction of the value (0.15 for ±15 %); uniform — half-width as a fraction; "
+        "lognormal — the factor at one standard deviation (2 for ×/÷ 2). [-]",
+    )
+    distribution: Literal["normal", "uniform", "lognormal"] = Field(
+        "normal", description="Distribution of the uncertain value."
     )
 
 
