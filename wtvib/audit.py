@@ -5,7 +5,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import blade, drivetrain, tower, yaw
+from . import blade, drivetrain, floquet, tower, yaw
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
@@ -159,6 +159,8 @@ def run(
             checks = drivetrain.annotate(spec, built["blade"], checks)
             power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)
             checks += [power] if power else []
+    floquet_check, _ = floquet.check(spec, all_modes)
+    checks.append(floquet_check)
     _assert_finite(all_modes)
     return Report(
         spec=spec,

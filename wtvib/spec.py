@@ -121,7 +121,7 @@ class TurbineInfo(_Strict):
 class RotorSpeed(_Strict):
     """Rotor speed: a fixed speed (or several, for pole-changing generators) or a range."""
 
-    fixed_rpm: Positive | list[Positive] | None = Field(
+    fixed_rpm: Positive | Annotated[list[Positive], Field(min_length=1)] | None = Field(
         None, description="Fixed operating speed(s). [rpm]"
     )
     min_rpm: Positive | None = Field(None, description="Lowest steady speed (variable). [rpm]")
@@ -213,6 +213,14 @@ class Rotor(_Strict):
         description="Hub type; 'rigid' and 'hingeless' mean the same."
     )
     speed: RotorSpeed
+    teeter_stiffness_nm_rad: float = Field(
+        0.0,
+        ge=0,
+        description="Teetered hub: teeter spring (centrifugal stiffening is added). [N·m/rad]",
+    )
+    teeter_damping_nms_rad: float = Field(
+        0.0, ge=0, description="Teetered hub: teeter damper. [N·m·s/rad]"
+    )
 
 
 def _increasing(name: str, values: list[float]) -> None:
@@ -814,21 +822,41 @@ def _split(dotted: str) -> Path:
     return tuple(parts)
 
 
+_BRANCH = ("function-", "tuple[", "list[", "constrained-", "nullable[", "union[")
+_SCALAR_TYPES = (
+    "float_type",
+    "float_parsing",
+    "int_type",
+    "int_parsing",
+    "string_type",
+    "bool_type",
+    "none_required",
+)
+
+
 def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecError:
-    """The first validation error as one line with field path and YAML line."""
+    """The most telling validation error as one line with field path and YAML line.
+
+    A value that fails every branch of a union (a number or a list, say) reports the branch
+    that matches its own shape: a list's error rather than "should be a number".
+    """
     errors = exc.errors(include_url=False)
-    err = errors[0]
+
+    def mismatch(e: Any) -> bool:
+        return e["type"] in _SCALAR_TYPES and isinstance(e.get("input"), list | dict)
+
+    err = min(errors, key=lambda e: (mismatch(e), errors.index(e)))
     loc: list[str | int] = []
     for part in err["loc"]:
-        if part in ("number", "full", "[key]") or (
-            isinstance(part, str) and part.startswith(("function-", "tuple["))
+        if part in ("number", "full", "[key]", "int", "float", "str") or (
+            isinstance(part, str) and part.startswith(_BRANCH)
         ):
             continue
         loc.append(part)
     path: Path = (*prefix, *loc)
     message = _message(err)
-    extra = len(errors) - 1
-    more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra else ""
+    extra = len({tuple(e["loc"][: len(loc)]) for e in errors}) - 1
+    more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra > 0 else ""
     return SpecError(
         message + more,
         path=format_path(path) or None,
