@@ -280,7 +280,7 @@ def png_bytes(fig: "Figure") -> bytes:
 def diagrams(report: Report) -> dict[str, "Figure"]:
     """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
     keyed by file stem suffix."""
-    from .modeshapes import drivetrain_shapes_plot, power_curve_plot
+    from .modeshapes import drivetrain_shapes_plot, floquet_plot, power_curve_plot
 
     present = {m.subsystem for m in report.modes}
     out = {
@@ -291,6 +291,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
     for name, fig in (
         ("drivetrain-modes", drivetrain_shapes_plot(report)),
         ("drivetrain-power", power_curve_plot(report)),
+        ("floquet", floquet_plot(report)),
     ):
         if fig is not None:
             out[name] = fig

@@ -361,16 +361,15 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         )
         if hub == "teetered":
             text += " — the teetered hub decouples the rotor moments"
+    steady_rpm = np.concatenate(
+        [np.linspace(a, b, 25) if b > a else np.array([a]) for a, b in speed.steady_rpm]
+    )
+    in_operation = stability_map(model, steady_rpm * 2 * math.pi / 60)
     numbers = {
-        "max_multiplier_in_operation": round(
-            float(
-                np.max(
-                    smap.largest[(smap.speeds_rpm >= low) & (smap.speeds_rpm <= top)], initial=0.0
-                )
-            ),
-            6,
-        ),
+        "max_multiplier_in_operation": round(float(np.max(in_operation)), 6),
         "unstable_rpm": [[round(a, 4), round(b, 4)] for a, b in smap.unstable_rpm],
+        "map_rpm": [round(float(x), 4) for x in smap.speeds_rpm],
+        "map_largest_multiplier": [round(float(x), 6) for x in smap.largest],
         "hub": hub,
         "polar_inertia_kgm2": model.polar,
     }

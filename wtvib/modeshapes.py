@@ -86,3 +86,40 @@ def power_curve_plot(report: Report) -> "Figure | None":
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
     return fig
+
+
+def floquet_plot(report: Report) -> "Figure | None":
+    """The two-bladed rotor's stability map: largest Floquet multiplier over rotor speed."""
+    from matplotlib.figure import Figure
+
+    check = next((c for c in report.checks if c.id == "rotor.floquet"), None)
+    if check is None or "map_rpm" not in check.numbers:
+        return None
+    rpm = np.asarray(check.numbers["map_rpm"])
+    rho = np.asarray(check.numbers["map_largest_multiplier"])
+    speed = report.spec.rotor.speed
+    fig = Figure(figsize=(9, 4.8), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    for a, b in speed.steady_rpm:
+        if b > a:
+            ax.axvspan(a, b, color="#c8e6c9", alpha=0.6, lw=0, label="steady operation")
+        else:
+            ax.axvline(a, color="#66bb6a", lw=6, alpha=0.5, label="operating speed")
+    ax.axvspan(speed.top_rpm, speed.overspeed, color="#fff3e0", lw=0, label="overspeed")
+    for a, b in check.numbers["unstable_rpm"]:
+        ax.axvspan(a, b, color="#e53935", alpha=0.2, lw=0)
+    ax.plot(rpm, rho, color="#1f77b4", lw=2, label="largest |ρ| (Floquet multiplier)")
+    ax.axhline(1.0, color="#212121", lw=1, ls="--", label="stability limit |ρ| = 1")
+    ax.set_xlabel("rotor speed [rpm]")
+    ax.set_ylabel("largest Floquet multiplier |ρ|")
+    ax.set_title(
+        f"{report.spec.turbine.name} — {check.numbers['hub']} two-bladed rotor on the "
+        f"tower head: stability map ({check.status.upper()})",
+        fontweight="bold",
+        fontsize=10,
+    )
+    ax.grid(True, alpha=0.3)
+    handles, labels = ax.get_legend_handles_labels()
+    unique = dict(zip(labels, handles, strict=True))
+    ax.legend(unique.values(), unique.keys(), fontsize=8, loc="best")
+    return fig

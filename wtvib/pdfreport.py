@@ -23,12 +23,14 @@ SUBSYSTEM_NAMES = {
     "blade": "Blades",
     "drivetrain": "Drive train",
     "yaw": "Yaw system",
+    "rotor": "Rotor on the tower head (periodic coefficients, Floquet)",
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
     "blade": ("campbell",),
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
+    "rotor": ("floquet",),
 }
 
 
@@ -221,7 +223,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
     drawn: set[str] = set()
     for sub, title in SUBSYSTEM_NAMES.items():
         modes = [m for m in r["modes"] if m["subsystem"] == sub]
-        if not modes:
+        if not modes and not any(c["subsystem"] == sub for c in r["checks"]):
             continue
         out.append(k.p(title, "Heading2"))
         rows = [k.header("mode", "description", "f [Hz]", "ζ")]
@@ -234,7 +236,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             ]
             for m in modes
         ]
-        out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
+        if modes:
+            out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
         for diagram in DIAGRAM_FOR[sub]:
             if diagram not in pngs or diagram in drawn:
                 continue
@@ -312,6 +315,8 @@ def _worst(checks: list[dict[str, Any]]) -> dict[str, Any] | None:
 
 def _numbers(c: dict[str, Any]) -> str:
     keys = (
+        "max_multiplier_in_operation",
+        "unstable_rpm",
         "mode",
         "frequency_hz",
         "margin",
