@@ -97,7 +97,10 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         f_n = mode.frequency_at(omega)
         lo, hi = rule.forbidden_band(1.0)
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
-        ax.plot(rpm, f_n, color=colour, lw=2.2, label=f"{mode.id}  {mode.frequency_hz:.3g} Hz")
+        label = f"{mode.id}  {mode.frequency_hz:.3g} Hz"
+        if spec.rotor.orientation == "vertical-axis":  # Darrieus modes need their names
+            label += f" — {mode.description}"
+        ax.plot(rpm, f_n, color=colour, lw=2.2, label=label)
 
     spread = (report.uncertainty or {}).get("modes", {})
     for mode in modes:
@@ -168,6 +171,8 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     verdict = report.verdict.upper()
     cls = f", {report.tower_class} tower" if report.tower_class and "tower" in subsystems else ""
     title = SUBSYSTEM_TITLE[subsystems[0]] if len(subsystems) == 1 else "tower and blades"
+    if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
+        title = "Darrieus rotor"
     ax.set_title(
         f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}",
         color=STATUS_COLOUR[report.verdict],
@@ -259,13 +264,14 @@ def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # ty
     for h, label in extra:
         handles.append(h)
         labels.append(label)
+    ncol = 2 if max(len(t) for t in labels) > 40 else 4
     ax.legend(
         handles,
         labels,
         loc="upper center",
         bbox_to_anchor=(0.5, -0.1),
         fontsize=8,
-        ncol=4,
+        ncol=ncol,
         frameon=False,
     )
 
