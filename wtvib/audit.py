@@ -5,7 +5,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import blade, drivetrain, floquet, tower, yaw
+from . import aeroelastic, blade, drivetrain, floquet, tower, yaw
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
@@ -161,6 +161,7 @@ def run(
             checks += [power] if power else []
     floquet_check, _ = floquet.check(spec, all_modes)
     checks.append(floquet_check)
+    checks += aeroelastic.checks(spec, all_modes)[0]
     _assert_finite(all_modes)
     return Report(
         spec=spec,

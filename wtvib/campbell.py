@@ -286,7 +286,7 @@ def png_bytes(fig: "Figure") -> bytes:
 def diagrams(report: Report) -> dict[str, "Figure"]:
     """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
     keyed by file stem suffix."""
-    from .modeshapes import drivetrain_shapes_plot, floquet_plot, power_curve_plot
+    from .modeshapes import drivetrain_shapes_plot, floquet_plot, flutter_plot, power_curve_plot
 
     present = {m.subsystem for m in report.modes}
     out = {
@@ -298,6 +298,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         ("drivetrain-modes", drivetrain_shapes_plot(report)),
         ("drivetrain-power", power_curve_plot(report)),
         ("floquet", floquet_plot(report)),
+        ("blade-flutter", flutter_plot(report)),
     ):
         if fig is not None:
             out[name] = fig

@@ -121,6 +121,20 @@ class DampedModes:
     rigid: int
 
 
+def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
+    """Eigenvalues λ of M q̈ + D q̇ + K q = 0 (any K, D; M invertible), first-order form."""
+    return np.asarray(np.linalg.eigvals(_state_matrix(k, m, d)))
+
+
+def _state_matrix(k: Array, m: Array, d: Array) -> Array:
+    n = k.shape[0]
+    try:
+        minv = np.linalg.inv(m)
+    except np.linalg.LinAlgError:
+        raise ModalError("the inertia matrix is singular (a zero inertia?)") from None
+    return np.block([[np.zeros((n, n)), np.eye(n)], [-minv @ k, -minv @ d]])
+
+
 def damped(k: Array, m: Array, d: Array) -> DampedModes:
     """Damped modes by the state-space eigenproblem (first-order form).
 
@@ -137,12 +151,7 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
     n = k.shape[0]
     if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m)) and np.all(np.isfinite(d))):
         raise ModalError("the drive-train matrices hold NaN or infinite values")
-    try:
-        minv = np.linalg.inv(m)
-    except np.linalg.LinAlgError:
-        raise ModalError("the inertia matrix is singular (a zero inertia?)") from None
-    a = np.block([[np.zeros((n, n)), np.eye(n)], [-minv @ k, -minv @ d]])
-    lam, vec = np.linalg.eig(a)
+    lam, vec = np.linalg.eig(_state_matrix(k, m, d))
     scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
     # λ ≈ 0 (a rigid-body root: a defective double root that rounding splits into a pair of
     # size ~√ε·|λ|max) is neither an oscillation nor an instability

@@ -123,3 +123,65 @@ def floquet_plot(report: Report) -> "Figure | None":
     unique = dict(zip(labels, handles, strict=True))
     ax.legend(unique.values(), unique.keys(), fontsize=8, loc="best")
     return fig
+
+
+def flutter_plot(report: Report) -> "Figure | None":
+    """V-g and V-f curves (p-k method) of the blade section nearest to flutter."""
+    from matplotlib.figure import Figure
+
+    check = next((c for c in report.checks if c.id == "blade.flutter"), None)
+    if check is None or "vg" not in check.numbers:
+        return None
+    n = check.numbers
+    fig = Figure(figsize=(9, 6.4), dpi=150, layout="constrained")
+    ax_g, ax_f = fig.subplots(2, 1, sharex=True)
+    colours = ("#1f77b4", "#d62728")
+    names = ("bending branch", "torsion branch")
+    for branch, colour, label in zip(n["vg"], colours, names, strict=False):
+        v = np.asarray(branch["speed_m_s"])
+        f = np.asarray(branch["frequency_hz"], dtype=float)
+        # real (non-oscillatory) roots are outside the p-k method's validity: not drawn
+        g = np.where(f > 0, -np.asarray(branch["damping_ratio"]), np.nan)
+        ax_g.plot(v, g, color=colour, lw=2, label=label)
+        ax_f.plot(v, np.where(f > 0, f, np.nan), color=colour, lw=2, label=label)
+    for ax in (ax_g, ax_f):
+        ax.axvline(n["vg_section_speed_m_s"], color="#616161", ls="--", lw=1.2)
+        ax.axvspan(
+            n["vg_section_speed_m_s"],
+            n["vg_section_speed_m_s"] * (1 + report.spec.blade.aeroelastic.speed_margin),  # type: ignore[union-attr]
+            color="#fff3e0",
+            lw=0,
+            label="required margin",
+        )
+        ax.grid(True, alpha=0.3)
+    ax_g.axhline(0.0, color="#212121", lw=1)
+    ax_g.text(
+        0.99,
+        0.02,
+        "where the curves merge or end, the other root is overdamped (not oscillating)",
+        transform=ax_g.transAxes,
+        fontsize=7,
+        ha="right",
+        color="#616161",
+    )
+    ax_g.annotate(
+        "highest section speed",
+        (n["vg_section_speed_m_s"], 0.98),
+        xycoords=("data", "axes fraction"),
+        fontsize=8,
+        rotation=90,
+        va="top",
+        ha="right",
+        color="#616161",
+    )
+    ax_g.set_ylabel("aeroelastic growth rate −ζ\n(> 0: unstable)")
+    ax_f.set_ylabel("frequency [Hz]")
+    ax_f.set_xlabel("section air speed [m/s]")
+    ax_g.legend(fontsize=8, loc="best")
+    ax_g.set_title(
+        f"{report.spec.turbine.name} — blade flutter at r = {n['vg_section_radius_m']:.3g} m, "
+        f"Theodorsen p-k ({check.status.upper()})",
+        fontweight="bold",
+        fontsize=10,
+    )
+    return fig

@@ -404,6 +404,58 @@ class Tower(_Strict):
         return self.sections is not None or self.distributed is not None
 
 
+class AeroSection(_Strict):
+    """A blade section as a typical section for divergence and flutter (Hau Fig. 7.6)."""
+
+    radius_fraction: float = Field(
+        0.75, gt=0, le=1, description="Position r/R of the section on the rotor radius. [-]"
+    )
+    chord_m: Positive = Field(description="Chord c. [m]")
+    elastic_axis_chord: Ratio = Field(
+        description="Elastic (shear-centre) axis behind the leading edge, fraction of c. [-]"
+    )
+    centre_of_mass_chord: Ratio = Field(
+        description="Centre of mass behind the leading edge, fraction of c. [-]"
+    )
+    mass_per_length_kg_m: Positive | None = Field(
+        None, description="Mass per length; default: blade.structure at this radius. [kg/m]"
+    )
+    torsional_inertia_kgm: Positive | None = Field(
+        None,
+        description="Mass moment of inertia per length about the elastic axis; default: "
+        "blade.structure at this radius. [kg·m]",
+    )
+    chord_angle_deg: float = Field(
+        0.0,
+        ge=-90,
+        le=90,
+        description="Angle of the chord to the rotor plane (twist + pitch), for the "
+        "centrifugal propeller moment. [deg]",
+    )
+
+
+class BladeAeroelastic(_Strict):
+    """Data for the blade's static divergence and classical flutter checks."""
+
+    sections: list[AeroSection] = Field(min_length=1, max_length=10)
+    lift_slope_per_rad: Positive = Field(
+        6.283185307179586, description="Lift-curve slope C_Lα (thin aerofoil: 2π). [1/rad]"
+    )
+    air_density_kg_m3: Positive = Field(1.225, description="Air density ρ. [kg/m³]")
+    max_wind_m_s: Positive = Field(
+        25.0,
+        description="Highest wind speed in operation (cut-out), added to the "
+        "section's rotational speed at overspeed. [m/s]",
+    )
+    speed_margin: float = Field(
+        0.15,
+        gt=0,
+        lt=5,
+        description="Required margin of the divergence and flutter speeds over the highest "
+        "section speed (0.15: 1.15×, as CS-25.629 asks of aircraft). [-]",
+    )
+
+
 class Blade(_Strict):
     """The blades, by their natural frequencies at standstill."""
 
@@ -419,6 +471,9 @@ class Blade(_Strict):
     )
     structure: BladeStructure | None = Field(
         None, description="Distributed properties: frequencies computed, rotation included."
+    )
+    aeroelastic: BladeAeroelastic | None = Field(
+        None, description="Section data for the divergence and flutter checks."
     )
 
 

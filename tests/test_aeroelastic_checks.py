@@ -1,0 +1,88 @@
+"""The blade.divergence and blade.flutter checks: data flow from the spec to the verdict."""
+
+import math
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from wtvib import aeroelastic as ae
+from wtvib import audit
+from wtvib.spec import load
+
+# A MW-class blade section (illustrative numbers, not a published blade): chord 3 m at
+# 0.75 R, elastic axis at 30 % chord, centre of mass at 38 %, μ = m/(πρb²) ≈ 21.
+BLADE = """\
+blade:
+  modes: {{flap1: 0.67, edge1: 1.08, tor1: {tor1}}}
+  aeroelastic:
+    speed_margin: 0.15
+    sections:
+      - {{radius_fraction: 0.75, chord_m: 3.0, elastic_axis_chord: 0.30,
+          centre_of_mass_chord: {cg}, mass_per_length_kg_m: 180, torsional_inertia_kgm: 25}}
+"""
+SPEED = "min_rpm: 6.9\nrated_rpm: 12.1\nmax_rpm: 12.1"
+
+
+def checks(path: Path) -> dict[str, dict[str, object]]:
+    report = audit.run(load(path))
+    return {c.id: c.to_dict() for c in report.checks if c.id.startswith("blade.")}
+
+
+def spec(write_spec: Callable[..., Path], tor1: float = 5.6, cg: float = 0.38) -> Path:
+    extra = "  rotor_diameter_m: 126\n"
+    path = write_spec(speed=SPEED, extra=BLADE.format(tor1=tor1, cg=cg))
+    text = path.read_text().replace(
+        "turbine: {name: Test turbine}", "turbine:\n  name: T\n" + extra
+    )
+    path.write_text(text)
+    return path
+
+
+def test_section_speed_and_ratios_follow_from_the_spec(write_spec: Callable[..., Path]) -> None:
+    c = checks(spec(write_spec))
+    flutter, divergence = c["blade.flutter"], c["blade.divergence"]
+    # section speed: overspeed 1.15 × 12.1 rpm (default factor) at r = 0.75·63 m, with 25 m/s
+    omega = 1.15 * 12.1 * 2 * math.pi / 60
+    w = math.hypot(omega * 47.25, 25.0)
+    section = flutter["sections"][0]  # type: ignore[index]
+    assert section["section_speed_m_s"] == pytest.approx(w, rel=1e-5)
+    # the k-method cross-check lands on the p-k flutter speed
+    assert section["flutter_speed_k_method_m_s"] == pytest.approx(
+        section["flutter_speed_m_s"], rel=1e-5
+    )
+    assert flutter["speed_ratio"] == pytest.approx(section["flutter_speed_m_s"] / w, rel=1e-5)
+    # divergence: q_D = k_θ/(e·c·C_Lα), k_θ = I(ω_θ² + Ω²) (propeller moment at β = 0)
+    k_theta = 25 * ((2 * math.pi * 5.6) ** 2 + omega**2)
+    v_d = math.sqrt(2 * k_theta / (0.05 * 3.0 * 3.0 * 2 * math.pi) / 1.225)
+    assert divergence["sections"][0]["divergence_speed_m_s"] == pytest.approx(v_d, rel=1e-5)  # type: ignore[index]
+    assert flutter["status"] == "pass" and divergence["status"] == "pass"
+
+
+def test_a_soft_torsion_fails_flutter(write_spec: Callable[..., Path]) -> None:
+    c = checks(spec(write_spec, tor1=2.5))
+    assert c["blade.flutter"]["status"] == "fail"
+    assert "flutter at" in str(c["blade.flutter"]["message"])
+
+
+def test_mass_balanced_section_does_not_flutter(write_spec: Callable[..., Path]) -> None:
+    # centre of mass ahead of the elastic axis: no flutter in the swept range (3× speed)
+    c = checks(spec(write_spec, cg=0.25))
+    assert c["blade.flutter"]["speed_ratio"] is None
+    assert c["blade.flutter"]["status"] == "pass"
+
+
+def test_missing_torsion_frequency_is_reported_not_guessed(
+    write_spec: Callable[..., Path],
+) -> None:
+    path = spec(write_spec)
+    path.write_text(path.read_text().replace(", tor1: 5.6", ""))
+    c = checks(path)
+    assert c["blade.flutter"]["status"] == "info"
+    assert "blade.modes.tor1" in str(c["blade.flutter"]["message"])
+
+
+def test_no_aeroelastic_block_no_checks(write_spec: Callable[..., Path]) -> None:
+    report = audit.run(load(write_spec()))
+    assert not [c for c in report.checks if c.id in ("blade.flutter", "blade.divergence")]
+    assert ae.checks(load(write_spec()), report.modes) == ([], [])
