@@ -86,3 +86,10 @@ def test_no_aeroelastic_block_no_checks(write_spec: Callable[..., Path]) -> None
     report = audit.run(load(write_spec()))
     assert not [c for c in report.checks if c.id in ("blade.flutter", "blade.divergence")]
     assert ae.checks(load(write_spec()), report.modes) == ([], [])
+
+
+def test_vg_and_stability_chart_drawn(write_spec: Callable[..., Path]) -> None:
+    from wtvib.campbell import diagrams
+
+    figures = diagrams(audit.run(load(spec(write_spec))))
+    assert {"blade-flutter", "blade-stability"} <= set(figures)

@@ -144,3 +144,27 @@ def test_random_bytes_are_a_spec_error(tmp_path_factory, raw):
     except WtvibError:
         return
     raise AssertionError("random bytes loaded as a valid spec")  # pragma: no cover
+
+
+def test_regression_absurd_head_offset_is_refused_cleanly():
+    # found by the fuzz campaign of 2026-11-23: a 1.3e154 m head offset overflowed z² in the
+    # tower model; now refused by the spec (|offset| ≤ 1000 m), and any overflow in a model
+    # is a clean ModalError rather than a traceback
+    text = """\
+wtvib: 1
+turbine: {name: '0'}
+rotor: {blades: 1, orientation: upwind, hub: rigid, speed: {min_rpm: 1.0, max_rpm: 1.0}}
+tower:
+  modes: {fa1: 1.0}
+  distributed: {height_m: [0, 5, 10], mass_per_length_kg_m: [50, 50, 50],
+                ei_fa_nm2: [1.0e8, 1.0e8, 1.0e8], ei_ss_nm2: [1.0e8, 1.0e8, 1.0e8]}
+tower_head: {mass_kg: 10.0, cm_above_top_m: 1.3407807929942597e+154}
+"""
+    from wtvib.yamlio import parse
+
+    try:
+        spec.from_document(parse(text))
+    except WtvibError as exc:
+        assert "cm_above_top_m" in str(exc)
+    else:
+        raise AssertionError("the absurd offset was accepted")

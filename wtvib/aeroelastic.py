@@ -21,7 +21,7 @@ semichords, μ = m/(πρb²), r² = I_θ/(m b²), σ = ω_h/ω_θ.
 """
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -346,27 +346,75 @@ def flutter(s: Section, top_speed: float, steps: int = 120) -> Flutter:
     return pk_sweep(s, speeds)
 
 
-# --- quasi-steady aerodynamic damping (stall-induced vibration) -------------------------
+# --- stability-limit chart (Hau Fig. 7.6) -----------------------------------------------
 
 
-def aero_damping_coefficient(
-    rho: float,
-    chord: float,
-    w: float,
-    psi: float,
-    cl: float,
-    cd: float,
-    dcl: float,
-    dcd: float,
-) -> float:
-    """Damping per unit length of a section vibrating at angle ψ to the relative wind W:
-    c(ψ) = ½ρcW[2C_D cos²ψ + (C_L + C_D′) sinψ cosψ + (C_L′ + C_D) sin²ψ] (′ = d/dα, per rad).
-    [N·s/m²]  (DOMAIN.md §3; Hau ch. 7.2.3.)"""
-    s, c = math.sin(psi), math.cos(psi)
-    return 0.5 * rho * chord * w * (2 * cd * c * c + (cl + dcd) * s * c + (dcl + cd) * s * s)
+@dataclass(frozen=True)
+class StabilityChart:
+    """Torsional stiffness [N·m/rad per m] at the divergence and flutter limits against the
+    centre-of-mass offset behind the elastic axis [fraction of chord], for one section at
+    one air speed; the flutter limit is nan where the section does not flutter."""
+
+    offset_chord: Array
+    flutter_k_theta: Array
+    divergence_k_theta: float
+    blade_offset_chord: float
+    blade_k_theta: float
+    speed: float
 
 
-Polar = Callable[[float], tuple[float, float]]
+def _k_method_speeds(s: Section, a_tilde: CArray, reduced: Array, w_theta: Array) -> Array:
+    """k-method flutter speeds for torsion frequencies ``w_theta`` (all else fixed), from
+    aerodynamic matrices Ã(k) precomputed on ``reduced`` (descending). Vectorised; the zero
+    crossing of g is interpolated linearly on the k grid (for charts, not for checks)."""
+    m = s.mass_matrix()
+    out = np.full(len(w_theta), np.inf)
+    for i, wt in enumerate(w_theta):
+        kk_inv = np.diag([1 / (s.mass_kg_m * s.omega_h**2), 1 / (s.inertia_kgm * wt**2)])
+        lam = np.linalg.eigvals(kk_inv @ (m + a_tilde))  # (nk, 2)
+        lam = np.take_along_axis(lam, np.argsort(-lam.real, axis=1), axis=1)
+        valid = lam.real > 0
+        g = np.where(valid, lam.imag / np.where(valid, lam.real, 1), np.nan)
+        speed = np.where(
+            valid, s.semichord_m / (np.sqrt(np.abs(lam.real)) * reduced[:, None]), np.nan
+        )
+        for j in range(2):
+            up = np.nonzero((g[:-1, j] < 0) & (g[1:, j] >= 0))[0]
+            if up.size:
+                n = int(up[0])
+                t = -g[n, j] / (g[n + 1, j] - g[n, j])
+                out[i] = min(out[i], speed[n, j] + t * (speed[n + 1, j] - speed[n, j]))
+    return out
+
+
+def stability_chart(s: Section, speed: float, points: int = 25) -> StabilityChart:
+    """Divergence and flutter limits of the section's torsional stiffness at air ``speed``,
+    over centre-of-mass offsets from 5 % chord ahead of the elastic axis to 25 % behind."""
+    reduced = np.geomspace(6.0, 0.01, 400)
+    b = s.semichord_m
+    a_tilde = np.stack([aero_matrix(s, float(k), b / float(k)) for k in reduced])
+    offsets = np.linspace(-0.05, 0.25, points)
+    w_grid = s.omega_theta * np.geomspace(0.1, 10.0, 60)
+    limit = np.full(points, np.nan)
+    for i, off in enumerate(offsets):
+        trial = Section(**{**s.__dict__, "x_theta": 2 * off})
+        u_f = _k_method_speeds(trial, a_tilde, reduced, w_grid)
+        # stiffer than the last grid point that still flutters below ``speed``: stable
+        fails = np.nonzero(u_f < speed)[0]
+        if fails.size and fails[-1] < len(w_grid) - 1:
+            lo = int(fails[-1])
+            ratio = (speed - u_f[lo]) / (u_f[lo + 1] - u_f[lo]) if np.isfinite(u_f[lo + 1]) else 0.5
+            w = w_grid[lo] * (w_grid[lo + 1] / w_grid[lo]) ** float(np.clip(ratio, 0, 1))
+            limit[i] = s.inertia_kgm * w**2
+    q = 0.5 * s.air_density * speed**2
+    return StabilityChart(
+        offsets,
+        limit,
+        q * s.ac_ahead_of_ea_m * 2 * b * s.lift_slope,
+        s.x_theta / 2,
+        s.k_theta,
+        speed,
+    )
 
 
 # --- the audit checks -------------------------------------------------------------------
@@ -584,6 +632,7 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
                 for r in results
             ],
             "vg_section_radius_m": round(fw.radius_m, 4),
+            "vg_section": dict(fw.section.__dict__),
             "vg_section_speed_m_s": round(fw.section_speed, 4),
             "vg": [
                 {

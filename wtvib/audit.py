@@ -5,7 +5,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import aeroelastic, blade, drivetrain, floquet, tower, yaw
+from . import aeroelastic, blade, drivetrain, floquet, stall, tower, yaw
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
@@ -122,7 +122,15 @@ def run(
     seed
         Seed of the Monte Carlo sampling (reproducible results).
     """
-    settings = settings or spec.audit
+    try:
+        return _run(spec, settings or spec.audit, samples, seed)
+    except (OverflowError, FloatingPointError) as exc:
+        raise ModalError(
+            f"a number in the spec is too large for the models ({exc}); check the magnitudes"
+        ) from None
+
+
+def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) -> Report:
     rule = settings.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
@@ -162,6 +170,7 @@ def run(
     floquet_check, _ = floquet.check(spec, all_modes)
     checks.append(floquet_check)
     checks += aeroelastic.checks(spec, all_modes)[0]
+    checks += stall.checks(spec, all_modes)
     _assert_finite(all_modes)
     return Report(
         spec=spec,

@@ -286,7 +286,13 @@ def png_bytes(fig: "Figure") -> bytes:
 def diagrams(report: Report) -> dict[str, "Figure"]:
     """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
     keyed by file stem suffix."""
-    from .modeshapes import drivetrain_shapes_plot, floquet_plot, flutter_plot, power_curve_plot
+    from .modeshapes import (
+        drivetrain_shapes_plot,
+        floquet_plot,
+        flutter_plot,
+        power_curve_plot,
+        stability_chart_plot,
+    )
 
     present = {m.subsystem for m in report.modes}
     out = {
@@ -299,6 +305,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         ("drivetrain-power", power_curve_plot(report)),
         ("floquet", floquet_plot(report)),
         ("blade-flutter", flutter_plot(report)),
+        ("blade-stability", stability_chart_plot(report)),
     ):
         if fig is not None:
             out[name] = fig

@@ -185,3 +185,89 @@ def flutter_plot(report: Report) -> "Figure | None":
         fontsize=10,
     )
     return fig
+
+
+def stability_chart_plot(report: Report) -> "Figure | None":
+    """Hau Fig. 7.6 for the blade section nearest to flutter: torsional stiffness against the
+    centre-of-mass offset, divergence and flutter limits at the required speed, the blade."""
+    from matplotlib.figure import Figure
+
+    from .aeroelastic import Section, stability_chart
+
+    check = next((c for c in report.checks if c.id == "blade.flutter"), None)
+    ae = report.spec.blade.aeroelastic
+    if check is None or "vg_section" not in check.numbers or ae is None:
+        return None
+    n = check.numbers
+    section = Section(**n["vg_section"])
+    speed = n["vg_section_speed_m_s"] * (1 + ae.speed_margin)
+    chart = stability_chart(section, speed)
+    x = 100 * chart.offset_chord
+    kilo = 1e-3
+    fig = Figure(figsize=(9, 5.6), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    flutter_k = chart.flutter_k_theta * kilo
+    top = 3 * max(
+        np.nanmax(flutter_k, initial=0.0),
+        chart.divergence_k_theta * kilo,
+        chart.blade_k_theta * kilo,
+    )
+    bottom = 0.1 * min(chart.blade_k_theta * kilo, chart.divergence_k_theta * kilo or top)
+    ax.fill_between(
+        x,
+        bottom,
+        np.where(np.isfinite(flutter_k), flutter_k, bottom),
+        where=np.isfinite(flutter_k),
+        color="#e53935",
+        alpha=0.18,
+        lw=0,
+        label="flutter",
+    )
+    ax.plot(x, flutter_k, color="#c62828", lw=2, label="flutter limit")
+    if chart.divergence_k_theta > 0:
+        ax.axhspan(
+            bottom,
+            chart.divergence_k_theta * kilo,
+            color="#fb8c00",
+            alpha=0.15,
+            lw=0,
+            label="divergence",
+        )
+        ax.axhline(
+            chart.divergence_k_theta * kilo,
+            color="#ef6c00",
+            lw=2,
+            ls="--",
+            label="divergence limit",
+        )
+    ax.plot(
+        100 * chart.blade_offset_chord,
+        chart.blade_k_theta * kilo,
+        "o",
+        ms=10,
+        color="#1565c0",
+        label=f"blade section at r = {n['vg_section_radius_m']:.3g} m",
+    )
+    ratio = n.get("speed_ratio")
+    ax.annotate(
+        f"flutter at {ratio:.2f}× the highest section speed" if ratio else "no flutter found",
+        (100 * chart.blade_offset_chord, chart.blade_k_theta * kilo),
+        xytext=(10, 10),
+        textcoords="offset points",
+        fontsize=8,
+        color="#1565c0",
+    )
+    ax.axvline(0.0, color="#616161", lw=0.8)
+    ax.set_yscale("log")
+    ax.set_ylim(bottom, top)
+    ax.set_xlabel("centre of mass behind the elastic axis [% chord]")
+    ax.set_ylabel("torsional stiffness k_θ [kN·m/rad per m]")
+    ax.set_title(
+        f"{report.spec.turbine.name} — blade stability limits at {speed:.3g} m/s "
+        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
+        fontweight="bold",
+        fontsize=10,
+    )
+    ax.grid(True, which="both", alpha=0.25)
+    ax.legend(fontsize=8, loc="lower right")
+    return fig

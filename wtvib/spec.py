@@ -321,8 +321,10 @@ class TowerHead(_Strict):
     """The rotor–nacelle assembly as a rigid body on the tower top."""
 
     mass_kg: Positive = Field(description="Total tower-head mass (rotor, hub, nacelle). [kg]")
-    cm_downwind_m: float = Field(0.0, description="CM downwind of the tower axis. [m]")
-    cm_above_top_m: float = Field(0.0, description="CM above the tower top. [m]")
+    cm_downwind_m: float = Field(
+        0.0, ge=-1000, le=1000, description="CM downwind of the tower axis. [m]"
+    )
+    cm_above_top_m: float = Field(0.0, ge=-1000, le=1000, description="CM above the tower top. [m]")
     inertia_pitch_kgm2: float = Field(
         0.0, ge=0, description="Inertia about the lateral (nodding) axis through the CM. [kg·m²]"
     )
@@ -434,8 +436,40 @@ class AeroSection(_Strict):
     )
 
 
+class Polar(_Strict):
+    """Aerofoil polar: lift and drag coefficients over the angle of attack."""
+
+    alpha_deg: list[float] = Field(min_length=3, description="Angle of attack. [deg]")
+    cl: list[float] = Field(description="Lift coefficient C_L. [-]")
+    cd: list[float] = Field(description="Drag coefficient C_D. [-]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Polar":
+        _increasing("alpha_deg", self.alpha_deg)
+        _same_length(self, "alpha_deg")
+        return self
+
+
+class Planform(_Strict):
+    """Chord and twist along the blade, for the stall-induced vibration check."""
+
+    radius_fraction: list[float] = Field(min_length=2, description="Position r/R. [-]")
+    chord_m: list[Positive] = Field(description="Chord. [m]")
+    twist_deg: list[float] = Field(
+        description="Angle of the chord to the rotor plane at zero pitch. [deg]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Planform":
+        _increasing("radius_fraction", self.radius_fraction)
+        if self.radius_fraction[0] <= 0 or self.radius_fraction[-1] > 1:
+            raise ValueError("radius_fraction must lie in (0, 1]")
+        _same_length(self, "radius_fraction")
+        return self
+
+
 class BladeAeroelastic(_Strict):
-    """Data for the blade's static divergence and classical flutter checks."""
+    """Data for the blade's divergence, flutter and stall-induced vibration checks."""
 
     sections: list[AeroSection] = Field(min_length=1, max_length=10)
     lift_slope_per_rad: Positive = Field(
@@ -453,6 +487,33 @@ class BladeAeroelastic(_Strict):
         lt=5,
         description="Required margin of the divergence and flutter speeds over the highest "
         "section speed (0.15: 1.15×, as CS-25.629 asks of aircraft). [-]",
+    )
+    polar: Polar | None = Field(
+        None, description="Aerofoil polar; default a built-in thin-aerofoil/flat-plate stall."
+    )
+    planform: Planform | None = Field(
+        None, description="Chord and twist along the blade; default: the sections (≥ 2)."
+    )
+    min_wind_m_s: Positive = Field(4.0, description="Lowest wind speed in operation. [m/s]")
+    axial_induction: float = Field(
+        0.0,
+        ge=0,
+        lt=0.5,
+        description="Axial induction a in the inflow model (0: geometric angle of attack, "
+        "the highest). [-]",
+    )
+    tip_speed_ratio: Positive = Field(
+        7.0, description="Tip-speed ratio of variable-speed partial load. [-]"
+    )
+    pitch_deg: float = Field(0.0, ge=-30, le=90, description="Blade pitch (held). [deg]")
+    regulation: Literal["stall", "pitch"] = Field(
+        "stall",
+        description="Power regulation: stall (pitch held at all winds) or pitch (the stall "
+        "check stops at the rated wind).",
+    )
+    rated_wind_m_s: Positive | None = Field(
+        None,
+        description="Rated wind speed (pitch regulation); default from the tip-speed ratio. [m/s]",
     )
 
 

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from wtvib import aeroelastic as ae
+from wtvib import stall
 
 TEXTBOOK = {"a": -0.2, "x_theta": 0.1, "mu": 20.0, "r2": 6 / 25, "sigma": 0.4}
 
@@ -155,5 +156,26 @@ def test_aerodynamic_damping_matches_a_finite_difference_of_the_section_forces()
     for psi in np.radians([0.0, 20.0, 45.0, 80.0, 90.0, 120.0]):
         h = 1e-4
         fd = -(force_along(psi, h) - force_along(psi, -h)) / (2 * h)
-        formula = ae.aero_damping_coefficient(rho, chord, w0, psi, cl0, cd0, -2.0, 1.1)
+        formula = stall.aero_damping_coefficient(rho, chord, w0, psi, cl0, cd0, -2.0, 1.1)
         assert fd == pytest.approx(formula, rel=1e-6, abs=1e-6), math.degrees(psi)
+
+
+def test_stability_chart_flutter_limit_is_where_the_section_flutters_at_that_speed() -> None:
+    # Each point of the chart's flutter limit (Hau Fig. 7.6), fed back into the p-k method
+    # as the section's torsional stiffness, must flutter at the chart's speed
+    s = section()
+    chart = ae.stability_chart(s, 2.0)
+    for i in (5, 8, 16, 24):
+        k_theta = chart.flutter_k_theta[i]
+        trial = ae.Section(
+            **{
+                **s.__dict__,
+                "x_theta": 2 * chart.offset_chord[i],
+                "omega_theta": math.sqrt(k_theta / s.inertia_kgm),
+            }
+        )
+        assert ae.flutter(trial, 4.0).speed == pytest.approx(2.0, rel=0.01)
+    # divergence limit: q·e·c·C_Lα at q = ½ρU² (ρ = b = 1: e = ½ + a, c = 2)
+    assert chart.divergence_k_theta == pytest.approx(0.5 * 4.0 * 0.3 * 2 * 2 * math.pi)
+    # centre of mass ahead of the elastic axis: no flutter limit
+    assert np.isnan(chart.flutter_k_theta[0])

@@ -1,0 +1,282 @@
+"""Stall-induced vibration: quasi-steady aerodynamic damping of the blade's flap and edge modes.
+
+A section vibrating along a direction at angle ψ to the relative wind W feels the damping
+force per unit length and velocity (Hau ch. 7.2.3; DOMAIN.md §3)
+
+    c(ψ) = ½ρcW [2C_D cos²ψ + (C_L + C_D′) sinψ cosψ + (C_L′ + C_D) sin²ψ],   ′ = d/dα.
+
+Flapwise motion (normal to the rotor plane) has ψ = 90° − φ, edgewise motion (in the plane)
+ψ = 180° − φ, with φ the inflow angle of W to the rotor plane. The modal aerodynamic damping
+ratio is ζ_a = ∫ c·φ_m² dr / (2ω·∫ m·φ_m² dr) with the mode shape φ_m. Past stall C_L′ < 0:
+the edgewise (and in deep stall the flapwise) damping can become negative — the
+stall-induced vibrations of stall-regulated rotors.
+
+Inflow model (stated in every check): steady uniform wind V, constant axial induction a (a
+setting, default 0: the geometric angle of attack, the highest — conservative for stall
+onset), no tangential induction; α = φ − (twist + pitch), φ = atan(V(1−a)/(Ω·r)). Rotor
+speed: each fixed speed, or for variable speed Ω = clamp(λ_opt·V/R, Ω_min, Ω_rated). Pitch
+is held; a pitch-regulated rotor is checked up to its rated wind only (above it, pitching
+to feather lowers the angles of attack).
+The mode moves normal to the rotor plane (flap) or in it (edge): the structural twist of the
+principal axes is ignored here.
+"""
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+if TYPE_CHECKING:
+    from .results import Check, Mode
+    from .spec import BladeAeroelastic, Spec
+
+Array = NDArray[np.float64]
+
+#: The built-in polar's stall: linear lift 2πα up to STALL_DEG, then a linear fall to the flat
+#: plate (C_L = 2 sinα cosα, C_D = 2 sin²α) at FLAT_PLATE_DEG. Illustrative, not an aerofoil.
+STALL_DEG, FLAT_PLATE_DEG, CD0 = 12.0, 45.0, 0.01
+
+
+def aero_damping_coefficient(
+    rho: float, chord: Any, w: Any, psi: Any, cl: Any, cd: Any, dcl: Any, dcd: Any
+) -> Any:
+    """c(ψ) per unit length [N·s/m²] of a section vibrating at angle ψ to the relative wind
+    (derivatives per radian); scalars or arrays along the span."""
+    s, c = np.sin(psi), np.cos(psi)
+    return 0.5 * rho * chord * w * (2 * cd * c * c + (cl + dcd) * s * c + (dcl + cd) * s * s)
+
+
+def builtin_polar(alpha_deg: Array) -> tuple[Array, Array]:
+    """Thin-aerofoil lift with a flat-plate stall (see STALL_DEG): C_L, C_D at α [deg]."""
+    a = np.radians(alpha_deg)
+    flat_cl, flat_cd = 2 * np.sin(a) * np.cos(a), 2 * np.sin(a) ** 2
+    s, f = math.radians(STALL_DEG), math.radians(FLAT_PLATE_DEG)
+    mag = np.abs(a)
+    t = np.clip((mag - s) / (f - s), 0.0, 1.0)
+    attached_cl = 2 * np.pi * np.sign(a) * np.minimum(mag, s)
+    cl = np.where(mag <= s, 2 * np.pi * a, (1 - t) * attached_cl + t * flat_cl)
+    plate_at_f = 2 * math.sin(f) ** 2
+    cd = np.where(
+        mag <= s, CD0, np.where(mag >= f, np.maximum(flat_cd, CD0), CD0 + t * (plate_at_f - CD0))
+    )
+    return cl, cd
+
+
+def polar_with_slopes(ae: "BladeAeroelastic", alpha_deg: Array) -> tuple[Array, ...]:
+    """C_L, C_D and their slopes per radian (central differences, ±0.25°) at α [deg]."""
+
+    def table(a: Array) -> tuple[Array, Array]:
+        if ae.polar is None:
+            return builtin_polar(a)
+        p = ae.polar
+        return np.interp(a, p.alpha_deg, p.cl), np.interp(a, p.alpha_deg, p.cd)
+
+    h = 0.25
+    cl, cd = table(alpha_deg)
+    cl_p, cd_p = table(alpha_deg + h)
+    cl_m, cd_m = table(alpha_deg - h)
+    per_rad = 1 / math.radians(2 * h)
+    return cl, cd, (cl_p - cl_m) * per_rad, (cd_p - cd_m) * per_rad
+
+
+@dataclass(frozen=True)
+class Point:
+    """Damping of one mode at one operating point."""
+
+    wind: float  # [m/s]
+    rpm: float
+    aero: float  # aerodynamic damping ratio ζ_a
+    total: float  # ζ_a + structural
+    alpha_tip_deg: float  # angle of attack at the outermost planform station
+
+
+def _planform(spec: "Spec", radius: float) -> tuple[Array, Array, Array] | None:
+    """Radii [m], chords [m] and chord angles to the rotor plane [deg] along the blade."""
+    ae = spec.blade.aeroelastic
+    assert ae is not None
+    if ae.planform is not None:
+        p = ae.planform
+        return (
+            np.asarray(p.radius_fraction) * radius,
+            np.asarray(p.chord_m, float),
+            np.asarray(p.twist_deg, float),
+        )
+    if len(ae.sections) >= 2:
+        secs = sorted(ae.sections, key=lambda s: s.radius_fraction)
+        return (
+            np.array([s.radius_fraction * radius for s in secs]),
+            np.array([s.chord_m for s in secs]),
+            np.array([s.chord_angle_deg for s in secs]),
+        )
+    return None
+
+
+def _mode_shape(mode: "Mode", r: Array, root: float) -> Array:
+    """The mode's deflection at radii r: its computed shape, else the uniform cantilever's."""
+    if mode.shape is not None:
+        x = np.asarray(mode.shape.position_m) + root
+        return np.interp(r, x, np.asarray(mode.shape.deflection))
+    # first bending mode of a uniform cantilever, β₁l = 1.8751 (Blevins Table 8-1)
+    bl = 1.8751040687
+    length = r[-1] - root
+    xi = np.clip((r - root) / length, 0, 1) * bl
+    sigma = (math.cosh(bl) + math.cos(bl)) / (math.sinh(bl) + math.sin(bl))
+    phi = np.cosh(xi) - np.cos(xi) - sigma * (np.sinh(xi) - np.sin(xi))
+    return np.asarray(phi / phi[-1])
+
+
+def _mass(spec: "Spec", r: Array, root: float) -> Array | None:
+    st = spec.blade.structure
+    if st is not None:
+        return np.interp(r - st.hub_radius_m, st.span_m, st.mass_per_length_kg_m)
+    if spec.blade.mass_kg is not None:
+        return np.full_like(r, spec.blade.mass_kg / (r[-1] - root))
+    return None
+
+
+def operating_points(spec: "Spec", radius: float) -> list[tuple[float, float]]:
+    """(wind [m/s], rotor speed [rpm]) pairs over min_wind … max_wind in 0.5 m/s steps."""
+    ae = spec.blade.aeroelastic
+    assert ae is not None
+    speed = spec.rotor.speed
+    top_wind = ae.max_wind_m_s
+    if ae.regulation == "pitch":  # pitching to feather lowers α above rated wind
+        rated = ae.rated_wind_m_s
+        if rated is None:  # the wind at which the variable-speed rotor reaches rated speed
+            top_rpm = speed.rated_rpm or speed.top_rpm
+            rated = top_rpm * 2 * math.pi / 60 * radius / ae.tip_speed_ratio
+        top_wind = min(top_wind, rated)
+    winds = np.arange(ae.min_wind_m_s, max(top_wind, ae.min_wind_m_s) + 1e-9, 0.5)
+    out = []
+    if speed.fixed_rpm is not None:
+        fixed = speed.fixed_rpm if isinstance(speed.fixed_rpm, list) else [speed.fixed_rpm]
+        return [(float(v), float(n)) for n in fixed for v in winds]
+    low, top = speed.steady_rpm[0][0], speed.rated_rpm or speed.top_rpm
+    for v in winds:
+        rpm = ae.tip_speed_ratio * v / radius * 60 / (2 * math.pi)
+        out.append((float(v), float(min(max(rpm, low), top))))
+    return out
+
+
+def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | None:
+    """The mode's aerodynamic and total damping over the operating points; None without
+    planform or mass data."""
+    ae = spec.blade.aeroelastic
+    assert ae is not None
+    plan = _planform(spec, radius)
+    if plan is None:
+        return None
+    r_plan, chord_plan, twist_plan = plan
+    root = spec.blade.structure.hub_radius_m if spec.blade.structure else float(r_plan[0])
+    r = np.linspace(max(r_plan[0], root), radius, 60)
+    chord = np.interp(r, r_plan, chord_plan)
+    theta = np.interp(r, r_plan, twist_plan) + ae.pitch_deg
+    shape = _mode_shape(mode, np.concatenate([[root], r]), root)[1:]
+    m = _mass(spec, r, root)
+    if m is None:
+        return None
+    flap = mode.id.startswith("blade.flap")
+    gen_mass = float(np.trapezoid(m * shape**2, r))
+    structural = mode.damping_ratio if mode.damping_ratio is not None else spec.blade.damping_ratio
+    out = []
+    for wind, rpm in operating_points(spec, radius):
+        omega = rpm * 2 * math.pi / 60
+        phi = np.arctan2(wind * (1 - ae.axial_induction), omega * r)
+        w = np.hypot(wind * (1 - ae.axial_induction), omega * r)
+        alpha = np.degrees(phi) - theta
+        cl, cd, dcl, dcd = polar_with_slopes(ae, alpha)
+        psi = (np.pi / 2 - phi) if flap else (np.pi - phi)
+        coeff = aero_damping_coefficient(ae.air_density_kg_m3, chord, w, psi, cl, cd, dcl, dcd)
+        w_mode = 2 * math.pi * float(mode.frequency_at(omega)[()])
+        zeta = float(np.trapezoid(coeff * shape**2, r)) / (2 * w_mode * gen_mass)
+        out.append(Point(wind, rpm, zeta, zeta + structural, float(alpha[-1])))
+    return out
+
+
+def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]":
+    """``blade.stall.flap1`` and ``blade.stall.edge1``: total damping over the operating
+    range — negative fails, aerodynamic damping eating into the structural damping warns."""
+    from .aeroelastic import rotor_radius
+    from .results import Check, Rule
+
+    ae = spec.blade.aeroelastic
+    if ae is None:
+        return []
+    radius = rotor_radius(spec)
+    by_id = {m.id: m for m in modes}
+    polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
+    rule = Rule(
+        "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
+        "is negative",
+        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), DOMAIN.md §3; "
+        f"{polar}, axial induction a = {ae.axial_induction:g}",
+    )
+    out = []
+    for name in ("flap1", "edge1"):
+        cid = f"blade.stall.{name}"
+        mode = by_id.get(f"blade.{name}")
+        curve = damping_curve(spec, mode, radius) if mode and radius else None
+        if curve is None:
+            need = [
+                n
+                for n, ok in (
+                    (f"blade.modes.{name}", mode is not None),
+                    ("turbine.rotor_diameter_m", radius is not None),
+                    (
+                        "blade.aeroelastic.planform (or two sections)",
+                        radius is None or _planform(spec, radius) is not None,
+                    ),
+                    (
+                        "blade.mass_kg or blade.structure",
+                        spec.blade.mass_kg is not None or spec.blade.structure is not None,
+                    ),
+                )
+                if not ok
+            ]
+            out.append(Check(cid, "blade", "info", "not analysed: needs " + ", ".join(need), rule))
+            continue
+        low = min(curve, key=lambda p: p.total)
+        low_aero = min(curve, key=lambda p: p.aero)
+        negative = [p for p in curve if p.total < 0]
+        where = f"{low.wind:g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
+        if negative:
+            status = "fail"
+            text = (
+                f"negative total damping ζ = {low.total:.3f} at {where}; unstable from "
+                f"{negative[0].wind:g} to {negative[-1].wind:g} m/s"
+            )
+        elif low_aero.aero < 0:
+            status = "warn"
+            text = (
+                f"aerodynamic damping negative (ζ_a = {low_aero.aero:.4f}); "
+                f"lowest total {low.total:.4f} at {where}"
+            )
+        else:
+            status = "pass"
+            text = f"lowest total damping ζ = {low.total:.3f} at {where}"
+        out.append(
+            Check(
+                cid,
+                "blade",
+                status,  # type: ignore[arg-type]
+                text,
+                rule,
+                {
+                    "min_total_damping_ratio": round(low.total, 6),
+                    "at_wind_m_s": low.wind,
+                    "at_rpm": round(low.rpm, 4),
+                    "curve": [
+                        {
+                            "wind_m_s": p.wind,
+                            "rpm": round(p.rpm, 4),
+                            "aero_damping_ratio": round(p.aero, 6),
+                            "total_damping_ratio": round(p.total, 6),
+                        }
+                        for p in curve
+                    ],
+                },
+            )
+        )
+    return out
