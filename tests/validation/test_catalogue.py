@@ -31,6 +31,7 @@ STORIES = {
     "darrieus": (None, "pass"),  # vertical axis: no stiff/soft class
     "nrel-5mw": ("resonant", "fail"),  # 3P at 6.9 rpm is 6 % from the tower (< 10 %)
     "iea-15mw": ("soft", "warn"),  # 2P swept in partial load; 3P clear
+    "stall-rotor-1mw": ("soft", "fail"),  # chordwise stall-induced vibration (Hau 7.2.3)
 }
 
 
@@ -127,3 +128,25 @@ def test_wts4_both_1p_and_2p_cross_at_start_up():
     c = check(report("wts-4"), "tower.class")
     assert c.numbers["startup_crossings"] == ["1P", "2P"]
     assert "large tower-head amplitudes" in c.message
+
+
+def test_stall_rotor_edgewise_damping_goes_negative_at_high_wind():
+    # Hau ch. 7.2.3: "chordwise rotor blade vibration was observed in some larger
+    # stall-controlled turbines … when they are operated at high wind velocities", while
+    # "the chordwise movement … is not very damped aerodynamically, in contrast to the
+    # flapwise movement"
+    r = report("stall-rotor-1mw")
+    edge, flap = check(r, "blade.stall.edge1"), check(r, "blade.stall.flap1")
+    assert edge.status == "fail"
+    unstable = [p["wind_m_s"] for p in edge.numbers["curve"] if p["total_damping_ratio"] < 0]
+    assert min(unstable) > 12 and max(unstable) < 25  # in the stall range, not at low wind
+    low_wind = [p for p in flap.numbers["curve"] if p["wind_m_s"] <= 8]
+    edge_low = [p for p in edge.numbers["curve"] if p["wind_m_s"] <= 8]
+    # flapwise aerodynamic damping in attached flow is tens of times the edgewise one
+    assert min(p["aero_damping_ratio"] for p in low_wind) > 20 * max(
+        abs(p["aero_damping_ratio"]) for p in edge_low
+    )
+    assert flap.status != "fail"
+    # divergence and flutter are not the problem of this stiff, short blade
+    assert check(r, "blade.flutter").status == "pass"
+    assert check(r, "blade.divergence").status == "pass"
