@@ -179,7 +179,7 @@ def flutter_plot(report: Report) -> "Figure | None":
     ax_f.set_xlabel("section air speed [m/s]")
     ax_g.legend(fontsize=8, loc="best")
     ax_g.set_title(
-        f"{report.spec.turbine.name} — blade flutter at r = {n['vg_section_radius_m']:.3g} m, "
+        f"{report.spec.turbine.name}\nblade flutter at r = {n['vg_section_radius_m']:.3g} m, "
         f"Theodorsen p-k ({check.status.upper()})",
         fontweight="bold",
         fontsize=10,
@@ -263,7 +263,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("centre of mass behind the elastic axis [% chord]")
     ax.set_ylabel("torsional stiffness k_θ [kN·m/rad per m]")
     ax.set_title(
-        f"{report.spec.turbine.name} — blade stability limits at {speed:.3g} m/s "
+        f"{report.spec.turbine.name}\nblade stability limits at {speed:.3g} m/s "
         f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
         fontweight="bold",
         fontsize=10,

@@ -27,7 +27,7 @@ SUBSYSTEM_NAMES = {
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
-    "blade": ("campbell",),
+    "blade": ("campbell", "blade-flutter", "blade-stability"),
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
@@ -46,6 +46,7 @@ class _Kit:
         from reportlab.lib.styles import getSampleStyleSheet
         from reportlab.lib.units import mm
         from reportlab.platypus import (
+            CondPageBreak,
             Image,
             KeepTogether,
             PageBreak,
@@ -58,6 +59,7 @@ class _Kit:
 
         self.colors, self.A4, self.mm = colors, A4, mm
         self.Image, self.KeepTogether, self.PageBreak = Image, KeepTogether, PageBreak
+        self.CondPageBreak = CondPageBreak
         self.Paragraph, self.Spacer, self.Table, self.TableStyle = (
             Paragraph,
             Spacer,
@@ -225,6 +227,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         modes = [m for m in r["modes"] if m["subsystem"] == sub]
         if not modes and not any(c["subsystem"] == sub for c in r["checks"]):
             continue
+        out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
         out.append(k.p(title, "Heading2"))
         rows = [k.header("mode", "description", "f [Hz]", "ζ")]
         rows += [
@@ -329,6 +332,10 @@ def _numbers(c: dict[str, Any]) -> str:
         "exclude_rpm",
         "tower_class",
         "startup_crossings",
+        "speed_ratio",
+        "min_total_damping_ratio",
+        "at_wind_m_s",
+        "at_rpm",
     )
     return "; ".join(f"{k} = {c[k]}" for k in keys if c.get(k) not in (None, [], ""))
 
