@@ -589,6 +589,7 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
                     "radius_m": round(r.radius_m, 4),
                     "section_speed_m_s": round(r.section_speed, 4),
                     "divergence_speed_m_s": _finite(r.divergence_speed),
+                    "divergence_pressure_pa": _finite(divergence_pressure(r.section)),
                 }
                 for r in results
             ],

@@ -41,6 +41,9 @@ def terminal(
         console.print(
             f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
         )
+    stability = _blade_stability(data["checks"])
+    if stability is not None:
+        console.print(stability)
     if data.get("uncertainty"):
         console.print(_uncertainty(data["uncertainty"]))
     for line in data.get("warnings", []):
@@ -193,6 +196,43 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
                 f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
                 f"{pos['distance_percent']:.1f} %)"
             )
+
+
+def _blade_stability(checks: list[dict[str, Any]]) -> Table | None:
+    """Per-section divergence and flutter speeds, and the stall damping minima."""
+    by_id = {c["id"]: c for c in checks}
+    div, flut = by_id.get("blade.divergence"), by_id.get("blade.flutter")
+    if not div or not flut or "sections" not in flut:
+        return None
+    table = Table(title="Blade stability", title_justify="left")
+    for col in ("section", "section speed", "divergence", "flutter (p-k)", "k-method", "at"):
+        table.add_column(col, justify="left" if col == "section" else "right")
+
+    def speed(v: float | None, ref: float) -> str:
+        return "none" if v is None else f"{v:.4g} m/s ({v / ref:.2f}×)"
+
+    for d, f in zip(div["sections"], flut["sections"], strict=True):
+        ref = f["section_speed_m_s"]
+        table.add_row(
+            f"r = {f['radius_m']:.3g} m",
+            f"{ref:.4g} m/s",
+            speed(d["divergence_speed_m_s"], ref),
+            speed(f["flutter_speed_m_s"], ref),
+            speed(f["flutter_speed_k_method_m_s"], ref),
+            "—" if f["flutter_frequency_hz"] is None else f"{f['flutter_frequency_hz']:.3g} Hz",
+        )
+    for name in ("flap1", "edge1"):
+        c = by_id.get(f"blade.stall.{name}")
+        if c and "min_total_damping_ratio" in c:
+            table.add_row(
+                f"stall {name}",
+                f"{c['at_wind_m_s']:g} m/s wind",
+                f"ζ min {c['min_total_damping_ratio']:.4f}",
+                "",
+                "",
+                f"{c['at_rpm']:.3g} rpm",
+            )
+    return table
 
 
 def _uncertainty(u: dict[str, Any]) -> Table:
