@@ -93,3 +93,16 @@ def test_vg_and_stability_chart_drawn(write_spec: Callable[..., Path]) -> None:
 
     figures = diagrams(audit.run(load(spec(write_spec))))
     assert {"blade-flutter", "blade-stability"} <= set(figures)
+
+
+def test_inertia_smaller_than_the_offset_mass_is_refused_with_the_field(
+    write_spec: Callable[..., Path],
+) -> None:
+    # found by the fuzz campaign of 2026-11-23: I_EA < m·d² made the section's mass matrix
+    # indefinite and the flutter solver produced NaN; it is a user mistake, named by field
+    from wtvib.errors import SpecError
+
+    path = spec(write_spec, cg=0.75)  # d = 0.45·3 m = 1.35 m: m·d² = 328 kg·m > 25
+    with pytest.raises(SpecError, match="torsional_inertia_kgm") as info:
+        load(path)
+    assert info.value.line is not None

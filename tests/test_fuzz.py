@@ -6,6 +6,7 @@ Generated valid specs always audit with finite, non-negative frequencies; mutate
 ``make fuzz`` runs ≥ 100,000 cases (HYPOTHESIS_PROFILE=fuzz) and tests/FUZZ.md records it.
 """
 
+import json
 import math
 import os
 
@@ -74,6 +75,30 @@ def valid_specs(draw):  # type: ignore[no-untyped-def]
             ],
             "shafts": [{"stiffness_nm_rad": draw(st.floats(1e4, 1e11))}],
         }
+    if draw(st.booleans()):  # blade divergence, flutter and stall checks
+        data["turbine"]["rotor_diameter_m"] = draw(st.floats(2, 300))
+        data["blade"]["modes"]["tor1"] = draw(st.floats(0.2, 60))
+        data["blade"]["mass_kg"] = draw(st.floats(10, 1e5))
+        ea = draw(st.floats(0.0, 0.6))
+        data["blade"]["aeroelastic"] = {
+            "max_wind_m_s": draw(st.floats(5, 60)),
+            "sections": [
+                {
+                    "radius_fraction": draw(st.floats(0.05, 1.0)),
+                    "chord_m": draw(st.floats(0.05, 10)),
+                    "elastic_axis_chord": ea,
+                    "centre_of_mass_chord": draw(st.floats(0.0, 0.9)),
+                    "mass_per_length_kg_m": draw(st.floats(0.5, 2e3)),
+                    "torsional_inertia_kgm": draw(st.floats(1e-3, 1e3)),
+                    "chord_angle_deg": draw(st.floats(-30, 30)),
+                }
+            ],
+            "planform": {
+                "radius_fraction": [0.1, 0.6, 1.0],
+                "chord_m": [draw(st.floats(0.05, 10)) for _ in range(3)],
+                "twist_deg": [draw(st.floats(-10, 30)) for _ in range(3)],
+            },
+        }
     return data
 
 
@@ -86,7 +111,7 @@ def test_valid_specs_audit_with_finite_frequencies(data):
     for m in report.modes:
         assert math.isfinite(m.frequency_hz) and m.frequency_hz >= 0
     assert report.verdict in ("pass", "warn", "fail")
-    report.to_dict()
+    json.dumps(report.to_dict(), allow_nan=False)  # the JSON contract: no NaN or infinity
 
 
 junk = st.one_of(

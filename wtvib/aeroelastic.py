@@ -29,7 +29,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import beam
+from .errors import SpecError
 from .modal import solve, state_roots
+from .spec import check_section_inertia
 
 if TYPE_CHECKING:
     from .results import Check, Mode
@@ -467,10 +469,14 @@ def stations(spec: "Spec", modes: "Sequence[Mode]") -> tuple[list[StationResult]
     assert radius is not None
     omega = spec.rotor.speed.overspeed * 2 * math.pi / 60
     out = []
-    for sec in ae.sections:
+    for i, sec in enumerate(ae.sections):
         r = sec.radius_fraction * radius
         m = sec.mass_per_length_kg_m or _along(spec, "mass_per_length_kg_m", r)
         inertia = sec.torsional_inertia_kgm or _along(spec, "torsional_inertia_kgm", r)
+        try:
+            check_section_inertia(m, inertia, sec.offset_m)
+        except ValueError as exc:  # the inertia interpolated from blade.structure
+            raise SpecError(str(exc), path=f"blade.aeroelastic.sections.{i}") from None
         beta = math.radians(sec.chord_angle_deg)
         w_h = 2 * math.pi * float(by_id["blade.flap1"].frequency_at(omega)[()])
         # torsion stiffened by the propeller moment: ω_θ² = ω_θ0² + Ω²·cos 2β

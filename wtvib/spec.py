@@ -435,6 +435,28 @@ class AeroSection(_Strict):
         "centrifugal propeller moment. [deg]",
     )
 
+    @model_validator(mode="after")
+    def _inertia_covers_offset(self) -> "AeroSection":
+        m, i = self.mass_per_length_kg_m, self.torsional_inertia_kgm
+        if m is not None and i is not None:
+            check_section_inertia(m, i, self.offset_m)
+        return self
+
+    @property
+    def offset_m(self) -> float:
+        """Centre of mass behind the elastic axis. [m]"""
+        return (self.centre_of_mass_chord - self.elastic_axis_chord) * self.chord_m
+
+
+def check_section_inertia(mass: float, inertia: float, offset: float) -> None:
+    """The inertia about the elastic axis includes the offset mass: I_EA ≥ m·d²."""
+    if inertia <= mass * offset**2:
+        raise ValueError(
+            f"torsional_inertia_kgm {inertia:g} kg·m is not more than m·d² = "
+            f"{mass * offset**2:.4g} kg·m: the inertia about the elastic axis includes the "
+            f"centre of mass's offset d = {offset:.3g} m"
+        )
+
 
 class Polar(_Strict):
     """Aerofoil polar: lift and drag coefficients over the angle of attack."""
