@@ -367,26 +367,35 @@ class StabilityChart:
 
 def _k_method_speeds(s: Section, a_tilde: CArray, reduced: Array, w_theta: Array) -> Array:
     """k-method flutter speeds for torsion frequencies ``w_theta`` (all else fixed), from
-    aerodynamic matrices Ã(k) precomputed on ``reduced`` (descending). Vectorised; the zero
-    crossing of g is interpolated linearly on the k grid (for charts, not for checks)."""
+    aerodynamic matrices Ã(k) precomputed on ``reduced`` (descending). Vectorised over both
+    (closed-form 2×2 eigenvalues); the zero crossing of g is interpolated linearly on the k
+    grid (for charts, not for checks)."""
     m = s.mass_matrix()
-    out = np.full(len(w_theta), np.inf)
-    for i, wt in enumerate(w_theta):
-        kk_inv = np.diag([1 / (s.mass_kg_m * s.omega_h**2), 1 / (s.inertia_kgm * wt**2)])
-        lam = np.linalg.eigvals(kk_inv @ (m + a_tilde))  # (nk, 2)
-        lam = np.take_along_axis(lam, np.argsort(-lam.real, axis=1), axis=1)
-        valid = lam.real > 0
-        g = np.where(valid, lam.imag / np.where(valid, lam.real, 1), np.nan)
-        speed = np.where(
-            valid, s.semichord_m / (np.sqrt(np.abs(lam.real)) * reduced[:, None]), np.nan
-        )
-        for j in range(2):
-            up = np.nonzero((g[:-1, j] < 0) & (g[1:, j] >= 0))[0]
-            if up.size:
-                n = int(up[0])
-                t = -g[n, j] / (g[n + 1, j] - g[n, j])
-                out[i] = min(out[i], speed[n, j] + t * (speed[n + 1, j] - speed[n, j]))
-    return out
+    rows = m[None, :, :] + a_tilde  # (nk, 2, 2): M + Ã(k)
+    a00 = np.broadcast_to(
+        rows[:, 0, 0] / (s.mass_kg_m * s.omega_h**2), (len(w_theta), len(reduced))
+    )
+    a01 = np.broadcast_to(rows[:, 0, 1] / (s.mass_kg_m * s.omega_h**2), a00.shape)
+    k_t = s.inertia_kgm * np.asarray(w_theta)[:, None] ** 2
+    a10, a11 = rows[None, :, 1, 0] / k_t, rows[None, :, 1, 1] / k_t
+    half = 0.5 * (a00 + a11)
+    root = np.sqrt(half**2 - (a00 * a11 - a01 * a10))
+    lam1, lam2 = half + root, half - root
+    first = lam1.real >= lam2.real  # branch 0: the larger Re λ (lower frequency)
+    lam = np.stack([np.where(first, lam1, lam2), np.where(first, lam2, lam1)], axis=-1)
+    valid = lam.real > 0
+    re = np.where(valid, lam.real, 1.0)
+    g = np.where(valid, lam.imag / re, np.nan)
+    speed = np.where(valid, s.semichord_m / (np.sqrt(re) * reduced[None, :, None]), np.nan)
+    up = (g[:, :-1] < 0) & (g[:, 1:] >= 0)  # (nw, nk-1, 2)
+    found = up.any(axis=1)
+    n = np.argmax(up, axis=1)  # first crossing per (w, branch)
+    take = np.arange(len(w_theta))[:, None], n, np.arange(2)[None, :]
+    g0, g1 = g[take], g[(take[0], n + 1, take[2])]
+    v0, v1 = speed[take], speed[(take[0], n + 1, take[2])]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        v = v0 + (-g0 / (g1 - g0)) * (v1 - v0)
+    return np.asarray(np.where(found, v, np.inf).min(axis=1))
 
 
 def stability_chart(s: Section, speed: float, points: int = 25) -> StabilityChart:
