@@ -106,3 +106,36 @@ def test_inertia_smaller_than_the_offset_mass_is_refused_with_the_field(
     with pytest.raises(SpecError, match="torsional_inertia_kgm") as info:
         load(path)
     assert info.value.line is not None
+
+
+def test_whole_blade_divergence_lies_between_the_root_and_tip_pressure_bounds(
+    write_spec: Callable[..., Path],
+) -> None:
+    # A uniform blade (GJ, e·c·C_Lα constant) under the rotor's pressure ½ρ((Ωr)² + V²):
+    # its divergence load factor lies between the uniform-cantilever closed form
+    # π²GJ/(4·e·c·C_Lα·l²) taken at the tip pressure and at the root pressure (DOMAIN.md §3)
+    gj, length, hub = 5.0e6, 40.0, 2.0
+    structure = f"""\
+  structure:
+    hub_radius_m: {hub}
+    span_m: [0, {length}]
+    mass_per_length_kg_m: [200, 200]
+    ei_flap_nm2: [2.0e9, 2.0e9]
+    ei_edge_nm2: [5.0e9, 5.0e9]
+    gj_nm2: [{gj}, {gj}]
+    torsional_inertia_kgm: [25, 25]
+"""
+    path = spec(write_spec)
+    path.write_text(path.read_text().replace("  aeroelastic:\n", structure + "  aeroelastic:\n"))
+    c = checks(path)["blade.divergence"]
+    factor = c["cantilever_load_factor"]
+    omega = 1.15 * 12.1 * 2 * math.pi / 60
+    arm = (0.30 - 0.25) * 3.0 * 3.0 * 2 * math.pi  # e·c·C_Lα per unit pressure
+    q_tip = 0.5 * 1.225 * ((omega * (hub + length)) ** 2 + 25.0**2)
+    q_root = 0.5 * 1.225 * ((omega * hub) ** 2 + 25.0**2)
+    closed = ae.cantilever_divergence_closed_form(gj, arm, length)
+    # pressure everywhere between q_root and q_tip bounds the factor; the propeller-moment
+    # stiffness Ω²·I_θ ≈ 63 N·m/rad per m adds ≈ Ω²I·l²/GJ ≈ 2 % at most on top
+    assert closed / q_tip < factor  # type: ignore[operator]
+    assert factor < 1.05 * closed / q_root  # type: ignore[operator]
+    assert "whole blade" in str(c["message"])

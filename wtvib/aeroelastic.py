@@ -505,10 +505,10 @@ def stations(spec: "Spec", modes: "Sequence[Mode]") -> tuple[list[StationResult]
         speed = math.hypot(omega * r, ae.max_wind_m_s)
         top = 3.0 * speed
         f = flutter(s, top)
-        k_top = k_method(s, np.geomspace(8.0, max(0.3 * w_h * s.semichord_m / top, 1e-4), 300))
+        k_check = k_method(s, np.geomspace(8.0, max(0.3 * w_h * s.semichord_m / top, 1e-4), 300))
         out.append(
             StationResult(
-                r, speed, s, speed_of(divergence_pressure(s), s.air_density), f, k_top.speed
+                r, speed, s, speed_of(divergence_pressure(s), s.air_density), f, k_check.speed
             )
         )
     return out, []
