@@ -93,6 +93,10 @@ def test_vg_and_stability_chart_drawn(write_spec: Callable[..., Path]) -> None:
 
     figures = diagrams(audit.run(load(spec(write_spec))))
     assert {"blade-flutter", "blade-stability"} <= set(figures)
+    # no planform or blade mass here: the stall checks are info, and there is no curve to draw
+    assert "blade-stall" not in figures
+    stall_rotor = Path(__file__).resolve().parents[1] / "turbines" / "stall-rotor-1mw.yaml"
+    assert "blade-stall" in diagrams(audit.run(load(stall_rotor)))
 
 
 def test_inertia_smaller_than_the_offset_mass_is_refused_with_the_field(

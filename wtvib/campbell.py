@@ -292,6 +292,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         flutter_plot,
         power_curve_plot,
         stability_chart_plot,
+        stall_damping_plot,
     )
 
     present = {m.subsystem for m in report.modes}
@@ -306,6 +307,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         ("floquet", floquet_plot(report)),
         ("blade-flutter", flutter_plot(report)),
         ("blade-stability", stability_chart_plot(report)),
+        ("blade-stall", stall_damping_plot(report)),
     ):
         if fig is not None:
             out[name] = fig

@@ -271,3 +271,49 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="lower right")
     return fig
+
+
+def stall_damping_plot(report: Report) -> "Figure | None":
+    """Total and aerodynamic damping of the first flap and edge modes over the wind speed."""
+    from matplotlib.figure import Figure
+
+    curves = {
+        c.id.rsplit(".", 1)[1]: c
+        for c in report.checks
+        if c.id.startswith("blade.stall.") and "curve" in c.numbers
+    }
+    if not curves:
+        return None
+    fig = Figure(figsize=(9, 5.2), dpi=150, layout="constrained")
+    axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
+    colours = {"pass": "#2e7d32", "warn": "#ef6c00", "fail": "#c62828", "info": "#1565c0"}
+    for ax, (name, check) in zip(axes, curves.items(), strict=True):
+        pts = check.numbers["curve"]
+        wind = np.array([p["wind_m_s"] for p in pts])
+        total = 100 * np.array([p["total_damping_ratio"] for p in pts])
+        aero = 100 * np.array([p["aero_damping_ratio"] for p in pts])
+        ax.axhline(0.0, color="#212121", lw=1)
+        ax.fill_between(
+            wind,
+            total,
+            0,
+            where=total < 0,
+            color="#e53935",
+            alpha=0.25,
+            lw=0,
+            label="negative total damping",
+        )
+        ax.plot(wind, total, color=colours[check.status], lw=2, label="total (aero + structural)")
+        ax.plot(wind, aero, color="#616161", lw=1.2, ls="--", label="aerodynamic")
+        ax.set_ylabel(f"{name}: ζ [%]")
+        ax.set_title(f"{name}: {check.status.upper()} — {check.message}", fontsize=8, loc="left")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7, loc="best")
+    axes[-1].set_xlabel("wind speed [m/s]")
+    fig.suptitle(
+        f"{report.spec.turbine.name}\nstall-induced vibration: quasi-steady damping "
+        "(Hau ch. 7.2.3)",
+        fontweight="bold",
+        fontsize=10,
+    )
+    return fig

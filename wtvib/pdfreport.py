@@ -27,7 +27,7 @@ SUBSYSTEM_NAMES = {
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
-    "blade": ("campbell", "blade-flutter", "blade-stability"),
+    "blade": ("campbell", "blade-flutter", "blade-stability", "blade-stall"),
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
