@@ -32,9 +32,11 @@ from . import beam
 from .errors import SpecError
 from .modal import solve, state_roots
 from .spec import check_section_inertia
+from .units import rpm_to_rad_s
 
 if TYPE_CHECKING:
     from .results import Check, Mode
+    from .rules import Status
     from .spec import Spec
 
 Array = NDArray[np.float64]
@@ -476,7 +478,7 @@ def stations(spec: "Spec", modes: "Sequence[Mode]") -> tuple[list[StationResult]
     if missing:
         return [], missing
     assert radius is not None
-    omega = spec.rotor.speed.overspeed * 2 * math.pi / 60
+    omega = float(rpm_to_rad_s(spec.rotor.speed.overspeed))
     out = []
     for i, sec in enumerate(ae.sections):
         r = sec.radius_fraction * radius
@@ -529,7 +531,7 @@ def blade_divergence(spec: "Spec") -> float | None:
     if ae is None or st is None or st.gj_nm2 is None or st.torsional_inertia_kgm is None:
         return None
     sec = ae.sections[0]
-    omega = spec.rotor.speed.overspeed * 2 * math.pi / 60
+    omega = float(rpm_to_rad_s(spec.rotor.speed.overspeed))
     x = np.asarray(st.span_m, float)
     r = st.hub_radius_m + x
     arm = sec.chord_m * (sec.elastic_axis_chord - 0.25) * sec.chord_m * ae.lift_slope_per_rad
@@ -542,7 +544,7 @@ def blade_divergence(spec: "Spec") -> float | None:
     return cantilever_divergence(x, np.asarray(st.gj_nm2), np.full_like(x, arm), pressure, spring)
 
 
-def _status(ratio: float, margin: float) -> str:
+def _status(ratio: float, margin: float) -> "Status":
     return "pass" if ratio >= 1 + margin else "warn" if ratio >= 1 else "fail"
 
 
@@ -594,7 +596,7 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
     div_check = Check(
         "blade.divergence",
         "blade",
-        _status(ratio, margin),  # type: ignore[arg-type]
+        _status(ratio, margin),
         text,
         div_rule,
         {
@@ -627,7 +629,7 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
     flut_check = Check(
         "blade.flutter",
         "blade",
-        _status(f_ratio, margin),  # type: ignore[arg-type]
+        _status(f_ratio, margin),
         f_text,
         flut_rule,
         {

@@ -38,6 +38,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from .units import rpm_to_rad_s
+
 if TYPE_CHECKING:
     from .results import Check, Mode
     from .spec import Spec
@@ -272,7 +274,7 @@ def map_for(spec: "Spec", model: HeadModel, points: int = 200) -> StabilityMap:
     lo = 0.1 * speed.steady_rpm[0][0]
     hi = 1.3 * speed.overspeed
     rpm = np.linspace(lo, hi, points)
-    largest = stability_map(model, rpm * 2 * math.pi / 60)
+    largest = stability_map(model, rpm_to_rad_s(rpm))
     bad = largest > 1 + 1e-6
     bands = []
     i = 0
@@ -364,7 +366,7 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
     steady_rpm = np.concatenate(
         [np.linspace(a, b, 25) if b > a else np.array([a]) for a, b in speed.steady_rpm]
     )
-    in_operation = stability_map(model, steady_rpm * 2 * math.pi / 60)
+    in_operation = stability_map(model, rpm_to_rad_s(steady_rpm))
     numbers = {
         "max_multiplier_in_operation": round(float(np.max(in_operation)), 6),
         "unstable_rpm": [[round(a, 4), round(b, 4)] for a, b in smap.unstable_rpm],

@@ -28,8 +28,11 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .units import rad_s_to_rpm, rpm_to_rad_s
+
 if TYPE_CHECKING:
     from .results import Check, Mode
+    from .rules import Status
     from .spec import BladeAeroelastic, Spec
 
 Array = NDArray[np.float64]
@@ -146,18 +149,15 @@ def operating_points(spec: "Spec", radius: float) -> list[tuple[float, float]]:
         rated = ae.rated_wind_m_s
         if rated is None:  # the wind at which the variable-speed rotor reaches rated speed
             top_rpm = speed.rated_rpm or speed.top_rpm
-            rated = top_rpm * 2 * math.pi / 60 * radius / ae.tip_speed_ratio
+            rated = float(rpm_to_rad_s(top_rpm)) * radius / ae.tip_speed_ratio
         top_wind = min(top_wind, rated)
     winds = np.arange(ae.min_wind_m_s, max(top_wind, ae.min_wind_m_s) + 1e-9, 0.5)
-    out = []
     if speed.fixed_rpm is not None:
         fixed = speed.fixed_rpm if isinstance(speed.fixed_rpm, list) else [speed.fixed_rpm]
         return [(float(v), float(n)) for n in fixed for v in winds]
     low, top = speed.steady_rpm[0][0], speed.rated_rpm or speed.top_rpm
-    for v in winds:
-        rpm = ae.tip_speed_ratio * v / radius * 60 / (2 * math.pi)
-        out.append((float(v), float(min(max(rpm, low), top))))
-    return out
+    rpm = np.clip(rad_s_to_rpm(ae.tip_speed_ratio * winds / radius), low, top)
+    return [(float(v), float(n)) for v, n in zip(winds, rpm, strict=True)]
 
 
 def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | None:
@@ -182,9 +182,10 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
     structural = mode.damping_ratio if mode.damping_ratio is not None else spec.blade.damping_ratio
     out = []
     for wind, rpm in operating_points(spec, radius):
-        omega = rpm * 2 * math.pi / 60
-        phi = np.arctan2(wind * (1 - ae.axial_induction), omega * r)
-        w = np.hypot(wind * (1 - ae.axial_induction), omega * r)
+        omega = float(rpm_to_rad_s(rpm))
+        axial = wind * (1 - ae.axial_induction)
+        phi = np.arctan2(axial, omega * r)
+        w = np.hypot(axial, omega * r)
         alpha = np.degrees(phi) - theta
         cl, cd, dcl, dcd = polar_with_slopes(ae, alpha)
         psi = (np.pi / 2 - phi) if flap else (np.pi - phi)
@@ -241,6 +242,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
         low_aero = min(curve, key=lambda p: p.aero)
         negative = [p for p in curve if p.total < 0]
         where = f"{low.wind:g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
+        status: Status
         if negative:
             status = "fail"
             text = (
@@ -260,7 +262,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
             Check(
                 cid,
                 "blade",
-                status,  # type: ignore[arg-type]
+                status,
                 text,
                 rule,
                 {

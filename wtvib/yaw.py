@@ -20,6 +20,7 @@ from .given import given_modes, ordinal
 from .results import Check, Mode, Rule
 from .rules import MarginRule
 from .spec import Spec
+from .units import rpm_to_rad_s
 
 Array = NDArray[np.float64]
 
@@ -348,7 +349,7 @@ def _moment_budget(spec: Spec) -> Check:
     """The moments about the yaw axis and the tilt axis, each with its formula and source."""
     y = spec.yaw
     speed = spec.rotor.speed
-    omega = speed.top_rpm * 2 * math.pi / 60
+    omega = float(rpm_to_rad_s(speed.top_rpm))
     j_p = rotor_polar_inertia(spec)
     terms: dict[str, float | None] = {}
     notes = []
