@@ -5,7 +5,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from . import aeroelastic, blade, drivetrain, floquet, stall, tower, yaw
+from . import aeroelastic, blade, coupled, drivetrain, floquet, stall, tower, yaw
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
@@ -28,6 +28,11 @@ SUBSYSTEMS: tuple[tuple[str, Callable[[Spec, Built], list[Mode]], Callable[[Spec
         lambda s: s.drivetrain.damping_ratio,
     ),
     ("yaw", lambda s, b: yaw.modes(s), lambda s: s.yaw.damping_ratio),
+    (
+        "system",
+        lambda s, b: coupled.modes(s),
+        lambda s: min(s.tower.damping_ratio, s.blade.damping_ratio),
+    ),
 )
 
 
@@ -167,6 +172,8 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
             checks = drivetrain.annotate(spec, built["blade"], checks)
             power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)
             checks += [power] if power else []
+    coupling = coupled.check(spec, all_modes)
+    checks += [coupling] if coupling else []
     floquet_check, _ = floquet.check(spec, all_modes)
     checks.append(floquet_check)
     checks += aeroelastic.checks(spec, all_modes)[0]
@@ -307,7 +314,20 @@ def _model_statements(spec: Spec, modes: list[Mode]) -> list[str]:
             "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with centrifugal "
             f"stiffening and in-plane softening at {blade.SPEED_SAMPLES} speeds, followed by MAC."
         )
-    given = sorted({m.subsystem for m in modes if "(computed)" not in m.description})
+    if coupled.applies(spec):
+        out.append(
+            "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
+            f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
+            "coordinates); shaft tilt, precone, blade torsion, gravity on the blades and "
+            "damping neglected."
+        )
+    given = sorted(
+        {
+            m.subsystem
+            for m in modes
+            if "(computed)" not in m.description and "(coupled" not in m.description
+        }
+    )
     if given:
         out.append(f"Natural frequencies taken as given in the spec: {', '.join(given)}.")
     return out

@@ -14,7 +14,7 @@ DOMAIN.md §3). The generator's electrical coupling (Hau Fig. 7.11) makes the co
 """
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -96,6 +96,11 @@ class Chain:
     stiffness: Array
     damping: Array
     generator_factor: float  # i² of the generator shaft, to reduce generator-side values
+    #: Per mass: Σ J_own (inertia on its own shaft) and Σ J_own·i (i its speed over the
+    #: reference shaft's): how each mass's rotation reacts on the nacelle (roll), used by
+    #: the coupled model (``wtvib.coupled``).
+    own: Array = field(default_factory=lambda: np.zeros(0))
+    coupling: Array = field(default_factory=lambda: np.zeros(0))
 
     def matrices(self) -> tuple[Array, Array, Array]:
         """M, K, D of the free–free chain."""
@@ -122,6 +127,8 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
     ref = 1.0 if dt.reference_shaft == "rotor" else dt.chain[-1].speed_ratio
     names = [dt.chain[0].name]
     inertia = [dt.chain[0].inertia_kgm2 * (dt.chain[0].speed_ratio / ref) ** 2]
+    own = [dt.chain[0].inertia_kgm2]
+    coupling = [dt.chain[0].inertia_kgm2 * dt.chain[0].speed_ratio / ref]
     stiffness: list[float] = []
     damping: list[float] = []
     for j, (shaft, mass) in enumerate(zip(dt.shafts, dt.chain[1:], strict=True)):
@@ -134,15 +141,27 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
         if k is None:  # rigid: one mass
             names[-1] = f"{names[-1]}+{mass.name}"
             inertia[-1] += j_mass
+            own[-1] += mass.inertia_kgm2
+            coupling[-1] += mass.inertia_kgm2 * mass.speed_ratio / ref
             continue
         names.append(mass.name)
         inertia.append(j_mass)
+        own.append(mass.inertia_kgm2)
+        coupling.append(mass.inertia_kgm2 * mass.speed_ratio / ref)
         stiffness.append(k)
         damping.append(shaft.damping_nms_rad * i2)
     if not stiffness:
         raise ModelInputError("the drive-train chain has no flexible connection left")
     gen = (dt.chain[-1].speed_ratio / ref) ** 2
-    return Chain(tuple(names), np.array(inertia), np.array(stiffness), np.array(damping), gen)
+    return Chain(
+        tuple(names),
+        np.array(inertia),
+        np.array(stiffness),
+        np.array(damping),
+        gen,
+        np.array(own),
+        np.array(coupling),
+    )
 
 
 def conditions(spec: Spec) -> list[str]:

@@ -12,6 +12,7 @@ Vibration 37(8), 2003 (MAC).
 
 import itertools
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -80,14 +81,15 @@ def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     return out
 
 
-def mac(a: Array, b: Array) -> Array:
-    """MAC matrix between the columns of ``a`` and of ``b`` (values in 0 … 1)."""
-    num = np.abs(a.T @ b) ** 2
-    den = np.outer(np.einsum("ij,ij->j", a, a), np.einsum("ij,ij->j", b, b))
+def mac(a: NDArray[Any], b: NDArray[Any]) -> Array:
+    """MAC matrix between the columns of ``a`` and of ``b`` (values in 0 … 1); complex
+    shapes (gyroscopic systems) use the Hermitian form |aᴴb|² / (aᴴa · bᴴb)."""
+    num = np.abs(a.conj().T @ b) ** 2
+    den = np.outer(np.einsum("ij,ij->j", a.conj(), a).real, np.einsum("ij,ij->j", b.conj(), b).real)
     return np.asarray(num / np.where(den > 0, den, 1.0))
 
 
-def track(previous: Array, current: Array) -> NDArray[np.intp]:
+def track(previous: NDArray[Any], current: NDArray[Any]) -> NDArray[np.intp]:
     """Order of ``current``'s columns that best continues ``previous``'s (max total MAC).
 
     Exhaustive over permutations for up to 7 modes (an exact assignment), greedy beyond.

@@ -751,6 +751,36 @@ class Yaw(_Strict):
         return self.drive_stiffness_nm_rad is not None
 
 
+class CoupledModel(_Strict):
+    """What the coupled rotor–tower model (whole-turbine modes, Hau §7.6) needs beyond the
+    subsystems: where the rotor sits on the tower head, the hub, and how many blade modes."""
+
+    apex_downwind_m: float = Field(
+        ge=-100,
+        le=100,
+        description="Rotor centre (apex) downwind of the tower axis; negative upwind. [m]",
+    )
+    apex_above_top_m: float = Field(
+        ge=-100, le=100, description="Rotor centre above the tower top. [m]"
+    )
+    hub_mass_kg: float = Field(0.0, ge=0, description="Hub mass (part of tower_head). [kg]")
+    hub_inertia_kgm2: float | None = Field(
+        None,
+        ge=0,
+        description="Hub inertia about the shaft; default: the drive-train chain's hub (or "
+        "0 without a chain). [kg·m²]",
+    )
+    blade_modes: int = Field(
+        3, ge=1, le=6, description="Flexible modes per blade, lowest first (flap1, edge1, …)."
+    )
+    parked_condition: Literal["locked", "free"] = Field(
+        "locked", description="Generator when parked (Jonkman et al. 2009 Table 9-1: locked)."
+    )
+    rotating_condition: Literal["locked", "free"] = Field(
+        "free", description="Generator in the rotating sweep (free: torque-controlled)."
+    )
+
+
 class Severity(_Strict):
     """Status given to a margin violation in steady operation, by excitation energy."""
 
@@ -820,6 +850,11 @@ class Spec(_Strict):
     blade: Blade = Field(default_factory=Blade)
     drivetrain: Drivetrain = Field(default_factory=Drivetrain)
     yaw: Yaw = Field(default_factory=Yaw)
+    coupled: CoupledModel | None = Field(
+        None,
+        description="Rotor position and hub for the coupled whole-turbine model (needs the "
+        "tower and blade structures and tower_head); absent: no coupled modes.",
+    )
     audit: AuditSettings = Field(default_factory=AuditSettings)
     notes: str | None = Field(None, description="Anything else worth keeping with the spec.")
     assumptions: list[str] = Field(

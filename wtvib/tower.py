@@ -276,8 +276,12 @@ def bending_system(
     foundation: "spec_mod.Foundation",
     direction: Literal["fa", "ss"],
     gravity: bool = True,
+    head_inertia: bool = True,
 ) -> tuple[Array, Array]:
     """K and M of the tower with its head in one bending plane, base condition applied.
+
+    ``head_inertia=False`` leaves the head's inertia out of M (its weight still loads the
+    tower): the coupled model (``wtvib.coupled``) adds the head's parts itself.
 
     Notes
     -----
@@ -303,9 +307,10 @@ def bending_system(
         z, x = head.cm_above_top_m, head.cm_downwind_m if direction == "fa" else 0.0
         inertia = head.inertia_pitch_kgm2 if direction == "fa" else head.inertia_roll_kgm2
         top = slice(-2, None)
-        m[top, top] += np.array(
-            [[m_head, m_head * z], [m_head * z, inertia + m_head * (z**2 + x**2)]]
-        )
+        if head_inertia:
+            m[top, top] += np.array(
+                [[m_head, m_head * z], [m_head * z, inertia + m_head * (z**2 + x**2)]]
+            )
         if gravity:
             k[-1, -1] -= m_head * G * z
     if foundation.kind == "springs":

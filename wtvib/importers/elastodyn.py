@@ -231,6 +231,14 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             ],
         },
         **_yaw(main, path),
+        "coupled": {
+            "apex_downwind_m": q(
+                main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
+                "OverHang·cos(ShftTilt)",
+            ),
+            "apex_above_top_m": q(head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)"),
+            "hub_mass_kg": q(main.num("HubMass"), "HubMass"),
+        },
         "assumptions": [
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",

@@ -1,0 +1,911 @@
+"""Whole-turbine modes: tower, nacelle, drive train and flexible blades coupled (Hau §7.6).
+
+Hau's §7.6: where subsystems couple strongly, "complex vibrational coupling modes are
+produced whose natural frequencies deviate distinctly from the separate natural frequencies
+of the components". This module couples the models the other modules build — the tower
+finite elements (:mod:`wtvib.tower`), the blades' cantilever modes (:mod:`wtvib.blade`), the
+drive-train chain (:mod:`wtvib.drivetrain`) and the yaw spring (:mod:`wtvib.yaw`) — into one
+model by Lagrange's equations, parked and rotating.
+
+Model
+-----
+* Tower: fore-aft and side-side bending finite elements (base condition as the tower's),
+  torsion elements where GJ is given; gravity loads the tower with the whole head's weight.
+* Nacelle: a rigid body on the tower top, the tower head minus the rotor (blades as their
+  mass distribution, hub as a point mass at the apex with its polar inertia), on the yaw
+  spring where the spec has one.
+* Drive train: the spec's chain without its blades — hub first — on the shaft through the
+  apex; the generator locked (parked, Jonkman et al. 2009 Table 9-1) or free (rotating).
+* Blades: each blade's lowest cantilever modes (flap and edge mixed by structural twist), as
+  point masses at the blade elements' Gauss points; rotation adds the centrifugal (geometric)
+  stiffness of the blade model and, from the kinematics, in-plane softening, Coriolis and
+  gyroscopic terms.
+
+Method
+------
+Every material point of the rotor has the position p = u + R(θ)·[a + Rₓ(ψⱼ + φ)·b(η)] (tower
+top displacement u, nacelle rotation vector θ, apex a, blade azimuth ψⱼ = ψ + 2π(j−1)/N,
+drive-train rotation φ, blade deflection b). It is expanded to second order in the small
+coordinates q (p ≈ p₀ + P₁q + ½qᵀP₂q) and its azimuth derivatives; the kinetic energy
+T = ½Σ m |ṗ|² then gives, with ψ = Ωt,
+
+    M q̈ + (Ω·dM/dψ + C − Cᵀ) q̇ + (K_V + Ω²·Σ m [P₁ᵀP₁″ + p₀″·P₂]) q = 0,
+    M = Σ m P₁ᵀP₁,   C = Ω·Σ m [P₁ᵀP₁′ + p₀′·P₂]   (′ = d/dψ),
+
+exact to first order. The hub's spin adds J_p·Ω gyroscopic coupling of nacelle tilt and yaw.
+With three or more blades the multi-blade (Coleman) transformation ηⱼ = a₀ + Σ (a_kc cos kψⱼ
++ a_ks sin kψⱼ) turns the periodic equations into time-invariant ones in the fixed frame, so
+the rotating modes are eigenvalues — cyclic blade modes split into backward and forward
+whirl, f ∓ 1P, as in a fixed-frame Campbell diagram. Two-bladed rotors stay periodic: their
+parked modes are computed (at two azimuths), the rotating stability is the Floquet check's.
+
+Assumed and neglected (stated in the report): shaft tilt, precone and prebend; blade
+torsion and section rotary inertia; gravity on the blades; gyroscopic moments of drive-train
+parts other than the hub (generator spinning at i·Ω); structural and aerodynamic damping.
+
+References
+----------
+M. H. Hansen, "Improved modal dynamics of wind turbines to avoid stall-induced vibrations",
+Wind Energy 6 (2003) 179–195 (model structure, Coleman transformation, whirl naming);
+G. Bir, "Multi-blade coordinate transformation and its application to wind turbine
+analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9-1.
+"""
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from . import beam, blade, drivetrain, modal, tower, yaw
+from .errors import SpecError
+from .given import ordinal
+from .results import Check, Mode, Rule, Sampled
+from .spec import Spec
+from .units import rpm_to_rad_s
+
+Array = NDArray[np.float64]
+Index = NDArray[np.intp]
+
+# Local coordinates of the nacelle and rotor: tower-top displacement (x downwind, y lateral),
+# nacelle rotations about x (roll), y (tilt), z (yaw), drive-train rotation, blade modes.
+UX, UY, TX, TY, TZ, PHI = range(6)
+_RIGID = 6
+
+#: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed).
+SPEED_SAMPLES = 30
+#: Coupled modes reported: the lowest ones, up to this many.
+MODES_KEPT = 16
+
+_KINDS = {"flap": "flapwise", "edge": "edgewise"}
+
+
+def _skew(v: Array) -> Array:
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+#: Generators of small rotations: G_i·v = e_i × v.
+_G = [_skew(e) for e in np.eye(3)]
+
+
+def _rx(angle: float) -> Array:
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+
+
+# ---------------------------------------------------------------------------------------
+# Second-order expansions ("jets") of positions in the local coordinates
+
+
+@dataclass(frozen=True)
+class Jet:
+    """A vector field expanded to second order: v ≈ c0 + c1·q + ½ qᵀ·c2·q.
+
+    Shapes: c0 (..., 3), c1 (..., 3, n), c2 (..., 3, n, n) with c2 symmetric in (n, n).
+    """
+
+    c0: Array
+    c1: Array
+    c2: Array
+
+    def rotated(self, r: Array) -> "Jet":
+        """A constant matrix applied: r·v."""
+        return Jet(
+            self.c0 @ r.T,
+            np.moveaxis(np.tensordot(self.c1, r, axes=([-2], [1])), -1, -2),
+            np.moveaxis(np.tensordot(self.c2, r, axes=([-3], [1])), -1, -3),
+        )
+
+
+@dataclass(frozen=True)
+class MatrixJet:
+    """A 3×3 matrix field expanded to second order (constant over the points)."""
+
+    a0: Array
+    a1: Array
+    a2: Array
+
+    def apply(self, v: Jet) -> Jet:
+        """(A·v) truncated at second order (tensordot: BLAS rather than einsum loops)."""
+        cross = np.tensordot(v.c1, self.a1, axes=([-2], [1]))  # (..., m, i, n)
+        cross = np.moveaxis(cross, -3, -1)  # (..., i, n, m)
+        return Jet(
+            v.c0 @ self.a0.T,
+            np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2)
+            + np.tensordot(v.c0, self.a1, axes=([-1], [1])),
+            np.moveaxis(np.tensordot(v.c2, self.a0, axes=([-3], [1])), -1, -3)
+            + np.tensordot(v.c0, self.a2, axes=([-1], [1]))
+            + cross
+            + np.swapaxes(cross, -1, -2),
+        )
+
+
+def _nacelle_rotation(n: int) -> MatrixJet:
+    """R(θ) ≈ I + Θ + ½Θ² for the rotation vector θ = (q[TX], q[TY], q[TZ])."""
+    a1 = np.zeros((3, 3, n))
+    a2 = np.zeros((3, 3, n, n))
+    for i in range(3):
+        a1[:, :, TX + i] = _G[i]
+        for j in range(3):
+            a2[:, :, TX + i, TX + j] = 0.5 * (_G[i] @ _G[j] + _G[j] @ _G[i])
+    return MatrixJet(np.eye(3), a1, a2)
+
+
+def _spin(n: int, phi: bool) -> MatrixJet:
+    """Rₓ(φ) ≈ I + φG + ½φ²G² for the drive-train rotation φ = q[PHI] (identity without)."""
+    a1 = np.zeros((3, 3, n))
+    a2 = np.zeros((3, 3, n, n))
+    if phi:
+        a1[:, :, PHI] = _G[0]
+        a2[:, :, PHI, PHI] = _G[0] @ _G[0]
+    return MatrixJet(np.eye(3), a1, a2)
+
+
+# ---------------------------------------------------------------------------------------
+# The parts
+
+
+@dataclass(frozen=True)
+class BladeModes:
+    """One blade's lowest cantilever modes evaluated at its Gauss points (point masses)."""
+
+    names: tuple[str, ...]  # flap1, edge1, flap2, …
+    omega: Array  # standstill circular frequencies, (K,)
+    geometric: Array  # ΦᵀK_geo(Ω = 1)Φ, centrifugal stiffness per Ω², (K, K)
+    radius: Array  # distance from the rotor axis, (P,)
+    mass: Array  # point masses, (P,)
+    flap: Array  # out-of-plane deflection per mode, (P, K)
+    edge: Array  # in-plane deflection per mode (direction of rotation), (P, K)
+    span: Array  # node positions (for shapes)
+    node_flap: Array  # (nodes, K)
+    node_edge: Array  # (nodes, K)
+
+
+def blade_modes(spec: Spec, count: int) -> BladeModes:
+    """The blade's lowest ``count`` cantilever modes (wtvib.blade model) at the Gauss points."""
+    s = spec.blade.structure
+    assert s is not None
+    span = np.asarray(s.span_m, dtype=float)
+    nodes = beam.mesh(span, blade.DEFAULT_ELEMENTS)
+    k0, m0 = blade.blade_matrices(s, nodes, 0.0)
+    k1, _ = blade.blade_matrices(s, nodes, 1.0)
+    in_plane = np.zeros(k0.shape[0], dtype=bool)
+    in_plane[2::4] = in_plane[3::4] = True
+    m_v = np.where(np.outer(in_plane, in_plane), m0, 0.0)
+    geo = k1 - k0 + m_v  # tension part only; the kinematics give the in-plane softening
+    res = modal.solve(k0, m0, count)
+    phi = res.shapes
+    full = np.vstack([np.zeros((4, phi.shape[1])), phi])
+    b = beam.basis(nodes)
+    n_el = len(nodes) - 1
+    w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
+    v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
+    flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(-1, phi.shape[1])
+    edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
+    m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m)) * b.w
+    return BladeModes(
+        tuple(blade._names(phi)),
+        2 * np.pi * res.frequency_hz,
+        phi.T @ geo @ phi,
+        (s.hub_radius_m + b.x).ravel(),
+        m.ravel(),
+        flap,
+        edge,
+        nodes,
+        full[0::4],
+        full[2::4],
+    )
+
+
+@dataclass(frozen=True)
+class Rigid:
+    """A rigid part: mass at c (tower-top axes) and inertia about its CM (roll, tilt, yaw)."""
+
+    mass: float
+    c: Array
+    inertia: Array
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Global degrees of freedom: offsets of each part and the map of the local coordinates.
+
+    ``local[j]`` holds, for blade j, the global index of each local coordinate (−1: held)
+    and ``sign`` its sign (the side-side slope is −θₓ).
+    """
+
+    size: int
+    fa: slice
+    ss: slice
+    torsion: slice
+    yaw: int | None
+    chain: slice
+    blades: slice
+    local: Index
+    sign: Array
+    groups: dict[str, Index] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Model:
+    """The coupled model of one turbine in one generator condition."""
+
+    spec: Spec
+    condition: str
+    layout: Layout
+    k_v: Array  # elastic (potential) stiffness, rotor-speed independent
+    m_fixed: Array  # mass of the non-rotating parts, with the hub
+    rotor: BladeModes
+    nacelle: Rigid
+    hub_mass: float
+    hub_polar: float
+    apex: Array
+    blades: int
+    assumptions: tuple[str, ...]
+
+    @property
+    def k_blades(self) -> int:
+        return len(self.rotor.names)
+
+    def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]:
+        """M, D, K of the periodic equations at rotor speed Ω [rad/s] and azimuth ψ."""
+        lay = self.layout
+        m = self.m_fixed.copy()
+        d = np.zeros_like(m)
+        k = self.k_v.copy()
+        kb = self.k_blades
+        n = _RIGID + kb
+        r = self.rotor
+        spin = _spin(n, lay.local[0][PHI] >= 0)
+        rot = _nacelle_rotation(n)
+        c1 = np.zeros((len(r.radius), 3, n))
+        c1[:, 0, _RIGID:] = r.flap
+        c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
+        c0 = np.zeros((len(r.radius), 3))
+        c0[:, 2] = r.radius
+        b = spin.apply(Jet(c0, c1, np.zeros((len(r.radius), 3, n, n))))
+        g = _G[0]
+        mm = np.repeat(r.mass, 3)
+        for j in range(self.blades):
+            rj = _rx(psi + 2 * np.pi * j / self.blades)
+            v = b.rotated(rj)
+            p = rot.apply(Jet(v.c0 + self.apex, v.c1, v.c2))
+            p1 = p.c1.reshape(-1, n).copy()
+            p1[0::3, UX] += 1.0
+            p1[1::3, UY] += 1.0
+            self._scatter(m, (p1 * mm[:, None]).T @ p1, j)
+            blk = slice(lay.blades.start + j * kb, lay.blades.start + (j + 1) * kb)
+            if omega == 0.0:
+                continue
+            p2 = p.c2.reshape(-1, n, n)
+            d1 = rot.apply(b.rotated(rj @ g))
+            d2 = rot.apply(b.rotated(rj @ g @ g))
+            d1c1 = d1.c1.reshape(-1, n)
+            m_psi = (d1c1 * mm[:, None]).T @ p1
+            c_loc = omega * (
+                (p1 * mm[:, None]).T @ d1c1 + np.tensordot(mm * d1.c0.ravel(), p2, axes=1)
+            )
+            k_loc = omega**2 * (
+                (p1 * mm[:, None]).T @ d2.c1.reshape(-1, n)
+                + np.tensordot(mm * d2.c0.ravel(), p2, axes=1)
+            )
+            self._scatter(d, omega * (m_psi + m_psi.T) + c_loc - c_loc.T, j)
+            self._scatter(k, k_loc, j)
+            k[blk, blk] += omega**2 * r.geometric
+        # the hub's spin: J_p·Ω couples nacelle tilt and yaw (T ⊃ ½J_pΩ(θ_zθ̇_y − θ_yθ̇_z))
+        c_hub = np.zeros((_RIGID, _RIGID))
+        c_hub[TY, TZ] = 0.5 * self.hub_polar * omega
+        c_hub[TZ, TY] = -0.5 * self.hub_polar * omega
+        self._scatter(d, c_hub - c_hub.T, 0, rigid_only=True)
+        return m, d, k
+
+    def _scatter(
+        self, target: Array, local: Array, blade_no: int, rigid_only: bool = False
+    ) -> None:
+        idx = self.layout.local[blade_no]
+        sgn = self.layout.sign[blade_no]
+        if rigid_only:
+            idx, sgn = idx[:_RIGID], sgn[:_RIGID]
+        keep = idx >= 0
+        i, s = idx[keep], sgn[keep]
+        target[np.ix_(i, i)] += s[:, None] * local[np.ix_(keep, keep)] * s[None, :]
+
+
+def _rigid_mass(part: Rigid) -> Array:
+    """Mass matrix of a rigid part in the local rigid coordinates (u, θ)."""
+    jac = np.zeros((3, _RIGID))
+    jac[0, UX] = jac[1, UY] = 1.0
+    jac[:, TX : TZ + 1] = -_skew(part.c)  # θ̇ × c = −c × θ̇
+    m = part.mass * jac.T @ jac
+    m[TX : TZ + 1, TX : TZ + 1] += np.diag(part.inertia)
+    return m
+
+
+def _nacelle(spec: Spec, rotor: BladeModes, hub_mass: float, hub_polar: float) -> Rigid:
+    """The tower head minus the rotor: what stays rigid on the tower top."""
+    head, cm = spec.tower_head, spec.coupled
+    assert head is not None and cm is not None
+    n = spec.rotor.blades
+    m_blade = float(rotor.mass.sum())
+    m_rotor = n * m_blade + hub_mass
+    m_nac = head.mass_kg - m_rotor
+    if m_nac <= 0:
+        raise SpecError(
+            f"tower_head.mass_kg: {head.mass_kg:,.0f} kg is less than the rotor it carries "
+            f"({n} blades of {m_blade:,.0f} kg + hub {hub_mass:,.0f} kg) — the coupled model "
+            "takes the tower head to include the rotor"
+        )
+    c_head = np.array([head.cm_downwind_m, 0.0, head.cm_above_top_m])
+    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
+    c_nac = (head.mass_kg * c_head - m_rotor * apex) / m_nac
+    j_polar = n * float(np.sum(rotor.mass * rotor.radius**2)) + hub_polar
+    rotor_own = np.array([j_polar, 0.5 * j_polar, 0.5 * j_polar])
+    head_i = np.array([head.inertia_roll_kgm2, head.inertia_pitch_kgm2, head.inertia_yaw_kgm2])
+
+    def steiner(c: Array) -> Array:  # parallel-axis terms about the head CM: roll, tilt, yaw
+        dx, dz = c[0] - c_head[0], c[2] - c_head[2]
+        return np.array([dz**2, dx**2 + dz**2, dx**2])
+
+    i_nac = head_i - rotor_own - m_rotor * steiner(apex) - m_nac * steiner(c_nac)
+    tolerance = 0.02 * np.maximum(head_i, 1.0)
+    if np.any(i_nac < -tolerance):
+        axis = ("roll", "pitch", "yaw")[int(np.argmin(i_nac + tolerance))]
+        raise SpecError(
+            f"tower_head.inertia_{axis}_kgm2 is smaller than the rotor's own share about the "
+            "head's CM — the coupled model takes the tower head's inertias to include the rotor"
+        )
+    return Rigid(m_nac, c_nac, np.maximum(i_nac, 0.0))
+
+
+def build(spec: Spec, condition: str) -> Model:
+    """The coupled model of the spec in a generator condition (``locked`` or ``free``)."""
+    cm = spec.coupled
+    t = spec.tower
+    if cm is None or spec.blade.structure is None or spec.tower_head is None:
+        raise SpecError("the coupled model needs coupled, blade.structure and tower_head")
+    if not t.has_structure:
+        raise SpecError("the coupled model needs the tower's structure (sections or table)")
+    notes: list[str] = []
+    rotor = blade_modes(spec, cm.blade_modes)
+    b = tower.discretise(t)
+    parts_k: list[Array] = []
+    parts_m: list[Array] = []
+    for direction in ("fa", "ss"):
+        k, m = tower.bending_system(
+            b,
+            spec.tower_head,
+            t.point_masses,
+            t.foundation,
+            direction,
+            t.gravity,
+            False,  # type: ignore[arg-type]
+        )
+        parts_k.append(k)
+        parts_m.append(m)
+    if b.gj is not None and b.polar is not None:
+        k, m = beam.assemble_torsion(b.nodes, b.gj, b.polar)
+        if not (t.foundation.kind == "springs" and t.foundation.torsional_nm_rad):
+            k, m = k[1:, 1:], m[1:, 1:]
+        else:
+            k[0, 0] += t.foundation.torsional_nm_rad
+        parts_k.append(k)
+        parts_m.append(m)
+    else:
+        notes.append("tower torsion not modelled (no GJ): the tower top does not twist")
+    n_fa, n_ss = parts_k[0].shape[0], parts_k[1].shape[0]
+    n_tor = parts_k[2].shape[0] if len(parts_k) == 3 else 0
+
+    k_yaw = None
+    if spec.yaw.has_model:
+        k_yaw = yaw.model(spec).drive
+        if n_tor == 0 and spec.yaw.tower_torsion_nm_rad:
+            k_yaw = yaw.series(k_yaw, spec.yaw.tower_torsion_nm_rad)
+    elif n_tor == 0:
+        notes.append("no yaw stiffness and no tower torsion: nacelle yaw held")
+
+    # drive train: the chain without its blades (they are modelled here), hub first
+    chain_m = chain_k = np.zeros((0, 0))
+    coupling = own = np.zeros(0)
+    hub_polar = cm.hub_inertia_kgm2 or 0.0
+    dt = spec.drivetrain
+    if dt.chain:
+        rest = dt.chain[1:] if dt.chain[0].name == "blades" else dt.chain
+        shafts = dt.shafts[1:] if dt.chain[0].name == "blades" else dt.shafts
+        if len(rest) >= 2:
+            sub = spec.model_copy(
+                update={
+                    "drivetrain": dt.model_copy(
+                        update={"chain": rest, "shafts": shafts, "reference_shaft": "rotor"}
+                    )
+                }
+            )
+            reduced = drivetrain.reduce(sub)
+            chain_m, chain_k, _ = drivetrain.system(reduced, sub, condition)
+            size = chain_m.shape[0]
+            coupling, own = reduced.coupling[:size], reduced.own[:size]
+            if cm.hub_inertia_kgm2 is None:
+                hub_polar = float(chain_m[0, 0])
+            else:  # the given hub inertia replaces the chain's first mass
+                chain_m = chain_m.copy()
+                chain_m[0, 0] = coupling[0] = own[0] = hub_polar
+        elif cm.hub_inertia_kgm2 is None:
+            hub_polar = rest[0].inertia_kgm2
+    if chain_m.shape[0] == 0:
+        notes.append("no flexible drive train: the rotor is held on the nacelle")
+    n_chain = chain_m.shape[0]
+
+    kb = len(rotor.names)
+    nb = spec.rotor.blades
+    offsets = np.cumsum([0, n_fa, n_ss, n_tor, 1 if k_yaw else 0, n_chain, nb * kb])
+    size = int(offsets[-1])
+    fa, ss, tor = (slice(int(offsets[i]), int(offsets[i + 1])) for i in range(3))
+    yaw_dof = int(offsets[3]) if k_yaw else None
+    ch = slice(int(offsets[4]), int(offsets[5]))
+    bl = slice(int(offsets[5]), int(offsets[6]))
+    theta_z = yaw_dof if yaw_dof is not None else (tor.stop - 1 if n_tor else -1)
+    local = np.full((nb, _RIGID + kb), -1, dtype=np.intp)
+    sign = np.ones((nb, _RIGID + kb))
+    for j in range(nb):
+        local[j, UX], local[j, TY] = fa.stop - 2, fa.stop - 1
+        local[j, UY], local[j, TX] = ss.stop - 2, ss.stop - 1
+        sign[j, TX] = -1.0  # θₓ = −du_y/dz
+        local[j, TZ] = theta_z
+        local[j, PHI] = ch.start if n_chain else -1
+        local[j, _RIGID:] = np.arange(bl.start + j * kb, bl.start + (j + 1) * kb)
+
+    k_v = np.zeros((size, size))
+    m_fixed = np.zeros((size, size))
+    for part, sl in zip(parts_k, (fa, ss, tor), strict=False):
+        k_v[sl, sl] = part
+    for part, sl in zip(parts_m, (fa, ss, tor), strict=False):
+        m_fixed[sl, sl] = part
+    if yaw_dof is not None:
+        assert k_yaw is not None
+        k_v[yaw_dof, yaw_dof] += k_yaw
+        if n_tor:
+            top = tor.stop - 1
+            k_v[top, top] += k_yaw
+            k_v[top, yaw_dof] -= k_yaw
+            k_v[yaw_dof, top] -= k_yaw
+    if n_chain:
+        k_v[ch, ch] = chain_k
+        m_fixed[ch, ch] = chain_m
+    for j in range(nb):
+        blk = slice(bl.start + j * kb, bl.start + (j + 1) * kb)
+        k_v[blk, blk] += np.diag(rotor.omega**2)
+
+    nacelle = _nacelle(spec, rotor, cm.hub_mass_kg, hub_polar)
+    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
+    rigid = _rigid_mass(nacelle) + _rigid_mass(
+        Rigid(cm.hub_mass_kg, apex, np.array([0.0, 0.5 * hub_polar, 0.5 * hub_polar]))
+    )
+    if n_chain:
+        # chain masses spin about the shaft (x): roll couples with their rotations
+        for i in range(n_chain):
+            g = ch.start + i
+            rigid[TX, TX] += own[i]
+            _add_pair(m_fixed, local[0, TX], g, -coupling[i])  # sign: θₓ dof is −u_y′
+    else:
+        rigid[TX, TX] += hub_polar
+    model = Model(
+        spec,
+        condition,
+        Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign),
+        k_v,
+        m_fixed,
+        rotor,
+        nacelle,
+        cm.hub_mass_kg,
+        hub_polar,
+        apex,
+        nb,
+        tuple(notes),
+    )
+    model._scatter(m_fixed, rigid, 0, rigid_only=True)
+    return model
+
+
+def _add_pair(m: Array, i: int, j: int, value: float) -> None:
+    """Add a symmetric off-diagonal pair (no-op where i is held)."""
+    if i < 0:
+        return
+    m[i, j] += value
+    m[j, i] += value
+
+
+# ---------------------------------------------------------------------------------------
+# Multi-blade coordinates
+
+
+def coleman(blades: int, psi: float) -> tuple[Array, Array, Array, tuple[str, ...]]:
+    """B(ψ), dB/dψ, d²B/dψ² with ηⱼ = Σ_h B[j, h]·a_h, and the names of the a_h.
+
+    Columns: collective, (cos h·ψⱼ, sin h·ψⱼ) for h = 1 … (N−1)//2, and for even N the
+    alternating (−1)ʲ coordinate (Bir 2008).
+    """
+    psi_j = psi + 2 * np.pi * np.arange(blades) / blades
+    cols: list[Array] = [np.ones(blades)]
+    d1: list[Array] = [np.zeros(blades)]
+    d2: list[Array] = [np.zeros(blades)]
+    names = ["collective"]
+    for h in range(1, (blades - 1) // 2 + 1):
+        c, s = np.cos(h * psi_j), np.sin(h * psi_j)
+        cols += [c, s]
+        d1 += [-h * s, h * c]
+        d2 += [-(h**2) * c, -(h**2) * s]
+        names += [f"cos{h}", f"sin{h}"]
+    if blades % 2 == 0:
+        cols.append(np.where(np.arange(blades) % 2 == 0, 1.0, -1.0))
+        d1.append(np.zeros(blades))
+        d2.append(np.zeros(blades))
+        names.append("alternating")
+    return np.stack(cols, 1), np.stack(d1, 1), np.stack(d2, 1), tuple(names)
+
+
+def fixed_frame(model: Model, omega: float, psi: float = 0.0) -> tuple[Array, Array, Array]:
+    """M, D, K in multi-blade coordinates (time-invariant for three or more blades).
+
+    q = T(ψ)·z with q̇ = T·ż + Ω·T′·z and q̈ = T·z̈ + 2Ω·T′·ż + Ω²·T″·z, projected with Tᵀ.
+    """
+    m, d, k = model.matrices(omega, psi)
+    t, t1, t2 = _transform(model, psi)
+    tt = t.T
+    return (
+        tt @ m @ t,
+        tt @ (2 * omega * m @ t1 + d @ t),
+        tt @ (omega**2 * m @ t2 + omega * d @ t1 + k @ t),
+    )
+
+
+def _transform(model: Model, psi: float) -> tuple[Array, Array, Array]:
+    lay = model.layout
+    b, b1, b2, _ = coleman(model.blades, psi)
+    eye = np.eye(model.k_blades)
+    out = []
+    for mat in (b, b1, b2):
+        t = np.eye(lay.size) if mat is b else np.zeros((lay.size, lay.size))
+        t[lay.blades, lay.blades] = np.kron(mat, eye)
+        out.append(t)
+    return out[0], out[1], out[2]
+
+
+# ---------------------------------------------------------------------------------------
+# Modes, named by participation
+
+
+@dataclass(frozen=True)
+class SystemModes:
+    """Modes of the coupled model at one rotor speed: frequencies, shapes in multi-blade
+    coordinates (complex when rotating), and names."""
+
+    frequency_hz: Array
+    shapes: NDArray[np.complex128]
+    names: tuple[str, ...]
+    descriptions: tuple[str, ...]
+
+
+def parked(model: Model, psi: float = 0.0, count: int = MODES_KEPT) -> SystemModes:
+    """Modes of the parked turbine (Ω = 0) at rotor azimuth ψ (blade 1 up at ψ = 0)."""
+    m, _, k = fixed_frame(model, 0.0, psi)
+    res = modal.solve(k, m, min(count + 2, m.shape[0]))
+    keep = res.frequency_hz > 1e-3  # a free generator leaves the rotor free to turn
+    f, shapes = res.frequency_hz[keep][:count], res.shapes[:, keep][:, :count]
+    names, texts = _name(model, m, shapes.astype(complex), f)
+    return SystemModes(f, shapes.astype(complex), names, texts)
+
+
+def rotating(model: Model, omega: float, count: int = MODES_KEPT) -> SystemModes:
+    """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
+    m, d, k = fixed_frame(model, omega)
+    lam, vec = np.linalg.eig(modal._state_matrix(k, m, d))
+    n = m.shape[0]
+    osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
+    lam, vec = lam[osc], vec[:n, osc]
+    order = np.argsort(lam.imag)[:count]
+    f = lam.imag[order] / (2 * np.pi)
+    shapes = vec[:, order]
+    names, texts = _name(model, m, shapes, f)
+    return SystemModes(f, shapes, names, texts)
+
+
+def _groups(model: Model) -> dict[str, Index]:
+    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor)."""
+    lay = model.layout
+    out: dict[str, Index] = {
+        "tower.fa": np.arange(lay.fa.start, lay.fa.stop),
+        "tower.ss": np.arange(lay.ss.start, lay.ss.stop),
+        "tower.tor": np.arange(lay.torsion.start, lay.torsion.stop),
+        "drivetrain": np.arange(lay.chain.start, lay.chain.stop),
+    }
+    if lay.yaw is not None:
+        out["yaw"] = np.array([lay.yaw])
+    _, _, _, harmonics = coleman(model.blades, 0.0)
+    kb = model.k_blades
+    for k, name in enumerate(model.rotor.names):
+        for h, label in enumerate(harmonics):
+            out[f"blade.{name}.{label}"] = np.array([lay.blades.start + h * kb + k])
+    return out
+
+
+def _name(
+    model: Model, m: Array, shapes: NDArray[np.complex128], f: Array
+) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """Ids and descriptions from each mode's kinetic-energy shares."""
+    groups = _groups(model)
+    names: list[str] = []
+    texts: list[str] = []
+    counters: dict[str, int] = {}
+    for j in range(shapes.shape[1]):
+        x = shapes[:, j]
+        energy = np.abs(np.real(np.conj(x) * (m @ x)))
+        total = float(energy.sum()) or 1.0
+        share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
+        merged: dict[str, float] = {}
+        for g, v in share.items():
+            key = g.replace("cos", "cyclic").replace("sin", "cyclic")
+            merged[key] = merged.get(key, 0.0) + v
+        top = max(merged, key=lambda g: merged[g])
+        name, text = _mode_name(top, share, x, groups, counters)
+        if name in names:
+            name = f"{name}_{sum(n.startswith(name) for n in names) + 1}"
+        names.append(name)
+        parts = sorted(merged.items(), key=lambda kv: -kv[1])[:3]
+        mix = ", ".join(f"{g} {v:.0%}" for g, v in parts if v >= 0.05)
+        texts.append(f"{text} [{mix}]")
+    return tuple(names), tuple(texts)
+
+
+def _mode_name(
+    top: str,
+    share: dict[str, float],
+    x: NDArray[np.complex128],
+    groups: dict[str, Index],
+    counters: dict[str, int],
+) -> tuple[str, str]:
+    if top in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw"):
+        counters[top] = counters.get(top, 0) + 1
+        k = counters[top]
+        label = {
+            "tower.fa": "tower fore-aft",
+            "tower.ss": "tower side-side",
+            "tower.tor": "tower torsion",
+            "drivetrain": "drive-train torsion",
+            "yaw": "yaw",
+        }[top]
+        short = {"tower.fa": "tower.fa", "tower.ss": "tower.ss", "tower.tor": "tower.tor"}
+        return f"{short.get(top, top)}{k}", f"{ordinal(k)} {label}"
+    _, mode, coord = top.split(".")
+    kind = mode.rstrip("0123456789")
+    number = int(mode[len(kind) :])
+    words = f"{ordinal(number)} blade {_KINDS[kind]}"
+    if coord == "collective":
+        return f"blade.{mode}.collective", f"{words}, collective"
+    if coord == "alternating":
+        return f"blade.{mode}.alternating", f"{words}, alternating (two blades in opposition)"
+    h = coord.removeprefix("cyclic")
+    c = share.get(f"blade.{mode}.cos{h}", 0.0)
+    s = share.get(f"blade.{mode}.sin{h}", 0.0)
+    # flap ∝ cos ψⱼ nods the rotor (tilt), ∝ sin ψⱼ yaws it; edge: cos pushes sideways (yaw
+    # through the overhang), sin up and down (tilt)
+    tilt = (c >= s) == (kind == "flap")
+    axis = "tilt" if tilt else "yaw"
+    suffix = "" if h == "1" else h
+    xc = x[groups[f"blade.{mode}.cos{h}"]].sum()
+    xs = x[groups[f"blade.{mode}.sin{h}"]].sum()
+    whirl = float(np.imag(np.conj(xc) * xs))
+    scale = float(abs(xc) * abs(xs)) or 1.0
+    if abs(whirl) > 0.5 * scale:  # rotating: the cyclic pattern travels round the rotor
+        turn = "forward" if whirl < 0 else "backward"
+        return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix}, {turn} whirl"
+    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})"
+
+
+# ---------------------------------------------------------------------------------------
+# The rotating sweep (Campbell diagram) and the audit's view
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """Coupled modes over rotor speed, each followed by its shape (MAC)."""
+
+    omega: Array  # rotor speeds [rad/s]
+    frequency_hz: Array  # (speeds, modes)
+    names: tuple[str, ...]  # named at the first speed (standstill)
+    descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
+
+
+def sweep(model: Model, speeds: Array, count: int = MODES_KEPT) -> Sweep:
+    """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
+    if model.blades < 3:
+        raise ValueError("the rotating sweep needs three or more blades (MBC)")
+    first = rotating(model, float(speeds[0]), count)
+    kept = len(first.frequency_hz)
+    # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
+    # would otherwise weigh by their units, not by their share of the motion
+    weight = np.sqrt(np.diag(fixed_frame(model, 0.0)[0]))[:, None]
+    freqs = np.empty((len(speeds), kept))
+    freqs[0] = first.frequency_hz
+    shapes = first.shapes
+    last = first
+    for i, om in enumerate(speeds[1:], start=1):
+        cur = rotating(model, float(om), kept + 4)
+        order = _assign(modal.mac(weight * shapes, weight * cur.shapes))
+        freqs[i] = cur.frequency_hz[order]
+        shapes = cur.shapes[:, order]
+        last = SystemModes(
+            cur.frequency_hz[order],
+            shapes,
+            tuple(cur.names[o] for o in order),
+            tuple(cur.descriptions[o] for o in order),
+        )
+    rpm = _rpm(float(speeds[-1]))
+    texts = tuple(
+        f"{_plain(a)} (coupled)"
+        if _plain(a) == _plain(b)
+        else f"{_plain(a)}; at {rpm}: {_plain(b)} (coupled)"
+        for a, b in zip(first.descriptions, last.descriptions, strict=True)
+    )
+    return Sweep(np.asarray(speeds, float), freqs, first.names, texts)
+
+
+def _plain(text: str) -> str:
+    """A mode's description without its energy shares."""
+    return text.split(" [")[0]
+
+
+def _assign(score: Array) -> Index:
+    """Greedy assignment of the previous modes (rows) to current ones (columns) by MAC."""
+    rows, cols = score.shape
+    out = np.full(rows, -1, dtype=np.intp)
+    taken = np.zeros(cols, dtype=bool)
+    for flat in np.argsort(-score, axis=None):
+        i, j = divmod(int(flat), cols)
+        if out[i] < 0 and not taken[j]:
+            out[i], taken[j] = j, True
+    return out
+
+
+def applies(spec: Spec) -> bool:
+    """Whether the spec asks for (and has what the coupled model needs)."""
+    return (
+        spec.coupled is not None
+        and spec.blade.structure is not None
+        and spec.tower_head is not None
+        and spec.tower.has_structure
+        and spec.rotor.orientation != "vertical-axis"
+    )
+
+
+def speeds(spec: Spec) -> Array:
+    """Rotor speeds of the sweep: standstill to 1.1 × overspeed [rad/s]."""
+    top = float(rpm_to_rad_s(spec.rotor.speed.overspeed)) * 1.1
+    return np.linspace(0.0, top, SPEED_SAMPLES)
+
+
+def modes(spec: Spec) -> list[Mode]:
+    """Coupled modes (ids ``system.<name>``) with their fixed-frame curves over rotor speed.
+
+    Three or more blades: the rotating sweep in the spec's rotating condition; two blades:
+    the parked modes only (periodic system; the Floquet check covers rotation).
+    """
+    if not applies(spec):
+        return []
+    assert spec.coupled is not None
+    model = build(spec, spec.coupled.rotating_condition)
+    if spec.rotor.blades < 3:
+        res = parked(model)
+        return [
+            Mode(f"system.{n}", "system", f"{_plain(d)}, parked (coupled)", float(f))
+            for f, n, d in zip(res.frequency_hz, res.names, res.descriptions, strict=True)
+        ]
+    sw = sweep(model, speeds(spec))
+    out = []
+    for j, name in enumerate(sw.names):
+        curve = Sampled(tuple(sw.omega.tolist()), tuple(sw.frequency_hz[:, j].tolist()))
+        out.append(
+            Mode(
+                f"system.{name}",
+                "system",
+                sw.descriptions[j],
+                float(sw.frequency_hz[0, j]),
+                curve=curve,
+            )
+        )
+    return sorted(out, key=lambda m: m.frequency_hz)
+
+
+def _rpm(omega: float) -> str:
+    return f"{omega * 30 / math.pi:.3g} rpm"
+
+
+#: Where the coupled mode's isolated counterpart lives (id prefix → isolated id).
+def isolated_id(name: str, condition: str) -> str:
+    """The isolated subsystem mode a coupled mode grows out of (``tower.fa1`` → tower.fa1)."""
+    base = name.split("_")[0] if name.startswith(("tower", "drivetrain", "yaw")) else name
+    if base.startswith("tower."):
+        return base
+    if base.startswith("drivetrain"):
+        return f"drivetrain.{condition}.{base.removeprefix('drivetrain')}"
+    if base.startswith("yaw"):
+        return f"yaw.{base.removeprefix('yaw')}"
+    return "blade." + name.split(".")[1]
+
+
+def check(spec: Spec, isolated: list[Mode]) -> Check | None:
+    """Parked coupled frequencies against the isolated subsystems' (Hau §7.6)."""
+    if not applies(spec):
+        return None
+    assert spec.coupled is not None
+    cond = spec.coupled.parked_condition
+    model = build(spec, cond)
+    res = parked(model)
+    by_id = {m.id: m.frequency_hz for m in isolated}
+    rows: list[dict[str, Any]] = []
+    for f, name in zip(res.frequency_hz, res.names, strict=True):
+        iso = isolated_id(name, cond)
+        f_iso = by_id.get(iso)
+        rows.append(
+            {
+                "id": f"system.{name}",
+                "coupled_hz": round(float(f), 6),
+                "isolated_id": iso if f_iso is not None else None,
+                "isolated_hz": round(f_iso, 6) if f_iso is not None else None,
+                "change": round(float(f) / f_iso - 1.0, 6) if f_iso else None,
+            }
+        )
+    changed = [r for r in rows if r["change"] is not None]
+    largest = max(changed, key=lambda r: abs(r["change"]), default=None)
+    text = (
+        f"; largest shift from its isolated subsystem: {largest['id']} "
+        f"{largest['isolated_hz']:.3g} → {largest['coupled_hz']:.3g} Hz "
+        f"({largest['change']:+.0%})"
+        if largest
+        else ""
+    )
+    return Check(
+        id="system.coupling",
+        subsystem="system",
+        status="info",
+        message=f"Coupled whole-turbine model, parked, generator {cond}: {len(rows)} modes"
+        + text
+        + ". Where a coupled frequency departs from the isolated one, the coupled value is "
+        "the one to design against.",
+        rule=Rule(
+            "coupled modes vs isolated subsystems",
+            "Hau, Wind Turbines, §7.6: strongly coupled subsystems produce coupling modes "
+            "whose frequencies deviate distinctly from the separate natural frequencies",
+        ),
+        numbers={"condition": cond, "modes": rows, "model": list(_statements(model))},
+    )
+
+
+def _statements(model: Model) -> tuple[str, ...]:
+    n = model.nacelle
+    return (
+        f"{model.blades} flexible blades × {model.k_blades} modes "
+        f"({', '.join(model.rotor.names)}), nacelle {n.mass:,.0f} kg rigid, hub "
+        f"{model.hub_mass:,.0f} kg / {model.hub_polar:,.0f} kg·m², generator {model.condition}",
+        "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping",
+        *model.assumptions,
+    )
