@@ -28,12 +28,14 @@ SUBSYSTEM_TITLE = {
     "blade": "blades",
     "drivetrain": "drive train",
     "yaw": "yaw system",
+    "system": "coupled whole turbine",
 }
 #: Subsystems drawn together on one diagram.
 DIAGRAMS: dict[str, tuple[str, ...]] = {
     "campbell": ("tower", "blade"),
     "campbell-drivetrain": ("drivetrain",),
     "campbell-yaw": ("yaw",),
+    "campbell-system": ("system",),
 }
 
 

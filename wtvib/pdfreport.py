@@ -24,6 +24,7 @@ SUBSYSTEM_NAMES = {
     "drivetrain": "Drive train",
     "yaw": "Yaw system",
     "rotor": "Rotor on the tower head (periodic coefficients, Floquet)",
+    "system": "Whole turbine: coupled rotor–tower model (Hau §7.6)",
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
@@ -31,6 +32,7 @@ DIAGRAM_FOR = {
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
+    "system": ("campbell-system",),
 }
 
 
@@ -241,6 +243,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         ]
         if modes:
             out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
+        if sub == "system":
+            out += _coupling(k, r["checks"])
         for diagram in DIAGRAM_FOR[sub]:
             if diagram not in pngs or diagram in drawn:
                 continue
@@ -308,6 +312,30 @@ def _rule_text(check_rule: dict[str, str], margin_rule: dict[str, Any]) -> str:
     if check_rule["source"] == margin_rule["source"]:
         return f"{check_rule['name']} (margin rule above)"
     return f"{check_rule['name']} — {check_rule['source']}"
+
+
+def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
+    """Parked coupled frequencies beside the isolated subsystems' (check system.coupling)."""
+    c = next((c for c in checks if c["id"] == "system.coupling"), None)
+    if c is None:
+        return []
+    rows = [k.header("coupled mode (parked)", "f [Hz]", "isolated subsystem", "f [Hz]", "shift")]
+    for row in c["modes"]:
+        shift = row["change"]
+        rows.append(
+            [
+                k.p(row["id"]),
+                k.p(f"{row['coupled_hz']:.4g}"),
+                k.p(row["isolated_id"] or "—"),
+                k.p("—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}"),
+                k.p("—" if shift is None else f"{shift:+.1%}"),
+            ]
+        )
+    return [
+        k.Spacer(1, 2 * k.mm),
+        k.p(f"Parked, generator {c['condition']}: {'; '.join(c['model'])}.", "BodyText"),
+        k.table(rows, [0.34, 0.12, 0.3, 0.12, 0.12]),
+    ]
 
 
 def _worst(checks: list[dict[str, Any]]) -> dict[str, Any] | None:

@@ -41,9 +41,9 @@ def terminal(
         console.print(
             f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
         )
-    stability = _blade_stability(data["checks"])
-    if stability is not None:
-        console.print(stability)
+    for table in (_blade_stability(data["checks"]), _coupling(data["checks"])):
+        if table is not None:
+            console.print(table)
     if data.get("uncertainty"):
         console.print(_uncertainty(data["uncertainty"]))
     for line in data.get("warnings", []):
@@ -232,6 +232,31 @@ def _blade_stability(checks: list[dict[str, Any]]) -> Table | None:
                 "",
                 f"{c['at_rpm']:.3g} rpm",
             )
+    return table
+
+
+def _coupling(checks: list[dict[str, Any]]) -> Table | None:
+    """Coupled whole-turbine modes beside the isolated subsystems' (Hau §7.6)."""
+    c = next((c for c in checks if c["id"] == "system.coupling"), None)
+    if c is None:
+        return None
+    table = Table(
+        title=f"Whole-turbine modes (coupled model, parked, generator {c['condition']})",
+        title_justify="left",
+    )
+    for col in ("coupled mode", "f [Hz]", "isolated subsystem", "f [Hz] ", "shift"):
+        left = "mode" in col or "subsystem" in col
+        table.add_column(col, justify="left" if left else "right", overflow="fold")
+    for row in c["modes"]:
+        shift = row["change"]
+        style = "bold" if shift is not None and abs(shift) >= 0.05 else ""
+        table.add_row(
+            row["id"],
+            f"{row['coupled_hz']:.4g}",
+            row["isolated_id"] or "—",
+            "—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}",
+            Text("—" if shift is None else f"{shift:+.1%}", style=style),
+        )
     return table
 
 
