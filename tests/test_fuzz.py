@@ -8,22 +8,13 @@ Generated valid specs always audit with finite, non-negative frequencies; mutate
 
 import json
 import math
-import os
 
 import yaml
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from wtvib import audit, spec
 from wtvib.errors import WtvibError
-
-settings.register_profile(
-    "ci", max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow]
-)
-settings.register_profile(
-    "fuzz", max_examples=40_000, deadline=None, suppress_health_check=[HealthCheck.too_slow]
-)
-settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
 positive = st.floats(min_value=1e-3, max_value=1e3, allow_nan=False)
 

@@ -49,7 +49,7 @@ def test_scaling_stiffness_scales_tower_frequencies_by_root(ei, mass, head, s):
 def test_adding_head_mass_never_raises_the_first_tower_frequency(ei, mass, head, extra):
     light = first_two(*tower_spec(ei, mass, head))[0]
     heavy = first_two(*tower_spec(ei, mass, head + extra))[0]
-    assert heavy <= light * (1 + 1e-12)
+    assert heavy <= light * (1 + 1e-9)  # rounding of the eigen-solver: ~1e-11 relative
 
 
 def chain(j_blades: float, j_gen: float, k: float) -> spec.Spec:

@@ -72,42 +72,51 @@ def blade_matrices(s: BladeStructure, nodes: Array, omega: float) -> tuple[Array
     EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sinβ·cosβ. Rotation adds the
     geometric stiffness of the centrifugal tension N(r) = Ω²∫_r^R m(s)·(r_hub + s) ds to both
     planes and the in-plane softening −Ω²·M_v (the centrifugal force has a component along
-    an in-plane displacement). The root is clamped.
+    an in-plane displacement): K(Ω) = K₀ + Ω²·(G − M_v) (see :func:`blade_parts`). The root
+    is clamped.
 
     References
     ----------
     Hansen, *Aerodynamics of Wind Turbines*, 3rd ed., ch. 12; Wright et al., "Vibration
     modes of centrifugally stiffened beams", J. Appl. Mech. 49, 1982 (Southwell K ≈ 1.19).
     """
+    k0, geo, m_v, m = blade_parts(s, nodes)
+    return k0 + omega**2 * (geo - m_v), m
+
+
+def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, Array]:
+    """K₀ (elastic), G (geometric stiffness of the centrifugal tension per Ω²), M_v (the
+    in-plane part of the mass) and M of the cantilevered blade (:func:`blade_matrices`)."""
     span = np.asarray(s.span_m, dtype=float)
-    x, _ = beam.gauss_points(nodes)
-    m = beam.interpolate(x, span, np.asarray(s.mass_per_length_kg_m))
-    ef = beam.interpolate(x, span, np.asarray(s.ei_flap_nm2))
-    ee = beam.interpolate(x, span, np.asarray(s.ei_edge_nm2))
+    b = beam.basis(nodes)
+    m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
+    ef = beam.interpolate(b.x, span, np.asarray(s.ei_flap_nm2))
+    ee = beam.interpolate(b.x, span, np.asarray(s.ei_edge_nm2))
     twist = np.asarray(s.twist_deg) if s.twist_deg else np.zeros_like(span)
-    beta = np.radians(beam.interpolate(x, span, twist))
+    beta = np.radians(beam.interpolate(b.x, span, twist))
     c, sn = np.cos(beta), np.sin(beta)
     ei_ww, ei_vv, ei_wv = ef * c**2 + ee * sn**2, ef * sn**2 + ee * c**2, (ee - ef) * sn * c
-    tension = omega**2 * _centrifugal_integral(nodes, m, s.hub_radius_m)
-    k_ww, geo, mass = beam.bending_elements(nodes, ei_ww, m, tension)
-    k_vv, _, _ = beam.bending_elements(nodes, ei_vv, m)
-    k_wv, _, _ = beam.bending_elements(nodes, ei_wv, m)
+    tension = _centrifugal_integral(nodes, m, s.hub_radius_m)
+    k_ww, geo, mass = beam.bending_elements(b, ei_ww, m, tension)
+    k_vv, _, _ = beam.bending_elements(b, ei_vv, m)
+    k_wv, _, _ = beam.bending_elements(b, ei_wv, m)
     n_el = len(nodes) - 1
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
     both = np.concatenate([w_dofs, v_dofs], axis=1)
     size = 4 * len(nodes)
-    k_el = np.zeros((n_el, 8, 8))
-    k_el[:, :4, :4] = k_ww + geo
-    k_el[:, 4:, 4:] = k_vv + geo - omega**2 * mass
-    k_el[:, :4, 4:] = k_wv
-    k_el[:, 4:, :4] = k_wv
-    m_el = np.zeros((n_el, 8, 8))
-    m_el[:, :4, :4] = mass
-    m_el[:, 4:, 4:] = mass
-    k = beam.assemble(k_el, both, size)
-    mm = beam.assemble(m_el, both, size)
-    return k[4:, 4:], mm[4:, 4:]
+    blocks = np.zeros((4, n_el, 8, 8))  # K₀, G, M_v, M
+    blocks[0, :, :4, :4] = k_ww
+    blocks[0, :, 4:, 4:] = k_vv
+    blocks[0, :, :4, 4:] = k_wv
+    blocks[0, :, 4:, :4] = k_wv
+    blocks[1, :, :4, :4] = geo
+    blocks[1, :, 4:, 4:] = geo
+    blocks[2, :, 4:, 4:] = mass
+    blocks[3, :, :4, :4] = mass
+    blocks[3, :, 4:, 4:] = mass
+    k0, g, m_v, mm = (beam.assemble(blk, both, size)[4:, 4:] for blk in blocks)
+    return k0, g, m_v, mm
 
 
 def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:
@@ -130,12 +139,12 @@ def rotating_modes(
     node positions and the standstill shapes.
     """
     nodes = beam.mesh(np.asarray(s.span_m, dtype=float), elements)
-    k0, m = blade_matrices(s, nodes, 0.0)
+    k0, geo, m_v, m = blade_parts(s, nodes)
     first = modal.solve(k0, m, count)
     freqs = np.empty((len(speeds), count))
     shapes = first.shapes
     for i, om in enumerate(speeds):
-        res = first if om == 0 else modal.solve(blade_matrices(s, nodes, float(om))[0], m, count)
+        res = first if om == 0 else modal.solve(k0 + om**2 * (geo - m_v), m, count)
         order = modal.track(shapes, res.shapes)
         freqs[i] = res.frequency_hz[order]
         shapes = res.shapes[:, order]

@@ -51,6 +51,7 @@ G. Bir, "Multi-blade coordinate transformation and its application to wind turbi
 analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9-1.
 """
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -62,7 +63,7 @@ from . import beam, blade, drivetrain, modal, tower, yaw
 from .errors import SpecError
 from .given import ordinal
 from .results import Check, Mode, Rule, Sampled
-from .spec import Spec
+from .spec import BladeStructure, Spec
 from .units import rpm_to_rad_s
 
 Array = NDArray[np.float64]
@@ -182,18 +183,27 @@ class BladeModes:
     node_edge: Array  # (nodes, K)
 
 
+#: The last blade evaluated (its structure object, the mode count, the result): one audit
+#: builds the model twice (rotating and parked conditions) from the same blade.
+_LAST_BLADE: list[tuple[object, int, "BladeModes"]] = []
+
+
 def blade_modes(spec: Spec, count: int) -> BladeModes:
     """The blade's lowest ``count`` cantilever modes (wtvib.blade model) at the Gauss points."""
     s = spec.blade.structure
     assert s is not None
+    if _LAST_BLADE and _LAST_BLADE[0][0] is s and _LAST_BLADE[0][1] == count:
+        return _LAST_BLADE[0][2]
+    out = _blade_modes(s, count)
+    _LAST_BLADE[:] = [(s, count, out)]
+    return out
+
+
+def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
     span = np.asarray(s.span_m, dtype=float)
     nodes = beam.mesh(span, blade.DEFAULT_ELEMENTS)
-    k0, m0 = blade.blade_matrices(s, nodes, 0.0)
-    k1, _ = blade.blade_matrices(s, nodes, 1.0)
-    in_plane = np.zeros(k0.shape[0], dtype=bool)
-    in_plane[2::4] = in_plane[3::4] = True
-    m_v = np.where(np.outer(in_plane, in_plane), m0, 0.0)
-    geo = k1 - k0 + m_v  # tension part only; the kinematics give the in-plane softening
+    # the tension's geometric stiffness only: the kinematics give the in-plane softening
+    k0, geo, _, m0 = blade.blade_parts(s, nodes)
     res = modal.solve(k0, m0, count)
     phi = res.shapes
     full = np.vstack([np.zeros((4, phi.shape[1])), phi])
@@ -267,6 +277,14 @@ class Model:
     @property
     def k_blades(self) -> int:
         return len(self.rotor.names)
+
+    @functools.cached_property
+    def multiblade(self) -> tuple[Array, Array, Array, Array]:
+        """M, D₁, K₀, K₂ of the multi-blade equations: D = Ω·D₁, K = K₀ + Ω²·K₂ exactly
+        (every rotating term is Ω or Ω² times a constant matrix)."""
+        m, _, k0 = fixed_frame(self, 0.0)
+        _, d1, k1 = fixed_frame(self, 1.0)
+        return m, d1, k0, k1 - k0
 
     def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]:
         """M, D, K of the periodic equations at rotor speed Ω [rad/s] and azimuth ψ."""
@@ -617,8 +635,8 @@ def parked(model: Model, psi: float = 0.0, count: int = MODES_KEPT) -> SystemMod
 
 def rotating(model: Model, omega: float, count: int = MODES_KEPT) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
-    m, d, k = fixed_frame(model, omega)
-    lam, vec = np.linalg.eig(modal._state_matrix(k, m, d))
+    m, d1, k0, k2 = model.multiblade
+    lam, vec = np.linalg.eig(modal._state_matrix(k0 + omega**2 * k2, m, omega * d1))
     n = m.shape[0]
     osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
     lam, vec = lam[osc], vec[:n, osc]

@@ -1,0 +1,79 @@
+"""Benchmark of issue 11: the coupled rotor–tower model (targets: one parked full-system
+solve < 10 ms, a 30-point Campbell sweep < 0.5 s).
+
+Run: ``.venv/bin/python bench/bench_coupled.py`` (needs ``../shared/reference``). On the
+NREL 5-MW imported from its ElastoDyn deck: building the model, one parked solve (generator
+locked, the Table 9-1 condition), one rotating solve, the 30-point sweep, and ``audit.run``
+with and without the ``coupled`` block, side by side. Medians of 15 runs (5 for the sweep).
+"""
+
+import os
+import platform
+import statistics
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from wtvib import audit, coupled, importers
+
+DECK = (
+    Path(__file__).resolve().parents[2]
+    / "shared/reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+)
+
+
+def median_ms(fn: Callable[[], object], runs: int = 15) -> float:
+    times = []
+    for _ in range(runs):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return 1000 * statistics.median(times)
+
+
+def main() -> None:
+    print(
+        f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
+    )
+    s = importers.load(DECK, rpm=(6.9, 12.1))
+    bare = s.model_copy(update={"coupled": None})
+    locked = coupled.build(s, "locked")
+    free = coupled.build(s, "free")
+    speeds = coupled.speeds(s)
+    audit.run(s)  # warm up
+
+    def cold(condition: str) -> coupled.Model:
+        coupled._LAST_BLADE.clear()  # recompute the blade's modes too
+        return coupled.build(s, condition)
+
+    rows = [
+        ("degrees of freedom", float(locked.layout.size), ""),
+        ("build the model (blade modes included)", median_ms(lambda: cold("locked")), "ms"),
+        ("one parked solve, model built", median_ms(lambda: coupled.parked(locked)), "ms"),
+        ("build + parked solve", median_ms(lambda: coupled.parked(cold("locked"))), "ms"),
+        (
+            "first rotating solve (multi-blade matrices)",
+            median_ms(lambda: coupled.rotating(cold("free"), 1.267)),
+            "ms",
+        ),
+        (
+            "further rotating solve (12.1 rpm)",
+            median_ms(lambda: coupled.rotating(free, 1.267)),
+            "ms",
+        ),
+        (
+            f"{len(speeds)}-point Campbell sweep, from the spec",
+            median_ms(lambda: coupled.sweep(cold("free"), speeds), 5),
+            "ms",
+        ),
+    ]
+    for label, value, unit in rows:
+        print(f"{label:45s} {value:8.1f} {unit}")
+    with_ms = median_ms(lambda: audit.run(s), 5)
+    without_ms = median_ms(lambda: audit.run(bare), 5)
+    print(f"{'audit.run with the coupled block':45s} {with_ms:8.1f} ms")
+    print(f"{'audit.run without it':45s} {without_ms:8.1f} ms")
+
+
+if __name__ == "__main__":
+    main()
