@@ -302,9 +302,16 @@ class Model:
         c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
         c0 = np.zeros((len(r.radius), 3))
         c0[:, 2] = r.radius
+        mm = np.repeat(r.mass, 3)
+        if omega == 0.0:  # parked: the mass matrix needs the first-order terms only
+            for j in range(self.blades):
+                p1 = _first_order(c0, c1, _rx(psi + 2 * np.pi * j / self.blades), self.apex)
+                if lay.local[0][PHI] < 0:
+                    p1[:, PHI] = 0.0
+                self._scatter(m, (p1 * mm[:, None]).T @ p1, j)
+            return m, d, k
         b = spin.apply(Jet(c0, c1, np.zeros((len(r.radius), 3, n, n))))
         g = _G[0]
-        mm = np.repeat(r.mass, 3)
         for j in range(self.blades):
             rj = _rx(psi + 2 * np.pi * j / self.blades)
             v = b.rotated(rj)
@@ -348,6 +355,19 @@ class Model:
         keep = idx >= 0
         i, s = idx[keep], sgn[keep]
         target[np.ix_(i, i)] += s[:, None] * local[np.ix_(keep, keep)] * s[None, :]
+
+
+def _first_order(c0: Array, c1: Array, rj: Array, apex: Array) -> Array:
+    """∂p/∂q at q = 0 for the points b = c0 + c1·η of a blade at azimuth matrix rj, rows
+    (point, x/y/z) flattened: the parked case of :meth:`Model.matrices`' expansion."""
+    p0 = c0 @ rj.T + apex  # (P, 3)
+    out = np.zeros(c1.shape)
+    out[:, 0, UX] = out[:, 1, UY] = 1.0
+    for i in range(3):
+        out[:, :, TX + i] = p0 @ _G[i].T  # e_i × p
+    out[:, :, PHI] = c0 @ (rj @ _G[0]).T  # Rⱼ·(eₓ × b₀)
+    out[:, :, _RIGID:] = np.einsum("ij,pjk->pik", rj, c1[:, :, _RIGID:])
+    return out.reshape(-1, c1.shape[2])
 
 
 def _rigid_mass(part: Rigid) -> Array:

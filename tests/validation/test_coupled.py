@@ -149,6 +149,8 @@ def test_multiblade_equations_are_time_invariant_and_gyroscopic(nrel, blades):
     for x, y in zip(a, b, strict=True):
         assert np.abs(x - y).max() <= 1e-12 * np.abs(x).max()
     m, d, k = a
+    parked_m = coupled.fixed_frame(model, 0.0, 0.3)[0]  # the parked shortcut: same inertia
+    assert np.abs(parked_m - m).max() <= 1e-12 * np.abs(m).max()
     assert np.abs(m - m.T).max() <= 1e-12 * np.abs(m).max()
     assert np.abs(d + d.T).max() <= 1e-12 * np.abs(d).max()  # gyroscopic: skew
     assert np.abs(k - k.T).max() <= 1e-12 * np.abs(k).max()
