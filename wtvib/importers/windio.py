@@ -83,6 +83,8 @@ def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[
     gear = reader.gear_ratio()
     if gear:
         data["drivetrain"] = {"gear_ratio": gear}
+    if structure and reader.apex:
+        data["coupled"] = {**reader.apex, **reader.hub}
     return data
 
 
@@ -99,6 +101,10 @@ class _Reader:
     def __init__(self, d: dict[str, Any], path: Path, v2: bool) -> None:
         self.d, self.path, self.v2 = d, path, v2
         self.c = d["components"]
+        # where the rotor sits on the tower head and the hub (for the coupled model); set by
+        # head() when it assembles the head from its parts
+        self.apex: dict[str, float] = {}
+        self.hub: dict[str, float] = {}
 
     def fail(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path))
@@ -323,6 +329,7 @@ class _Reader:
                 x, z = hub_x, hub_z
                 ii = ep.get("inertia", [0, 0, 0])
                 parts.append((name, m, x, z, float(ii[1]), float(ii[0]), float(ii[2])))
+                self.hub = {"hub_mass_kg": m, "hub_inertia_kgm2": float(ii[0])}
             elif name == "nacelle":
                 loc = ep.get("location", [0.0, 0.0, 0.0])
                 x, z = float(loc[0]), float(loc[2])
@@ -364,6 +371,7 @@ class _Reader:
                     0.5 * j_polar,
                 )
             )
+        self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
         mass = sum(p[1] for p in parts)
         x = sum(p[1] * p[2] for p in parts) / mass
         z = sum(p[1] * p[3] for p in parts) / mass
