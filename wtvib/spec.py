@@ -955,6 +955,7 @@ def from_document(doc: Document) -> Spec:
     except ValidationError as exc:
         raise _spec_error(exc, doc) from None
     _check_sources(spec, provenance, doc)
+    _check_coupled(spec, doc)
     spec._source_file = doc.source
     spec._provenance = provenance
     return spec
@@ -986,6 +987,80 @@ def _check_sources(spec: Spec, provenance: dict[str, Quantity], doc: Document) -
                 line=doc.line_of(_split(where)),
                 source=doc.source,
             )
+
+
+def _check_coupled(spec: Spec, doc: Document) -> None:
+    """The coupled model's needs, named with the line: the structures, and a tower head
+    heavy enough to carry the rotor it includes."""
+    cm = spec.coupled
+    if cm is None:
+        return
+    missing = [
+        name
+        for name, present in (
+            ("blade.structure", spec.blade.structure is not None),
+            ("tower sections or distributed properties", spec.tower.has_structure),
+            ("tower_head", spec.tower_head is not None),
+        )
+        if not present
+    ]
+    if spec.rotor.orientation == "vertical-axis":
+        missing.append("a horizontal-axis rotor")
+    if missing:
+        raise SpecError(
+            f"the coupled model needs {', '.join(missing)}",
+            path="coupled",
+            line=doc.line_of(("coupled",)),
+            source=doc.source,
+        )
+    s, head = spec.blade.structure, spec.tower_head
+    assert s is not None and head is not None
+    m_blade = sum(
+        0.5 * (a + b) * (y - x)
+        for a, b, x, y in zip(
+            s.mass_per_length_kg_m, s.mass_per_length_kg_m[1:], s.span_m, s.span_m[1:], strict=False
+        )
+    )
+    n = spec.rotor.blades
+    rotor = n * m_blade + cm.hub_mass_kg
+    if head.mass_kg <= rotor:
+        raise SpecError(
+            f"{head.mass_kg:,.0f} kg is no more than the rotor it must include "
+            f"({spec.rotor.blades} blades of {m_blade:,.0f} kg + hub {cm.hub_mass_kg:,.0f} kg) "
+            "— the coupled model takes the nacelle as the tower head minus the rotor",
+            path="tower_head.mass_kg",
+            line=doc.line_of(("tower_head", "mass_kg")),
+            source=doc.source,
+        )
+    # the rotor's own polar inertia (blades, trapezoidal, + hub) must fit in the head's roll
+    r = [s.hub_radius_m + x for x in s.span_m]
+    j_blades = n * sum(
+        0.5 * (a * ra**2 + b * rb**2) * (y - x)
+        for a, b, ra, rb, x, y in zip(
+            s.mass_per_length_kg_m,
+            s.mass_per_length_kg_m[1:],
+            r,
+            r[1:],
+            s.span_m,
+            s.span_m[1:],
+            strict=False,
+        )
+    )
+    chain = spec.drivetrain.chain
+    hub = cm.hub_inertia_kgm2
+    if hub is None and chain:
+        rest = chain[1:] if chain[0].name == "blades" else chain
+        hub = rest[0].inertia_kgm2 if rest else 0.0
+    j_polar = j_blades + (hub or 0.0)
+    if head.inertia_roll_kgm2 < 0.97 * j_polar:
+        raise SpecError(
+            f"{head.inertia_roll_kgm2:,.4g} kg·m² is less than the rotor's own polar inertia "
+            f"({j_polar:,.4g} kg·m², blades and hub) — the coupled model takes the tower "
+            "head's inertias to include the rotor",
+            path="tower_head.inertia_roll_kgm2",
+            line=doc.line_of(("tower_head", "inertia_roll_kgm2")),
+            source=doc.source,
+        )
 
 
 def _split(dotted: str) -> Path:

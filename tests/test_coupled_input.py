@@ -1,0 +1,109 @@
+"""The coupled model from a user's spec: the JSON contract, mistakes as one line, two blades.
+
+A small made-up turbine (uniform tower and blades, numbers chosen only to be plausible); the
+physics is validated in tests/validation/test_coupled.py.
+"""
+
+import json
+
+import pytest
+from typer.testing import CliRunner
+
+from wtvib import audit, coupled, spec
+from wtvib.cli import app
+
+SPEC = """\
+wtvib: 1
+turbine: {{name: Coupled test}}
+rotor:
+  blades: {blades}
+  orientation: upwind
+  hub: rigid
+  speed: {{min_rpm: 10, max_rpm: 20}}
+tower:
+  distributed:
+    height_m: [0, 60]
+    mass_per_length_kg_m: [2000, 1200]
+    ei_fa_nm2: [1.0e11, 4.0e10]
+    ei_ss_nm2: [1.0e11, 4.0e10]
+tower_head:
+  mass_kg: {head}
+  cm_downwind_m: 0.5
+  cm_above_top_m: 1.5
+  inertia_pitch_kgm2: 6.0e6
+  inertia_roll_kgm2: 1.0e7
+  inertia_yaw_kgm2: 6.0e6
+blade:
+  structure:
+    hub_radius_m: 1.5
+    span_m: [0, 35]
+    mass_per_length_kg_m: [400, 100]
+    ei_flap_nm2: [3.0e9, 1.0e8]
+    ei_edge_nm2: [6.0e9, 3.0e8]
+drivetrain:
+  chain:
+    - {{name: blades, inertia_kgm2: 1.0e6}}
+    - {{name: hub, inertia_kgm2: 2.0e4}}
+    - {{name: generator, inertia_kgm2: 50, speed_ratio: 80}}
+  shafts:
+    - {{stiffness_nm_rad: null}}
+    - {{stiffness_nm_rad: 1.0e8}}
+coupled:
+  apex_downwind_m: -3.0
+  apex_above_top_m: 1.8
+  hub_mass_kg: 15000
+"""
+
+
+def write(tmp_path, blades=3, head=120_000):
+    p = tmp_path / "coupled.yaml"
+    p.write_text(SPEC.format(blades=blades, head=head), encoding="utf-8")
+    return p
+
+
+def test_json_carries_the_coupled_modes_and_the_comparison(tmp_path):
+    result = CliRunner().invoke(
+        app, ["check", str(write(tmp_path)), "--format", "json", "--no-plot"]
+    )
+    data = json.loads(result.stdout)
+    ids = {m["id"] for m in data["modes"] if m["subsystem"] == "system"}
+    assert {"system.tower.fa1", "system.tower.ss1", "system.blade.flap1.collective"} <= ids
+    assert all(m["speed_dependent"] for m in data["modes"] if m["subsystem"] == "system")
+    check = next(c for c in data["checks"] if c["id"] == "system.coupling")
+    assert check["status"] == "info" and check["condition"] == "locked"
+    rows = {r["id"]: r for r in check["modes"]}
+    assert rows["system.tower.fa1"]["isolated_id"] == "tower.fa1"
+
+
+def test_a_head_lighter_than_its_rotor_is_one_line_with_the_field_and_line(tmp_path):
+    result = CliRunner().invoke(app, ["check", str(write(tmp_path, head=20_000)), "--no-plot"])
+    assert result.exit_code == 2
+    assert "coupled.yaml:15: tower_head.mass_kg:" in result.output  # file:line: field
+    assert "Traceback" not in result.output
+
+
+def test_coupled_without_the_structures_names_what_is_missing(tmp_path):
+    p = tmp_path / "bad.yaml"
+    bare = SPEC.format(blades=3, head=120_000)
+    bare = bare[: bare.index("blade:\n")] + bare[bare.index("drivetrain:\n") :]
+    p.write_text(bare, encoding="utf-8")
+    with pytest.raises(spec.SpecError, match=r"coupled model needs blade\.structure"):
+        spec.load(p)
+
+
+def test_two_bladed_rotor_gets_its_parked_modes_only(tmp_path):
+    s = spec.load(write(tmp_path, blades=2))
+    modes = [m for m in audit.run(s).modes if m.subsystem == "system"]
+    assert modes and all(m.curve is None and "parked" in m.description for m in modes)
+    names = {m.id for m in modes}
+    assert "system.blade.flap1.alternating" in names  # two blades in opposition (teeter-like)
+    with pytest.raises(ValueError, match="three or more blades"):
+        coupled.sweep(coupled.build(s, "free"), coupled.speeds(s))
+
+
+def test_a_head_roll_inertia_below_the_rotors_is_one_line_with_the_field(tmp_path):
+    p = write(tmp_path)
+    p.write_text(p.read_text().replace("inertia_roll_kgm2: 1.0e7", "inertia_roll_kgm2: 1.0e5"))
+    result = CliRunner().invoke(app, ["check", str(p), "--no-plot"])
+    assert result.exit_code == 2
+    assert "coupled.yaml:19: tower_head.inertia_roll_kgm2:" in result.output
