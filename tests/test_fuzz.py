@@ -54,6 +54,35 @@ def valid_specs(draw):  # type: ignore[no-untyped-def]
             "mass_kg": draw(st.floats(10, 2e6)),
             "cm_above_top_m": draw(st.floats(-3, 5)),
         }
+    if (
+        "tower_head" in data
+        and data["rotor"]["orientation"] != "vertical-axis"
+        and draw(st.booleans())
+    ):  # the coupled whole-turbine model: flexible blades on the tower head
+        length, m_root = draw(st.floats(5, 120)), draw(st.floats(20, 2000))
+        ei, hub_r = draw(st.floats(1e6, 1e11)), draw(st.floats(0, 5))
+        data["blade"]["structure"] = {
+            "hub_radius_m": hub_r,
+            "span_m": [0.0, length],
+            "mass_per_length_kg_m": [m_root, m_root * draw(st.floats(0.05, 1))],
+            "ei_flap_nm2": [ei, ei * draw(st.floats(0.01, 1))],
+            "ei_edge_nm2": [2 * ei, ei * draw(st.floats(0.01, 2))],
+        }
+        rotor = blades * m_root * length
+        hub = rotor * draw(st.floats(0, 0.5))
+        j = rotor * (hub_r + length) ** 2
+        data["tower_head"].update(
+            mass_kg=(rotor + hub) * draw(st.floats(1.05, 10)),
+            inertia_roll_kgm2=j * draw(st.floats(1, 5)),
+            inertia_pitch_kgm2=j * draw(st.floats(0.5, 5)),
+            inertia_yaw_kgm2=j * draw(st.floats(0.5, 5)),
+        )
+        data["coupled"] = {
+            "apex_downwind_m": draw(st.floats(-10, 10)),
+            "apex_above_top_m": draw(st.floats(-3, 6)),
+            "hub_mass_kg": hub,
+            "blade_modes": draw(st.integers(1, 4)),
+        }
     if draw(st.booleans()):
         data["drivetrain"] = {
             "chain": [
@@ -184,3 +213,25 @@ tower_head: {mass_kg: 10.0, cm_above_top_m: 1.3407807929942597e+154}
         assert "cm_above_top_m" in str(exc)
     else:
         raise AssertionError("the absurd offset was accepted")
+
+
+def test_regression_rotor_radius_at_the_hub_is_refused_with_the_field():
+    # found by the fuzz campaign of 2026-11-23 (campaign 5, coupled specs): a 2 m rotor on a
+    # blade whose root sits 1 m from the axis left the stall check no blade to integrate over
+    # (ZeroDivisionError); now refused by the spec with the field and line
+    text = """\
+wtvib: 1
+turbine: {name: '0', rotor_diameter_m: 2.0}
+rotor: {blades: 1, orientation: upwind, hub: rigid, speed: {fixed_rpm: 1.0}}
+blade:
+  structure: {hub_radius_m: 1.0, span_m: [0, 5], mass_per_length_kg_m: [20, 20],
+              ei_flap_nm2: [1.0e6, 1.0e6], ei_edge_nm2: [2.0e6, 1.0e6]}
+"""
+    from wtvib.yamlio import parse
+
+    try:
+        spec.from_document(parse(text))
+    except WtvibError as exc:
+        assert "turbine.rotor_diameter_m" in str(exc) and ":2:" in str(exc)
+    else:
+        raise AssertionError("a rotor radius at the blade root was accepted")

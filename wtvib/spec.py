@@ -20,6 +20,7 @@ from collections.abc import Mapping
 from pathlib import Path as FsPath
 from typing import Annotated, Any, Literal
 
+import numpy as np
 from pydantic import (
     BaseModel,
     ConfigDict,
@@ -955,6 +956,7 @@ def from_document(doc: Document) -> Spec:
     except ValidationError as exc:
         raise _spec_error(exc, doc) from None
     _check_sources(spec, provenance, doc)
+    _check_rotor_radius(spec, doc)
     _check_coupled(spec, doc)
     spec._source_file = doc.source
     spec._provenance = provenance
@@ -989,6 +991,19 @@ def _check_sources(spec: Spec, provenance: dict[str, Quantity], doc: Document) -
             )
 
 
+def _check_rotor_radius(spec: Spec, doc: Document) -> None:
+    """A rotor diameter that leaves no blade beyond the hub radius is a mistake."""
+    d, s = spec.turbine.rotor_diameter_m, spec.blade.structure
+    if d is not None and s is not None and d / 2 <= s.hub_radius_m:
+        raise SpecError(
+            f"a rotor radius of {d / 2:g} m leaves no blade beyond the blade root at "
+            f"blade.structure.hub_radius_m = {s.hub_radius_m:g} m",
+            path="turbine.rotor_diameter_m",
+            line=doc.line_of(("turbine", "rotor_diameter_m")),
+            source=doc.source,
+        )
+
+
 def _check_coupled(spec: Spec, doc: Document) -> None:
     """The coupled model's needs, named with the line: the structures, and a tower head
     heavy enough to carry the rotor it includes."""
@@ -1015,52 +1030,28 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
         )
     s, head = spec.blade.structure, spec.tower_head
     assert s is not None and head is not None
-    m_blade = sum(
-        0.5 * (a + b) * (y - x)
-        for a, b, x, y in zip(
-            s.mass_per_length_kg_m, s.mass_per_length_kg_m[1:], s.span_m, s.span_m[1:], strict=False
-        )
-    )
+    # the rotor's mass and polar inertia (blades by the trapezoid rule, + hub)
+    span, per_length = np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m)
+    m_blade = float(np.trapezoid(per_length, span))
+    j_blade = float(np.trapezoid(per_length * (s.hub_radius_m + span) ** 2, span))
     n = spec.rotor.blades
-    rotor = n * m_blade + cm.hub_mass_kg
-    if head.mass_kg <= rotor:
-        raise SpecError(
-            f"{head.mass_kg:,.0f} kg is no more than the rotor it must include "
-            f"({spec.rotor.blades} blades of {m_blade:,.0f} kg + hub {cm.hub_mass_kg:,.0f} kg) "
-            "— the coupled model takes the nacelle as the tower head minus the rotor",
-            path="tower_head.mass_kg",
-            line=doc.line_of(("tower_head", "mass_kg")),
-            source=doc.source,
-        )
-    # the rotor's own polar inertia (blades, trapezoidal, + hub) must fit in the head's roll
-    r = [s.hub_radius_m + x for x in s.span_m]
-    j_blades = n * sum(
-        0.5 * (a * ra**2 + b * rb**2) * (y - x)
-        for a, b, ra, rb, x, y in zip(
-            s.mass_per_length_kg_m,
-            s.mass_per_length_kg_m[1:],
-            r,
-            r[1:],
-            s.span_m,
-            s.span_m[1:],
-            strict=False,
-        )
-    )
     chain = spec.drivetrain.chain
     hub = cm.hub_inertia_kgm2
     if hub is None and chain:
         rest = chain[1:] if chain[0].name == "blades" else chain
         hub = rest[0].inertia_kgm2 if rest else 0.0
-    j_polar = j_blades + (hub or 0.0)
-    if head.inertia_roll_kgm2 < 0.97 * j_polar:
+    from .coupled import nacelle  # the one place that splits the head (imports this module)
+
+    apex = (cm.apex_downwind_m, 0.0, cm.apex_above_top_m)
+    try:
+        nacelle(head, np.array(apex), n * m_blade + cm.hub_mass_kg, n * j_blade + (hub or 0.0))
+    except SpecError as exc:
         raise SpecError(
-            f"{head.inertia_roll_kgm2:,.4g} kg·m² is less than the rotor's own polar inertia "
-            f"({j_polar:,.4g} kg·m², blades and hub) — the coupled model takes the tower "
-            "head's inertias to include the rotor",
-            path="tower_head.inertia_roll_kgm2",
-            line=doc.line_of(("tower_head", "inertia_roll_kgm2")),
+            exc.message,
+            path=exc.path,
+            line=doc.line_of(_split(exc.path or "tower_head")),
             source=doc.source,
-        )
+        ) from None
 
 
 def _split(dotted: str) -> Path:

@@ -179,6 +179,8 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
         return None
     flap = mode.id.startswith("blade.flap")
     gen_mass = float(np.trapezoid(m * shape**2, r))
+    if not gen_mass > 0:  # no blade outboard of the root (e.g. radius at the hub): no curve
+        return None
     structural = mode.damping_ratio if mode.damping_ratio is not None else spec.blade.damping_ratio
     out = []
     for wind, rpm in operating_points(spec, radius):
