@@ -13,7 +13,9 @@ IEA Wind Task 37, windIO turbine schema (``windIO/schemas/turbine/turbine_schema
 windio 2.1.1): K44 and K55 are the two bending stiffnesses of a blade section, K66 the
 torsional stiffness; ``reference_axis.z`` heights in m. The schema text calls K44 flapwise,
 while the IEA-15 and IEA-22 example files hold the edgewise values in K44 (as BeamDyn
-does); wtvib takes the lower of the two over most of the span as flapwise.
+does); wtvib takes the lower of the two over most of the span as flapwise. The 6×6 matrices
+refer to the reference axis: the bending and torsional stiffnesses are condensed from them
+(other strains free, :func:`_condensed`) rather than read off the diagonal.
 """
 
 import math
@@ -25,8 +27,8 @@ import numpy as np
 from ..errors import SpecError
 from ..yamlio import parse_plain
 
-#: Index of K44, K55, K66 and of the mass and polar inertia in a row-major upper triangle.
-_UT = {"K44": 15, "K55": 18, "K66": 20, "mass": 0, "i_plr": 20}
+#: Index of the mass and polar inertia in a row-major upper triangle of the 6×6 mass matrix.
+_UT = {"mass": 0, "i_plr": 20}
 
 
 def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[str, Any]:
@@ -86,6 +88,29 @@ def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[
     if structure and reader.apex:
         data["coupled"] = {**reader.apex, **reader.hub}
     return data
+
+
+def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Bending (K44, K55) and torsional (K66) stiffnesses of 6×6 section matrices with the
+    other strains free: the 2×2 bending block of the inverted compliance, and 1/C66.
+
+    The 6×6 matrices refer to the blade's reference axis; where the tension or shear centre
+    lies off it, the diagonal terms K44/K55 include EA·offset² (bending–extension coupling)
+    and overstate the stiffness of a beam free to stretch. Condensing the other strains out
+    gives the bending stiffness about the section's own centres (Hodges, *Nonlinear
+    Composite Beam Theory*, 2006, §4: static condensation of a cross-sectional stiffness
+    matrix). Falls back to the diagonal where a matrix is singular.
+    """
+    k44, k55, k66 = k[:, 3, 3].copy(), k[:, 4, 4].copy(), k[:, 5, 5].copy()
+    for i, mat in enumerate(k):
+        try:
+            c = np.linalg.inv(mat)
+            bend = np.linalg.inv(c[3:5, 3:5])
+        except np.linalg.LinAlgError:
+            continue
+        if np.all(np.isfinite(bend)) and bend[0, 0] > 0 and bend[1, 1] > 0 and c[5, 5] > 0:
+            k44[i], k55[i], k66[i] = bend[0, 0], bend[1, 1], 1.0 / c[5, 5]
+    return k44, k55, k66
 
 
 def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
@@ -259,9 +284,13 @@ class _Reader:
             k = ep["stiffness_matrix"]
             im = ep["inertia_matrix"]
             mass = _at({"grid": im["grid"], "values": im["mass"]}, grid)
-            flap = np.asarray(k["K44"], float)
-            edge = np.asarray(k["K55"], float)
-            gj = np.asarray(k["K66"], float)
+            full = np.zeros((len(grid), 6, 6))
+            for a in range(6):
+                for c in range(a, 6):
+                    key = f"K{a + 1}{c + 1}"
+                    if key in k:
+                        full[:, a, c] = full[:, c, a] = np.asarray(k[key], float)
+            flap, edge, gj = _condensed(full)
             ip = _at({"grid": im["grid"], "values": im["i_plr"]}, grid) if "i_plr" in im else None
             twist = _at(b["outer_shape"]["twist"], grid)  # degrees in 2.x
         else:
@@ -271,7 +300,11 @@ class _Reader:
             grid = np.asarray(six["stiff_matrix"]["grid"], float)
             kv = np.asarray(six["stiff_matrix"]["values"], float)
             mv = np.asarray(six["inertia_matrix"]["values"], float)
-            flap, edge, gj = kv[:, _UT["K44"]], kv[:, _UT["K55"]], kv[:, _UT["K66"]]
+            rows, cols = np.triu_indices(6)
+            full = np.zeros((len(grid), 6, 6))
+            full[:, rows, cols] = kv[:, :21]
+            full[:, cols, rows] = kv[:, :21]
+            flap, edge, gj = _condensed(full)
             mass, ip = mv[:, _UT["mass"]], mv[:, _UT["i_plr"]]
             twist = np.degrees(_at(six["twist"], grid))  # radians in 1.x
         if np.count_nonzero(flap > edge) > len(flap) / 2:
