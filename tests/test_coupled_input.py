@@ -91,9 +91,13 @@ def test_coupled_without_the_structures_names_what_is_missing(tmp_path):
         spec.load(p)
 
 
-def test_two_bladed_rotor_gets_its_parked_modes_only(tmp_path):
+def test_two_bladed_rotor_gets_parked_modes_and_a_floquet_check(tmp_path):
     s = spec.load(write(tmp_path, blades=2))
-    modes = [m for m in audit.run(s).modes if m.subsystem == "system"]
+    report = audit.run(s)
+    floquet = next(c for c in report.checks if c.id == "system.floquet")
+    assert floquet.status == "pass" and floquet.numbers["unstable_rpm"] == []
+    assert max(floquet.numbers["max_multiplier"]) <= 1 + coupled.GROWTH
+    modes = [m for m in report.modes if m.subsystem == "system"]
     assert modes and all(m.curve is None and "parked" in m.description for m in modes)
     names = {m.id for m in modes}
     assert "system.blade.flap1.alternating" in names  # two blades in opposition (teeter-like)

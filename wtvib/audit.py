@@ -172,8 +172,8 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
             checks = drivetrain.annotate(spec, built["blade"], checks)
             power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)
             checks += [power] if power else []
-    coupling = coupled.check(spec, all_modes)
-    checks += [coupling] if coupling else []
+    for extra in (coupled.check(spec, all_modes), coupled.stability_check(spec)):
+        checks += [extra] if extra else []
     floquet_check, _ = floquet.check(spec, all_modes)
     checks.append(floquet_check)
     checks += aeroelastic.checks(spec, all_modes)[0]

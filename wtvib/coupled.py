@@ -63,6 +63,7 @@ from . import beam, blade, drivetrain, modal, tower, yaw
 from .errors import SpecError
 from .given import ordinal
 from .results import Check, Mode, Rule, Sampled
+from .rules import Status
 from .spec import BladeStructure, Spec, TowerHead
 from .units import rpm_to_rad_s
 
@@ -964,4 +965,146 @@ def _statements(model: Model) -> tuple[str, ...]:
         f"{model.hub_mass:,.0f} kg / {model.hub_polar:,.0f} kg·m², generator {model.condition}",
         "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping",
         *model.assumptions,
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# Periodic coefficients (two blades): Floquet analysis in a reduced modal basis
+
+
+@dataclass(frozen=True)
+class Periodic:
+    """The periodic equations in a basis of the lowest parked modes, as azimuth harmonics.
+
+    X(ψ) = X₀ + Σ_h (X_ch cos hψ + X_sh sin hψ), h = 1, 2, for X = M, D₁, K₂ (D = Ω·D₁,
+    K = K₀ + Ω²·K₂): every term is a product of two first-harmonic factors, so two
+    harmonics are exact and eight samples recover them without aliasing.
+    """
+
+    m: Array  # (5, r, r): constant, cos ψ, sin ψ, cos 2ψ, sin 2ψ
+    d1: Array
+    k2: Array
+    k0: Array  # (r, r)
+    highest_hz: float  # the basis's highest parked frequency (sets the integration step)
+
+    def at(self, x: Array, psi: float) -> Array:
+        c1, s1, c2, s2 = math.cos(psi), math.sin(psi), math.cos(2 * psi), math.sin(2 * psi)
+        return x[0] + c1 * x[1] + s1 * x[2] + c2 * x[3] + s2 * x[4]
+
+    def state(self, omega: float, psi: float) -> Array:
+        """A(ψ) of ẋ = A x at rotor speed Ω."""
+        r = self.k0.shape[0]
+        minv = np.linalg.inv(self.at(self.m, psi))
+        k = self.k0 + omega**2 * self.at(self.k2, psi)
+        return np.block(
+            [[np.zeros((r, r)), np.eye(r)], [-minv @ k, -omega * minv @ self.at(self.d1, psi)]]
+        )
+
+
+def reduction(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Array:
+    """A basis for the periodic analysis: the fixed parts (tower, nacelle, drive train) of
+    the lowest ``modes`` parked modes (those up to ``cutoff_hz``, at least four),
+    orthonormalised, and every blade coordinate in full — complete blade sets keep the basis
+    the same at every azimuth."""
+    lay = model.layout
+    res = parked(model, count=modes)
+    keep = max(4, int(np.count_nonzero(res.frequency_hz <= cutoff_hz)))
+    shapes = np.real(res.shapes[:, :keep])
+    fixed = np.ones(lay.size, dtype=bool)
+    fixed[lay.blades] = False
+    q, r = np.linalg.qr(shapes[fixed])
+    q = q[:, np.abs(np.diag(r)) > 1e-9 * np.abs(np.diag(r)).max()]
+    n_blade = lay.blades.stop - lay.blades.start
+    basis = np.zeros((lay.size, q.shape[1] + n_blade))
+    basis[fixed, : q.shape[1]] = q
+    basis[lay.blades, q.shape[1] :] = np.eye(n_blade)
+    return basis
+
+
+def periodic(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Periodic:
+    """The model's periodic equations (physical blade coordinates) in the basis of
+    :func:`reduction`, as azimuth harmonics."""
+    phi = reduction(model, modes, cutoff_hz)
+    samples = np.arange(8) * (2 * np.pi / 8)
+    m, d1, k2 = [], [], []
+    k0 = phi.T @ model.k_v @ phi
+    for psi in samples:
+        m0, _, _ = model.matrices(0.0, float(psi))
+        _, d, k = model.matrices(1.0, float(psi))
+        m.append(phi.T @ m0 @ phi)
+        d1.append(phi.T @ d @ phi)
+        k2.append(phi.T @ k @ phi - k0)
+
+    def harmonics(x: list[Array]) -> Array:
+        a = np.stack(x)
+        out = [a.mean(axis=0)]
+        for h in (1, 2):
+            out.append(2 * np.tensordot(np.cos(h * samples), a, axes=1) / 8)
+            out.append(2 * np.tensordot(np.sin(h * samples), a, axes=1) / 8)
+        return np.stack(out)
+
+    top = float(modal.solve(k0, m[0]).frequency_hz[-1])
+    return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, top)
+
+
+def multipliers(p: Periodic, omega: float, per_period: float = 4.0) -> NDArray[np.complex128]:
+    """Floquet multipliers over one rotor revolution at Ω [rad/s].
+
+    RK4 with ``per_period`` steps per period of the basis's fastest mode: 4 keeps every mode
+    inside RK4's stability limit (ω·h = π/2 < 2.8), so the integration damps the fastest
+    modes a little but never amplifies one — no false instability; the slow modes that
+    matter get ≥ 10× as many steps. 40 makes the numerical damping negligible (tests).
+    """
+    from .floquet import monodromy
+
+    period = 2 * np.pi / omega
+    steps = max(48, math.ceil(per_period * p.highest_hz * period))
+    phi = monodromy(lambda t: p.state(omega, omega * t), period, steps)
+    return np.linalg.eigvals(phi).astype(complex)
+
+
+#: Floquet multipliers above 1 + this count as growth (RK4 alone never exceeds 1).
+GROWTH = 1e-6
+
+
+def stability_check(spec: Spec) -> Check | None:
+    """``system.floquet``: parametric stability of the coupled two-bladed turbine over its
+    speed range (periodic coefficients; three or more blades are time-invariant)."""
+    if not applies(spec) or spec.rotor.blades >= 3:
+        return None
+    assert spec.coupled is not None
+    model = build(spec, spec.coupled.rotating_condition)
+    speed = spec.rotor.speed
+    # modes up to three times the highest excitation checked carry the parametric coupling
+    cutoff = max(2.0, 3 * spec.audit.harmonics * speed.overspeed / 60)
+    p = periodic(model, cutoff_hz=cutoff)
+    low = speed.steady_rpm[0][0]
+    rpm = np.unique(
+        np.concatenate(
+            [np.linspace(low, speed.overspeed, 12), [a for band in speed.steady_rpm for a in band]]
+        )
+    )
+    largest = [float(np.abs(multipliers(p, float(rpm_to_rad_s(n)))).max()) for n in rpm]
+    unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
+    steady = [n for n in unstable if any(a <= n <= b for a, b in speed.steady_rpm)]
+    status: Status = "fail" if steady else "warn" if unstable else "pass"
+    where = ", ".join(f"{n:.3g}" for n in unstable) or "none"
+    return Check(
+        id="system.floquet",
+        subsystem="system",
+        status=status,
+        message=f"Coupled two-bladed turbine, Floquet multipliers over {low:.3g}–"
+        f"{speed.overspeed:.3g} rpm (generator {model.condition}): largest |ρ| "
+        f"{max(largest):.6f}; growing at {where} rpm",
+        rule=Rule(
+            "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
+            "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
+        ),
+        numbers={
+            "rpm": [round(float(n), 6) for n in rpm],
+            "max_multiplier": [round(r, 9) for r in largest],
+            "unstable_rpm": unstable,
+            "basis": f"{p.k0.shape[0]} coordinates (fixed parts of the parked modes up to "
+            f"{cutoff:.3g} Hz, every blade coordinate)",
+        },
     )
