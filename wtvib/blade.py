@@ -148,11 +148,11 @@ def rotating_modes(
         order = modal.track(shapes, res.shapes)
         freqs[i] = res.frequency_hz[order]
         shapes = res.shapes[:, order]
-    names = _names(first.shapes)
+    names = plane_names(first.shapes)
     return names, freqs, nodes, first.shapes
 
 
-def _names(shapes: Array) -> list[str]:
+def plane_names(shapes: Array) -> list[str]:
     """flap/edge names by which plane carries more of each mode's deflection."""
     counters = {"flap": 0, "edge": 0}
     names = []

@@ -53,7 +53,7 @@ analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9
 
 import functools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -179,9 +179,6 @@ class BladeModes:
     mass: Array  # point masses, (P,)
     flap: Array  # out-of-plane deflection per mode, (P, K)
     edge: Array  # in-plane deflection per mode (direction of rotation), (P, K)
-    span: Array  # node positions (for shapes)
-    node_flap: Array  # (nodes, K)
-    node_edge: Array  # (nodes, K)
 
 
 #: The last blade evaluated (its structure object, the mode count, the result): one audit
@@ -216,16 +213,13 @@ def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
     edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
     m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m)) * b.w
     return BladeModes(
-        tuple(blade._names(phi)),
+        tuple(blade.plane_names(phi)),
         2 * np.pi * res.frequency_hz,
         phi.T @ geo @ phi,
         (s.hub_radius_m + b.x).ravel(),
         m.ravel(),
         flap,
         edge,
-        nodes,
-        full[0::4],
-        full[2::4],
     )
 
 
@@ -255,7 +249,6 @@ class Layout:
     blades: slice
     local: Index
     sign: Array
-    groups: dict[str, Index] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -322,8 +315,6 @@ class Model:
             p1[1::3, UY] += 1.0
             self._scatter(m, (p1 * mm[:, None]).T @ p1, j)
             blk = slice(lay.blades.start + j * kb, lay.blades.start + (j + 1) * kb)
-            if omega == 0.0:
-                continue
             p2 = p.c2.reshape(-1, n, n)
             d1 = rot.apply(b.rotated(rj @ g))
             d2 = rot.apply(b.rotated(rj @ g @ g))

@@ -219,3 +219,16 @@ def test_floquet_of_the_periodic_equations_matches_the_multiblade_eigenvalues(nr
     folded = np.sort(np.minimum(np.mod(f, rev), rev - np.mod(f, rev)))
     assert np.abs(floquet_f - folded).max() < 5e-4
     assert np.abs(rho).max() <= 1 + 1e-9
+
+
+def test_rotor_gyroscopic_coupling_of_tilt_and_yaw_is_polar_inertia_times_speed(nrel):
+    """Rigid-rotor theory: a rotor spinning at Ω couples nacelle tilt and yaw by J_p·Ω
+    (gyroscopic moment). Here the blades' share comes out of the point-mass kinematics and
+    the hub's from its spinning inertia; their sum must be the rotor's polar inertia."""
+    model = coupled.build(nrel, "locked")
+    lay = model.layout
+    _, d, _ = coupled.fixed_frame(model, 1.0)
+    tilt, yaw = lay.fa.stop - 1, lay.yaw
+    j_polar = 3 * float(np.sum(model.rotor.mass * model.rotor.radius**2)) + model.hub_polar
+    assert d[tilt, yaw] == pytest.approx(j_polar, rel=1e-9)
+    assert d[yaw, tilt] == pytest.approx(-j_polar, rel=1e-9)
