@@ -666,7 +666,7 @@ def parked(model: Model, psi: float = 0.0, count: int = MODES_KEPT) -> SystemMod
 def rotating(model: Model, omega: float, count: int = MODES_KEPT) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
     m, d1, k0, k2 = model.multiblade
-    lam, vec = np.linalg.eig(modal._state_matrix(k0 + omega**2 * k2, m, omega * d1))
+    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, omega * d1))
     n = m.shape[0]
     osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
     lam, vec = lam[osc], vec[:n, osc]

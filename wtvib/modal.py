@@ -125,10 +125,11 @@ class DampedModes:
 
 def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
     """Eigenvalues λ of M q̈ + D q̇ + K q = 0 (any K, D; M invertible), first-order form."""
-    return np.asarray(np.linalg.eigvals(_state_matrix(k, m, d)))
+    return np.asarray(np.linalg.eigvals(state_matrix(k, m, d)))
 
 
-def _state_matrix(k: Array, m: Array, d: Array) -> Array:
+def state_matrix(k: Array, m: Array, d: Array) -> Array:
+    """A = [[0, I], [−M⁻¹K, −M⁻¹D]] of M q̈ + D q̇ + K q = 0 in first-order form."""
     n = k.shape[0]
     try:
         minv = np.linalg.inv(m)
@@ -153,7 +154,7 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
     n = k.shape[0]
     if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m)) and np.all(np.isfinite(d))):
         raise ModalError("the drive-train matrices hold NaN or infinite values")
-    lam, vec = np.linalg.eig(_state_matrix(k, m, d))
+    lam, vec = np.linalg.eig(state_matrix(k, m, d))
     scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
     # λ ≈ 0 (a rigid-body root: a defective double root that rounding splits into a pair of
     # size ~√ε·|λ|max) is neither an oscillation nor an instability
