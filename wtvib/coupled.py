@@ -259,6 +259,7 @@ class Model:
     condition: str
     layout: Layout
     k_v: Array  # elastic (potential) stiffness, rotor-speed independent
+    d_v: Array  # the drive train's dampers and generator coupling (grid), speed independent
     m_fixed: Array  # mass of the non-rotating parts, with the hub
     rotor: BladeModes
     nacelle: Rigid
@@ -273,18 +274,19 @@ class Model:
         return len(self.rotor.names)
 
     @functools.cached_property
-    def multiblade(self) -> tuple[Array, Array, Array, Array]:
-        """M, D₁, K₀, K₂ of the multi-blade equations: D = Ω·D₁, K = K₀ + Ω²·K₂ exactly
-        (every rotating term is Ω or Ω² times a constant matrix)."""
-        m, _, k0 = fixed_frame(self, 0.0)
+    def multiblade(self) -> tuple[Array, Array, Array, Array, Array]:
+        """M, D₀, D₁, K₀, K₂ of the multi-blade equations: D = D₀ + Ω·D₁ and
+        K = K₀ + Ω²·K₂ exactly (every rotating term is Ω or Ω² times a constant matrix; D₀
+        holds the drive train's dampers)."""
+        m, d0, k0 = fixed_frame(self, 0.0)
         _, d1, k1 = fixed_frame(self, 1.0)
-        return m, d1, k0, k1 - k0
+        return m, d0, d1 - d0, k0, k1 - k0
 
     def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]:
         """M, D, K of the periodic equations at rotor speed Ω [rad/s] and azimuth ψ."""
         lay = self.layout
         m = self.m_fixed.copy()
-        d = np.zeros_like(m)
+        d = self.d_v.copy()
         k = self.k_v.copy()
         kb = self.k_blades
         n = _RIGID + kb
@@ -473,7 +475,7 @@ def build(spec: Spec, condition: str) -> Model:
         notes.append("no yaw stiffness and no tower torsion: nacelle yaw held")
 
     # drive train: the chain without its blades (they are modelled here), hub first
-    chain_m = chain_k = np.zeros((0, 0))
+    chain_m = chain_k = chain_d = np.zeros((0, 0))
     coupling = own = np.zeros(0)
     hub_polar = cm.hub_inertia_kgm2 or 0.0
     dt = spec.drivetrain
@@ -489,7 +491,7 @@ def build(spec: Spec, condition: str) -> Model:
                 }
             )
             reduced = drivetrain.reduce(sub)
-            chain_m, chain_k, _ = drivetrain.system(reduced, sub, condition)
+            chain_m, chain_k, chain_d = drivetrain.system(reduced, sub, condition)
             size = chain_m.shape[0]
             coupling, own = reduced.coupling[:size], reduced.own[:size]
             if cm.hub_inertia_kgm2 is None:
@@ -523,6 +525,7 @@ def build(spec: Spec, condition: str) -> Model:
         local[j, _RIGID:] = np.arange(bl.start + j * kb, bl.start + (j + 1) * kb)
 
     k_v = np.zeros((size, size))
+    d_v = np.zeros((size, size))
     m_fixed = np.zeros((size, size))
     for part, sl in zip(parts_k, (fa, ss, tor), strict=False):
         k_v[sl, sl] = part
@@ -538,6 +541,7 @@ def build(spec: Spec, condition: str) -> Model:
             k_v[yaw_dof, top] -= k_yaw
     if n_chain:
         k_v[ch, ch] = chain_k
+        d_v[ch, ch] = chain_d
         m_fixed[ch, ch] = chain_m
     for j in range(nb):
         blk = slice(bl.start + j * kb, bl.start + (j + 1) * kb)
@@ -561,6 +565,7 @@ def build(spec: Spec, condition: str) -> Model:
         condition,
         Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign),
         k_v,
+        d_v,
         m_fixed,
         rotor,
         nacelle,
@@ -665,8 +670,8 @@ def parked(model: Model, psi: float = 0.0, count: int = MODES_KEPT) -> SystemMod
 
 def rotating(model: Model, omega: float, count: int = MODES_KEPT) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
-    m, d1, k0, k2 = model.multiblade
-    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, omega * d1))
+    m, d0, d1, k0, k2 = model.multiblade
+    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, d0 + omega * d1))
     n = m.shape[0]
     osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
     lam, vec = lam[osc], vec[:n, osc]
@@ -969,7 +974,7 @@ def _statements(model: Model) -> tuple[str, ...]:
 class Periodic:
     """The periodic equations in a basis of the lowest parked modes, as azimuth harmonics.
 
-    X(ψ) = X₀ + Σ_h (X_ch cos hψ + X_sh sin hψ), h = 1, 2, for X = M, D₁, K₂ (D = Ω·D₁,
+    X(ψ) = X₀ + Σ_h (X_ch cos hψ + X_sh sin hψ), h = 1, 2, for X = M, D₁, K₂ (D = D₀ + Ω·D₁,
     K = K₀ + Ω²·K₂): every term is a product of two first-harmonic factors, so two
     harmonics are exact and eight samples recover them without aliasing.
     """
@@ -978,6 +983,7 @@ class Periodic:
     d1: Array
     k2: Array
     k0: Array  # (r, r)
+    d0: Array  # (r, r): the drive train's dampers
     highest_hz: float  # the basis's highest parked frequency (sets the integration step)
 
     def at(self, x: Array, psi: float) -> Array:
@@ -989,9 +995,8 @@ class Periodic:
         r = self.k0.shape[0]
         minv = np.linalg.inv(self.at(self.m, psi))
         k = self.k0 + omega**2 * self.at(self.k2, psi)
-        return np.block(
-            [[np.zeros((r, r)), np.eye(r)], [-minv @ k, -omega * minv @ self.at(self.d1, psi)]]
-        )
+        d = self.d0 + omega * self.at(self.d1, psi)
+        return np.block([[np.zeros((r, r)), np.eye(r)], [-minv @ k, -minv @ d]])
 
 
 def reduction(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Array:
@@ -1021,11 +1026,12 @@ def periodic(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Peri
     samples = np.arange(8) * (2 * np.pi / 8)
     m, d1, k2 = [], [], []
     k0 = phi.T @ model.k_v @ phi
+    d0 = phi.T @ model.d_v @ phi
     for psi in samples:
         m0, _, _ = model.matrices(0.0, float(psi))
         _, d, k = model.matrices(1.0, float(psi))
         m.append(phi.T @ m0 @ phi)
-        d1.append(phi.T @ d @ phi)
+        d1.append(phi.T @ d @ phi - d0)
         k2.append(phi.T @ k @ phi - k0)
 
     def harmonics(x: list[Array]) -> Array:
@@ -1037,7 +1043,7 @@ def periodic(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Peri
         return np.stack(out)
 
     top = float(modal.solve(k0, m[0]).frequency_hz[-1])
-    return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, top)
+    return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, d0, top)
 
 
 def multipliers(p: Periodic, omega: float, per_period: float = 4.0) -> NDArray[np.complex128]:

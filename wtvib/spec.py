@@ -774,11 +774,13 @@ class CoupledModel(_Strict):
     blade_modes: int = Field(
         3, ge=1, le=6, description="Flexible modes per blade, lowest first (flap1, edge1, …)."
     )
-    parked_condition: Literal["locked", "free"] = Field(
+    parked_condition: Literal["locked", "free", "grid"] = Field(
         "locked", description="Generator when parked (Jonkman et al. 2009 Table 9-1: locked)."
     )
-    rotating_condition: Literal["locked", "free"] = Field(
-        "free", description="Generator in the rotating sweep (free: torque-controlled)."
+    rotating_condition: Literal["locked", "free", "grid"] = Field(
+        "free",
+        description="Generator in the rotating sweep: free (converter, torque-controlled), "
+        "grid (the drivetrain.generator_model coupling), locked.",
     )
 
 

@@ -149,10 +149,11 @@ def test_multiblade_equations_are_time_invariant_and_gyroscopic(nrel, blades):
     for x, y in zip(a, b, strict=True):
         assert np.abs(x - y).max() <= 1e-12 * np.abs(x).max()
     m, d, k = a
-    parked_m = coupled.fixed_frame(model, 0.0, 0.3)[0]  # the parked shortcut: same inertia
+    parked_m, d0, _ = coupled.fixed_frame(model, 0.0, 0.3)  # parked shortcut: same inertia
     assert np.abs(parked_m - m).max() <= 1e-12 * np.abs(m).max()
     assert np.abs(m - m.T).max() <= 1e-12 * np.abs(m).max()
-    assert np.abs(d + d.T).max() <= 1e-12 * np.abs(d).max()  # gyroscopic: skew
+    g = d - d0  # without the drive-train damper: gyroscopic, skew
+    assert np.abs(g + g.T).max() <= 1e-12 * np.abs(g).max()
     assert np.abs(k - k.T).max() <= 1e-12 * np.abs(k).max()
     assert np.all(np.linalg.eigvalsh(m) > 0)
 
@@ -228,7 +229,39 @@ def test_rotor_gyroscopic_coupling_of_tilt_and_yaw_is_polar_inertia_times_speed(
     model = coupled.build(nrel, "locked")
     lay = model.layout
     _, d, _ = coupled.fixed_frame(model, 1.0)
+    d = d - model.d_v  # the drive-train damper is not gyroscopic
     tilt, yaw = lay.fa.stop - 1, lay.yaw
     j_polar = 3 * float(np.sum(model.rotor.mass * model.rotor.radius**2)) + model.hub_polar
     assert d[tilt, yaw] == pytest.approx(j_polar, rel=1e-9)
     assert d[yaw, tilt] == pytest.approx(-j_polar, rel=1e-9)
+
+
+@pytest.mark.parametrize("condition", ["free", "locked", "grid"])
+def test_rigid_support_gives_back_the_drive_train_in_each_generator_condition(nrel, condition):
+    """Tower, yaw drive and blades made 10⁶ times stiffer, the shaft damper removed: the
+    coupled drive-train modes equal the isolated chain model's (wtvib.drivetrain) in each
+    generator condition — grid with a made-up synchronous generator (any coupling spring
+    will do for an identity)."""
+    from wtvib import drivetrain
+
+    d = nrel.model_dump()
+    for part, keys in (
+        (d["blade"]["structure"], ("ei_flap_nm2", "ei_edge_nm2")),
+        (d["tower"]["distributed"], ("ei_fa_nm2", "ei_ss_nm2")),
+    ):
+        for key in keys:
+            part[key] = [v * 1e6 for v in part[key]]
+    d["tower"]["gravity"] = False
+    d["yaw"]["drive_stiffness_nm_rad"] *= 1e6
+    d["drivetrain"]["shafts"][-1]["damping_nms_rad"] = 0.0
+    d["drivetrain"].update(
+        generator="synchronous",
+        grid_coupling="direct",
+        generator_model={"rated_power_kw": 5000, "pole_pairs": 2, "pull_out_power_kw": 10000},
+    )
+    d["coupled"]["rotating_condition"] = condition
+    s = spec.Spec.model_validate(d)
+    iso = sorted(m.frequency_hz for m in drivetrain.modes(s) if f".{condition}." in m.id)
+    got = coupled.rotating(coupled.build(s, condition), 0.0, 40).frequency_hz
+    for f in iso[:2]:
+        assert np.min(np.abs(got / f - 1)) < 2e-3, (condition, f, got[:6])
