@@ -175,11 +175,10 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     title = SUBSYSTEM_TITLE[subsystems[0]] if len(subsystems) == 1 else "tower and blades"
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
         title = "Darrieus rotor"
-    ax.set_title(
-        f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}",
-        color=STATUS_COLOUR[report.verdict],
-        fontweight="bold",
-    )
+    heading = f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}"
+    if len(heading) > 90:  # a long turbine name on a line of its own, not cut off
+        heading = f"{spec.turbine.name}\nCampbell diagram, {title} — verdict {verdict}{cls}"
+    ax.set_title(heading, color=STATUS_COLOUR[report.verdict], fontweight="bold")
     if hidden:
         ax.text(
             0.99,
