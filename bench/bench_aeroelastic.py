@@ -7,33 +7,18 @@ flutter point), the k-method cross-check, and the stability-limit chart drawn wi
 Medians of 15 runs.
 """
 
-import os
-import platform
-import statistics
-import time
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
+from timing import machine, median_ms
 
 from wtvib import aeroelastic, audit, spec
 
 TURBINE = Path(__file__).resolve().parents[1] / "turbines" / "stall-rotor-1mw.yaml"
 
 
-def median_ms(fn: Callable[[], object], runs: int = 15) -> float:
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return 1000 * statistics.median(times)
-
-
 def main() -> None:
-    print(
-        f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
-    )
+    print(machine())
     full = spec.load(TURBINE)
     bare = full.model_copy(update={"blade": full.blade.model_copy(update={"aeroelastic": None})})
     audit.run(full)  # warm imports (scipy.special for Theodorsen's function)

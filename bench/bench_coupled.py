@@ -7,12 +7,9 @@ locked, the Table 9-1 condition), one rotating solve, the 30-point sweep, and ``
 with and without the ``coupled`` block, side by side. Medians of 15 runs (5 for the sweep).
 """
 
-import os
-import platform
-import statistics
-import time
-from collections.abc import Callable
 from pathlib import Path
+
+from timing import machine, median_ms
 
 from wtvib import audit, coupled, importers
 
@@ -22,19 +19,8 @@ DECK = (
 )
 
 
-def median_ms(fn: Callable[[], object], runs: int = 15) -> float:
-    times = []
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return 1000 * statistics.median(times)
-
-
 def main() -> None:
-    print(
-        f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"
-    )
+    print(machine())
     s = importers.load(DECK, rpm=(6.9, 12.1))
     bare = s.model_copy(update={"coupled": None})
     locked = coupled.build(s, "locked")
