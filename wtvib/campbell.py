@@ -288,6 +288,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
     """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
     keyed by file stem suffix."""
     from .modeshapes import (
+        coupled_energy_plot,
         drivetrain_shapes_plot,
         floquet_plot,
         flutter_plot,
@@ -309,6 +310,7 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         ("blade-flutter", flutter_plot(report)),
         ("blade-stability", stability_chart_plot(report)),
         ("blade-stall", stall_damping_plot(report)),
+        ("system-energy", coupled_energy_plot(report)),
     ):
         if fig is not None:
             out[name] = fig

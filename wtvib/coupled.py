@@ -701,6 +701,22 @@ def _groups(model: Model) -> dict[str, Index]:
     return out
 
 
+def shares(
+    model: Model, m: Array, x: NDArray[np.complex128]
+) -> tuple[dict[str, float], dict[str, float]]:
+    """A mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed, normalised),
+    and the same with each cyclic cos/sin pair merged into one ``cyclic`` group."""
+    groups = _groups(model)
+    energy = np.abs(np.real(np.conj(x) * (m @ x)))
+    total = float(energy.sum()) or 1.0
+    share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
+    merged: dict[str, float] = {}
+    for g, v in share.items():
+        key = g.replace("cos", "cyclic").replace("sin", "cyclic")
+        merged[key] = merged.get(key, 0.0) + v
+    return share, merged
+
+
 def _name(
     model: Model, m: Array, shapes: NDArray[np.complex128], f: Array
 ) -> tuple[tuple[str, ...], tuple[str, ...]]:
@@ -711,13 +727,7 @@ def _name(
     counters: dict[str, int] = {}
     for j in range(shapes.shape[1]):
         x = shapes[:, j]
-        energy = np.abs(np.real(np.conj(x) * (m @ x)))
-        total = float(energy.sum()) or 1.0
-        share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
-        merged: dict[str, float] = {}
-        for g, v in share.items():
-            key = g.replace("cos", "cyclic").replace("sin", "cyclic")
-            merged[key] = merged.get(key, 0.0) + v
+        share, merged = shares(model, m, x)
         top = max(merged, key=lambda g: merged[g])
         name, text = _mode_name(top, share, x, groups, counters)
         if name in names:
@@ -916,11 +926,13 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     cond = spec.coupled.parked_condition
     model = build(spec, cond)
     res = parked(model)
+    mass = fixed_frame(model, 0.0)[0]
     by_id = {m.id: m.frequency_hz for m in isolated}
     rows: list[dict[str, Any]] = []
-    for f, name in zip(res.frequency_hz, res.names, strict=True):
+    for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
         iso = isolated_id(name, cond)
         f_iso = by_id.get(iso)
+        _, merged = shares(model, mass, res.shapes[:, j])
         rows.append(
             {
                 "id": f"system.{name}",
@@ -928,6 +940,7 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
                 "isolated_id": iso if f_iso is not None else None,
                 "isolated_hz": round(f_iso, 6) if f_iso is not None else None,
                 "change": round(float(f) / f_iso - 1.0, 6) if f_iso else None,
+                "energy": {g: round(v, 4) for g, v in merged.items() if v >= 0.005},
             }
         )
     paired = [r for r in rows if r["change"] is not None]

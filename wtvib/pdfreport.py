@@ -32,7 +32,7 @@ DIAGRAM_FOR = {
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
-    "system": ("campbell-system",),
+    "system": ("campbell-system", "system-energy"),
 }
 
 

@@ -180,6 +180,9 @@ def test_coupling_check_compares_isolated_and_coupled(nrel):
     dt = rows["system.drivetrain1"]
     assert dt["isolated_id"] == "drivetrain.locked.1"
     assert abs(dt["change"]) < 0.02  # drive train barely coupled (Hau: one mode dominates)
+    for row in rows.values():  # kinetic-energy shares: at most the whole, ≥ 0.5 % listed
+        assert 0.95 <= sum(row["energy"].values()) <= 1.0 + 1e-9
+    assert rows["system.tower.fa1"]["energy"]["tower.fa"] > 0.9
 
 
 def test_iea15_windio2_coupled_tower_mode_stays_in_the_published_band():
