@@ -111,3 +111,12 @@ def test_a_head_roll_inertia_below_the_rotors_is_one_line_with_the_field(tmp_pat
     result = CliRunner().invoke(app, ["check", str(p), "--no-plot"])
     assert result.exit_code == 2
     assert "coupled.yaml:19: tower_head.inertia_roll_kgm2:" in result.output
+
+
+def test_a_chain_without_its_blades_mass_is_one_line(tmp_path):
+    # a lumped 'rotor' first mass would count the blades twice: asked to be named
+    p = write(tmp_path)
+    p.write_text(p.read_text().replace("{name: blades,", "{name: rotor,"))
+    result = CliRunner().invoke(app, ["check", str(p), "--no-plot"])
+    assert result.exit_code == 2
+    assert "drivetrain.chain[0].name:" in result.output and "'blades'" in result.output

@@ -1039,9 +1039,17 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
     n = spec.rotor.blades
     chain = spec.drivetrain.chain
     hub = cm.hub_inertia_kgm2
+    if hub is None and chain and chain[0].name != "blades":
+        raise SpecError(
+            f"the drive-train chain starts with {chain[0].name!r}: the coupled model models "
+            "the blades itself, so it needs the chain's blade inertia as a first mass named "
+            "'blades' (or coupled.hub_inertia_kgm2 for the hub alone)",
+            path="drivetrain.chain[0].name",
+            line=doc.line_of(("drivetrain", "chain", 0, "name")),
+            source=doc.source,
+        )
     if hub is None and chain:
-        rest = chain[1:] if chain[0].name == "blades" else chain
-        hub = rest[0].inertia_kgm2 if rest else 0.0
+        hub = chain[1].inertia_kgm2 if len(chain) > 1 else 0.0
     from .coupled import nacelle  # the one place that splits the head (imports this module)
 
     apex = (cm.apex_downwind_m, 0.0, cm.apex_above_top_m)
