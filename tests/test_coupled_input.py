@@ -120,3 +120,13 @@ def test_a_chain_without_its_blades_mass_is_one_line(tmp_path):
     result = CliRunner().invoke(app, ["check", str(p), "--no-plot"])
     assert result.exit_code == 2
     assert "drivetrain.chain[0].name:" in result.output and "'blades'" in result.output
+
+
+def test_a_slow_two_bladed_rotor_with_stiff_blades_is_said_not_analysed(tmp_path):
+    # one revolution would need more integration steps than allowed: said, not attempted
+    p = write(tmp_path, blades=2)
+    text = p.read_text().replace("{min_rpm: 10, max_rpm: 20}", "{min_rpm: 0.2, max_rpm: 0.3}")
+    p.write_text(text.replace("[3.0e9, 1.0e8]", "[3.0e13, 1.0e12]"))
+    check = next(c for c in audit.run(spec.load(p)).checks if c.id == "system.floquet")
+    assert check.status == "info" and "not analysed" in check.message
+    assert check.numbers["not_analysed_rpm"]

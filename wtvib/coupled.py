@@ -999,24 +999,35 @@ class Periodic:
     d0: Array  # (r, r): the drive train's dampers
     highest_hz: float  # the basis's highest parked frequency (sets the integration step)
 
-    def at(self, x: Array, psi: float) -> Array:
-        c1, s1, c2, s2 = math.cos(psi), math.sin(psi), math.cos(2 * psi), math.sin(2 * psi)
-        return x[0] + c1 * x[1] + s1 * x[2] + c2 * x[3] + s2 * x[4]
+    def at(self, x: Array, psi: Array) -> Array:
+        """X at the azimuths ψ (array), stacked along the first axis."""
+        psi = np.asarray(psi, dtype=float)[:, None, None]
+        return (
+            x[0]
+            + np.cos(psi) * x[1]
+            + np.sin(psi) * x[2]
+            + np.cos(2 * psi) * x[3]
+            + np.sin(2 * psi) * x[4]
+        )
 
-    def state(self, omega: float, psi: float) -> Array:
-        """A(ψ) of ẋ = A x at rotor speed Ω."""
+    def states(self, omega: float, psi: Array) -> Array:
+        """A(ψ) of ẋ = A x at rotor speed Ω for each azimuth ψ, stacked."""
         r = self.k0.shape[0]
         minv = np.linalg.inv(self.at(self.m, psi))
         k = self.k0 + omega**2 * self.at(self.k2, psi)
         d = self.d0 + omega * self.at(self.d1, psi)
-        return np.block([[np.zeros((r, r)), np.eye(r)], [-minv @ k, -minv @ d]])
+        a = np.zeros((len(psi), 2 * r, 2 * r))
+        a[:, :r, r:] = np.eye(r)
+        a[:, r:, :r] = -minv @ k
+        a[:, r:, r:] = -minv @ d
+        return a
 
 
 def reduction(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Array:
     """A basis for the periodic analysis: the fixed parts (tower, nacelle, drive train) of
-    the lowest ``modes`` parked modes (those up to ``cutoff_hz``, at least four),
-    orthonormalised, and every blade coordinate in full — complete blade sets keep the basis
-    the same at every azimuth."""
+    the lowest ``modes`` parked modes up to ``cutoff_hz`` (at least four), orthonormalised,
+    and the blade coordinates of the blade modes up to ``cutoff_hz`` (at least the first)
+    on every blade — complete blade sets keep the basis the same at every azimuth."""
     lay = model.layout
     res = parked(model, count=modes)
     keep = max(4, int(np.count_nonzero(res.frequency_hz <= cutoff_hz)))
@@ -1025,10 +1036,13 @@ def reduction(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Arr
     fixed[lay.blades] = False
     q, r = np.linalg.qr(shapes[fixed])
     q = q[:, np.abs(np.diag(r)) > 1e-9 * np.abs(np.diag(r)).max()]
-    n_blade = lay.blades.stop - lay.blades.start
-    basis = np.zeros((lay.size, q.shape[1] + n_blade))
+    kb = model.k_blades
+    slow = np.flatnonzero(model.rotor.omega / (2 * np.pi) <= cutoff_hz)
+    slow = slow if len(slow) else np.array([0])
+    rows = np.array([lay.blades.start + j * kb + k for j in range(model.blades) for k in slow])
+    basis = np.zeros((lay.size, q.shape[1] + len(rows)))
     basis[fixed, : q.shape[1]] = q
-    basis[lay.blades, q.shape[1] :] = np.eye(n_blade)
+    basis[rows, q.shape[1] + np.arange(len(rows))] = 1.0
     return basis
 
 
@@ -1059,7 +1073,13 @@ def periodic(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Peri
     return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, d0, top)
 
 
-def multipliers(p: Periodic, omega: float, per_period: float = 4.0) -> NDArray[np.complex128]:
+#: The most RK4 steps one revolution may take (beyond: the speed is not analysed; ≈ 0.3 s).
+MAX_STEPS = 2_000
+
+
+def multipliers(
+    p: Periodic, omega: float, per_period: float = 4.0, max_steps: int = MAX_STEPS
+) -> NDArray[np.complex128] | None:
     """Floquet multipliers over one rotor revolution at Ω [rad/s].
 
     RK4 with ``per_period`` steps per period of the basis's fastest mode: 4 keeps every mode
@@ -1071,7 +1091,12 @@ def multipliers(p: Periodic, omega: float, per_period: float = 4.0) -> NDArray[n
 
     period = 2 * np.pi / omega
     steps = max(48, math.ceil(per_period * p.highest_hz * period))
-    phi = monodromy(lambda t: p.state(omega, omega * t), period, steps)
+    if steps > max_steps:  # a slow rotor with a stiff basis: too costly to integrate
+        return None
+    h = period / steps
+    # RK4 samples A at every half step: form them all at once, then integrate
+    a = p.states(omega, omega * h / 2 * np.arange(2 * steps + 1, dtype=float))
+    phi = monodromy(lambda t: a[round(2 * t / h)], period, steps)
     return np.linalg.eigvals(phi).astype(complex)
 
 
@@ -1096,7 +1121,24 @@ def stability_check(spec: Spec) -> Check | None:
             [np.linspace(low, speed.overspeed, 12), [a for band in speed.steady_rpm for a in band]]
         )
     )
-    largest = [float(np.abs(multipliers(p, float(rpm_to_rad_s(n)))).max()) for n in rpm]
+    found = [multipliers(p, float(rpm_to_rad_s(n))) for n in rpm]
+    skipped = [float(n) for n, f in zip(rpm, found, strict=True) if f is None]
+    rpm = np.array([n for n, f in zip(rpm, found, strict=True) if f is not None])
+    largest = [float(np.abs(f).max()) for f in found if f is not None]
+    if not largest:
+        return Check(
+            id="system.floquet",
+            subsystem="system",
+            status="info",
+            message="Coupled two-bladed turbine not analysed: at these speeds one revolution "
+            f"would take more than {MAX_STEPS:,} integration steps of its fastest mode "
+            f"({p.highest_hz:.3g} Hz)",
+            rule=Rule(
+                "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
+                "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
+            ),
+            numbers={"not_analysed_rpm": skipped},
+        )
     unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
     steady = [n for n in unstable if any(a <= n <= b for a, b in speed.steady_rpm)]
     status: Status = "fail" if steady else "warn" if unstable else "pass"
@@ -1116,6 +1158,7 @@ def stability_check(spec: Spec) -> Check | None:
             "rpm": [round(float(n), 6) for n in rpm],
             "max_multiplier": [round(r, 9) for r in largest],
             "unstable_rpm": unstable,
+            "not_analysed_rpm": skipped,
             "basis": f"{p.k0.shape[0]} coordinates (fixed parts of the parked modes up to "
             f"{cutoff:.3g} Hz, every blade coordinate)",
         },
