@@ -11,7 +11,7 @@ from pathlib import Path
 
 from timing import machine, median_ms
 
-from wtvib import audit, coupled, importers
+from wtvib import audit, coupled, importers, multiblade
 
 DECK = (
     Path(__file__).resolve().parents[2]
@@ -35,21 +35,21 @@ def main() -> None:
     rows = [
         ("degrees of freedom", float(locked.layout.size), ""),
         ("build the model (blade modes included)", median_ms(lambda: cold("locked")), "ms"),
-        ("one parked solve, model built", median_ms(lambda: coupled.parked(locked)), "ms"),
-        ("build + parked solve", median_ms(lambda: coupled.parked(cold("locked"))), "ms"),
+        ("one parked solve, model built", median_ms(lambda: multiblade.parked(locked)), "ms"),
+        ("build + parked solve", median_ms(lambda: multiblade.parked(cold("locked"))), "ms"),
         (
             "first rotating solve (multi-blade matrices)",
-            median_ms(lambda: coupled.rotating(cold("free"), 1.267)),
+            median_ms(lambda: multiblade.rotating(cold("free"), 1.267)),
             "ms",
         ),
         (
             "further rotating solve (12.1 rpm)",
-            median_ms(lambda: coupled.rotating(free, 1.267)),
+            median_ms(lambda: multiblade.rotating(free, 1.267)),
             "ms",
         ),
         (
             f"{len(speeds)}-point Campbell sweep, from the spec",
-            median_ms(lambda: coupled.sweep(cold("free"), speeds), 5),
+            median_ms(lambda: multiblade.sweep(cold("free"), speeds), 5),
             "ms",
         ),
     ]

@@ -9,7 +9,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import audit, coupled, spec
+from wtvib import audit, coupled, floquet, multiblade, spec
 from wtvib.cli import app
 
 SPEC = """\
@@ -94,15 +94,15 @@ def test_coupled_without_the_structures_names_what_is_missing(tmp_path):
 def test_two_bladed_rotor_gets_parked_modes_and_a_floquet_check(tmp_path):
     s = spec.load(write(tmp_path, blades=2))
     report = audit.run(s)
-    floquet = next(c for c in report.checks if c.id == "system.floquet")
-    assert floquet.status == "pass" and floquet.numbers["unstable_rpm"] == []
-    assert max(floquet.numbers["max_multiplier"]) <= 1 + coupled.GROWTH
+    check = next(c for c in report.checks if c.id == "system.floquet")
+    assert check.status == "pass" and check.numbers["unstable_rpm"] == []
+    assert max(check.numbers["max_multiplier"]) <= 1 + floquet.GROWTH
     modes = [m for m in report.modes if m.subsystem == "system"]
     assert modes and all(m.curve is None and "parked" in m.description for m in modes)
     names = {m.id for m in modes}
     assert "system.blade.flap1.alternating" in names  # two blades in opposition (teeter-like)
     with pytest.raises(ValueError, match="three or more blades"):
-        coupled.sweep(coupled.build(s, "free"), coupled.speeds(s))
+        multiblade.sweep(coupled.build(s, "free"), coupled.speeds(s))
 
 
 def test_a_head_roll_inertia_below_the_rotors_is_one_line_with_the_field(tmp_path):

@@ -33,11 +33,13 @@ T = ½Σ m |ṗ|² then gives, with ψ = Ωt,
     M = Σ m P₁ᵀP₁,   C = Ω·Σ m [P₁ᵀP₁′ + p₀′·P₂]   (′ = d/dψ),
 
 exact to first order. The hub's spin adds J_p·Ω gyroscopic coupling of nacelle tilt and yaw.
-With three or more blades the multi-blade (Coleman) transformation ηⱼ = a₀ + Σ (a_kc cos kψⱼ
-+ a_ks sin kψⱼ) turns the periodic equations into time-invariant ones in the fixed frame, so
-the rotating modes are eigenvalues — cyclic blade modes split into backward and forward
-whirl, f ∓ 1P, as in a fixed-frame Campbell diagram. Two-bladed rotors stay periodic: their
-parked modes are computed (at two azimuths), the rotating stability is the Floquet check's.
+With three or more blades the multi-blade (Coleman) transformation (:mod:`wtvib.multiblade`)
+turns the periodic equations into time-invariant ones in the fixed frame, so the rotating
+modes are eigenvalues — cyclic blade modes split into backward and forward whirl, f ∓ 1P, as
+in a fixed-frame Campbell diagram. Two-bladed rotors stay periodic: their parked modes are
+computed, and their stability over the speed range by Floquet theory (:mod:`wtvib.floquet`,
+check ``system.floquet``). This module builds the model and gives the audit its view
+(``system.*`` modes, checks ``system.coupling`` and ``system.floquet``).
 
 Assumed and neglected (stated in the report): shaft tilt, precone and prebend; blade
 torsion and section rotary inertia; gravity on the blades; gyroscopic moments of drive-train
@@ -61,7 +63,8 @@ from numpy.typing import NDArray
 
 from . import beam, blade, drivetrain, modal, tower, yaw
 from .errors import SpecError
-from .given import ordinal
+from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
+from .multiblade import fixed_frame, parked, plain, shares, sweep
 from .results import Check, Mode, Rule, Sampled
 from .rules import Status
 from .spec import BladeStructure, Spec, TowerHead
@@ -77,10 +80,6 @@ _RIGID = 6
 
 #: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed).
 SPEED_SAMPLES = 30
-#: Coupled modes reported: the lowest ones, up to this many.
-MODES_KEPT = 16
-
-_KINDS = {"flap": "flapwise", "edge": "edgewise"}
 
 
 def _skew(v: Array) -> Array:
@@ -278,6 +277,8 @@ class Model:
         """M, D₀, D₁, K₀, K₂ of the multi-blade equations: D = D₀ + Ω·D₁ and
         K = K₀ + Ω²·K₂ exactly (every rotating term is Ω or Ω² times a constant matrix; D₀
         holds the drive train's dampers)."""
+        from .multiblade import fixed_frame  # the transformation lives there
+
         m, d0, k0 = fixed_frame(self, 0.0)
         _, d1, k1 = fixed_frame(self, 1.0)
         return m, d0, d1 - d0, k0, k1 - k0
@@ -587,268 +588,6 @@ def _add_pair(m: Array, i: int, j: int, value: float) -> None:
     m[j, i] += value
 
 
-# ---------------------------------------------------------------------------------------
-# Multi-blade coordinates
-
-
-def coleman(blades: int, psi: float) -> tuple[Array, Array, Array, tuple[str, ...]]:
-    """B(ψ), dB/dψ, d²B/dψ² with ηⱼ = Σ_h B[j, h]·a_h, and the names of the a_h.
-
-    Columns: collective, (cos h·ψⱼ, sin h·ψⱼ) for h = 1 … (N−1)//2, and for even N the
-    alternating (−1)ʲ coordinate (Bir 2008).
-    """
-    psi_j = psi + 2 * np.pi * np.arange(blades) / blades
-    cols: list[Array] = [np.ones(blades)]
-    d1: list[Array] = [np.zeros(blades)]
-    d2: list[Array] = [np.zeros(blades)]
-    names = ["collective"]
-    for h in range(1, (blades - 1) // 2 + 1):
-        c, s = np.cos(h * psi_j), np.sin(h * psi_j)
-        cols += [c, s]
-        d1 += [-h * s, h * c]
-        d2 += [-(h**2) * c, -(h**2) * s]
-        names += [f"cos{h}", f"sin{h}"]
-    if blades % 2 == 0:
-        cols.append(np.where(np.arange(blades) % 2 == 0, 1.0, -1.0))
-        d1.append(np.zeros(blades))
-        d2.append(np.zeros(blades))
-        names.append("alternating")
-    return np.stack(cols, 1), np.stack(d1, 1), np.stack(d2, 1), tuple(names)
-
-
-def fixed_frame(model: Model, omega: float, psi: float = 0.0) -> tuple[Array, Array, Array]:
-    """M, D, K in multi-blade coordinates (time-invariant for three or more blades).
-
-    q = T(ψ)·z with q̇ = T·ż + Ω·T′·z and q̈ = T·z̈ + 2Ω·T′·ż + Ω²·T″·z, projected with Tᵀ.
-    """
-    m, d, k = model.matrices(omega, psi)
-    t, t1, t2 = _transform(model, psi)
-    tt = t.T
-    return (
-        tt @ m @ t,
-        tt @ (2 * omega * m @ t1 + d @ t),
-        tt @ (omega**2 * m @ t2 + omega * d @ t1 + k @ t),
-    )
-
-
-def _transform(model: Model, psi: float) -> tuple[Array, Array, Array]:
-    lay = model.layout
-    b, b1, b2, _ = coleman(model.blades, psi)
-    eye = np.eye(model.k_blades)
-    out = []
-    for mat in (b, b1, b2):
-        t = np.eye(lay.size) if mat is b else np.zeros((lay.size, lay.size))
-        t[lay.blades, lay.blades] = np.kron(mat, eye)
-        out.append(t)
-    return out[0], out[1], out[2]
-
-
-# ---------------------------------------------------------------------------------------
-# Modes, named by participation
-
-
-@dataclass(frozen=True)
-class SystemModes:
-    """Modes of the coupled model at one rotor speed: frequencies, shapes in multi-blade
-    coordinates (complex when rotating), and names."""
-
-    frequency_hz: Array
-    shapes: NDArray[np.complex128]
-    names: tuple[str, ...]
-    descriptions: tuple[str, ...]
-
-
-def parked(model: Model, psi: float = 0.0, count: int = MODES_KEPT) -> SystemModes:
-    """Modes of the parked turbine (Ω = 0) at rotor azimuth ψ (blade 1 up at ψ = 0)."""
-    m, _, k = fixed_frame(model, 0.0, psi)
-    res = modal.solve(k, m, min(count + 2, m.shape[0]))
-    keep = res.frequency_hz > 1e-3  # a free generator leaves the rotor free to turn
-    f, shapes = res.frequency_hz[keep][:count], res.shapes[:, keep][:, :count]
-    names, texts = _name(model, m, shapes.astype(complex), f)
-    return SystemModes(f, shapes.astype(complex), names, texts)
-
-
-def rotating(model: Model, omega: float, count: int = MODES_KEPT) -> SystemModes:
-    """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
-    m, d0, d1, k0, k2 = model.multiblade
-    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, d0 + omega * d1))
-    n = m.shape[0]
-    osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
-    lam, vec = lam[osc], vec[:n, osc]
-    order = np.argsort(lam.imag)[:count]
-    f = lam.imag[order] / (2 * np.pi)
-    shapes = vec[:, order]
-    names, texts = _name(model, m, shapes, f)
-    return SystemModes(f, shapes, names, texts)
-
-
-def _groups(model: Model) -> dict[str, Index]:
-    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor)."""
-    lay = model.layout
-    out: dict[str, Index] = {
-        "tower.fa": np.arange(lay.fa.start, lay.fa.stop),
-        "tower.ss": np.arange(lay.ss.start, lay.ss.stop),
-        "tower.tor": np.arange(lay.torsion.start, lay.torsion.stop),
-        "drivetrain": np.arange(lay.chain.start, lay.chain.stop),
-    }
-    if lay.yaw is not None:
-        out["yaw"] = np.array([lay.yaw])
-    _, _, _, harmonics = coleman(model.blades, 0.0)
-    kb = model.k_blades
-    for k, name in enumerate(model.rotor.names):
-        for h, label in enumerate(harmonics):
-            out[f"blade.{name}.{label}"] = np.array([lay.blades.start + h * kb + k])
-    return out
-
-
-def shares(
-    model: Model, m: Array, x: NDArray[np.complex128]
-) -> tuple[dict[str, float], dict[str, float]]:
-    """A mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed, normalised),
-    and the same with each cyclic cos/sin pair merged into one ``cyclic`` group."""
-    groups = _groups(model)
-    energy = np.abs(np.real(np.conj(x) * (m @ x)))
-    total = float(energy.sum()) or 1.0
-    share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
-    merged: dict[str, float] = {}
-    for g, v in share.items():
-        key = g.replace("cos", "cyclic").replace("sin", "cyclic")
-        merged[key] = merged.get(key, 0.0) + v
-    return share, merged
-
-
-def _name(
-    model: Model, m: Array, shapes: NDArray[np.complex128], f: Array
-) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    """Ids and descriptions from each mode's kinetic-energy shares."""
-    groups = _groups(model)
-    names: list[str] = []
-    texts: list[str] = []
-    counters: dict[str, int] = {}
-    for j in range(shapes.shape[1]):
-        x = shapes[:, j]
-        share, merged = shares(model, m, x)
-        top = max(merged, key=lambda g: merged[g])
-        name, text = _mode_name(top, share, x, groups, counters)
-        if name in names:
-            name = f"{name}_{sum(n.startswith(name) for n in names) + 1}"
-        names.append(name)
-        parts = sorted(merged.items(), key=lambda kv: -kv[1])[:3]
-        mix = ", ".join(f"{g} {v:.0%}" for g, v in parts if v >= 0.05)
-        texts.append(f"{text} [{mix}]")
-    return tuple(names), tuple(texts)
-
-
-def _mode_name(
-    top: str,
-    share: dict[str, float],
-    x: NDArray[np.complex128],
-    groups: dict[str, Index],
-    counters: dict[str, int],
-) -> tuple[str, str]:
-    if top in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw"):
-        counters[top] = counters.get(top, 0) + 1
-        k = counters[top]
-        label = {
-            "tower.fa": "tower fore-aft",
-            "tower.ss": "tower side-side",
-            "tower.tor": "tower torsion",
-            "drivetrain": "drive-train torsion",
-            "yaw": "yaw",
-        }[top]
-        short = {"tower.fa": "tower.fa", "tower.ss": "tower.ss", "tower.tor": "tower.tor"}
-        return f"{short.get(top, top)}{k}", f"{ordinal(k)} {label}"
-    _, mode, coord = top.split(".")
-    kind = mode.rstrip("0123456789")
-    number = int(mode[len(kind) :])
-    words = f"{ordinal(number)} blade {_KINDS[kind]}"
-    if coord == "collective":
-        return f"blade.{mode}.collective", f"{words}, collective"
-    if coord == "alternating":
-        return f"blade.{mode}.alternating", f"{words}, alternating (two blades in opposition)"
-    h = coord.removeprefix("cyclic")
-    c = share.get(f"blade.{mode}.cos{h}", 0.0)
-    s = share.get(f"blade.{mode}.sin{h}", 0.0)
-    # flap ∝ cos ψⱼ nods the rotor (tilt), ∝ sin ψⱼ yaws it; edge: cos pushes sideways (yaw
-    # through the overhang), sin up and down (tilt)
-    tilt = (c >= s) == (kind == "flap")
-    axis = "tilt" if tilt else "yaw"
-    suffix = "" if h == "1" else h
-    xc = x[groups[f"blade.{mode}.cos{h}"]].sum()
-    xs = x[groups[f"blade.{mode}.sin{h}"]].sum()
-    whirl = float(np.imag(np.conj(xc) * xs))
-    scale = float(abs(xc) * abs(xs)) or 1.0
-    if abs(whirl) > 0.5 * scale:  # rotating: the cyclic pattern travels round the rotor
-        turn = "forward" if whirl < 0 else "backward"
-        return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix}, {turn} whirl"
-    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})"
-
-
-# ---------------------------------------------------------------------------------------
-# The rotating sweep (Campbell diagram) and the audit's view
-
-
-@dataclass(frozen=True)
-class Sweep:
-    """Coupled modes over rotor speed, each followed by its shape (MAC)."""
-
-    omega: Array  # rotor speeds [rad/s]
-    frequency_hz: Array  # (speeds, modes)
-    names: tuple[str, ...]  # named at the first speed (standstill)
-    descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
-
-
-def sweep(model: Model, speeds: Array, count: int = MODES_KEPT) -> Sweep:
-    """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
-    if model.blades < 3:
-        raise ValueError("the rotating sweep needs three or more blades (MBC)")
-    first = rotating(model, float(speeds[0]), count)
-    kept = len(first.frequency_hz)
-    # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
-    # would otherwise weigh by their units, not by their share of the motion
-    weight = np.sqrt(np.diag(fixed_frame(model, 0.0)[0]))[:, None]
-    freqs = np.empty((len(speeds), kept))
-    freqs[0] = first.frequency_hz
-    shapes = first.shapes
-    last = first
-    for i, om in enumerate(speeds[1:], start=1):
-        cur = rotating(model, float(om), kept + 4)
-        order = _assign(modal.mac(weight * shapes, weight * cur.shapes))
-        freqs[i] = cur.frequency_hz[order]
-        shapes = cur.shapes[:, order]
-        last = SystemModes(
-            cur.frequency_hz[order],
-            shapes,
-            tuple(cur.names[o] for o in order),
-            tuple(cur.descriptions[o] for o in order),
-        )
-    rpm = _rpm(float(speeds[-1]))
-    texts = tuple(
-        f"{_plain(a)} (coupled)"
-        if _plain(a) == _plain(b)
-        else f"{_plain(a)}; at {rpm}: {_plain(b)} (coupled)"
-        for a, b in zip(first.descriptions, last.descriptions, strict=True)
-    )
-    return Sweep(np.asarray(speeds, float), freqs, first.names, texts)
-
-
-def _plain(text: str) -> str:
-    """A mode's description without its energy shares."""
-    return text.split(" [")[0]
-
-
-def _assign(score: Array) -> Index:
-    """Greedy assignment of the previous modes (rows) to current ones (columns) by MAC."""
-    rows, cols = score.shape
-    out = np.full(rows, -1, dtype=np.intp)
-    taken = np.zeros(cols, dtype=bool)
-    for flat in np.argsort(-score, axis=None):
-        i, j = divmod(int(flat), cols)
-        if out[i] < 0 and not taken[j]:
-            out[i], taken[j] = j, True
-    return out
-
-
 def applies(spec: Spec) -> bool:
     """Whether the spec asks for (and has what the coupled model needs)."""
     return (
@@ -879,7 +618,7 @@ def modes(spec: Spec) -> list[Mode]:
     if spec.rotor.blades < 3:
         res = parked(model)
         return [
-            Mode(f"system.{n}", "system", f"{_plain(d)}, parked (coupled)", float(f))
+            Mode(f"system.{n}", "system", f"{plain(d)}, parked (coupled)", float(f))
             for f, n, d in zip(res.frequency_hz, res.names, res.descriptions, strict=True)
         ]
     sw = sweep(model, speeds(spec))
@@ -896,10 +635,6 @@ def modes(spec: Spec) -> list[Mode]:
             )
         )
     return sorted(out, key=lambda m: m.frequency_hz)
-
-
-def _rpm(omega: float) -> str:
-    return f"{omega * 30 / math.pi:.3g} rpm"
 
 
 #: A coupled frequency within this fraction of its isolated counterpart "stays close".
@@ -977,131 +712,6 @@ def _statements(model: Model) -> tuple[str, ...]:
         "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping",
         *model.assumptions,
     )
-
-
-# ---------------------------------------------------------------------------------------
-# Periodic coefficients (two blades): Floquet analysis in a reduced modal basis
-
-
-@dataclass(frozen=True)
-class Periodic:
-    """The periodic equations in a basis of the lowest parked modes, as azimuth harmonics.
-
-    X(ψ) = X₀ + Σ_h (X_ch cos hψ + X_sh sin hψ), h = 1, 2, for X = M, D₁, K₂ (D = D₀ + Ω·D₁,
-    K = K₀ + Ω²·K₂): every term is a product of two first-harmonic factors, so two
-    harmonics are exact and eight samples recover them without aliasing.
-    """
-
-    m: Array  # (5, r, r): constant, cos ψ, sin ψ, cos 2ψ, sin 2ψ
-    d1: Array
-    k2: Array
-    k0: Array  # (r, r)
-    d0: Array  # (r, r): the drive train's dampers
-    highest_hz: float  # the basis's highest parked frequency (sets the integration step)
-
-    def at(self, x: Array, psi: Array) -> Array:
-        """X at the azimuths ψ (array), stacked along the first axis."""
-        psi = np.asarray(psi, dtype=float)[:, None, None]
-        return (
-            x[0]
-            + np.cos(psi) * x[1]
-            + np.sin(psi) * x[2]
-            + np.cos(2 * psi) * x[3]
-            + np.sin(2 * psi) * x[4]
-        )
-
-    def states(self, omega: float, psi: Array) -> Array:
-        """A(ψ) of ẋ = A x at rotor speed Ω for each azimuth ψ, stacked."""
-        r = self.k0.shape[0]
-        minv = np.linalg.inv(self.at(self.m, psi))
-        k = self.k0 + omega**2 * self.at(self.k2, psi)
-        d = self.d0 + omega * self.at(self.d1, psi)
-        a = np.zeros((len(psi), 2 * r, 2 * r))
-        a[:, :r, r:] = np.eye(r)
-        a[:, r:, :r] = -minv @ k
-        a[:, r:, r:] = -minv @ d
-        return a
-
-
-def reduction(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Array:
-    """A basis for the periodic analysis: the fixed parts (tower, nacelle, drive train) of
-    the lowest ``modes`` parked modes up to ``cutoff_hz`` (at least four), orthonormalised,
-    and the blade coordinates of the blade modes up to ``cutoff_hz`` (at least the first)
-    on every blade — complete blade sets keep the basis the same at every azimuth."""
-    lay = model.layout
-    res = parked(model, count=modes)
-    keep = max(4, int(np.count_nonzero(res.frequency_hz <= cutoff_hz)))
-    shapes = np.real(res.shapes[:, :keep])
-    fixed = np.ones(lay.size, dtype=bool)
-    fixed[lay.blades] = False
-    q, r = np.linalg.qr(shapes[fixed])
-    q = q[:, np.abs(np.diag(r)) > 1e-9 * np.abs(np.diag(r)).max()]
-    kb = model.k_blades
-    slow = np.flatnonzero(model.rotor.omega / (2 * np.pi) <= cutoff_hz)
-    slow = slow if len(slow) else np.array([0])
-    rows = np.array([lay.blades.start + j * kb + k for j in range(model.blades) for k in slow])
-    basis = np.zeros((lay.size, q.shape[1] + len(rows)))
-    basis[fixed, : q.shape[1]] = q
-    basis[rows, q.shape[1] + np.arange(len(rows))] = 1.0
-    return basis
-
-
-def periodic(model: Model, modes: int = 10, cutoff_hz: float = math.inf) -> Periodic:
-    """The model's periodic equations (physical blade coordinates) in the basis of
-    :func:`reduction`, as azimuth harmonics."""
-    phi = reduction(model, modes, cutoff_hz)
-    samples = np.arange(8) * (2 * np.pi / 8)
-    m, d1, k2 = [], [], []
-    k0 = phi.T @ model.k_v @ phi
-    d0 = phi.T @ model.d_v @ phi
-    for psi in samples:
-        m0, _, _ = model.matrices(0.0, float(psi))
-        _, d, k = model.matrices(1.0, float(psi))
-        m.append(phi.T @ m0 @ phi)
-        d1.append(phi.T @ d @ phi - d0)
-        k2.append(phi.T @ k @ phi - k0)
-
-    def harmonics(x: list[Array]) -> Array:
-        a = np.stack(x)
-        out = [a.mean(axis=0)]
-        for h in (1, 2):
-            out.append(2 * np.tensordot(np.cos(h * samples), a, axes=1) / 8)
-            out.append(2 * np.tensordot(np.sin(h * samples), a, axes=1) / 8)
-        return np.stack(out)
-
-    top = float(modal.solve(k0, m[0]).frequency_hz[-1])
-    return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, d0, top)
-
-
-#: The most RK4 steps one revolution may take (beyond: the speed is not analysed; ≈ 0.3 s).
-MAX_STEPS = 2_000
-
-
-def multipliers(
-    p: Periodic, omega: float, per_period: float = 4.0, max_steps: int = MAX_STEPS
-) -> NDArray[np.complex128] | None:
-    """Floquet multipliers over one rotor revolution at Ω [rad/s].
-
-    RK4 with ``per_period`` steps per period of the basis's fastest mode: 4 keeps every mode
-    inside RK4's stability limit (ω·h = π/2 < 2.8), so the integration damps the fastest
-    modes a little but never amplifies one — no false instability; the slow modes that
-    matter get ≥ 10× as many steps. 40 makes the numerical damping negligible (tests).
-    """
-    from .floquet import monodromy
-
-    period = 2 * np.pi / omega
-    steps = max(48, math.ceil(per_period * p.highest_hz * period))
-    if steps > max_steps:  # a slow rotor with a stiff basis: too costly to integrate
-        return None
-    h = period / steps
-    # RK4 samples A at every half step: form them all at once, then integrate
-    a = p.states(omega, omega * h / 2 * np.arange(2 * steps + 1, dtype=float))
-    phi = monodromy(lambda t: a[round(2 * t / h)], period, steps)
-    return np.linalg.eigvals(phi).astype(complex)
-
-
-#: Floquet multipliers above 1 + this count as growth (RK4 alone never exceeds 1).
-GROWTH = 1e-6
 
 
 def stability_check(spec: Spec) -> Check | None:

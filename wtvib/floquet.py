@@ -18,6 +18,10 @@ J_p, blades as a line of point masses):
 With three or more blades the sums over the blades make every coefficient constant (the
 multi-blade view: the rotor's inertia is isotropic in its plane).
 
+The coupled whole-turbine model (:mod:`wtvib.coupled`) of a two-bladed turbine is periodic
+too: :func:`periodic` writes its equations in a reduced, rotation-invariant basis as two
+azimuth harmonics, and :func:`multipliers` takes their Floquet multipliers.
+
 Floquet: the state-transition matrix over one period T = 2π/Ω, Φ̇ = A(t)Φ, Φ(0) = I, by
 classical fourth-order Runge–Kutta with a fixed number of steps (error O(h⁴), checked
 against the Mathieu equation's stability boundaries and a matrix exponential); the
@@ -38,9 +42,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from . import modal
+from .multiblade import parked
 from .units import rpm_to_rad_s
 
 if TYPE_CHECKING:
+    from .coupled import Model
     from .results import Check, Mode
     from .spec import Spec
 
@@ -376,3 +383,126 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         "polar_inertia_kgm2": model.polar,
     }
     return Check("rotor.floquet", "rotor", status, text, rule, numbers), smap  # type: ignore[arg-type]
+
+
+# ---------------------------------------------------------------------------------------
+# Periodic coefficients (two blades): Floquet analysis in a reduced modal basis
+
+
+@dataclass(frozen=True)
+class Periodic:
+    """The periodic equations in a basis of the lowest parked modes, as azimuth harmonics.
+
+    X(ψ) = X₀ + Σ_h (X_ch cos hψ + X_sh sin hψ), h = 1, 2, for X = M, D₁, K₂ (D = D₀ + Ω·D₁,
+    K = K₀ + Ω²·K₂): every term is a product of two first-harmonic factors, so two
+    harmonics are exact and eight samples recover them without aliasing.
+    """
+
+    m: Array  # (5, r, r): constant, cos ψ, sin ψ, cos 2ψ, sin 2ψ
+    d1: Array
+    k2: Array
+    k0: Array  # (r, r)
+    d0: Array  # (r, r): the drive train's dampers
+    highest_hz: float  # the basis's highest parked frequency (sets the integration step)
+
+    def at(self, x: Array, psi: Array) -> Array:
+        """X at the azimuths ψ (array), stacked along the first axis."""
+        psi = np.asarray(psi, dtype=float)[:, None, None]
+        return (
+            x[0]
+            + np.cos(psi) * x[1]
+            + np.sin(psi) * x[2]
+            + np.cos(2 * psi) * x[3]
+            + np.sin(2 * psi) * x[4]
+        )
+
+    def states(self, omega: float, psi: Array) -> Array:
+        """A(ψ) of ẋ = A x at rotor speed Ω for each azimuth ψ, stacked."""
+        r = self.k0.shape[0]
+        minv = np.linalg.inv(self.at(self.m, psi))
+        k = self.k0 + omega**2 * self.at(self.k2, psi)
+        d = self.d0 + omega * self.at(self.d1, psi)
+        a = np.zeros((len(psi), 2 * r, 2 * r))
+        a[:, :r, r:] = np.eye(r)
+        a[:, r:, :r] = -minv @ k
+        a[:, r:, r:] = -minv @ d
+        return a
+
+
+def reduction(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> Array:
+    """A basis for the periodic analysis: the fixed parts (tower, nacelle, drive train) of
+    the lowest ``modes`` parked modes up to ``cutoff_hz`` (at least four), orthonormalised,
+    and the blade coordinates of the blade modes up to ``cutoff_hz`` (at least the first)
+    on every blade — complete blade sets keep the basis the same at every azimuth."""
+    lay = model.layout
+    res = parked(model, count=modes)
+    keep = max(4, int(np.count_nonzero(res.frequency_hz <= cutoff_hz)))
+    shapes = np.real(res.shapes[:, :keep])
+    fixed = np.ones(lay.size, dtype=bool)
+    fixed[lay.blades] = False
+    q, r = np.linalg.qr(shapes[fixed])
+    q = q[:, np.abs(np.diag(r)) > 1e-9 * np.abs(np.diag(r)).max()]
+    kb = model.k_blades
+    slow = np.flatnonzero(model.rotor.omega / (2 * np.pi) <= cutoff_hz)
+    slow = slow if len(slow) else np.array([0])
+    rows = np.array([lay.blades.start + j * kb + k for j in range(model.blades) for k in slow])
+    basis = np.zeros((lay.size, q.shape[1] + len(rows)))
+    basis[fixed, : q.shape[1]] = q
+    basis[rows, q.shape[1] + np.arange(len(rows))] = 1.0
+    return basis
+
+
+def periodic(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> Periodic:
+    """The model's periodic equations (physical blade coordinates) in the basis of
+    :func:`reduction`, as azimuth harmonics."""
+    phi = reduction(model, modes, cutoff_hz)
+    samples = np.arange(8) * (2 * np.pi / 8)
+    m, d1, k2 = [], [], []
+    k0 = phi.T @ model.k_v @ phi
+    d0 = phi.T @ model.d_v @ phi
+    for psi in samples:
+        m0, _, _ = model.matrices(0.0, float(psi))
+        _, d, k = model.matrices(1.0, float(psi))
+        m.append(phi.T @ m0 @ phi)
+        d1.append(phi.T @ d @ phi - d0)
+        k2.append(phi.T @ k @ phi - k0)
+
+    def harmonics(x: list[Array]) -> Array:
+        a = np.stack(x)
+        out = [a.mean(axis=0)]
+        for h in (1, 2):
+            out.append(2 * np.tensordot(np.cos(h * samples), a, axes=1) / 8)
+            out.append(2 * np.tensordot(np.sin(h * samples), a, axes=1) / 8)
+        return np.stack(out)
+
+    top = float(modal.solve(k0, m[0]).frequency_hz[-1])
+    return Periodic(harmonics(m), harmonics(d1), harmonics(k2), k0, d0, top)
+
+
+#: The most RK4 steps one revolution may take (beyond: the speed is not analysed; ≈ 0.3 s).
+MAX_STEPS = 2_000
+
+
+def multipliers(
+    p: Periodic, omega: float, per_period: float = 4.0, max_steps: int = MAX_STEPS
+) -> NDArray[np.complex128] | None:
+    """Floquet multipliers over one rotor revolution at Ω [rad/s].
+
+    RK4 with ``per_period`` steps per period of the basis's fastest mode: 4 keeps every mode
+    inside RK4's stability limit (ω·h = π/2 < 2.8), so the integration damps the fastest
+    modes a little but never amplifies one — no false instability; the slow modes that
+    matter get ≥ 10× as many steps. 40 makes the numerical damping negligible (tests).
+    """
+    period = 2 * np.pi / omega
+    steps = max(48, math.ceil(per_period * p.highest_hz * period))
+    if steps > max_steps:  # a slow rotor with a stiff basis: too costly to integrate
+        return None
+    h = period / steps
+    # RK4 samples A at every half step: form them all at once, then integrate
+    a = p.states(omega, omega * h / 2 * np.arange(2 * steps + 1, dtype=float))
+    phi = monodromy(lambda t: a[round(2 * t / h)], period, steps)
+    return np.linalg.eigvals(phi).astype(complex)
+
+
+#: Floquet multipliers above 1 + this count as growth (RK4 alone never exceeds 1).
+GROWTH = 1e-6

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from wtvib import audit, blade, coupled, importers, spec, tower
+from wtvib import audit, blade, coupled, floquet, importers, multiblade, spec, tower
 
 NREL = "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
 
@@ -46,7 +46,7 @@ def nrel(shared: Any) -> spec.Spec:
 
 
 def parked(s: spec.Spec, condition: str = "locked") -> dict[str, float]:
-    res = coupled.parked(coupled.build(s, condition))
+    res = multiblade.parked(coupled.build(s, condition))
     return dict(zip(res.names, res.frequency_hz.tolist(), strict=True))
 
 
@@ -118,7 +118,7 @@ def test_rigid_support_gives_back_the_rotating_blade(nrel, rpm):
     )
     omega = rpm * math.pi / 30
     model = coupled.build(s, "locked")
-    res = coupled.rotating(model, omega, 20)
+    res = multiblade.rotating(model, omega, 20)
     names, freqs, _, _ = blade.rotating_modes(s.blade.structure, np.array([omega]))  # type: ignore[arg-type]
     iso = dict(zip(names, freqs[0], strict=True))
     p = omega / (2 * math.pi)
@@ -144,12 +144,12 @@ def test_multiblade_equations_are_time_invariant_and_gyroscopic(nrel, blades):
         }
     )
     model = coupled.build(s, "free")
-    a = coupled.fixed_frame(model, 1.3, 0.0)
-    b = coupled.fixed_frame(model, 1.3, 0.77)
+    a = multiblade.fixed_frame(model, 1.3, 0.0)
+    b = multiblade.fixed_frame(model, 1.3, 0.77)
     for x, y in zip(a, b, strict=True):
         assert np.abs(x - y).max() <= 1e-12 * np.abs(x).max()
     m, d, k = a
-    parked_m, d0, _ = coupled.fixed_frame(model, 0.0, 0.3)  # parked shortcut: same inertia
+    parked_m, d0, _ = multiblade.fixed_frame(model, 0.0, 0.3)  # parked shortcut: same inertia
     assert np.abs(parked_m - m).max() <= 1e-12 * np.abs(m).max()
     assert np.abs(m - m.T).max() <= 1e-12 * np.abs(m).max()
     g = d - d0  # without the drive-train damper: gyroscopic, skew
@@ -212,13 +212,13 @@ def test_floquet_of_the_periodic_equations_matches_the_multiblade_eigenvalues(nr
 
     model = coupled.build(nrel, "locked")
     omega = 12.1 * math.pi / 30
-    p = coupled.periodic(model, cutoff_hz=3.0)
-    rho = coupled.multipliers(p, omega, per_period=40, max_steps=100_000)
+    p = floquet.periodic(model, cutoff_hz=3.0)
+    rho = floquet.multipliers(p, omega, per_period=40, max_steps=100_000)
     assert rho is not None
     period = 2 * math.pi / omega
     floquet_f = np.sort(np.abs((np.log(rho) / period).imag)) / (2 * math.pi)
-    basis = coupled.reduction(model, cutoff_hz=3.0)  # blade block identity: MBC as well
-    m, d, k = (basis.T @ x @ basis for x in coupled.fixed_frame(model, omega))
+    basis = floquet.reduction(model, cutoff_hz=3.0)  # blade block identity: MBC as well
+    m, d, k = (basis.T @ x @ basis for x in multiblade.fixed_frame(model, omega))
     f = np.abs(modal.state_roots(k, m, d).imag) / (2 * math.pi)
     rev = omega / (2 * math.pi)
     folded = np.sort(np.minimum(np.mod(f, rev), rev - np.mod(f, rev)))
@@ -232,7 +232,7 @@ def test_rotor_gyroscopic_coupling_of_tilt_and_yaw_is_polar_inertia_times_speed(
     the hub's from its spinning inertia; their sum must be the rotor's polar inertia."""
     model = coupled.build(nrel, "locked")
     lay = model.layout
-    _, d, _ = coupled.fixed_frame(model, 1.0)
+    _, d, _ = multiblade.fixed_frame(model, 1.0)
     d = d - model.d_v  # the drive-train damper is not gyroscopic
     tilt, yaw = lay.fa.stop - 1, lay.yaw
     j_polar = 3 * float(np.sum(model.rotor.mass * model.rotor.radius**2)) + model.hub_polar
@@ -266,6 +266,6 @@ def test_rigid_support_gives_back_the_drive_train_in_each_generator_condition(nr
     d["coupled"]["rotating_condition"] = condition
     s = spec.Spec.model_validate(d)
     iso = sorted(m.frequency_hz for m in drivetrain.modes(s) if f".{condition}." in m.id)
-    got = coupled.rotating(coupled.build(s, condition), 0.0, 40).frequency_hz
+    got = multiblade.rotating(coupled.build(s, condition), 0.0, 40).frequency_hz
     for f in iso[:2]:
         assert np.min(np.abs(got / f - 1)) < 2e-3, (condition, f, got[:6])

@@ -1,0 +1,296 @@
+"""Multi-blade (Coleman) coordinates: the coupled model's modes in the fixed frame.
+
+With three or more blades the transformation ηⱼ = a₀ + Σ_h (a_hc cos hψⱼ + a_hs sin hψⱼ)
+(+ the alternating (−1)ʲ a for even N) turns the periodic equations of
+:class:`wtvib.coupled.Model` into time-invariant ones: each rotor speed is one eigenproblem,
+and cyclic blade modes appear as backward and forward whirl, f ∓ 1P. Modes are named by
+where their kinetic energy sits and followed across speed by mass-weighted MAC.
+
+References
+----------
+G. Bir, "Multi-blade coordinate transformation and its application to wind turbine
+analysis", AIAA 2008-1300; M. H. Hansen, "Improved modal dynamics of wind turbines to avoid
+stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
+"""
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from . import modal
+from .given import ordinal
+from .units import rad_s_to_rpm
+
+if TYPE_CHECKING:
+    from .coupled import Model
+
+Array = NDArray[np.float64]
+Index = NDArray[np.intp]
+
+#: Coupled modes reported: the lowest ones, up to this many.
+MODES_KEPT = 16
+
+_KINDS = {"flap": "flapwise", "edge": "edgewise"}
+
+# ---------------------------------------------------------------------------------------
+# Multi-blade coordinates
+
+
+def coleman(blades: int, psi: float) -> tuple[Array, Array, Array, tuple[str, ...]]:
+    """B(ψ), dB/dψ, d²B/dψ² with ηⱼ = Σ_h B[j, h]·a_h, and the names of the a_h.
+
+    Columns: collective, (cos h·ψⱼ, sin h·ψⱼ) for h = 1 … (N−1)//2, and for even N the
+    alternating (−1)ʲ coordinate (Bir 2008).
+    """
+    psi_j = psi + 2 * np.pi * np.arange(blades) / blades
+    cols: list[Array] = [np.ones(blades)]
+    d1: list[Array] = [np.zeros(blades)]
+    d2: list[Array] = [np.zeros(blades)]
+    names = ["collective"]
+    for h in range(1, (blades - 1) // 2 + 1):
+        c, s = np.cos(h * psi_j), np.sin(h * psi_j)
+        cols += [c, s]
+        d1 += [-h * s, h * c]
+        d2 += [-(h**2) * c, -(h**2) * s]
+        names += [f"cos{h}", f"sin{h}"]
+    if blades % 2 == 0:
+        cols.append(np.where(np.arange(blades) % 2 == 0, 1.0, -1.0))
+        d1.append(np.zeros(blades))
+        d2.append(np.zeros(blades))
+        names.append("alternating")
+    return np.stack(cols, 1), np.stack(d1, 1), np.stack(d2, 1), tuple(names)
+
+
+def fixed_frame(model: "Model", omega: float, psi: float = 0.0) -> tuple[Array, Array, Array]:
+    """M, D, K in multi-blade coordinates (time-invariant for three or more blades).
+
+    q = T(ψ)·z with q̇ = T·ż + Ω·T′·z and q̈ = T·z̈ + 2Ω·T′·ż + Ω²·T″·z, projected with Tᵀ.
+    """
+    m, d, k = model.matrices(omega, psi)
+    t, t1, t2 = _transform(model, psi)
+    tt = t.T
+    return (
+        tt @ m @ t,
+        tt @ (2 * omega * m @ t1 + d @ t),
+        tt @ (omega**2 * m @ t2 + omega * d @ t1 + k @ t),
+    )
+
+
+def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
+    lay = model.layout
+    b, b1, b2, _ = coleman(model.blades, psi)
+    eye = np.eye(model.k_blades)
+    out = []
+    for mat in (b, b1, b2):
+        t = np.eye(lay.size) if mat is b else np.zeros((lay.size, lay.size))
+        t[lay.blades, lay.blades] = np.kron(mat, eye)
+        out.append(t)
+    return out[0], out[1], out[2]
+
+
+# ---------------------------------------------------------------------------------------
+# Modes, named by participation
+
+
+@dataclass(frozen=True)
+class SystemModes:
+    """Modes of the coupled model at one rotor speed: frequencies, shapes in multi-blade
+    coordinates (complex when rotating), and names."""
+
+    frequency_hz: Array
+    shapes: NDArray[np.complex128]
+    names: tuple[str, ...]
+    descriptions: tuple[str, ...]
+
+
+def parked(model: "Model", psi: float = 0.0, count: int = MODES_KEPT) -> SystemModes:
+    """Modes of the parked turbine (Ω = 0) at rotor azimuth ψ (blade 1 up at ψ = 0)."""
+    m, _, k = fixed_frame(model, 0.0, psi)
+    res = modal.solve(k, m, min(count + 2, m.shape[0]))
+    keep = res.frequency_hz > 1e-3  # a free generator leaves the rotor free to turn
+    f, shapes = res.frequency_hz[keep][:count], res.shapes[:, keep][:, :count]
+    names, texts = _name(model, m, shapes.astype(complex), f)
+    return SystemModes(f, shapes.astype(complex), names, texts)
+
+
+def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemModes:
+    """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
+    m, d0, d1, k0, k2 = model.multiblade
+    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, d0 + omega * d1))
+    n = m.shape[0]
+    osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
+    lam, vec = lam[osc], vec[:n, osc]
+    order = np.argsort(lam.imag)[:count]
+    f = lam.imag[order] / (2 * np.pi)
+    shapes = vec[:, order]
+    names, texts = _name(model, m, shapes, f)
+    return SystemModes(f, shapes, names, texts)
+
+
+def _groups(model: "Model") -> dict[str, Index]:
+    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor)."""
+    lay = model.layout
+    out: dict[str, Index] = {
+        "tower.fa": np.arange(lay.fa.start, lay.fa.stop),
+        "tower.ss": np.arange(lay.ss.start, lay.ss.stop),
+        "tower.tor": np.arange(lay.torsion.start, lay.torsion.stop),
+        "drivetrain": np.arange(lay.chain.start, lay.chain.stop),
+    }
+    if lay.yaw is not None:
+        out["yaw"] = np.array([lay.yaw])
+    _, _, _, harmonics = coleman(model.blades, 0.0)
+    kb = model.k_blades
+    for k, name in enumerate(model.rotor.names):
+        for h, label in enumerate(harmonics):
+            out[f"blade.{name}.{label}"] = np.array([lay.blades.start + h * kb + k])
+    return out
+
+
+def shares(
+    model: "Model", m: Array, x: NDArray[np.complex128]
+) -> tuple[dict[str, float], dict[str, float]]:
+    """A mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed, normalised),
+    and the same with each cyclic cos/sin pair merged into one ``cyclic`` group."""
+    groups = _groups(model)
+    energy = np.abs(np.real(np.conj(x) * (m @ x)))
+    total = float(energy.sum()) or 1.0
+    share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
+    merged: dict[str, float] = {}
+    for g, v in share.items():
+        key = g.replace("cos", "cyclic").replace("sin", "cyclic")
+        merged[key] = merged.get(key, 0.0) + v
+    return share, merged
+
+
+def _name(
+    model: "Model", m: Array, shapes: NDArray[np.complex128], f: Array
+) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """Ids and descriptions from each mode's kinetic-energy shares."""
+    groups = _groups(model)
+    names: list[str] = []
+    texts: list[str] = []
+    counters: dict[str, int] = {}
+    for j in range(shapes.shape[1]):
+        x = shapes[:, j]
+        share, merged = shares(model, m, x)
+        top = max(merged, key=lambda g: merged[g])
+        name, text = _mode_name(top, share, x, groups, counters)
+        if name in names:
+            name = f"{name}_{sum(n.startswith(name) for n in names) + 1}"
+        names.append(name)
+        parts = sorted(merged.items(), key=lambda kv: -kv[1])[:3]
+        mix = ", ".join(f"{g} {v:.0%}" for g, v in parts if v >= 0.05)
+        texts.append(f"{text} [{mix}]")
+    return tuple(names), tuple(texts)
+
+
+def _mode_name(
+    top: str,
+    share: dict[str, float],
+    x: NDArray[np.complex128],
+    groups: dict[str, Index],
+    counters: dict[str, int],
+) -> tuple[str, str]:
+    if top in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw"):
+        counters[top] = counters.get(top, 0) + 1
+        k = counters[top]
+        label = {
+            "tower.fa": "tower fore-aft",
+            "tower.ss": "tower side-side",
+            "tower.tor": "tower torsion",
+            "drivetrain": "drive-train torsion",
+            "yaw": "yaw",
+        }[top]
+        short = {"tower.fa": "tower.fa", "tower.ss": "tower.ss", "tower.tor": "tower.tor"}
+        return f"{short.get(top, top)}{k}", f"{ordinal(k)} {label}"
+    _, mode, coord = top.split(".")
+    kind = mode.rstrip("0123456789")
+    number = int(mode[len(kind) :])
+    words = f"{ordinal(number)} blade {_KINDS[kind]}"
+    if coord == "collective":
+        return f"blade.{mode}.collective", f"{words}, collective"
+    if coord == "alternating":
+        return f"blade.{mode}.alternating", f"{words}, alternating (two blades in opposition)"
+    h = coord.removeprefix("cyclic")
+    c = share.get(f"blade.{mode}.cos{h}", 0.0)
+    s = share.get(f"blade.{mode}.sin{h}", 0.0)
+    # flap ∝ cos ψⱼ nods the rotor (tilt), ∝ sin ψⱼ yaws it; edge: cos pushes sideways (yaw
+    # through the overhang), sin up and down (tilt)
+    tilt = (c >= s) == (kind == "flap")
+    axis = "tilt" if tilt else "yaw"
+    suffix = "" if h == "1" else h
+    xc = x[groups[f"blade.{mode}.cos{h}"]].sum()
+    xs = x[groups[f"blade.{mode}.sin{h}"]].sum()
+    whirl = float(np.imag(np.conj(xc) * xs))
+    scale = float(abs(xc) * abs(xs)) or 1.0
+    if abs(whirl) > 0.5 * scale:  # rotating: the cyclic pattern travels round the rotor
+        turn = "forward" if whirl < 0 else "backward"
+        return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix}, {turn} whirl"
+    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})"
+
+
+# ---------------------------------------------------------------------------------------
+# The rotating sweep (Campbell diagram) and the audit's view
+
+
+@dataclass(frozen=True)
+class Sweep:
+    """Coupled modes over rotor speed, each followed by its shape (MAC)."""
+
+    omega: Array  # rotor speeds [rad/s]
+    frequency_hz: Array  # (speeds, modes)
+    names: tuple[str, ...]  # named at the first speed (standstill)
+    descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
+
+
+def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
+    """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
+    if model.blades < 3:
+        raise ValueError("the rotating sweep needs three or more blades (MBC)")
+    first = rotating(model, float(speeds[0]), count)
+    kept = len(first.frequency_hz)
+    # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
+    # would otherwise weigh by their units, not by their share of the motion
+    weight = np.sqrt(np.diag(fixed_frame(model, 0.0)[0]))[:, None]
+    freqs = np.empty((len(speeds), kept))
+    freqs[0] = first.frequency_hz
+    shapes = first.shapes
+    last = first
+    for i, om in enumerate(speeds[1:], start=1):
+        cur = rotating(model, float(om), kept + 4)
+        order = _assign(modal.mac(weight * shapes, weight * cur.shapes))
+        freqs[i] = cur.frequency_hz[order]
+        shapes = cur.shapes[:, order]
+        last = SystemModes(
+            cur.frequency_hz[order],
+            shapes,
+            tuple(cur.names[o] for o in order),
+            tuple(cur.descriptions[o] for o in order),
+        )
+    rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
+    texts = tuple(
+        f"{plain(a)} (coupled)"
+        if plain(a) == plain(b)
+        else f"{plain(a)}; at {rpm}: {plain(b)} (coupled)"
+        for a, b in zip(first.descriptions, last.descriptions, strict=True)
+    )
+    return Sweep(np.asarray(speeds, float), freqs, first.names, texts)
+
+
+def plain(text: str) -> str:
+    """A mode's description without its energy shares."""
+    return text.split(" [")[0]
+
+
+def _assign(score: Array) -> Index:
+    """Greedy assignment of the previous modes (rows) to current ones (columns) by MAC."""
+    rows, cols = score.shape
+    out = np.full(rows, -1, dtype=np.intp)
+    taken = np.zeros(cols, dtype=bool)
+    for flat in np.argsort(-score, axis=None):
+        i, j = divmod(int(flat), cols)
+        if out[i] < 0 and not taken[j]:
+            out[i], taken[j] = j, True
+    return out
