@@ -319,7 +319,7 @@ def _model_statements(spec: Spec, modes: list[Mode]) -> list[str]:
             "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
             f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
             "coordinates); shaft tilt, precone, blade torsion, gravity on the blades and "
-            "damping neglected."
+            "all damping but the drive train's neglected."
         )
     given = sorted(
         {

@@ -43,7 +43,8 @@ check ``system.floquet``). This module builds the model and gives the audit its 
 
 Assumed and neglected (stated in the report): shaft tilt, precone and prebend; blade
 torsion and section rotary inertia; gravity on the blades; gyroscopic moments of drive-train
-parts other than the hub (generator spinning at i·Ω); structural and aerodynamic damping.
+parts other than the hub (generator spinning at i·Ω); structural damping other than the
+drive train's dampers, and aerodynamic damping.
 
 References
 ----------
@@ -709,7 +710,8 @@ def _statements(model: Model) -> tuple[str, ...]:
         f"{model.blades} flexible blades × {model.k_blades} modes "
         f"({', '.join(model.rotor.names)}), nacelle {n.mass:,.0f} kg rigid, hub "
         f"{model.hub_mass:,.0f} kg / {model.hub_polar:,.0f} kg·m², generator {model.condition}",
-        "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping",
+        "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping "
+        "other than the drive train's",
         *model.assumptions,
     )
 
