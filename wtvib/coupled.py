@@ -626,12 +626,15 @@ def modes(spec: Spec) -> list[Mode]:
     out = []
     for j, name in enumerate(sw.names):
         curve = Sampled(tuple(sw.omega.tolist()), tuple(sw.frequency_hz[:, j].tolist()))
+        zeta = float(sw.damping_ratio[j])
         out.append(
             Mode(
                 f"system.{name}",
                 "system",
                 sw.descriptions[j],
                 float(sw.frequency_hz[0, j]),
+                # the drive train's dampers, where they damp the mode; else the default
+                damping_ratio=zeta if zeta > 1e-4 else None,
                 curve=curve,
             )
         )

@@ -103,6 +103,7 @@ class SystemModes:
     shapes: NDArray[np.complex128]
     names: tuple[str, ...]
     descriptions: tuple[str, ...]
+    damping_ratio: Array | None = None  # −Re λ/|λ| (rotating solve; the drive train's dampers)
 
 
 def parked(model: "Model", psi: float = 0.0, count: int = MODES_KEPT) -> SystemModes:
@@ -122,11 +123,11 @@ def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemMod
     n = m.shape[0]
     osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
     lam, vec = lam[osc], vec[:n, osc]
-    order = np.argsort(lam.imag)[:count]
-    f = lam.imag[order] / (2 * np.pi)
+    order = np.argsort(np.abs(lam))[:count]
+    f = np.abs(lam[order]) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
     shapes = vec[:, order]
     names, texts = _name(model, m, shapes, f)
-    return SystemModes(f, shapes, names, texts)
+    return SystemModes(f, shapes, names, texts, -lam.real[order] / np.abs(lam[order]))
 
 
 def _groups(model: "Model") -> dict[str, Index]:
@@ -243,6 +244,7 @@ class Sweep:
     frequency_hz: Array  # (speeds, modes)
     names: tuple[str, ...]  # named at the first speed (standstill)
     descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
+    damping_ratio: Array  # at the first speed
 
 
 def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
@@ -276,7 +278,8 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
         else f"{plain(a)}; at {rpm}: {plain(b)} (coupled)"
         for a, b in zip(first.descriptions, last.descriptions, strict=True)
     )
-    return Sweep(np.asarray(speeds, float), freqs, first.names, texts)
+    assert first.damping_ratio is not None
+    return Sweep(np.asarray(speeds, float), freqs, first.names, texts, first.damping_ratio)
 
 
 def plain(text: str) -> str:

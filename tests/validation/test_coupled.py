@@ -269,3 +269,12 @@ def test_rigid_support_gives_back_the_drive_train_in_each_generator_condition(nr
     got = multiblade.rotating(coupled.build(s, condition), 0.0, 40).frequency_hz
     for f in iso[:2]:
         assert np.min(np.abs(got / f - 1)) < 2e-3, (condition, f, got[:6])
+
+
+def test_drive_train_damper_damps_the_coupled_drive_train_mode(nrel):
+    """The deck's shaft damper (DTTorDmp) is the only damping the coupled model keeps: the
+    drive-train mode carries a damping ratio (used for its DAF), the tower modes none."""
+    ms = {m.id: m for m in audit.run(nrel).modes if m.subsystem == "system"}
+    assert ms["system.drivetrain1"].damping_ratio is not None
+    assert 0.001 < ms["system.drivetrain1"].damping_ratio < 0.2
+    assert ms["system.tower.fa1"].damping_ratio is None
