@@ -204,8 +204,7 @@ def _mode_name(
             "drivetrain": "drive-train torsion",
             "yaw": "yaw",
         }[top]
-        short = {"tower.fa": "tower.fa", "tower.ss": "tower.ss", "tower.tor": "tower.tor"}
-        return f"{short.get(top, top)}{k}", f"{ordinal(k)} {label}"
+        return f"{top}{k}", f"{ordinal(k)} {label}"
     _, mode, coord = top.split(".")
     kind = mode.rstrip("0123456789")
     number = int(mode[len(kind) :])

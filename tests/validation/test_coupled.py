@@ -127,6 +127,9 @@ def test_rigid_support_gives_back_the_rotating_blade(nrel, rpm):
         expected = {iso[mode]} if rpm == 0 else {iso[mode], iso[mode] - p, iso[mode] + p}
         for f in expected:  # each expected line is present within 0.1 % (Ritz: 5 modes)
             assert np.min(np.abs(got / f - 1)) < 1e-3, (mode, f, got)
+        if rpm > 0:  # the lower cyclic line whirls against the rotation, the upper with it
+            for f, turn in ((iso[mode] - p, "backward"), (iso[mode] + p, "forward")):
+                assert f"{turn} whirl" in res.descriptions[int(np.argmin(np.abs(got - f)))]
 
 
 @pytest.mark.parametrize("blades", [3, 4, 5])
