@@ -104,19 +104,22 @@ def _rx(angle: float) -> Array:
 class Jet:
     """A vector field expanded to second order: v ≈ c0 + c1·q + ½ qᵀ·c2·q.
 
-    Shapes: c0 (..., 3), c1 (..., 3, n), c2 (..., 3, n, n) with c2 symmetric in (n, n).
+    Shapes: c0 (..., 3), c1 (..., 3, n), c2 (..., 3, n, n) with c2 symmetric in (n, n);
+    c2 None: expanded to first order only (all the parked mass matrix needs).
     """
 
     c0: Array
     c1: Array
-    c2: Array
+    c2: Array | None
 
     def rotated(self, r: Array) -> "Jet":
         """A constant matrix applied: r·v."""
         return Jet(
             self.c0 @ r.T,
             np.moveaxis(np.tensordot(self.c1, r, axes=([-2], [1])), -1, -2),
-            np.moveaxis(np.tensordot(self.c2, r, axes=([-3], [1])), -1, -3),
+            None
+            if self.c2 is None
+            else np.moveaxis(np.tensordot(self.c2, r, axes=([-3], [1])), -1, -3),
         )
 
 
@@ -129,13 +132,16 @@ class MatrixJet:
     a2: Array
 
     def apply(self, v: Jet) -> Jet:
-        """(A·v) truncated at second order (tensordot: BLAS rather than einsum loops)."""
+        """(A·v) truncated at the order of v (tensordot: BLAS rather than einsum loops)."""
+        c1 = np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2)
+        c1 = c1 + np.tensordot(v.c0, self.a1, axes=([-1], [1]))
+        if v.c2 is None:
+            return Jet(v.c0 @ self.a0.T, c1, None)
         cross = np.tensordot(v.c1, self.a1, axes=([-2], [1]))  # (..., m, i, n)
         cross = np.moveaxis(cross, -3, -1)  # (..., i, n, m)
         return Jet(
             v.c0 @ self.a0.T,
-            np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2)
-            + np.tensordot(v.c0, self.a1, axes=([-1], [1])),
+            c1,
             np.moveaxis(np.tensordot(v.c2, self.a0, axes=([-3], [1])), -1, -3)
             + np.tensordot(v.c0, self.a2, axes=([-1], [1]))
             + cross
@@ -301,14 +307,8 @@ class Model:
         c0 = np.zeros((len(r.radius), 3))
         c0[:, 2] = r.radius
         mm = np.repeat(r.mass, 3)
-        if omega == 0.0:  # parked: the mass matrix needs the first-order terms only
-            for j in range(self.blades):
-                p1 = _first_order(c0, c1, _rx(psi + 2 * np.pi * j / self.blades), self.apex)
-                if lay.local[0][PHI] < 0:
-                    p1[:, PHI] = 0.0
-                self._scatter(m, (p1 * mm[:, None]).T @ p1, j)
-            return m, d, k
-        b = spin.apply(Jet(c0, c1, np.zeros((len(r.radius), 3, n, n))))
+        first_order = omega == 0.0  # parked: the mass matrix needs first-order terms only
+        b = spin.apply(Jet(c0, c1, None if first_order else np.zeros((len(r.radius), 3, n, n))))
         g = _G[0]
         for j in range(self.blades):
             rj = _rx(psi + 2 * np.pi * j / self.blades)
@@ -318,6 +318,8 @@ class Model:
             p1[0::3, UX] += 1.0
             p1[1::3, UY] += 1.0
             self._scatter(m, (p1 * mm[:, None]).T @ p1, j)
+            if p.c2 is None:
+                continue
             blk = slice(lay.blades.start + j * kb, lay.blades.start + (j + 1) * kb)
             p2 = p.c2.reshape(-1, n, n)
             d1 = rot.apply(b.rotated(rj @ g))
@@ -351,19 +353,6 @@ class Model:
         keep = idx >= 0
         i, s = idx[keep], sgn[keep]
         target[np.ix_(i, i)] += s[:, None] * local[np.ix_(keep, keep)] * s[None, :]
-
-
-def _first_order(c0: Array, c1: Array, rj: Array, apex: Array) -> Array:
-    """∂p/∂q at q = 0 for the points b = c0 + c1·η of a blade at azimuth matrix rj, rows
-    (point, x/y/z) flattened: the parked case of :meth:`Model.matrices`' expansion."""
-    p0 = c0 @ rj.T + apex  # (P, 3)
-    out = np.zeros(c1.shape)
-    out[:, 0, UX] = out[:, 1, UY] = 1.0
-    for i in range(3):
-        out[:, :, TX + i] = p0 @ _G[i].T  # e_i × p
-    out[:, :, PHI] = c0 @ (rj @ _G[0]).T  # Rⱼ·(eₓ × b₀)
-    out[:, :, _RIGID:] = np.einsum("ij,pjk->pik", rj, c1[:, :, _RIGID:])
-    return out.reshape(-1, c1.shape[2])
 
 
 def _rigid_mass(part: Rigid) -> Array:
