@@ -92,18 +92,20 @@ def mac(a: NDArray[Any], b: NDArray[Any]) -> Array:
 def track(previous: NDArray[Any], current: NDArray[Any]) -> NDArray[np.intp]:
     """Order of ``current``'s columns that best continues ``previous``'s (max total MAC).
 
-    Exhaustive over permutations for up to 7 modes (an exact assignment), greedy beyond.
+    ``current`` may hold more columns than ``previous`` (candidates; the unmatched ones are
+    left out). Exhaustive over permutations for up to 7 modes of a square problem (an exact
+    assignment), greedy otherwise.
     """
     score = mac(previous, current)
-    n = score.shape[0]
-    if n <= 7:
+    n, candidates = score.shape
+    if n <= 7 and candidates == n:
         best = max(
             itertools.permutations(range(n)),
             key=lambda p: sum(score[i, j] for i, j in enumerate(p)),
         )
         return np.array(best, dtype=np.intp)
     order = np.full(n, -1, dtype=np.intp)
-    free = set(range(n))
+    free = set(range(candidates))
     for i in np.argsort(-score.max(axis=1)):
         j = max(free, key=lambda c: score[i, c])
         order[i] = j

@@ -261,7 +261,7 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     last = first
     for i, om in enumerate(speeds[1:], start=1):
         cur = rotating(model, float(om), kept + 4)
-        order = _assign(modal.mac(weight * shapes, weight * cur.shapes))
+        order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         shapes = cur.shapes[:, order]
         last = SystemModes(
@@ -284,15 +284,3 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
 def plain(text: str) -> str:
     """A mode's description without its energy shares."""
     return text.split(" [")[0]
-
-
-def _assign(score: Array) -> Index:
-    """Greedy assignment of the previous modes (rows) to current ones (columns) by MAC."""
-    rows, cols = score.shape
-    out = np.full(rows, -1, dtype=np.intp)
-    taken = np.zeros(cols, dtype=bool)
-    for flat in np.argsort(-score, axis=None):
-        i, j = divmod(int(flat), cols)
-        if out[i] < 0 and not taken[j]:
-            out[i], taken[j] = j, True
-    return out
