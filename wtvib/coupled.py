@@ -65,7 +65,7 @@ from numpy.typing import NDArray
 from . import beam, blade, drivetrain, modal, tower, yaw
 from .errors import SpecError
 from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
-from .multiblade import fixed_frame, parked, plain, shares, sweep
+from .multiblade import parked, sweep
 from .results import Check, Mode, Rule, Sampled
 from .rules import Status
 from .spec import BladeStructure, Spec, TowerHead
@@ -608,7 +608,7 @@ def modes(spec: Spec) -> list[Mode]:
     if spec.rotor.blades < 3:
         res = parked(model)
         return [
-            Mode(f"system.{n}", "system", f"{plain(d)}, parked (coupled)", float(f))
+            Mode(f"system.{n}", "system", f"{d}, parked (coupled)", float(f))
             for f, n, d in zip(res.frequency_hz, res.names, res.descriptions, strict=True)
         ]
     sw = sweep(model, speeds(spec))
@@ -654,13 +654,11 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     cond = spec.coupled.parked_condition
     model = build(spec, cond)
     res = parked(model)
-    mass = fixed_frame(model, 0.0)[0]
     by_id = {m.id: m.frequency_hz for m in isolated}
     rows: list[dict[str, Any]] = []
     for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
         iso = isolated_id(name, cond)
         f_iso = by_id.get(iso)
-        _, merged = shares(model, mass, res.shapes[:, j])
         rows.append(
             {
                 "id": f"system.{name}",
@@ -668,7 +666,7 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
                 "isolated_id": iso if f_iso is not None else None,
                 "isolated_hz": round(f_iso, 6) if f_iso is not None else None,
                 "change": round(float(f) / f_iso - 1.0, 6) if f_iso else None,
-                "energy": {g: round(v, 4) for g, v in merged.items() if v >= 0.005},
+                "energy": {g: round(v, 4) for g, v in res.energy[j].items() if v >= 0.005},
             }
         )
     paired = [r for r in rows if r["change"] is not None]

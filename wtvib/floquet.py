@@ -461,9 +461,8 @@ def periodic(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> Pe
     k0 = phi.T @ model.k_v @ phi
     d0 = phi.T @ model.d_v @ phi
     for psi in samples:
-        m0, _, _ = model.matrices(0.0, float(psi))
-        _, d, k = model.matrices(1.0, float(psi))
-        m.append(phi.T @ m0 @ phi)
+        m_psi, d, k = model.matrices(1.0, float(psi))  # M does not depend on Ω
+        m.append(phi.T @ m_psi @ phi)
         d1.append(phi.T @ d @ phi - d0)
         k2.append(phi.T @ k @ phi - k0)
 

@@ -97,12 +97,13 @@ def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
 @dataclass(frozen=True)
 class SystemModes:
     """Modes of the coupled model at one rotor speed: frequencies, shapes in multi-blade
-    coordinates (complex when rotating), and names."""
+    coordinates (complex when rotating), names, and where their kinetic energy sits."""
 
     frequency_hz: Array
     shapes: NDArray[np.complex128]
     names: tuple[str, ...]
     descriptions: tuple[str, ...]
+    energy: tuple[dict[str, float], ...]  # shares by group, cyclic pairs merged (shares())
     damping_ratio: Array | None = None  # −Re λ/|λ| (rotating solve; the drive train's dampers)
 
 
@@ -112,8 +113,7 @@ def parked(model: "Model", psi: float = 0.0, count: int = MODES_KEPT) -> SystemM
     res = modal.solve(k, m, min(count + 2, m.shape[0]))
     keep = res.frequency_hz > 1e-3  # a free generator leaves the rotor free to turn
     f, shapes = res.frequency_hz[keep][:count], res.shapes[:, keep][:, :count]
-    names, texts = _name(model, m, shapes.astype(complex), f)
-    return SystemModes(f, shapes.astype(complex), names, texts)
+    return SystemModes(f, shapes.astype(complex), *_name(model, m, shapes.astype(complex)))
 
 
 def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemModes:
@@ -126,8 +126,8 @@ def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemMod
     order = np.argsort(np.abs(lam))[:count]
     f = np.abs(lam[order]) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
     shapes = vec[:, order]
-    names, texts = _name(model, m, shapes, f)
-    return SystemModes(f, shapes, names, texts, -lam.real[order] / np.abs(lam[order]))
+    zeta = -lam.real[order] / np.abs(lam[order])
+    return SystemModes(f, shapes, *_name(model, m, shapes), damping_ratio=zeta)
 
 
 def _groups(model: "Model") -> dict[str, Index]:
@@ -166,12 +166,13 @@ def shares(
 
 
 def _name(
-    model: "Model", m: Array, shapes: NDArray[np.complex128], f: Array
-) -> tuple[tuple[str, ...], tuple[str, ...]]:
-    """Ids and descriptions from each mode's kinetic-energy shares."""
+    model: "Model", m: Array, shapes: NDArray[np.complex128]
+) -> tuple[tuple[str, ...], tuple[str, ...], tuple[dict[str, float], ...]]:
+    """Ids, descriptions and energy shares (merged) of each mode, named by those shares."""
     groups = _groups(model)
     names: list[str] = []
     texts: list[str] = []
+    energy: list[dict[str, float]] = []
     counters: dict[str, int] = {}
     for j in range(shapes.shape[1]):
         x = shapes[:, j]
@@ -181,10 +182,9 @@ def _name(
         if name in names:
             name = f"{name}_{sum(n.startswith(name) for n in names) + 1}"
         names.append(name)
-        parts = sorted(merged.items(), key=lambda kv: -kv[1])[:3]
-        mix = ", ".join(f"{g} {v:.0%}" for g, v in parts if v >= 0.05)
-        texts.append(f"{text} [{mix}]")
-    return tuple(names), tuple(texts)
+        texts.append(text)
+        energy.append(merged)
+    return tuple(names), tuple(texts), tuple(energy)
 
 
 def _mode_name(
@@ -254,33 +254,21 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     kept = len(first.frequency_hz)
     # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
     # would otherwise weigh by their units, not by their share of the motion
-    weight = np.sqrt(np.diag(fixed_frame(model, 0.0)[0]))[:, None]
+    weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     freqs = np.empty((len(speeds), kept))
     freqs[0] = first.frequency_hz
     shapes = first.shapes
-    last = first
+    last = first.descriptions
     for i, om in enumerate(speeds[1:], start=1):
         cur = rotating(model, float(om), kept + 4)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         shapes = cur.shapes[:, order]
-        last = SystemModes(
-            cur.frequency_hz[order],
-            shapes,
-            tuple(cur.names[o] for o in order),
-            tuple(cur.descriptions[o] for o in order),
-        )
+        last = tuple(cur.descriptions[o] for o in order)
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
     texts = tuple(
-        f"{plain(a)} (coupled)"
-        if plain(a) == plain(b)
-        else f"{plain(a)}; at {rpm}: {plain(b)} (coupled)"
-        for a, b in zip(first.descriptions, last.descriptions, strict=True)
+        f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
+        for a, b in zip(first.descriptions, last, strict=True)
     )
     assert first.damping_ratio is not None
     return Sweep(np.asarray(speeds, float), freqs, first.names, texts, first.damping_ratio)
-
-
-def plain(text: str) -> str:
-    """A mode's description without its energy shares."""
-    return text.split(" [")[0]
