@@ -90,6 +90,15 @@ def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[
     return data
 
 
+def _symmetric(upper: np.ndarray) -> np.ndarray:
+    """Symmetric 6×6 matrices from their upper triangles, row-major (K11, K12, …, K66)."""
+    rows, cols = np.triu_indices(6)
+    full = np.zeros((len(upper), 6, 6))
+    full[:, rows, cols] = upper
+    full[:, cols, rows] = upper
+    return full
+
+
 def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Bending (K44, K55) and torsional (K66) stiffnesses of 6×6 section matrices with the
     other strains free: the 2×2 bending block of the inverted compliance, and 1/C66.
@@ -284,13 +293,11 @@ class _Reader:
             k = ep["stiffness_matrix"]
             im = ep["inertia_matrix"]
             mass = _at({"grid": im["grid"], "values": im["mass"]}, grid)
-            full = np.zeros((len(grid), 6, 6))
-            for a in range(6):
-                for c in range(a, 6):
-                    key = f"K{a + 1}{c + 1}"
-                    if key in k:
-                        full[:, a, c] = full[:, c, a] = np.asarray(k[key], float)
-            flap, edge, gj = _condensed(full)
+            upper = [
+                np.asarray(k.get(f"K{a + 1}{c + 1}", np.zeros(len(grid))), float)
+                for a, c in zip(*np.triu_indices(6), strict=True)
+            ]
+            flap, edge, gj = _condensed(_symmetric(np.stack(upper, axis=1)))
             ip = _at({"grid": im["grid"], "values": im["i_plr"]}, grid) if "i_plr" in im else None
             twist = _at(b["outer_shape"]["twist"], grid)  # degrees in 2.x
         else:
@@ -300,11 +307,7 @@ class _Reader:
             grid = np.asarray(six["stiff_matrix"]["grid"], float)
             kv = np.asarray(six["stiff_matrix"]["values"], float)
             mv = np.asarray(six["inertia_matrix"]["values"], float)
-            rows, cols = np.triu_indices(6)
-            full = np.zeros((len(grid), 6, 6))
-            full[:, rows, cols] = kv[:, :21]
-            full[:, cols, rows] = kv[:, :21]
-            flap, edge, gj = _condensed(full)
+            flap, edge, gj = _condensed(_symmetric(kv[:, :21]))
             mass, ip = mv[:, _UT["mass"]], mv[:, _UT["i_plr"]]
             twist = np.degrees(_at(six["twist"], grid))  # radians in 1.x
         if np.count_nonzero(flap > edge) > len(flap) / 2:
