@@ -445,11 +445,7 @@ def build(spec: Spec, condition: str) -> Model:
         parts_k.append(k)
         parts_m.append(m)
     if b.gj is not None and b.polar is not None:
-        k, m = beam.assemble_torsion(b.nodes, b.gj, b.polar)
-        if not (t.foundation.kind == "springs" and t.foundation.torsional_nm_rad):
-            k, m = k[1:, 1:], m[1:, 1:]
-        else:
-            k[0, 0] += t.foundation.torsional_nm_rad
+        k, m = tower.torsion_system(b, None, t.foundation)
         parts_k.append(k)
         parts_m.append(m)
     else:
@@ -706,6 +702,12 @@ def _statements(model: Model) -> tuple[str, ...]:
     )
 
 
+_FLOQUET_RULE = Rule(
+    "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
+    "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
+)
+
+
 def stability_check(spec: Spec) -> Check | None:
     """``system.floquet``: parametric stability of the coupled two-bladed turbine over its
     speed range (periodic coefficients; three or more blades are time-invariant)."""
@@ -735,10 +737,7 @@ def stability_check(spec: Spec) -> Check | None:
             message="Coupled two-bladed turbine not analysed: at these speeds one revolution "
             f"would take more than {MAX_STEPS:,} integration steps of its fastest mode "
             f"({p.highest_hz:.3g} Hz)",
-            rule=Rule(
-                "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
-                "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
-            ),
+            rule=_FLOQUET_RULE,
             numbers={"not_analysed_rpm": skipped},
         )
     unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
@@ -752,10 +751,7 @@ def stability_check(spec: Spec) -> Check | None:
         message=f"Coupled two-bladed turbine, Floquet multipliers over {low:.3g}–"
         f"{speed.overspeed:.3g} rpm (generator {model.condition}): largest |ρ| "
         f"{max(largest):.6f}; growing at {where} rpm",
-        rule=Rule(
-            "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
-            "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
-        ),
+        rule=_FLOQUET_RULE,
         numbers={
             "rpm": [round(float(n), 6) for n in rpm],
             "max_multiplier": [round(r, 9) for r in largest],

@@ -325,15 +325,23 @@ def torsion_modes(
     b: Beam, head: "spec_mod.TowerHead | None", foundation: "spec_mod.Foundation", count: int = 1
 ) -> modal.Modes:
     """Torsion modes of the tower with the head's yaw inertia (I_yaw + M·x²) at the top."""
+    return modal.solve(*torsion_system(b, head, foundation), count)
+
+
+def torsion_system(
+    b: Beam, head: "spec_mod.TowerHead | None", foundation: "spec_mod.Foundation"
+) -> tuple[Array, Array]:
+    """K and M of the tower in torsion, base condition applied (clamped, or on the
+    foundation's torsional spring); the head's yaw inertia at the top where a head is given
+    (the coupled model passes none and adds the head's parts itself)."""
     assert b.gj is not None and b.polar is not None
     k, m = beam.assemble_torsion(b.nodes, b.gj, b.polar)
     if head is not None:
         m[-1, -1] += head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
     if foundation.kind == "springs" and foundation.torsional_nm_rad:
         k[0, 0] += foundation.torsional_nm_rad
-        return modal.solve(k, m, count)
-    k, m = _keep(k, m, slice(1, None))
-    return modal.solve(k, m, count)
+        return k, m
+    return _keep(k, m, slice(1, None))
 
 
 def _keep(k: Array, m: Array, dofs: slice) -> tuple[Array, Array]:
