@@ -79,7 +79,8 @@ Index = NDArray[np.intp]
 UX, UY, TX, TY, TZ, PHI = range(6)
 _RIGID = 6
 
-#: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed).
+#: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed, the blade model's top speed too);
+#: 30 points is the Campbell sweep issue 11 sets the cost target for.
 SPEED_SAMPLES = 30
 
 
@@ -626,7 +627,8 @@ def modes(spec: Spec) -> list[Mode]:
     return sorted(out, key=lambda m: m.frequency_hz)
 
 
-#: A coupled frequency within this fraction of its isolated counterpart "stays close".
+#: A coupled frequency within this fraction of its isolated counterpart "stays close" (wtvib's
+#: reading of Hau §7.6's "close"; the book gives no figure).
 CLOSE = 0.05
 
 
@@ -717,6 +719,7 @@ def stability_check(spec: Spec) -> Check | None:
     model = build(spec, spec.coupled.rotating_condition)
     speed = spec.rotor.speed
     # modes up to three times the highest excitation checked carry the parametric coupling
+    # (wtvib's choice of margin, no published figure; the bound keeps the RK4 step affordable)
     cutoff = max(2.0, 3 * spec.audit.harmonics * speed.overspeed / 60)
     p = periodic(model, cutoff_hz=cutoff)
     low = speed.steady_rpm[0][0]

@@ -29,7 +29,8 @@ if TYPE_CHECKING:
 Array = NDArray[np.float64]
 Index = NDArray[np.intp]
 
-#: Coupled modes reported: the lowest ones, up to this many.
+#: Coupled modes reported: the lowest ones, up to this many (wtvib's choice: enough for the
+#: first and second tower, blade-flap and drive-train modes of Jonkman et al. Table 9-1).
 MODES_KEPT = 16
 
 _KINDS = {"flap": "flapwise", "edge": "edgewise"}
