@@ -5,6 +5,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
+from conftest import TURBINES
 from wtvib import audit, spec
 from wtvib.cli import app
 
@@ -141,3 +142,24 @@ def test_unusable_files_are_one_line_and_exit_2(tmp_path, content, words):
     result = run("check", str(path))
     assert result.exit_code == 2
     assert result.stderr.count("\n") == 1 and words in result.stderr
+
+
+@pytest.mark.parametrize(
+    "name", ["mod-2", "mod-0", "mod-1", "wts-3", "wts-4", "wts-75", "growian", "aeroman"]
+)
+def test_two_bladed_rotors_at_slow_speeds_are_audited_not_crashed(name):
+    # issue 15: --rpm 5:17.5 on MOD-2 (and every two-bladed turbine at 2:20) overflowed RK4
+    # and ended in a LinAlgError traceback with exit 1, the code of a FAIL
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        result = CliRunner().invoke(
+            app,
+            ["check", str(TURBINES / f"{name}.yaml"), "--rpm", "2:20", "--no-plot", "-f", "json"],
+        )
+    assert result.exception is None or isinstance(result.exception, SystemExit), result.exception
+    assert result.exit_code in (0, 1)
+    report = json.loads(result.stdout)
+    floq = next(c for c in report["checks"] if c["id"] == "rotor.floquet")
+    assert floq["status"] in ("pass", "warn", "fail")

@@ -719,7 +719,7 @@ def stability_check(spec: Spec) -> Check | None:
     model = build(spec, spec.coupled.rotating_condition)
     speed = spec.rotor.speed
     # modes up to three times the highest excitation checked carry the parametric coupling
-    # (wtvib's choice of margin, no published figure; the bound keeps the RK4 step affordable)
+    # (wtvib's choice of margin, no published figure; it keeps the basis small)
     cutoff = max(2.0, 3 * spec.audit.harmonics * speed.overspeed / 60)
     p = periodic(model, cutoff_hz=cutoff)
     low = speed.steady_rpm[0][0]
@@ -738,14 +738,15 @@ def stability_check(spec: Spec) -> Check | None:
             subsystem="system",
             status="info",
             message="Coupled two-bladed turbine not analysed: at these speeds one revolution "
-            f"would take more than {MAX_STEPS:,} integration steps of its fastest mode "
-            f"({p.highest_hz:.3g} Hz)",
+            f"would need more than {MAX_STEPS:,} integration steps of its fastest mode "
+            f"({p.highest_hz:.3g} Hz), or the multipliers were not finite",
             rule=_FLOQUET_RULE,
             numbers={"not_analysed_rpm": skipped},
         )
     unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
     steady = [n for n in unstable if any(a <= n <= b for a, b in speed.steady_rpm)]
-    status: Status = "fail" if steady else "warn" if unstable else "pass"
+    gaps = [n for n in skipped if any(a <= n <= b for a, b in speed.steady_rpm)]
+    status: Status = "fail" if steady else "warn" if unstable or gaps else "pass"
     where = ", ".join(f"{n:.3g}" for n in unstable) or "none"
     return Check(
         id="system.floquet",
@@ -753,7 +754,14 @@ def stability_check(spec: Spec) -> Check | None:
         status=status,
         message=f"Coupled two-bladed turbine, Floquet multipliers over {low:.3g}–"
         f"{speed.overspeed:.3g} rpm (generator {model.condition}): largest |ρ| "
-        f"{max(largest):.6f}; growing at {where} rpm",
+        f"{max(largest):.6f}; growing at {where} rpm"
+        + (
+            f"; not analysed at {', '.join(f'{n:.3g}' for n in skipped)} rpm (one revolution "
+            f"would need over {MAX_STEPS:,} steps of the basis's fastest mode, "
+            f"{p.highest_hz:.3g} Hz, or the multipliers were not finite)"
+            if skipped
+            else ""
+        ),
         rule=_FLOQUET_RULE,
         numbers={
             "rpm": [round(float(n), 6) for n in rpm],

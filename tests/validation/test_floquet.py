@@ -33,7 +33,7 @@ def test_mathieu_stability_boundaries(q, order):
     assert below == pytest.approx(1.0, abs=1e-7) and above == pytest.approx(1.0, abs=1e-7)
 
 
-def test_rk4_monodromy_matches_the_matrix_exponential():
+def test_monodromy_matches_the_matrix_exponential():
     a = np.array([[0.0, 1.0], [-4.0, -0.3]])
     phi = floquet.monodromy(lambda t: a, 2.0, 400)
     assert phi == pytest.approx(expm(2.0 * a), abs=1e-9)
@@ -161,3 +161,26 @@ def test_three_bladed_turbines_are_time_invariant():
         if c.id == "rotor.floquet"
     )
     assert c.status == "info" and "time-invariant" in c.message
+
+
+def test_batched_expm_matches_scipy():
+    # Higham's scaling and squaring against scipy's implementation, norms 0.01–30, and an
+    # undamped oscillator of ω·t = 1000 (the slow-rotor case: bounded, many squarings)
+    rng = np.random.default_rng(1)
+    for scale in (0.01, 1.0, 30.0):
+        x = (rng.random((50, 4, 4)) - 0.5) * scale
+        ref = expm(x)
+        assert np.abs(floquet.expm(x) - ref).max() <= 1e-11 * max(1.0, np.abs(ref).max())
+    osc = np.array([[[0.0, 1.0], [-1e4, 0.0]]]) * 10.0  # ω = 100 rad/s over 10 s
+    assert floquet.expm(osc) == pytest.approx(expm(osc), abs=1e-9 * np.abs(expm(osc)).max())
+
+
+def test_magnus_step_does_not_amplify_a_stiff_mode_on_a_slow_rotor():
+    """ω·h = 50 per step (RK4 diverges beyond 2.8): exact for constant coefficients, so the
+    undamped oscillator keeps |ρ| = 1 to rounding."""
+    w = 50.0
+    a = np.array([[0.0, 1.0], [-(w**2), 0.0]])
+    phi = floquet.monodromy(lambda t: a, 2 * math.pi, 6)  # ω·h = 52 per step
+    assert np.abs(np.linalg.eigvals(phi)) == pytest.approx([1.0, 1.0], abs=1e-9)
+    exact = expm(2 * math.pi * a)
+    assert phi == pytest.approx(exact, abs=1e-8 * np.abs(exact).max())
