@@ -76,7 +76,14 @@ def test_cli_batch_writes_every_output_and_exits_with_the_worst(folder, tmp_path
     assert {"summary.json", "summary.csv", "audit.pdf", "run-metadata.json"} <= files
     assert not [f for f in files if f.endswith(".tmp")]
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["counts"] == {"pass": 2, "info": 0, "warn": 1, "fail": 1, "input-error": 1}
+    assert summary["counts"] == {
+        "pass": 2,
+        "info": 0,
+        "warn": 1,
+        "fail": 1,
+        "input-error": 1,
+        "internal-error": 0,
+    }
     meta = json.loads((out / "run-metadata.json").read_text())
     assert set(meta["timings_s"]["wka-60"]) == {"load", "solve", "plot", "write"}
 
@@ -155,3 +162,52 @@ def test_a_10_kw_and_a_22_mw_turbine_in_one_batch(tmp_path):
     for it in items:
         assert it.report is not None, it.error
         assert all(0 <= m["frequency_hz"] < 1e4 for m in it.report["modes"])
+
+
+def test_an_unexpected_exception_in_one_turbine_is_that_rows_internal_error(folder, tmp_path):
+    """Issue 15: one turbine whose audit raises something wtvib did not expect (here a
+    LinAlgError, as the Floquet check once did) must not empty the batch: its row is an
+    internal error naming the exception, the rest completes, summaries and PDF are written,
+    and the exit code is 3 — never 1, the code of a FAIL."""
+    import numpy as np
+
+    from wtvib import audit
+
+    real = audit.run
+
+    def flaky(turbine, *args, **kwargs):  # type: ignore[no-untyped-def]
+        if turbine.turbine.name.startswith("WKA"):
+            raise np.linalg.LinAlgError("Array must not contain infs or NaNs")
+        return real(turbine, *args, **kwargs)
+
+    out = tmp_path / "audit"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(audit, "run", flaky)
+        result = runner.invoke(app, ["batch", str(folder), "-o", str(out), "-j", "1"])
+    assert result.exit_code == batch.EXIT_INTERNAL == 3
+    summary = json.loads((out / "summary.json").read_text())
+    rows = {Path(r["file"]).name: r for r in summary["turbines"]}
+    assert rows["wka-60.yaml"]["verdict"] == "internal-error"
+    assert "LinAlgError" in rows["wka-60.yaml"]["message"]
+    assert summary["counts"]["internal-error"] == 1 and summary["counts"]["fail"] == 0
+    assert (out / "audit.pdf").exists() and (out / "mod-2.json").exists()
+    assert "internal error" in result.stdout
+
+
+def test_worst_check_is_the_one_that_decided_the_verdict():
+    checks = [
+        {"id": "a", "status": "info", "margin": 0.0},
+        {"id": "b", "status": "pass", "margin": 0.5},
+    ]
+    assert batch.worst_check(checks) is None  # a passing turbine: no info row as "worst"
+    checks.append({"id": "c", "status": "warn", "margin": 0.2})
+    assert batch.worst_check(checks)["id"] == "c"
+
+
+def test_report_and_batch_take_the_operating_and_rule_options(shared, tmp_path):
+    deck = shared / "reference" / "NREL5MW" / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    args = ["--rpm", "6.9:12.1", "--preset", "gl2010", "--no-plots", "-f", "json"]
+    result = runner.invoke(app, ["batch", str(deck), *args])
+    report = json.loads(result.stdout)["results"][0]["report"]
+    assert report["operation"]["steady_rpm"] == [[6.9, 12.1]]
+    assert report["rule"]["preset"] == "gl2010"

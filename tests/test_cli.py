@@ -163,3 +163,37 @@ def test_two_bladed_rotors_at_slow_speeds_are_audited_not_crashed(name):
     report = json.loads(result.stdout)
     floq = next(c for c in report["checks"] if c["id"] == "rotor.floquet")
     assert floq["status"] in ("pass", "warn", "fail")
+
+
+def test_an_unexpected_exception_is_one_line_and_exit_3_never_a_fail(monkeypatch):
+    def broken(*args, **kwargs):  # type: ignore[no-untyped-def]
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(audit, "run", broken)
+    result = run("check", str(TURBINES / "mod-2.yaml"), "--no-plot")
+    assert result.exit_code == 3
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "internal error (ZeroDivisionError" in lines[0]
+    assert "mod-2.yaml" in lines[0] and "Traceback" not in result.output
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--head-mass", "1000"], "--head-mass applies to windIO files only"),
+        (["--rated", "0"], "--rated must be a speed above 0 rpm"),
+        (["--margin", "1.5"], "--margin must lie between 0 and 1"),
+    ],
+)
+def test_option_mistakes_are_one_line_and_exit_2(args, message):
+    result = run("check", str(TURBINES / "mod-2.yaml"), "--no-plot", *args)
+    assert result.exit_code == 2 and message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_head_mass_zero_gets_the_same_rule_as_any_other_bad_mass(shared):
+    windio1 = shared / "reference" / "IEA3.4" / "IEA-3.4-130-RWT.yaml"
+    for value in ("0", "-5"):
+        result = run("check", str(windio1), "--no-plot", "--head-mass", value)
+        assert result.exit_code == 2
+        assert "--head-mass must be a mass above 0 kg" in result.stderr

@@ -107,6 +107,28 @@ class Report:
         }
 
 
+def override(
+    base: AuditSettings,
+    *,
+    margin: float | None = None,
+    rule: str | None = None,
+    preset: str | None = None,
+) -> AuditSettings:
+    """Audit settings with command-line overrides on top of the spec's ``audit`` section."""
+    from .errors import SpecError
+
+    update: dict[str, Any] = {}
+    if preset is not None:
+        update["preset"] = preset
+    if rule is not None:
+        update["rule"] = rule
+    if margin is not None:
+        if not (math.isfinite(margin) and 0 < margin < 1):
+            raise SpecError(f"--margin must lie between 0 and 1 (0.10 = 10 %); got {margin:g}")
+        update["margin"] = margin
+    return base.model_validate({**base.model_dump(), **update}) if update else base
+
+
 def run(
     spec: Spec,
     settings: AuditSettings | None = None,

@@ -2,7 +2,9 @@
 
 Each input is audited in a worker process (load → solve → plot); results come back as
 plain data (the report's ``to_dict()`` and PNG bytes) in the order the inputs were given.
-One bad file never stops a run: it becomes an *input error* row with its one-line message.
+One bad file never stops a run: it becomes an *input error* row with its one-line message,
+and anything else that goes wrong in one turbine (a bug, a crashed worker) an *internal
+error* row naming the exception; the rest completes and the summaries are written.
 """
 
 import csv
@@ -23,13 +25,45 @@ from .rules import STATUS_ORDER
 BATCH_SCHEMA = "wtvib-batch/1"
 SPEC_SUFFIXES = (".yaml", ".yml", ".dat", ".fst")
 
-#: Outcome order for sorting and exit codes: input errors are worst.
-OUTCOME_ORDER = {**STATUS_ORDER, "input-error": 4}
+#: Outcome order for sorting and exit codes: errors are worst, internal ones last.
+OUTCOME_ORDER = {**STATUS_ORDER, "input-error": 4, "internal-error": 5}
+
+#: Exit code of a run with an internal error (a bug in wtvib, not the user's input).
+EXIT_INTERNAL = 3
+
+
+@dataclass(frozen=True)
+class Options:
+    """What ``check``, ``report`` and ``batch`` share: the operating range for imports
+    (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg]
+    and the audit overrides ``margin``, ``rule``, ``preset``."""
+
+    rpm: tuple[float, float] | None = None
+    rated: float | None = None
+    head_mass: float | None = None
+    margin: float | None = None
+    rule: str | None = None
+    preset: str | None = None
+
+    def load(self, path: str | Path) -> Any:
+        """The turbine at ``path`` with the import options applied."""
+        from . import importers
+
+        return importers.load(path, rpm=self.rpm, rated=self.rated, head_mass=self.head_mass)
+
+    def settings(self, turbine: Any) -> Any:
+        """The turbine's audit settings with the overrides applied."""
+        from .audit import override
+
+        return override(turbine.audit, margin=self.margin, rule=self.rule, preset=self.preset)
 
 
 @dataclass(frozen=True)
 class Item:
-    """The result of one input: a report (as data) or an input error, plus timings."""
+    """The result of one input: a report (as data) or an error, plus timings.
+
+    ``internal`` marks an error that is not the user's: an exception wtvib did not expect.
+    """
 
     path: str
     key: str
@@ -37,10 +71,13 @@ class Item:
     error: str | None = None
     pngs: dict[str, bytes] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
+    internal: bool = False
 
     @property
     def outcome(self) -> str:
-        return "input-error" if self.report is None else str(self.report["verdict"])
+        if self.report is None:
+            return "internal-error" if self.internal else "input-error"
+        return str(self.report["verdict"])
 
     def row(self) -> dict[str, Any]:
         """The summary row: turbine, file, tower class, verdict, worst check, its margin."""
@@ -49,7 +86,7 @@ class Item:
                 "file": self.path,
                 "turbine": None,
                 "tower_class": None,
-                "verdict": "input-error",
+                "verdict": self.outcome,
                 "worst_check": None,
                 "margin": None,
                 "message": self.error,
@@ -67,13 +104,15 @@ class Item:
 
 
 def worst_check(checks: Sequence[dict[str, Any]]) -> dict[str, Any] | None:
-    """The most severe check; among equals, the one with the least margin."""
+    """The check that decided the verdict: the most severe warn or fail, among equals the one
+    with the least margin; None when every check passed (an info row decides nothing)."""
 
     def severity(c: dict[str, Any]) -> tuple[int, float]:
         margin = c.get("margin")
         return STATUS_ORDER[c["status"]], -margin if margin is not None else -math.inf
 
-    return max(checks, key=severity, default=None)
+    deciding = [c for c in checks if c["status"] in ("warn", "fail")]
+    return max(deciding, key=severity, default=None)
 
 
 def discover(paths: Iterable[Path]) -> list[Path]:
@@ -103,20 +142,33 @@ def output_keys(paths: Sequence[Path]) -> list[str]:
     return [f"{p.parent.name}__{p.stem}" if stems.count(p.stem) > 1 else p.stem for p in paths]
 
 
-def audit_one(path: str, key: str, plots: bool) -> Item:
-    """Load, audit and (optionally) plot one input. Never raises for a user's mistake."""
-    from . import audit, importers
+def audit_one(path: str, key: str, plots: bool, options: Options | None = None) -> Item:
+    """Load, audit and (optionally) plot one input. Never raises (but for Ctrl-C): a user's
+    mistake is an input error, any other exception an internal error naming it."""
+    try:
+        return _audit_one(path, key, plots, options or Options())
+    except WtvibError as exc:
+        return Item(path, key, error=str(exc))
+    except Exception as exc:  # the last line of defence: one turbine, not the batch
+        return Item(path, key, error=internal_message(path, exc), internal=True)
+
+
+def internal_message(path: str, exc: BaseException) -> str:
+    """The one line an unexpected exception becomes: file, exception, and what to do."""
+    text = str(exc).splitlines()[0] if str(exc) else ""
+    return (
+        f"{path}: internal error ({type(exc).__name__}{': ' + text if text else ''}); this is "
+        "a wtvib bug, not a verdict — rerun with --debug for the traceback and report it"
+    )
+
+
+def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
+    from . import audit
 
     t0 = time.perf_counter()
-    try:
-        turbine = importers.load(path)
-    except WtvibError as exc:
-        return Item(path, key, error=str(exc), timings={"load": time.perf_counter() - t0})
+    turbine = options.load(path)
     t1 = time.perf_counter()
-    try:
-        report = audit.run(turbine)
-    except WtvibError as exc:
-        return Item(path, key, error=str(exc), timings={"load": t1 - t0})
+    report = audit.run(turbine, options.settings(turbine))
     t2 = time.perf_counter()
     pngs: dict[str, bytes] = {}
     if plots:
@@ -139,6 +191,7 @@ def run(
     jobs: int | None = None,
     plots: bool = True,
     on_done: Callable[[Item], None] | None = None,
+    options: Options | None = None,
 ) -> list[Item]:
     """Audit every input, in parallel on ``jobs`` processes; results in input order.
 
@@ -150,7 +203,7 @@ def run(
     if jobs == 1 or len(paths) < 2:
         items = []
         for p, k in zip(paths, keys, strict=True):
-            item = audit_one(str(p), k, plots)
+            item = audit_one(str(p), k, plots, options)
             if on_done:
                 on_done(item)
             items.append(item)
@@ -158,15 +211,24 @@ def run(
     results: dict[int, Item] = {}
     with ProcessPoolExecutor(max_workers=min(jobs, len(paths))) as pool:
         futures: dict[Future[Item], int] = {
-            pool.submit(audit_one, str(p), k, plots): i
+            pool.submit(audit_one, str(p), k, plots, options): i
             for i, (p, k) in enumerate(zip(paths, keys, strict=True))
         }
         try:
             from concurrent.futures import as_completed
 
             for fut in as_completed(futures):
-                item = fut.result()
-                results[futures[fut]] = item
+                i = futures[fut]
+                try:
+                    item = fut.result()
+                except Exception as exc:  # a worker died (memory, signal): that row only
+                    item = Item(
+                        str(paths[i]),
+                        keys[i],
+                        error=internal_message(str(paths[i]), exc),
+                        internal=True,
+                    )
+                results[i] = item
                 if on_done:
                     on_done(item)
         except BaseException:
@@ -211,8 +273,11 @@ def results_json(items: Sequence[Item]) -> str:
 
 
 def exit_code(items: Sequence[Item], strict: bool = False) -> int:
-    """2 if any input error, 1 if any fail (or warn with ``strict``), else 0."""
+    """3 if any internal error, 2 if any input error, 1 if any fail (or warn with
+    ``strict``), else 0."""
     outcomes = {it.outcome for it in items}
+    if "internal-error" in outcomes:
+        return EXIT_INTERNAL
     if "input-error" in outcomes:
         return 2
     if "fail" in outcomes or (strict and "warn" in outcomes):

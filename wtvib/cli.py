@@ -1,7 +1,8 @@
 """The command line: thin — load, call one library function, render, exit with a code.
 
-Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or output.
-Errors are caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
+Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or output,
+3 internal error (an exception wtvib did not expect: a bug, never a verdict). Errors are
+caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
 """
 
 import functools
@@ -12,6 +13,7 @@ from enum import StrEnum
 from pathlib import Path
 from typing import Annotated, TypeVar
 
+import click
 import typer
 
 app = typer.Typer(
@@ -22,7 +24,7 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-EXIT_PASS, EXIT_FAIL, EXIT_INPUT = 0, 1, 2
+EXIT_PASS, EXIT_FAIL, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
 
 class Format(StrEnum):
@@ -46,25 +48,77 @@ class PresetName(StrEnum):
     gl2010 = "gl2010"
 
 
+RpmOption = Annotated[
+    str | None,
+    typer.Option(help="Operating range MIN:MAX \\[rpm] (or one fixed speed) for imports."),
+]
+RatedOption = Annotated[float | None, typer.Option(help="Rated speed \\[rpm].")]
+HeadMassOption = Annotated[
+    float | None,
+    typer.Option(help="Tower-head mass \\[kg] for windIO files (1.x hold no hub/nacelle)."),
+]
+MarginOption = Annotated[
+    float | None, typer.Option(help="Margin m, e.g. 0.05 (overrides the spec).")
+]
+RuleOption = Annotated[RuleKind | None, typer.Option(help="Margin rule (overrides the spec).")]
+PresetOption = Annotated[PresetName | None, typer.Option(help="Code preset for rule and margin.")]
+
+
+def _options(
+    rpm: str | None,
+    rated: float | None,
+    head_mass: float | None,
+    margin: float | None,
+    rule: RuleKind | None,
+    preset: PresetName | None,
+) -> "batch.Options":  # type: ignore[name-defined]  # noqa: F821
+    from .batch import Options
+
+    return Options(
+        rpm=_rpm_range(rpm),
+        rated=rated,
+        head_mass=head_mass,
+        margin=margin,
+        rule=rule.value if rule is not None else None,
+        preset=preset.value if preset is not None else None,
+    )
+
+
 _state = {"debug": False}
 
 F = TypeVar("F", bound=Callable[..., None])
 
 
 def _user_errors(command: F) -> F:
-    """Turn a wtvib error into one line on stderr and exit code 2 (traceback with --debug)."""
+    """Turn a wtvib error into one line on stderr and exit code 2, and any other exception
+    into one line naming the input and the exception with exit code 3 — never exit 1, the
+    code of a FAIL verdict (tracebacks with --debug)."""
 
     @functools.wraps(command)
     def wrapper(*args: object, **kwargs: object) -> None:
         from .errors import WtvibError
 
+        debug = _state["debug"] or kwargs.get("debug")
         try:
             command(*args, **kwargs)
         except WtvibError as exc:
-            if _state["debug"] or kwargs.get("debug"):
+            if debug:
                 raise
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
+        except (typer.Exit, typer.Abort, click.exceptions.ClickException, KeyboardInterrupt):
+            raise
+        except Exception as exc:  # the last line of defence
+            if debug:
+                raise
+            from .batch import internal_message
+
+            source = next(
+                (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs),
+                "wtvib",
+            )
+            typer.echo(f"error: {internal_message(source, exc)}", err=True)
+            raise typer.Exit(EXIT_INTERNAL) from None
 
     return wrapper  # type: ignore[return-value]
 
@@ -85,29 +139,18 @@ def check(
         Path | None,
         typer.Option("--out", "-o", help="Folder for the PNGs (default: next to the spec)."),
     ] = None,
-    margin: Annotated[
-        float | None,
-        typer.Option(min=0.0, max=0.99, help="Margin m, e.g. 0.05 (overrides the spec)."),
-    ] = None,
-    rule: Annotated[RuleKind | None, typer.Option(help="Margin rule (overrides the spec).")] = None,
-    preset: Annotated[
-        PresetName | None, typer.Option(help="Code preset for rule and margin.")
-    ] = None,
+    margin: MarginOption = None,
+    rule: RuleOption = None,
+    preset: PresetOption = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write Campbell PNGs.")] = True,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
     force: Annotated[
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
     show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
-    rpm: Annotated[
-        str | None,
-        typer.Option(help="Operating range MIN:MAX [rpm] (or one fixed speed) for imports."),
-    ] = None,
-    rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
-    head_mass: Annotated[
-        float | None,
-        typer.Option(min=0.0, help="Tower-head mass [kg] for windIO 1.x files (no hub/nacelle)."),
-    ] = None,
+    rpm: RpmOption = None,
+    rated: RatedOption = None,
+    head_mass: HeadMassOption = None,
     uncertainty: Annotated[
         bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
     ] = False,
@@ -119,11 +162,12 @@ def check(
 
     SPEC_FILE may be a wtvib spec, a windIO turbine YAML or an OpenFAST ElastoDyn deck.
     """
-    from . import audit, importers
+    from . import audit
     from .outputs import write_atomic
 
-    turbine = importers.load(spec_file, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass)
-    settings = _settings(turbine.audit, margin, rule, preset)
+    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    turbine = options.load(spec_file)
+    settings = options.settings(turbine)
     report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
     written: list[Path] = []
     if plot:
@@ -159,17 +203,26 @@ def report(
     force: Annotated[
         bool, typer.Option(help="Replace an existing file not written by wtvib.")
     ] = False,
+    rpm: RpmOption = None,
+    rated: RatedOption = None,
+    head_mass: HeadMassOption = None,
+    margin: MarginOption = None,
+    rule: RuleOption = None,
+    preset: PresetOption = None,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Write the PDF audit report of one turbine."""
     from . import batch, pdfreport
     from .outputs import write_atomic
 
-    item = batch.audit_one(str(spec_file), spec_file.stem, plots=True)
+    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    if debug or _state["debug"]:
+        item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
+    else:
+        item = batch.audit_one(str(spec_file), spec_file.stem, plots=True, options=options)
     if item.report is None:
-        from .errors import SpecError
-
-        raise SpecError(str(item.error))
+        typer.echo(f"error: {item.error}", err=True)
+        raise typer.Exit(EXIT_INTERNAL if item.internal else EXIT_INPUT)
     write_atomic(output, pdfreport.build([(item.report, item.pngs)]), force=force)
     typer.echo(f"wrote {output} (verdict {item.report['verdict']})")
     raise typer.Exit(EXIT_FAIL if item.report["verdict"] == "fail" else EXIT_PASS)
@@ -194,14 +247,23 @@ def batch_command(
     force: Annotated[
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
+    rpm: RpmOption = None,
+    rated: RatedOption = None,
+    head_mass: HeadMassOption = None,
+    margin: MarginOption = None,
+    rule: RuleOption = None,
+    preset: PresetOption = None,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
-    """Audit a catalogue: every spec found, in parallel, with a summary and reports."""
+    """Audit a catalogue: every spec found, in parallel, with a summary and reports.
+
+    The operating and rule options apply to every input."""
     from rich.console import Console
 
     from . import batch
     from .report import batch_progress, batch_summary
 
+    options = _options(rpm, rated, head_mass, margin, rule, preset)
     paths = batch.discover(inputs)
     if not paths:
         from .errors import SpecError
@@ -219,7 +281,7 @@ def batch_command(
             advance(item)
 
         try:
-            items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done)
+            items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done, options=options)
         except KeyboardInterrupt:
             err.print(
                 f"interrupted: {len(done)} of {len(paths)} inputs completed; "
@@ -277,7 +339,7 @@ class _BatchWriter:
             import time
 
             entries = [(it.report, it.pngs) for it in items if it.report is not None]
-            errors = [(it.path, str(it.error)) for it in items if it.report is None]
+            errors = [(it.path, str(it.error), it.outcome) for it in items if it.report is None]
             t0 = time.perf_counter()
             pdf = pdfreport.build(entries, errors=errors)
             self.timings["audit"] = {"build": time.perf_counter() - t0}
@@ -312,14 +374,20 @@ def window(
     out: Annotated[Path | None, typer.Option("--out", "-o", help="Folder for the PNG.")] = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write the windows PNG.")] = True,
     force: Annotated[bool, typer.Option(help="Replace a file not written by wtvib.")] = False,
-    rpm: Annotated[str | None, typer.Option(help="Operating range MIN:MAX [rpm].")] = None,
+    rpm: RpmOption = None,
+    rated: RatedOption = None,
+    head_mass: HeadMassOption = None,
+    margin: MarginOption = None,
+    rule: RuleOption = None,
+    preset: PresetOption = None,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Allowed frequency windows per subsystem, and where the design sits in them."""
-    from . import audit, design, importers
+    from . import audit, design
 
-    turbine = importers.load(spec_file, rpm=_rpm_range(rpm))
-    report = audit.run(turbine)
+    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    turbine = options.load(spec_file)
+    report = audit.run(turbine, options.settings(turbine))
     found = design.all_windows(turbine, report.modes)
     doc = {
         "schema": "wtvib-windows/1",
@@ -355,7 +423,7 @@ def size_command(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec with tower sections.")],
     target: Annotated[Target | None, typer.Option(help="Window to land in (its middle).")] = None,
     target_hz: Annotated[
-        float | None, typer.Option(min=0.0, help="Or a first bending frequency [Hz].")
+        float | None, typer.Option(min=0.0, help="Or a first bending frequency \\[Hz].")
     ] = None,
     scale: Annotated[ScaleWhat, typer.Option(help="What to scale.")] = ScaleWhat.wall,
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
@@ -418,13 +486,10 @@ def convert(
     source: Annotated[Path, typer.Argument(help="windIO YAML or ElastoDyn deck to convert.")],
     output: Annotated[Path, typer.Option("--output", "-o", help="wtvib spec to write.")],
     rpm: Annotated[
-        str | None, typer.Option(help="Operating range MIN:MAX [rpm] to put in the spec.")
+        str | None, typer.Option(help="Operating range MIN:MAX \\[rpm] to put in the spec.")
     ] = None,
-    rated: Annotated[float | None, typer.Option(min=0.0, help="Rated speed [rpm].")] = None,
-    head_mass: Annotated[
-        float | None,
-        typer.Option(min=0.0, help="Tower-head mass [kg] for windIO 1.x files (no hub/nacelle)."),
-    ] = None,
+    rated: RatedOption = None,
+    head_mass: HeadMassOption = None,
     force: Annotated[bool, typer.Option(help="Replace an existing file.")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
@@ -446,19 +511,6 @@ def convert(
         raise OutputError(f"{output} exists; use --force to replace it")
     write_atomic(output, text.encode(), force=True)
     typer.echo(f"wrote {output}")
-
-
-def _settings(base, margin, rule, preset):  # type: ignore[no-untyped-def]
-    update = {}
-    if preset is not None:
-        update["preset"] = preset.value
-    if rule is not None:
-        update["rule"] = rule.value
-    if margin is not None:
-        if not 0 < margin < 1:
-            raise typer.BadParameter("--margin must lie between 0 and 1 (0.10 = 10 %)")
-        update["margin"] = margin
-    return base.model_validate({**base.model_dump(), **update})
 
 
 @app.command()

@@ -17,6 +17,7 @@ STATUS_HEX = {
     "warn": "#ef6c00",
     "fail": "#c62828",
     "input-error": "#6a1b9a",
+    "internal-error": "#4a148c",
 }
 SUBSYSTEM_NAMES = {
     "tower": "Tower",
@@ -107,7 +108,7 @@ class _Kit:
 def build(
     entries: Sequence[tuple[dict[str, Any], dict[str, bytes]]],
     *,
-    errors: Sequence[tuple[str, str]] = (),
+    errors: Sequence[tuple[str, str, str]] = (),
     title: str = "wtvib vibration audit",
 ) -> bytes:
     """PDF bytes for one or many audited turbines (and the inputs that failed to load).
@@ -146,8 +147,8 @@ def build(
                 k.p(_pct(worst.get("margin")) if worst else ""),
             ]
         )
-    for file, message in errors:
-        rows.append([k.p("—"), k.p(file), k.p("—"), k.status("input-error"), k.p(message), k.p("")])
+    for file, message, outcome in errors:
+        rows.append([k.p("—"), k.p(file), k.p("—"), k.status(outcome), k.p(message), k.p("")])
     story.append(k.table(rows, [0.2, 0.28, 0.1, 0.1, 0.24, 0.08]))
     for r, pngs in entries:
         story += [k.PageBreak(), *_turbine(k, r, pngs)]

@@ -151,9 +151,10 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
         row = it.row()
         counts[row["verdict"]] = counts.get(row["verdict"], 0) + 1
         verdict = Text(row["verdict"].upper(), style=STYLE.get(row["verdict"], "magenta"))
-        if row["verdict"] == "input-error":
+        if row["verdict"] in ("input-error", "internal-error"):
             errors.append(row)
-            table.add_row(verdict, Path(row["file"]).name, "—", "input error (below)", "")
+            kind = row["verdict"].replace("-", " ")
+            table.add_row(verdict, Path(row["file"]).name, "—", f"{kind} (below)", "")
             continue
         margin = "" if row["margin"] is None else f"{row['margin']:.1%}"
         table.add_row(
@@ -161,7 +162,9 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
         )
     console.print(table)
     for row in errors:
-        console.print(Text(f"input error: {row['message']}", style="magenta"))
+        console.print(
+            Text(f"{row['verdict'].replace('-', ' ')}: {row['message']}", style="magenta")
+        )
     console.print(", ".join(f"{n} {k}" for k, n in sorted(counts.items())))
     if written:
         folder = {p.parent for p in written}

@@ -5,6 +5,7 @@ importer produces a plain wtvib-format dictionary first, so ``wtvib convert`` ca
 it out as an editable spec.
 """
 
+import math
 from pathlib import Path
 from typing import Any
 
@@ -45,6 +46,7 @@ def to_data(
     p = Path(path)
     text = read_text(p)
     kind = detect(p, text)
+    _check_options(p, kind, rpm, rated, head_mass)
     if kind == "elastodyn":
         from . import elastodyn
 
@@ -70,11 +72,41 @@ def load(
     p = Path(path)
     text = read_text(p)
     kind = detect(p, text)
+    _check_options(p, kind, rpm, rated, head_mass)
     if kind == "wtvib" and rpm is None and rated is None:
         from ..spec import from_document
 
         return from_document(load_document(p, text))
     return from_data(to_data(p, rpm=rpm, rated=rated, head_mass=head_mass), source=str(p))
+
+
+def _check_options(
+    path: Path,
+    kind: str,
+    rpm: tuple[float, float] | None,
+    rated: float | None,
+    head_mass: float | None,
+) -> None:
+    """The import options, one rule and one message each, for every format."""
+    if head_mass is not None:
+        if kind != "windio":
+            what = "the deck's" if kind == "elastodyn" else "the spec's"
+            raise SpecError(
+                f"--head-mass applies to windIO files only; {what} own tower-head masses are "
+                "used (edit them, or convert the file and edit the spec)",
+                source=str(path),
+            )
+        if not (math.isfinite(head_mass) and head_mass > 0):
+            raise SpecError(f"--head-mass must be a mass above 0 kg (got {head_mass:g})")
+    if rated is not None and not (math.isfinite(rated) and rated > 0):
+        raise SpecError(f"--rated must be a speed above 0 rpm (got {rated:g})")
+    if (
+        rpm is not None
+        and rated is not None
+        and rpm[0] != rpm[1]
+        and not (rpm[0] <= rated <= rpm[1])
+    ):
+        raise SpecError(f"--rated {rated:g} rpm lies outside --rpm {rpm[0]:g}:{rpm[1]:g}")
 
 
 def is_main_input(path: Path) -> bool:
