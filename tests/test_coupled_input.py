@@ -70,9 +70,23 @@ def test_json_carries_the_coupled_modes_and_the_comparison(tmp_path):
     assert {"system.tower.fa1", "system.tower.ss1", "system.blade.flap1.collective"} <= ids
     assert all(m["speed_dependent"] for m in data["modes"] if m["subsystem"] == "system")
     check = next(c for c in data["checks"] if c["id"] == "system.coupling")
-    assert check["status"] == "info" and check["condition"] == "locked"
+    # issue 15, one truth per mode: the table is in the condition the modes are judged in
+    # (rotating: generator free, at standstill), so every id has one frequency in the report;
+    # the parked (locked) frequencies are a separate list under their own names
+    assert check["status"] == "info" and check["condition"] == "generator free, standstill"
     rows = {r["id"]: r for r in check["modes"]}
     assert rows["system.tower.fa1"]["isolated_id"] == "tower.fa1"
+    modes = {m["id"]: m["frequency_hz"] for m in data["modes"]}
+    for row in check["modes"]:
+        if row["id"] in modes:
+            assert row["coupled_hz"] == pytest.approx(modes[row["id"]], rel=1e-6)
+    assert check["parked"]["condition"] == "generator locked, parked"
+    assert all("id" not in r for r in check["parked"]["modes"])
+    # the isolated modes the coupled model has are shown, not judged
+    iso = {m["id"]: m for m in data["modes"]}
+    assert iso["tower.fa1"]["superseded_by"] == "system.tower.fa1"
+    judged = {c["mode"] for c in data["checks"] if c["id"].startswith("tower.resonance")}
+    assert "tower.fa1" not in judged
 
 
 def test_a_head_lighter_than_its_rotor_is_one_line_with_the_field_and_line(tmp_path):

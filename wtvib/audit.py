@@ -2,7 +2,7 @@
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from . import aeroelastic, blade, coupled, drivetrain, floquet, stall, tower, yaw
@@ -161,17 +161,27 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
     rule = settings.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
-    all_modes: list[Mode] = []
+    built: Built = {}
+    for name, build, _ in SUBSYSTEMS:
+        built[name] = build(spec, built)
+    # one truth per mode: isolated modes the coupled model has are shown, not judged
+    replaced = coupled.superseded(
+        built["system"], [m for n, ms in built.items() if n != "system" for m in ms], spec
+    )
+    for name in built:
+        built[name] = [
+            replace(m, superseded_by=replaced[m.id]) if m.id in replaced else m for m in built[name]
+        ]
+    all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
     tower_class = None
-    built: Built = {}
-    for name, build, damping in SUBSYSTEMS:
-        sub_modes = build(spec, built)
-        built[name] = sub_modes
-        all_modes += sub_modes
+    for name, _, damping in SUBSYSTEMS:
+        sub_modes = built[name]
         if name == "tower" and spec.rotor.orientation != "vertical-axis":
             first = tower.first_bending(sub_modes)
+            if first is not None and first.superseded_by is not None:
+                first = next(m for m in all_modes if m.id == first.superseded_by)
             if first is not None:
                 harmonics = [e for e in lines if e.acts_on("tower")]
                 c = tower.classify(first, harmonics, spec.rotor.blades, op, rule, damping(spec))

@@ -97,11 +97,19 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     colours = _palette(len(modes))
     for mode, colour in zip(modes, colours, strict=True):
         f_n = mode.frequency_at(omega)
-        lo, hi = rule.forbidden_band(1.0)
-        ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
         label = f"{mode.id}  {mode.frequency_hz:.3g} Hz"
         if spec.rotor.orientation == "vertical-axis":  # Darrieus modes need their names
             label += f" — {mode.description}"
+        if not mode.judged:  # shown as what it is: no margin band, no crossings
+            label += (
+                f" (isolated; judged as {mode.superseded_by})"
+                if mode.superseded_by
+                else " (reported only: exists in no operating regime)"
+            )
+            ax.plot(rpm, f_n, color=colour, lw=1.0, ls="--", alpha=0.7, label=label)
+            continue
+        lo, hi = rule.forbidden_band(1.0)
+        ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
         ax.plot(rpm, f_n, color=colour, lw=2.2, label=label)
 
     spread = (report.uncertainty or {}).get("modes", {})
@@ -285,8 +293,8 @@ def png_bytes(fig: "Figure") -> bytes:
 
 
 def diagrams(report: Report) -> dict[str, "Figure"]:
-    """Every diagram the report has modes for (Campbell diagrams, drive-train mode shapes),
-    keyed by file stem suffix."""
+    """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
+    shapes), keyed by file stem suffix."""
     from .modeshapes import (
         coupled_energy_plot,
         drivetrain_shapes_plot,
@@ -297,7 +305,9 @@ def diagrams(report: Report) -> dict[str, "Figure"]:
         stall_damping_plot,
     )
 
-    present = {m.subsystem for m in report.modes}
+    # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
+    # diagram of its own: the system diagram shows them where they are judged
+    present = {m.subsystem for m in report.modes if m.judged}
     out = {
         name: campbell_plot(report, subs)
         for name, subs in DIAGRAMS.items()

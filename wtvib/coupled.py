@@ -66,7 +66,7 @@ from . import beam, blade, drivetrain, modal, tower, yaw
 from .errors import SpecError
 from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
 from .multiblade import parked, sweep
-from .results import Check, Mode, Rule, Sampled
+from .results import Check, Mode, Rule, Sampled, Whirl
 from .rules import Status
 from .spec import BladeStructure, Spec, TowerHead
 from .units import rpm_to_rad_s
@@ -587,8 +587,9 @@ def applies(spec: Spec) -> bool:
 
 
 def speeds(spec: Spec) -> Array:
-    """Rotor speeds of the sweep: standstill to 1.1 × overspeed [rad/s]."""
-    top = float(rpm_to_rad_s(spec.rotor.speed.overspeed)) * 1.1
+    """Rotor speeds of the sweep: standstill to the overspeed limit [rad/s] (nothing is
+    judged beyond it, so nothing is computed or drawn there)."""
+    top = float(rpm_to_rad_s(spec.rotor.speed.overspeed))
     return np.linspace(0.0, top, SPEED_SAMPLES)
 
 
@@ -601,18 +602,39 @@ def modes(spec: Spec) -> list[Mode]:
     if not applies(spec):
         return []
     assert spec.coupled is not None
-    model = build(spec, spec.coupled.rotating_condition)
+    cond = spec.coupled.rotating_condition
+    model = build(spec, cond)
+    condition = f"coupled model, generator {cond}"
+
+    def exists(name: str) -> frozenset[str] | None:
+        # the drive train's modes hold in its generator condition; the rest do in any
+        return drivetrain.regimes(spec, cond) if name.startswith("drivetrain") else None
+
     if spec.rotor.blades < 3:
         res = parked(model)
         return [
-            Mode(f"system.{n}", "system", f"{d}, parked (coupled)", float(f))
+            Mode(
+                f"system.{n}",
+                "system",
+                f"{d}, parked (coupled)",
+                float(f),
+                regimes=exists(n),
+                condition=f"{condition}, parked",
+            )
             for f, n, d in zip(res.frequency_hz, res.names, res.descriptions, strict=True)
         ]
     sw = sweep(model, speeds(spec))
+    omega = tuple(sw.omega.tolist())
     out = []
     for j, name in enumerate(sw.names):
-        curve = Sampled(tuple(sw.omega.tolist()), tuple(sw.frequency_hz[:, j].tolist()))
+        curve = Sampled(omega, tuple(sw.frequency_hz[:, j].tolist()))
         zeta = float(sw.damping_ratio[j])
+        labels = sw.whirl[j]
+        whirl = (
+            Whirl(omega, tuple(w or "fixed" for w in labels))
+            if any(w is not None for w in labels)
+            else None
+        )
         out.append(
             Mode(
                 f"system.{name}",
@@ -622,6 +644,9 @@ def modes(spec: Spec) -> list[Mode]:
                 # the drive train's dampers, where they damp the mode; else the default
                 damping_ratio=zeta if zeta > 1e-4 else None,
                 curve=curve,
+                regimes=exists(name),
+                condition=condition,
+                whirl=whirl,
             )
         )
     return sorted(out, key=lambda m: m.frequency_hz)
@@ -644,12 +669,37 @@ def isolated_id(name: str, condition: str) -> str:
     return "blade." + name.split(".")[1]
 
 
+def superseded(system: list[Mode], isolated: list[Mode], spec: Spec) -> dict[str, str]:
+    """Isolated mode id → the coupled mode that replaces it in the judgement.
+
+    One truth per mode (DESIGN.md): where the coupled model has a subsystem's mode, in the
+    same generator condition, the coupled mode is judged and the isolated one is shown
+    beside it as what it is.
+    """
+    if not system or spec.coupled is None:
+        return {}
+    cond = spec.coupled.rotating_condition
+    have = {m.id for m in isolated}
+    out: dict[str, str] = {}
+    for m in system:
+        iso = isolated_id(m.id.removeprefix("system."), cond)
+        if iso in have and iso not in out:
+            out[iso] = m.id
+    return out
+
+
 def check(spec: Spec, isolated: list[Mode]) -> Check | None:
-    """Parked coupled frequencies against the isolated subsystems' (Hau §7.6)."""
+    """Coupled frequencies at standstill against the isolated subsystems' (Hau §7.6).
+
+    The table holds the coupled modes in the condition they are judged in (the rotating
+    condition, at standstill), so each id has the frequency it has everywhere in the report;
+    where the spec's parked condition differs (Jonkman et al. 2009 Table 9-1: generator
+    locked), those frequencies follow in a separate, labelled list.
+    """
     if not applies(spec):
         return None
     assert spec.coupled is not None
-    cond = spec.coupled.parked_condition
+    cond = spec.coupled.rotating_condition
     model = build(spec, cond)
     res = parked(model)
     by_id = {m.id: m.frequency_hz for m in isolated}
@@ -674,21 +724,36 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
         f"{r['id']} {r['isolated_hz']:.3g} → {r['coupled_hz']:.3g} Hz ({r['change']:+.0%})"
         for r in apart[:3]
     )
+    numbers: dict[str, Any] = {
+        "condition": f"generator {cond}, standstill",
+        "modes": rows,
+        "model": list(_statements(model)),
+    }
+    other = spec.coupled.parked_condition
+    if other != cond:
+        alt = parked(build(spec, other))
+        numbers["parked"] = {
+            "condition": f"generator {other}, parked",
+            "modes": [
+                {"name": n, "frequency_hz": round(float(f), 6)}
+                for f, n in zip(alt.frequency_hz, alt.names, strict=True)
+            ],
+        }
     return Check(
         id="system.coupling",
         subsystem="system",
         status="info",
-        message=f"Coupled whole-turbine model, parked, generator {cond}: {close} of the "
+        message=f"Coupled whole-turbine model at standstill, generator {cond}: {close} of the "
         f"{len(paired)} modes with an isolated counterpart lie within {CLOSE:.0%} of it (Hau "
         "§7.6: one mode dominates and stays close to the isolated subsystem's frequency)"
         + (f"; departing most: {shifts}" if shifts else "")
-        + ". Where they differ, design against the coupled value.",
+        + ". The coupled modes are the ones judged; the isolated values are shown beside them.",
         rule=Rule(
             "coupled modes vs isolated subsystems",
             "Hau, Wind Turbines, §7.6: strongly coupled subsystems produce coupling modes "
             "whose frequencies deviate distinctly from the separate natural frequencies",
         ),
-        numbers={"condition": cond, "modes": rows, "model": list(_statements(model))},
+        numbers=numbers,
     )
 
 

@@ -164,6 +164,19 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
     )
 
 
+def regimes(spec: Spec, condition: str) -> frozenset[str]:
+    """The operating regimes a generator condition exists in.
+
+    With a grid (or converter) coupling the turbine runs on it and is free only while
+    idling or after a grid loss (start-up, overspeed); without one, free *is* the operating
+    condition (a torque-controlled generator the spec does not model), in every regime.
+    Locked (brake applied) exists in none: its modes are reported, never judged.
+    """
+    if condition == "free" and "grid" not in conditions(spec):
+        return frozenset({"steady", "quick-pass", "overspeed", "start-up"})
+    return REGIMES[condition]
+
+
 def conditions(spec: Spec) -> list[str]:
     """The conditions the turbine can be in: grid (if coupled), free, locked."""
     dt = spec.drivetrain
@@ -267,7 +280,8 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
                     frequency_hz=float(f),
                     damping_ratio=zeta if zeta > 1e-6 else None,
                     shape=Shape(positions, tuple(res.shapes[:, j - 1].tolist()), names),
-                    regimes=REGIMES[condition],
+                    regimes=regimes(spec, condition),
+                    condition=CONDITIONS[condition],
                 )
             )
     return out
@@ -283,7 +297,10 @@ def _given(spec: Spec) -> list[Mode]:
                 f"{ordinal(int(name.split('.')[1]))} drive-train torsion, {CONDITIONS[c]}"
             ),
         )
-        out += [replace(m, regimes=REGIMES[condition]) for m in found]
+        out += [
+            replace(m, regimes=regimes(spec, condition), condition=CONDITIONS[condition])
+            for m in found
+        ]
     return out
 
 

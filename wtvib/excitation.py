@@ -71,6 +71,7 @@ class Excitation:
     description: str
     subsystems: frozenset[str] | None = None
     offset_hz: float = 0.0  # a fixed-frequency excitation has order 0 and this offset
+    blades: int | None = None  # rotor harmonics: the rotor's blade count (energy by frame)
 
     def frequency_hz(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Excitation frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
@@ -78,6 +79,55 @@ class Excitation:
 
     def acts_on(self, subsystem: str) -> bool:
         return self.subsystems is None or subsystem in self.subsystems
+
+    def blade_harmonic(self, whirl: str | None) -> int | None:
+        """The rotating-frame harmonic that drives a fixed-frame rotor mode of ``whirl`` on
+        this fixed-frame line (:func:`driving_harmonic`); None for other lines and modes."""
+        if self.blades is None or whirl is None:
+            return None
+        return driving_harmonic(round(self.order), whirl)
+
+    def energy_for(self, whirl: str | None) -> Energy | None:
+        """Energy class of this line on a mode of ``whirl``; None: the line cannot drive it."""
+        if self.blades is None or whirl is None:
+            return self.energy
+        k = round(self.order)
+        ms = (k - 1, k + 1) if whirl == "cyclic" else (driving_harmonic(k, whirl),)
+        found = [harmonic_energy(m, self.blades) for m in ms if m >= 1]
+        return min(found, key=_ENERGY_RANK.index) if found else None
+
+
+def driving_harmonic(k: int, whirl: str) -> int:
+    """The blade (rotating-frame) harmonic mP behind a fixed-frame rotor mode on line kP.
+
+    Notes
+    -----
+    Blade b of N sits at ψ_b = Ωt + 2πb/N; an azimuth-periodic load on it, F cos(mψ_b), is a
+    rotating-frame harmonic mP. In multi-blade coordinates the collective part
+    (1/N)Σ_b cos(mψ_b) is cos(mΩt) when N divides m and zero otherwise; the cyclic part
+    (2/N)Σ_b cos(mψ_b)·cos ψ_b = (1/N)Σ_b[cos((m+1)ψ_b) + cos((m−1)ψ_b)] carries fixed-frame
+    frequencies (m ± 1)Ω. A cyclic mode of rotating frequency f_R appears in the fixed frame
+    as the backward whirl f_R − Ω and the forward whirl f_R + Ω. So a backward-whirl mode met
+    by fixed-frame kP has f_R = (k + 1)Ω — the blades' (k+1)P drives it; a forward-whirl mode
+    (k − 1)P; a collective mode kP. A cyclic pair that does not travel (standstill) is judged
+    by the stronger of (k ± 1)P. For three blades, fixed 3P on a flap backward
+    whirl is the blades' 4P (minor), on a forward whirl their 2P (secondary).
+
+    References
+    ----------
+    M. H. Hansen, "Aeroelastic instability problems for wind turbines", Wind Energy 10 (2007)
+    551–577, §2 (whirl frequencies f_R ∓ Ω); G. Bir, NREL/CP-500-42553 (2008), §2 (MBC);
+    DOMAIN.md §3 ("Fixed and rotating frames").
+    """
+    if whirl == "backward":
+        return k + 1
+    if whirl == "forward":
+        return k - 1
+    return k  # collective, alternating (a cyclic pair at rest: see Excitation.energy_for)
+
+
+#: Energy classes, strongest first.
+_ENERGY_RANK: tuple[Energy, ...] = ("dominant", "secondary", "minor")
 
 
 def harmonic_energy(k: int, blades: int) -> Energy:
@@ -101,7 +151,9 @@ def rotor_harmonics(blades: int, highest: int) -> list[Excitation]:
     """The rotor harmonics 1P … ``highest``·P, always including N_b·P."""
     top = max(highest, blades)
     return [
-        Excitation(f"{k}P", float(k), harmonic_energy(k, blades), _harmonic_text(k, blades))
+        Excitation(
+            f"{k}P", float(k), harmonic_energy(k, blades), _harmonic_text(k, blades), blades=blades
+        )
         for k in range(1, top + 1)
     ]
 

@@ -105,6 +105,7 @@ class SystemModes:
     names: tuple[str, ...]
     descriptions: tuple[str, ...]
     energy: tuple[dict[str, float], ...]  # shares by group, cyclic pairs merged (shares())
+    whirl: tuple[str | None, ...]  # backward / collective / forward / cyclic …; None: no rotor
     damping_ratio: Array | None = None  # −Re λ/|λ| (rotating solve; the drive train's dampers)
 
 
@@ -168,24 +169,27 @@ def shares(
 
 def _name(
     model: "Model", m: Array, shapes: NDArray[np.complex128]
-) -> tuple[tuple[str, ...], tuple[str, ...], tuple[dict[str, float], ...]]:
-    """Ids, descriptions and energy shares (merged) of each mode, named by those shares."""
+) -> tuple[tuple[str, ...], tuple[str, ...], tuple[dict[str, float], ...], tuple[str | None, ...]]:
+    """Ids, descriptions, energy shares (merged) and whirl of each mode, named by those
+    shares."""
     groups = _groups(model)
     names: list[str] = []
     texts: list[str] = []
     energy: list[dict[str, float]] = []
+    whirls: list[str | None] = []
     counters: dict[str, int] = {}
     for j in range(shapes.shape[1]):
         x = shapes[:, j]
         share, merged = shares(model, m, x)
         top = max(merged, key=lambda g: merged[g])
-        name, text = _mode_name(top, share, x, groups, counters)
+        name, text, whirl = _mode_name(top, share, x, groups, counters)
         if name in names:
             name = f"{name}_{sum(n.startswith(name) for n in names) + 1}"
         names.append(name)
         texts.append(text)
         energy.append(merged)
-    return tuple(names), tuple(texts), tuple(energy)
+        whirls.append(whirl)
+    return tuple(names), tuple(texts), tuple(energy), tuple(whirls)
 
 
 def _mode_name(
@@ -194,7 +198,7 @@ def _mode_name(
     x: NDArray[np.complex128],
     groups: dict[str, Index],
     counters: dict[str, int],
-) -> tuple[str, str]:
+) -> tuple[str, str, str | None]:
     if top in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw"):
         counters[top] = counters.get(top, 0) + 1
         k = counters[top]
@@ -205,15 +209,16 @@ def _mode_name(
             "drivetrain": "drive-train torsion",
             "yaw": "yaw",
         }[top]
-        return f"{top}{k}", f"{ordinal(k)} {label}"
+        return f"{top}{k}", f"{ordinal(k)} {label}", None
     _, mode, coord = top.split(".")
     kind = mode.rstrip("0123456789")
     number = int(mode[len(kind) :])
     words = f"{ordinal(number)} blade {_KINDS[kind]}"
     if coord == "collective":
-        return f"blade.{mode}.collective", f"{words}, collective"
+        return f"blade.{mode}.collective", f"{words}, collective", "collective"
     if coord == "alternating":
-        return f"blade.{mode}.alternating", f"{words}, alternating (two blades in opposition)"
+        text = f"{words}, alternating (two blades in opposition)"
+        return f"blade.{mode}.alternating", text, "alternating"
     h = coord.removeprefix("cyclic")
     c = share.get(f"blade.{mode}.cos{h}", 0.0)
     s = share.get(f"blade.{mode}.sin{h}", 0.0)
@@ -228,8 +233,9 @@ def _mode_name(
     scale = float(abs(xc) * abs(xs)) or 1.0
     if abs(whirl) > 0.5 * scale:  # rotating: the cyclic pattern travels round the rotor
         turn = "forward" if whirl < 0 else "backward"
-        return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix}, {turn} whirl"
-    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})"
+        name = f"blade.{mode}.cyclic{suffix}_{axis}"
+        return name, f"{words}, cyclic{suffix}, {turn} whirl", turn
+    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})", "cyclic"
 
 
 # ---------------------------------------------------------------------------------------
@@ -245,6 +251,7 @@ class Sweep:
     names: tuple[str, ...]  # named at the first speed (standstill)
     descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
     damping_ratio: Array  # at the first speed
+    whirl: tuple[tuple[str | None, ...], ...]  # (modes, speeds): the whirl at each speed
 
 
 def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
@@ -260,16 +267,19 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     freqs[0] = first.frequency_hz
     shapes = first.shapes
     last = first.descriptions
+    whirl = [list(first.whirl)]
     for i, om in enumerate(speeds[1:], start=1):
         cur = rotating(model, float(om), kept + 4)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         shapes = cur.shapes[:, order]
         last = tuple(cur.descriptions[o] for o in order)
+        whirl.append([cur.whirl[o] for o in order])
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
     texts = tuple(
         f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
         for a, b in zip(first.descriptions, last, strict=True)
     )
     assert first.damping_ratio is not None
-    return Sweep(np.asarray(speeds, float), freqs, first.names, texts, first.damping_ratio)
+    by_mode = tuple(tuple(row[j] for row in whirl) for j in range(kept))
+    return Sweep(np.asarray(speeds, float), freqs, first.names, texts, first.damping_ratio, by_mode)

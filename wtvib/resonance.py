@@ -19,6 +19,7 @@ start-up only      info for dominant/secondary lines: the "encounter" of soft
 """
 
 import itertools
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
@@ -53,6 +54,8 @@ class Finding:
     violations: dict[str, tuple[Interval, ...]]
     regime_status: dict[str, Status]
     heavily_damped: bool = False
+    energy: str = "dominant"  # the line's energy class on this mode (by its whirl)
+    driven_by: str | None = None  # rotating-frame harmonic behind a fixed-frame rotor mode
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
         """Status of a violation at one rotor speed, by the regime that speed is in (pass
@@ -92,14 +95,25 @@ def assess(
     violations = _split_by_regime(forbidden, op, gap)
     if mode.regimes is not None:  # a condition that exists only in some regimes
         violations = {k: (v if k in mode.regimes else ()) for k, v in violations.items()}
-    energy = severity[exc.energy]
-    if exc.energy == "secondary" and not any(gap(w) < 0 for w in op.dwell):
+    speed, margin = _worst_judged(sep, op, crossings, mode.regimes)
+    # a fixed-frame rotor mode takes the class of the blade harmonic that drives it, at the
+    # speed where it is met (its whirl can change along the curve)
+    at = next((0.5 * (a + b) for r in _REGIMES for a, b in violations[r][:1]), speed)
+    whirl = mode.whirl.at(at) if mode.whirl is not None else None
+    line_energy = exc.energy_for(whirl)
+    harmonic = exc.blade_harmonic(whirl)
+    driven_by = f"{harmonic}P" if harmonic is not None else None
+    if line_energy is None:  # e.g. forward whirl on 1P: a steady blade load, no vibration
+        violations = {k: () for k in violations}
+        line_energy = "minor"
+    energy = severity[line_energy]
+    if line_energy == "secondary" and not any(gap(w) < 0 for w in op.dwell):
         energy = _MILDER[energy]  # swept through in partial load, not dwelt at (Hau 7.5.2)
     regime_status: dict[str, Status] = {
         "steady": energy,
         "quick-pass": _MILDER[energy],
         "overspeed": _MILDER[energy],
-        "start-up": "info" if exc.energy != "minor" and energy != "pass" else "pass",
+        "start-up": "info" if line_energy != "minor" and energy != "pass" else "pass",
     }
     heavily_damped = mode.damping_ratio is not None and mode.damping_ratio >= heavy_damping
     if heavily_damped:
@@ -112,7 +126,6 @@ def assess(
     if status == "pass":
         regime = None
 
-    speed, margin = _worst_steady(sep, op, crossings)
     w = np.array([speed])
     f_e = float(exc.frequency_hz(w)[0])
     f_n = float(mode.frequency_at(w)[0])
@@ -133,6 +146,8 @@ def assess(
         violations,
         regime_status,
         heavily_damped,
+        line_energy,
+        driven_by,
     )
 
 
@@ -263,12 +278,23 @@ def _subtract(part: Interval, holes: Sequence[Interval]) -> list[Interval]:
     return pieces
 
 
-def _worst_steady(
-    sep: ArrayFn, op: OperatingRange, crossings: Sequence[float]
+_REGIMES = ("steady", "quick-pass", "overspeed", "start-up")
+
+
+def _worst_judged(
+    sep: ArrayFn, op: OperatingRange, crossings: Sequence[float], regimes: frozenset[str] | None
 ) -> tuple[float, float]:
-    """Speed of least separation in steady operation, and that separation."""
-    pts = [np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in op.steady]
-    inside = [c for c in crossings for a, b in op.steady if a <= c <= b]
+    """Speed of least separation where the mode is judged, and that separation: the steady
+    speeds, or — for a mode that exists only in transients (generator free) — the overspeed
+    band; NaN for a mode that exists only during start-up (a margin there means nothing)."""
+    if regimes is None or "steady" in regimes or "quick-pass" in regimes:
+        ranges = op.steady
+    elif "overspeed" in regimes:
+        ranges = ((op.highest, op.overspeed),)
+    else:
+        return op.lowest, math.nan
+    pts = [np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in ranges]
+    inside = [c for c in crossings for a, b in ranges if a <= c <= b]
     speeds = np.concatenate([*pts, np.array(inside, dtype=float)])
     s = sep(speeds)
     i = int(np.argmin(s))
@@ -284,12 +310,12 @@ def assess_all(
     default_damping: float,
     heavy_damping: float = 0.3,
 ) -> list[Finding]:
-    """Every mode against every excitation that acts on its subsystem."""
+    """Every judged mode (:attr:`Mode.judged`) against every excitation acting on it."""
     return [
         assess(m, e, op, rule, severity, default_damping, heavy_damping)
         for e in excitations
         for m in modes
-        if e.acts_on(m.subsystem)
+        if e.acts_on(m.subsystem) and m.judged
     ]
 
 
@@ -310,7 +336,17 @@ def _check(
     op: OperatingRange,
     rule: MarginRule,
 ) -> Check:
-    gov = max(findings, key=lambda f: (STATUS_ORDER[f.status], -f.margin))
+    # the worst status; among equals a mode of the condition the turbine runs in, then the
+    # least margin (a margin is measured where the mode exists: see _worst_judged)
+    gov = max(
+        findings,
+        key=lambda f: (
+            STATUS_ORDER[f.status],
+            f.mode.regimes is None or "steady" in f.mode.regimes,
+            not math.isnan(f.margin),
+            -f.margin if not math.isnan(f.margin) else 0.0,
+        ),
+    )
     others = [f.mode.id for f in findings if f is not gov and f.status == gov.status != "pass"]
     message = _message(gov, op, rule)
     if others:
@@ -321,12 +357,14 @@ def _check(
         "energy": exc.energy,
         "mode": gov.mode.id,
         "frequency_hz": _r(gov.natural_hz),
-        "margin": _r(gov.margin),
+        "margin": _r(gov.margin) if math.isfinite(gov.margin) else None,
         "required_margin": rule.margin,
         "speed_rpm": _r(float(rad_s_to_rpm(gov.speed))),
         "excitation_hz": _r(gov.excitation_hz),
         "daf": _r(gov.daf) if np.isfinite(gov.daf) else None,
         "regime": gov.regime,
+        "energy_on_mode": gov.energy,
+        **({"driven_by": gov.driven_by} if gov.driven_by else {}),
         "crossings_rpm": [_r(float(rad_s_to_rpm(c))) for c in gov.crossings],
         "exclude_rpm": [
             [_r(float(rad_s_to_rpm(a))), _r(float(rad_s_to_rpm(b)))] for a, b in _merge(exclude)
@@ -370,11 +408,20 @@ def _span(iv: Interval) -> str:
 
 
 def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
-    name = f"{f.mode.id} ({f.natural_hz:.3g} Hz)"
+    whirl = f.mode.whirl.at(f.speed) if f.mode.whirl is not None else None
+    name = f"{f.mode.id} ({f.natural_hz:.3g} Hz{', ' + whirl if whirl else ''})"
     need = f"needs {rule.margin:.0%}"
     exc = f.excitation.id
+    if f.driven_by and f.driven_by != exc:
+        exc = f"{exc} (the blades' {f.driven_by} in the rotating frame)"
     if f.regime is None:
-        where = "at the operating speed" if not op.variable else "over the operating range"
+        if math.isnan(f.margin):
+            return f"{name} exists only during start-up/shut-down: not judged against {exc}"
+        regimes = f.mode.regimes
+        if regimes is not None and "steady" not in regimes:
+            where = f"in the regimes it exists in ({', '.join(sorted(regimes))})"
+        else:
+            where = "at the operating speed" if not op.variable else "over the operating range"
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
     spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
     if f.heavily_damped and f.regime not in (None, "start-up"):
@@ -386,9 +433,9 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
     if f.regime == "steady":
         text = f"{name} within the margin of {exc} in steady operation at {spans}: "
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
-        if f.excitation.energy == "minor":
+        if f.energy == "minor":
             text += "; a low-energy harmonic (Hau 7.2.2)"
-        elif f.excitation.energy == "secondary":
+        elif f.energy == "secondary":
             dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
             text += (
                 "; a secondary harmonic at the rated speed: resonant in practice (WKA-60, "

@@ -64,6 +64,25 @@ class Shape:
     labels: tuple[str, ...] = ()
 
 
+#: Whirl of a fixed-frame rotor mode (three or more blades): how its blade motion travels.
+WHIRLS = ("backward", "collective", "forward", "cyclic", "alternating")
+
+
+@dataclass(frozen=True)
+class Whirl:
+    """Whirl labels of a fixed-frame rotor mode at rotor speeds ``omega`` [rad/s] (the speeds
+    of its curve): ``backward`` (f_R − Ω), ``collective``, ``forward`` (f_R + Ω), or ``cyclic``
+    where the pair does not travel (standstill)."""
+
+    omega: tuple[float, ...]
+    labels: tuple[str, ...]
+
+    def at(self, omega: float) -> str:
+        """The label at the sampled speed nearest ``omega``."""
+        i = int(np.argmin(np.abs(np.asarray(self.omega) - omega)))
+        return self.labels[i]
+
+
 @dataclass(frozen=True)
 class Mode:
     """A natural mode of one subsystem.
@@ -80,6 +99,9 @@ class Mode:
     curve: SpeedCurve | None = None
     shape: Shape | None = field(default=None, compare=False)
     regimes: frozenset[str] | None = None  # operating regimes the mode exists in (None: all)
+    condition: str | None = None  # the condition the frequency holds in (generator free …)
+    whirl: Whirl | None = field(default=None, compare=False)
+    superseded_by: str | None = None  # the coupled mode judged in its place
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
@@ -97,7 +119,15 @@ class Mode:
             "damping_ratio": self.damping_ratio,
             "speed_dependent": self.curve is not None,
             **({"regimes": sorted(self.regimes)} if self.regimes is not None else {}),
+            **({"condition": self.condition} if self.condition is not None else {}),
+            **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
         }
+
+    @property
+    def judged(self) -> bool:
+        """Whether the resonance routine judges this mode: it exists in some operating regime
+        and no better (coupled) model has it."""
+        return self.superseded_by is None and (self.regimes is None or bool(self.regimes))
 
 
 @dataclass(frozen=True)
