@@ -707,6 +707,8 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
         iso = isolated_id(name, cond)
         f_iso = by_id.get(iso)
+        # the judged mode's own standstill value (damped |λ|, as in the modes list)
+        f = by_id.get(f"system.{name}", float(f))
         rows.append(
             {
                 "id": f"system.{name}",

@@ -286,3 +286,45 @@ def test_drive_train_damper_damps_the_coupled_drive_train_mode(nrel):
     assert ms["system.drivetrain1"].damping_ratio is not None
     assert 0.001 < ms["system.drivetrain1"].damping_ratio < 0.2
     assert ms["system.tower.fa1"].damping_ratio is None
+
+
+@pytest.mark.parametrize("rpm", [9.0, 12.1])
+def test_whirl_labels_map_fixed_frame_lines_to_the_blade_harmonic(nrel, rpm):
+    """Issue 15: on a rigid support the fixed-frame frequency of each whirl mode, in units of
+    1P, plus the shift of excitation.driving_harmonic (backward +1, forward −1, collective
+    0) is the isolated rotating blade's frequency in units of 1P — the blade harmonic that
+    meets the mode where a fixed-frame line kP does. Derivation in driving_harmonic."""
+    from wtvib.excitation import driving_harmonic
+
+    s = stiffened(nrel, tower_ei=1e6)
+    omega = rpm * math.pi / 30
+    res = multiblade.rotating(coupled.build(s, "locked"), omega, 20)
+    names, freqs, _, _ = blade.rotating_modes(s.blade.structure, np.array([omega]))  # type: ignore[arg-type]
+    iso = dict(zip(names, freqs[0], strict=True))
+    p = omega / (2 * math.pi)
+    seen = set()
+    for f, name, whirl in zip(res.frequency_hz, res.names, res.whirl, strict=True):
+        mode = name.split(".")[1] if name.startswith("blade.") else None
+        if mode not in ("flap1", "edge1") or whirl not in ("backward", "forward", "collective"):
+            continue
+        k = f / p  # the fixed-frame "harmonic" this mode sits on
+        shift = driving_harmonic(10, whirl) - 10
+        assert k + shift == pytest.approx(iso[mode] / p, rel=2e-3), (name, whirl)
+        seen.add((mode, whirl))
+    assert {("flap1", w) for w in ("backward", "forward", "collective")} <= seen
+
+
+def test_nrel_flap_backward_whirl_on_3p_is_the_blades_4p(nrel):
+    """The resonance the isolated blade check called 4P (info) and the coupled check 3P
+    (fail) — judged once: on fixed 3P the flap backward whirl is driven by the blades' 4P,
+    a minor harmonic (info), and the isolated blade mode is not judged at all."""
+    r = audit.run(nrel)
+    f = next(
+        f
+        for f in r.findings
+        if f.mode.id == "system.blade.flap1.cyclic_yaw" and f.excitation.id == "3P"
+    )
+    assert f.driven_by == "4P" and f.energy == "minor" and f.status == "info"
+    assert not [x for x in r.findings if x.mode.id == "blade.flap1"]
+    ids = {m.id: m for m in r.modes}
+    assert ids["blade.flap1"].superseded_by == "system.blade.flap1.cyclic_yaw"
