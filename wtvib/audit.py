@@ -245,8 +245,9 @@ def _assert_finite(modes: list[Mode]) -> None:
 
 
 def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
-    """Legal but suspicious inputs, each with the reason (issue 9: warn, do not refuse)."""
-    out = []
+    """Legal but suspicious inputs, each with the reason (issue 9: warn, do not refuse), and
+    what an importer had to assume."""
+    out = list(spec.warnings)
     speed = spec.rotor.speed
     diameter = spec.turbine.rotor_diameter_m
     if diameter and diameter > 40 and speed.top_rpm > 100:

@@ -46,8 +46,6 @@ def terminal(
             console.print(table)
     if data.get("uncertainty"):
         console.print(_uncertainty(data["uncertainty"]))
-    for line in data.get("warnings", []):
-        console.print(Text(f"warning: {line}", style="yellow"))
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
         console.print(Text(f"  • {line}"))
@@ -78,6 +76,8 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
         f"({data['rule']['preset'] or 'custom'})",
     )
     grid.add_row("Verdict", Text(verdict.upper(), style=STYLE[verdict]))
+    for line in data.get("warnings", []):  # what the audit had to assume, in the headline
+        grid.add_row(Text("Warning", style="yellow"), Text(line, style="yellow"))
     return Panel(grid, title="wtvib audit", border_style=STYLE[verdict])
 
 

@@ -864,6 +864,11 @@ class Spec(_Strict):
         default_factory=list,
         description="How the spec was made (e.g. by an importer): shown in the report.",
     )
+    warnings: list[str] = Field(
+        default_factory=list,
+        description="What the importer could not find and had to assume, loudly: shown in the "
+        "report's headline and warnings.",
+    )
 
     _source_file: str | None = PrivateAttr(None)
     _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)

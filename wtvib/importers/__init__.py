@@ -20,8 +20,8 @@ def detect(path: Path, text: str) -> str:
     """``wtvib``, ``windio`` or ``elastodyn`` by content; SpecError for anything else."""
     head = text[:4000]
     deck_like = path.suffix.lower() in (".dat", ".fst") or "ELASTODYN" in head.upper()
-    if deck_like and ("TwrFile" in text or "NumBl" in text):
-        return "elastodyn"
+    if deck_like and ("TwrFile" in text or "NumBl" in text or "EDFile" in text):
+        return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
     if path.suffix.lower() in (".yaml", ".yml"):
         windio_like = "components:" in text and ("assembly:" in text or "windIO" in text)
         return "windio" if windio_like and "wtvib:" not in head else "wtvib"
@@ -119,7 +119,7 @@ def is_main_input(path: Path) -> bool:
             head = path.read_bytes()[:200_000]
         except OSError:
             return True  # let the audit report the read error
-        return b"TwrFile" in head
+        return b"TwrFile" in head or (suffix == ".fst" and b"EDFile" in head)
     return False
 
 
@@ -136,4 +136,9 @@ def _with_speed(
         else:
             speed["rated_rpm"] = rated
     notes = [*data.get("assumptions", []), "Operating speeds set on the command line."]
-    return {**data, "rotor": {**data["rotor"], "speed": speed}, "assumptions": notes}
+    # a range given on the command line answers the importer's "speed not found"
+    warnings = [w for w in data.get("warnings", []) if "--rpm" not in w]
+    out = {**data, "rotor": {**data["rotor"], "speed": speed}, "assumptions": notes}
+    if "warnings" in data:
+        out["warnings"] = warnings
+    return out

@@ -113,9 +113,108 @@ def _file(deck: Deck, *keys: str) -> Path:
     return path
 
 
+def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
+    """The ElastoDyn deck, the OpenFAST main input (.fst) that names it, and the ServoDyn
+    file that names — only files the deck set names, never files merely lying beside it.
+
+    ``path`` may be an OpenFAST ``.fst`` (its EDFile is followed), an ElastoDyn deck (a
+    ``.fst`` in the same folder whose EDFile is this file is taken as its main input) or a
+    FAST v7 ``.fst`` (one file: its own controls).
+    """
+    first = parse(path, text)
+    if "EDFile" in first.values:
+        fst: Deck | None = first
+        main = parse(_file(first, "EDFile"))
+    else:
+        main = first
+        fst = None
+        if "VSContrl" not in first.values:  # an OpenFAST ElastoDyn deck: find its .fst
+            for cand in sorted(path.parent.glob("*.fst")):
+                deck = parse(cand)
+                if "EDFile" in deck.values:
+                    named = (cand.parent / deck.text("EDFile")).resolve()
+                    if named == path.resolve():
+                        fst = deck
+                        break
+    servo = None
+    if fst is not None and "ServoFile" in fst.values and fst.num("CompServo", default=1) > 0:
+        servo = parse(_file(fst, "ServoFile"))
+    elif "VSContrl" in main.values:  # FAST v7: the controls are in the deck itself
+        servo = main
+    return main, fst, servo
+
+
+def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str] | None:
+    """The rotor's operating speeds [rpm] from the deck set's controller inputs, with a
+    sentence saying where they came from; None where the deck set does not give them.
+
+    Notes
+    -----
+    * Bladed-style DLL (ServoDyn ``VSContrl`` = 5, ROSCO): ``DLL_InFile``'s VS_MinOMSpd (the
+      minimum generator speed, rad/s) and VS_RefSpd (rated; else PC_RefSpd), over
+      WE_GearboxRatio (else GBRatio) — ROSCO input definitions.
+    * Simple variable speed (``VSContrl`` = 1): VS_RtGnSp (rated generator speed, rpm) gives
+      the rated rotor speed; the law holds no lowest speed, so the range is not complete.
+    * Fixed speed (``VSContrl`` = 0): the induction generator's synchronous speed SIG_SySp
+      (``GenModel`` 1) or 120·TEC_Freq/TEC_NPol (``GenModel`` 2) plus the rated slip
+      SIG_SlPc, over GBRatio.
+    FAST User's Guide (NREL/EL-500-38230) and ServoDyn input definitions.
+    """
+    if servo is None or "VSContrl" not in servo.values:
+        return None
+    gb = main.num("GBRatio", default=1.0)
+    mode = int(servo.num("VSContrl"))
+    rpm_of = 30 / math.pi
+    if mode == 5 and "DLL_InFile" in servo.values:
+        dll = _file(servo, "DLL_InFile")
+        ctrl = _discon(dll)
+        ratio = ctrl.get("WE_GearboxRatio", gb)
+        low = ctrl.get("VS_MinOMSpd")
+        rated = ctrl.get("VS_RefSpd", ctrl.get("PC_RefSpd"))
+        if low and rated and 0 < low < rated:
+            speed = {"min_rpm": low / ratio * rpm_of, "max_rpm": rated / ratio * rpm_of}
+            return speed, (
+                f"Operating range {speed['min_rpm']:.3g}–{speed['max_rpm']:.3g} rpm from "
+                f"{dll.name} (VS_MinOMSpd {low:g}, VS_RefSpd {rated:g} rad/s, gearbox "
+                f"{ratio:g}), named by {servo.path.name}."
+            )
+        return None
+    if mode == 0:
+        model = int(servo.num("GenModel", default=1))
+        sync = (
+            servo.num("SIG_SySp", default=0.0)
+            if model == 1
+            else 120
+            * servo.num("TEC_Freq", default=0.0)
+            / max(servo.num("TEC_NPol", default=1.0), 1.0)
+        )
+        slip = servo.num("SIG_SlPc", default=0.0) if model == 1 else 0.0
+        if 0 < sync < 9999 and 0 <= slip < 50:
+            fixed = sync * (1 + slip / 100) / gb
+            return {"fixed_rpm": fixed}, (
+                f"Fixed operating speed {fixed:.4g} rpm: the induction generator's synchronous "
+                f"speed {sync:g} rpm plus rated slip {slip:g} % over the gearbox ratio {gb:g} "
+                f"({servo.path.name})."
+            )
+    return None
+
+
+def _discon(path: Path) -> dict[str, float]:
+    """Numeric ``value ! Name`` lines of a ROSCO / Bladed-style controller input file."""
+    out: dict[str, float] = {}
+    for line in read_text(path).splitlines():
+        value, _, rest = line.partition("!")
+        names = rest.split()
+        parts = value.split()
+        if len(parts) == 1 and names and _NUMBER.match(parts[0]):
+            out.setdefault(names[0], float(parts[0].replace("D", "E")))
+    return out
+
+
 def to_spec_data(path: Path, text: str) -> dict[str, Any]:
-    """wtvib spec data from an ElastoDyn main deck (or FAST v7 .fst)."""
-    main = parse(path, text)
+    """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst."""
+    main, fst, servo = deck_set(path, text)
+    path = main.path
     tower = parse(_file(main, "TwrFile"))
     blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
@@ -139,7 +238,13 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     twist = blade.optional_column("BlFract", "StrcTwst")
 
     head, breakdown = tower_head(main, span, bmass, hub_r, n_blades)
-    speed = main.num("RotSpeed")
+    operating = _operating(main, servo)
+    read = [d.path for d in (fst, main, servo) if d is not None]
+    files = (
+        "Files read: "
+        + ", ".join(str(p) if p.parent != main.path.parent else p.name for p in dict.fromkeys(read))
+        + " (and the tower and blade files the deck names)."
+    )
     structure: dict[str, Any] = {
         "hub_radius_m": hub_r,
         "span_m": _list(span),
@@ -165,13 +270,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "blades": n_blades,
             "orientation": "upwind" if main.num("OverHang") < 0 else "downwind",
             "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
-            "speed": {
-                "fixed_rpm": q(
-                    speed,
-                    "RotSpeed; the deck holds one speed: give the "
-                    "operating range with --rpm MIN:MAX",
-                )
-            },
+            "speed": operating["speed"],
         },
         "tower": {
             "height_m": q(tower_height, "TowerHt − TowerBsHt"),
@@ -230,7 +329,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
                 },
             ],
         },
-        **_yaw(main, path),
+        **_yaw(main, servo),
         "coupled": {
             "apex_downwind_m": q(
                 main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
@@ -245,9 +344,10 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "Tower head assembled from its parts: " + breakdown + ".",
             "Precone and shaft tilt are neglected in the head inertia; the tower is clamped at "
             "its base (ElastoDyn's platform and foundation are not read).",
-            f"The deck gives one rotor speed (RotSpeed = {speed:g} rpm); it is taken as a "
-            "fixed operating speed unless --rpm/--rated are given.",
+            operating["note"],
+            files,
         ],
+        **({"warnings": [operating["warning"]]} if operating.get("warning") else {}),
     }
     return data
 
@@ -313,9 +413,27 @@ def tower_head(
     }, text
 
 
-def _yaw(main: Deck, path: Path) -> dict[str, Any]:
-    """Yaw spring from the deck (FAST v7) or a ServoDyn file beside it (OpenFAST)."""
-    decks = [main] + [parse(p) for p in sorted(path.parent.glob("*ServoDyn*.dat"))]
+def _operating(main: Deck, servo: Deck | None) -> dict[str, Any]:
+    """The spec's speed block, the sentence saying where it came from, and a warning where
+    the deck set does not give the operating range."""
+    found = operating_speed(main, servo)
+    if found is not None:
+        speed, note = found
+        return {"speed": {k: float(f"{v:.6g}") for k, v in speed.items()}, "note": note}
+    rot = main.num("RotSpeed")
+    return {
+        "speed": {"fixed_rpm": rot},
+        "note": f"The deck set gives no operating range: its initial RotSpeed = {rot:g} rpm is "
+        "taken as a fixed operating speed.",
+        "warning": f"rotor.speed: no operating range in the deck set — audited at the initial "
+        f"RotSpeed {rot:g} rpm as a fixed-speed turbine; give the range with --rpm MIN:MAX "
+        "(and --rated)",
+    }
+
+
+def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:
+    """Yaw spring from the deck (FAST v7) or the ServoDyn file the deck set names."""
+    decks = [main] + ([servo] if servo is not None and servo is not main else [])
     for deck in decks:
         if "YawSpr" in deck.values and deck.num("YawSpr") > 0:
             src = f"YawSpr in {deck.path.name}"
