@@ -197,3 +197,18 @@ def test_head_mass_zero_gets_the_same_rule_as_any_other_bad_mass(shared):
         result = run("check", str(windio1), "--no-plot", "--head-mass", value)
         assert result.exit_code == 2
         assert "--head-mass must be a mass above 0 kg" in result.stderr
+
+
+def test_a_floating_windio_turbine_is_refused_unless_clamped_base_is_asked_for():
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    floater = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-22-280-RWT_Floater.yaml"
+    refused = run("check", str(floater), "--no-plot")
+    assert refused.exit_code == 2
+    assert "components.floating_platform: a floating turbine" in refused.stderr
+    assert "--clamped-base" in refused.stderr and len(refused.stderr.strip().splitlines()) == 1
+    clamped = run("check", str(floater), "--no-plot", "--clamped-base", "-f", "json")
+    assert clamped.exit_code in (0, 1)
+    report = json.loads(clamped.stdout)
+    assert any("--clamped-base" in w for w in report["warnings"])

@@ -81,3 +81,15 @@ def test_stiffer_tower_never_classifies_softer(tmp_path_factory, f, factor):
     a, b = cls(f), cls(f * factor)
     if "resonant" not in (a, b):
         assert ORDER[b] >= ORDER[a]  # type: ignore[index]
+
+
+def test_resonant_class_names_the_speed_where_the_margin_is_violated(shared):
+    """Issue 15: the NREL 5-MW's 3P meets the tower at the lowest speed, 6.9 rpm (3P =
+    0.345 Hz), not at 12.1 rpm where the message used to place it."""
+    from wtvib import audit, importers
+
+    deck = shared / "reference" / "NREL5MW" / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    r = audit.run(importers.load(deck, rpm=(6.9, 12.1)))
+    c = next(c for c in r.checks if c.id == "tower.class")
+    assert c.status == "fail" and "within the margin of 3P at 6.9" in c.message
+    assert "3P = 0.345 Hz at 6.9 rpm" in c.message and "12.1 rpm" not in c.message

@@ -35,12 +35,13 @@ EXIT_INTERNAL = 3
 @dataclass(frozen=True)
 class Options:
     """What ``check``, ``report`` and ``batch`` share: the operating range for imports
-    (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg]
-    and the audit overrides ``margin``, ``rule``, ``preset``."""
+    (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg],
+    ``clamped_base`` for a floating windIO turbine, and the audit overrides ``margin``, ``rule``, ``preset``."""
 
     rpm: tuple[float, float] | None = None
     rated: float | None = None
     head_mass: float | None = None
+    clamped_base: bool = False
     margin: float | None = None
     rule: str | None = None
     preset: str | None = None
@@ -49,7 +50,13 @@ class Options:
         """The turbine at ``path`` with the import options applied."""
         from . import importers
 
-        return importers.load(path, rpm=self.rpm, rated=self.rated, head_mass=self.head_mass)
+        return importers.load(
+            path,
+            rpm=self.rpm,
+            rated=self.rated,
+            head_mass=self.head_mass,
+            clamped_base=self.clamped_base,
+        )
 
     def settings(self, turbine: Any) -> Any:
         """The turbine's audit settings with the overrides applied."""

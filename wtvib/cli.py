@@ -57,6 +57,14 @@ HeadMassOption = Annotated[
     float | None,
     typer.Option(help="Tower-head mass \\[kg] for windIO files (1.x hold no hub/nacelle)."),
 ]
+ClampedOption = Annotated[
+    bool,
+    typer.Option(
+        "--clamped-base",
+        help="Audit a floating windIO turbine's tower as if clamped at its base (said in the "
+        "report's headline; platform and moorings are not modelled).",
+    ),
+]
 MarginOption = Annotated[
     float | None, typer.Option(help="Margin m, e.g. 0.05 (overrides the spec).")
 ]
@@ -68,6 +76,7 @@ def _options(
     rpm: str | None,
     rated: float | None,
     head_mass: float | None,
+    clamped_base: bool,
     margin: float | None,
     rule: RuleKind | None,
     preset: PresetName | None,
@@ -78,6 +87,7 @@ def _options(
         rpm=_rpm_range(rpm),
         rated=rated,
         head_mass=head_mass,
+        clamped_base=clamped_base,
         margin=margin,
         rule=rule.value if rule is not None else None,
         preset=preset.value if preset is not None else None,
@@ -151,6 +161,7 @@ def check(
     rpm: RpmOption = None,
     rated: RatedOption = None,
     head_mass: HeadMassOption = None,
+    clamped_base: ClampedOption = False,
     uncertainty: Annotated[
         bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
     ] = False,
@@ -165,7 +176,7 @@ def check(
     from . import audit
     from .outputs import write_atomic
 
-    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
     report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
@@ -206,6 +217,7 @@ def report(
     rpm: RpmOption = None,
     rated: RatedOption = None,
     head_mass: HeadMassOption = None,
+    clamped_base: ClampedOption = False,
     margin: MarginOption = None,
     rule: RuleOption = None,
     preset: PresetOption = None,
@@ -215,7 +227,7 @@ def report(
     from . import batch, pdfreport
     from .outputs import write_atomic
 
-    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     if debug or _state["debug"]:
         item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
     else:
@@ -250,6 +262,7 @@ def batch_command(
     rpm: RpmOption = None,
     rated: RatedOption = None,
     head_mass: HeadMassOption = None,
+    clamped_base: ClampedOption = False,
     margin: MarginOption = None,
     rule: RuleOption = None,
     preset: PresetOption = None,
@@ -263,7 +276,7 @@ def batch_command(
     from . import batch
     from .report import batch_progress, batch_summary
 
-    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     paths = batch.discover(inputs)
     if not paths:
         from .errors import SpecError
@@ -377,6 +390,7 @@ def window(
     rpm: RpmOption = None,
     rated: RatedOption = None,
     head_mass: HeadMassOption = None,
+    clamped_base: ClampedOption = False,
     margin: MarginOption = None,
     rule: RuleOption = None,
     preset: PresetOption = None,
@@ -385,7 +399,7 @@ def window(
     """Allowed frequency windows per subsystem, and where the design sits in them."""
     from . import audit, design
 
-    options = _options(rpm, rated, head_mass, margin, rule, preset)
+    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
     found = design.all_windows(turbine, report.modes)
@@ -490,6 +504,7 @@ def convert(
     ] = None,
     rated: RatedOption = None,
     head_mass: HeadMassOption = None,
+    clamped_base: ClampedOption = False,
     force: Annotated[bool, typer.Option(help="Replace an existing file.")] = False,
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
@@ -500,7 +515,9 @@ def convert(
     from .outputs import write_atomic
     from .spec import from_data
 
-    data = importers.to_data(source, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass)
+    data = importers.to_data(
+        source, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass, clamped_base=clamped_base
+    )
     from_data(data, source=str(source))  # refuse to write a spec that would not load
     text = f"# wtvib spec converted from {source.name}\n" + yaml.safe_dump(
         data, sort_keys=False, allow_unicode=True, width=100

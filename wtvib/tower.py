@@ -66,6 +66,7 @@ class Classification:
     tower_class: TowerClass
     frequency_hz: float
     findings: tuple[Finding, ...]
+    mode_id: str = ""
 
 
 def classify(
@@ -99,7 +100,24 @@ def classify(
         cls = "soft-soft"
     else:
         cls = "soft"
-    return Classification(cls, f_t, findings)
+    return Classification(cls, f_t, findings, mode.id)
+
+
+def _violated(f: Finding) -> str:
+    """Where a classifying excitation violates the margin: its speeds, and the numbers at
+    the speed of least separation."""
+    regime = f.regime or "steady"
+    spans = ", ".join(
+        f"{rad_s_to_rpm(a):.3g} rpm"
+        if abs(b - a) < 1e-9
+        else f"{rad_s_to_rpm(a):.3g}–{rad_s_to_rpm(b):.3g} rpm"
+        for a, b in f.violations[regime]
+    )
+    return (
+        f"within the margin of {f.excitation.id} at {spans} ({f.excitation.id} = "
+        f"{f.excitation_hz:.3g} Hz at {rad_s_to_rpm(f.speed):.3g} rpm: separation "
+        f"{f.margin:.1%})"
+    )
 
 
 def class_check(c: Classification, blades: int, op: OperatingRange, rule: MarginRule) -> Check:
@@ -107,7 +125,11 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     top = float(rad_s_to_rpm(op.highest))
     p1 = float(rad_s_to_hz(op.highest))
     where = f"at {top:.3g} rpm: 1P = {p1:.3g} Hz, {blades}P = {blades * p1:.3g} Hz"
-    head = f"first bending {c.frequency_hz:.3g} Hz"
+    head = (
+        f"first bending {c.frequency_hz:.3g} Hz ({c.mode_id})"
+        if c.mode_id
+        else (f"first bending {c.frequency_hz:.3g} Hz")
+    )
     startup = sorted(
         {f.excitation.id for f in c.findings if f.violations["start-up"]},
         key=lambda s: float(s.rstrip("P")),
@@ -115,8 +137,7 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     crossed = f"; {' and '.join(startup)} sweep through it at start-up" if startup else ""
     if c.tower_class == "resonant":
         hit = [f for f in c.findings if f.status == "fail"]
-        names = ", ".join(f.excitation.id for f in hit)
-        status, text = "fail", f"resonant: {head} within the margin of {names} ({where})"
+        status, text = "fail", f"resonant: {head} " + "; ".join(_violated(f) for f in hit)
     elif c.tower_class == "stiff":
         status, text = "pass", f"stiff: {head} above {blades}P ({where}); no start-up encounter"
     elif c.tower_class == "soft":
@@ -135,7 +156,8 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
         status=status,  # type: ignore[arg-type]
         message=text,
         rule=Rule(
-            f"stiff > {blades}P > soft > 1P > soft-soft; resonant within {rule.label}",
+            f"f_T above {blades}P: stiff; between 1P and {blades}P: soft; below 1P: soft-soft "
+            f"(at the highest steady speed); resonant where {rule.label} fails in operation",
             "Hau, Wind Turbines, ch. 7.5.1 (Figs. 7.19, 7.20)",
         ),
         numbers={

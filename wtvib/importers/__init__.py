@@ -37,6 +37,7 @@ def to_data(
     rpm: tuple[float, float] | None = None,
     rated: float | None = None,
     head_mass: float | None = None,
+    clamped_base: bool = False,
 ) -> dict[str, Any]:
     """The wtvib-format dictionary of any supported file (for ``wtvib convert``).
 
@@ -54,7 +55,7 @@ def to_data(
     elif kind == "windio":
         from . import windio
 
-        data = windio.to_spec_data(p, text, head_mass)
+        data = windio.to_spec_data(p, text, head_mass, clamped_base)
     else:
         doc = load_document(p, text)
         data = doc.data
@@ -67,6 +68,7 @@ def load(
     rpm: tuple[float, float] | None = None,
     rated: float | None = None,
     head_mass: float | None = None,
+    clamped_base: bool = False,
 ) -> Spec:
     """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range."""
     p = Path(path)
@@ -77,7 +79,8 @@ def load(
         from ..spec import from_document
 
         return from_document(load_document(p, text))
-    return from_data(to_data(p, rpm=rpm, rated=rated, head_mass=head_mass), source=str(p))
+    data = to_data(p, rpm=rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base)
+    return from_data(data, source=str(p))
 
 
 def _check_options(

@@ -31,12 +31,34 @@ from ..yamlio import parse_plain
 _UT = {"mass": 0, "i_plr": 20}
 
 
-def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[str, Any]:
-    """wtvib spec data from a windIO turbine file."""
+#: windIO components that make a turbine float: wtvib has no platform or mooring model.
+FLOATING = ("floating_platform", "mooring")
+
+
+def to_spec_data(
+    path: Path, text: str, head_mass: float | None = None, clamped_base: bool = False
+) -> dict[str, Any]:
+    """wtvib spec data from a windIO turbine file.
+
+    A floating turbine (``floating_platform``/``mooring`` components) is refused: its tower
+    modes are set by the platform and moorings, which wtvib does not model. With
+    ``clamped_base`` the tower is audited as if clamped at its base, and the report says so
+    in its headline.
+    """
     doc = parse_plain(text, str(path))
     d = doc.data
     if not isinstance(d, dict) or "components" not in d:
         raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
+    floating = [c for c in FLOATING if c in d["components"]]
+    if floating and not clamped_base:
+        raise SpecError(
+            f"a floating turbine (components.{' and components.'.join(floating)}): wtvib has "
+            "no platform or mooring model, so its tower modes cannot be computed; "
+            "--clamped-base audits the tower as if clamped at its base (not the floating "
+            "system's modes)",
+            path="components." + floating[0],
+            source=str(path),
+        )
     v2 = "outer_shape" in d["components"].get("tower", {})
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
     notes = [f"Imported from the {version} file {path.name}."]
@@ -60,6 +82,15 @@ def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[
     head, head_note = reader.head(blades, blade_mass, structure, head_mass)
     notes.append(head_note)
     src = {"file": f"{path.name} ({version})"}
+    warnings = (
+        [
+            "tower.foundation: a floating turbine audited with the tower clamped at its base "
+            "(--clamped-base): the platform's and moorings' modes and their effect on the "
+            "tower are not modelled"
+        ]
+        if floating
+        else []
+    )
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -81,6 +112,7 @@ def to_spec_data(path: Path, text: str, head_mass: float | None = None) -> dict[
         "tower_head": head,
         "blade": {"structure": structure, **_opt("length_m", blade_len)} if structure else {},
         "assumptions": notes,
+        **({"warnings": warnings} if warnings else {}),
     }
     gear = reader.gear_ratio()
     if gear:
