@@ -36,7 +36,8 @@ EXIT_INTERNAL = 3
 class Options:
     """What ``check``, ``report`` and ``batch`` share: the operating range for imports
     (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg],
-    ``clamped_base`` for a floating windIO turbine, and the audit overrides ``margin``, ``rule``, ``preset``."""
+    ``clamped_base`` for a floating windIO turbine, and the audit overrides ``margin``,
+    ``rule``, ``preset``."""
 
     rpm: tuple[float, float] | None = None
     rated: float | None = None
