@@ -18,7 +18,7 @@ REPORT_SCHEMA = "wtvib-report/1"
 Built = dict[str, list[Mode]]
 
 #: Subsystems in report order: name, mode builder (given the modes built so far), default
-#: damping ratio of the section.
+#: damping ratio of the section (a mode without its own ζ is judged with it).
 SUBSYSTEMS: tuple[tuple[str, Callable[[Spec, Built], list[Mode]], Callable[[Spec], float]], ...] = (
     ("tower", lambda s, b: tower.modes(s), lambda s: s.tower.damping_ratio),
     ("blade", lambda s, b: blade.modes(s), lambda s: s.blade.damping_ratio),
@@ -172,6 +172,14 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
         built[name] = [
             replace(m, superseded_by=replaced[m.id]) if m.id in replaced else m for m in built[name]
         ]
+    for name, _, damping in SUBSYSTEMS:  # each mode carries the ζ it is judged with
+        source = _damping_source(spec, name)
+        built[name] = [
+            replace(m, damping_ratio=damping(spec), damping_source=source)
+            if m.damping_ratio is None
+            else m
+            for m in built[name]
+        ]
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
@@ -276,6 +284,7 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                     f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
                     "under 0.05 Hz is implausible"
                 )
+    out += _missing_yaw_inertia(spec, modes)
     head, blades = spec.tower_head, spec.blade.mass_kg
     if head and blades and blades * spec.rotor.blades > 0.9 * head.mass_kg:
         out.append(
@@ -283,6 +292,47 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             f"rest of the tower head ({head.mass_kg:,.0f} kg in all) — check the masses"
         )
     return out
+
+
+def _damping_source(spec: Spec, subsystem: str) -> str:
+    """Where a subsystem's default damping ratio comes from: the spec, or wtvib's default."""
+    keys = ("tower", "blade") if subsystem == "system" else (subsystem,)
+    given = [k for k in keys if "damping_ratio" in getattr(spec, k).model_fields_set]
+    if subsystem == "system":
+        where = "the lower of tower.damping_ratio and blade.damping_ratio"
+        return f"{where} ({'given' if len(given) == 2 else 'assumed: not all given'})"
+    return f"{subsystem}.damping_ratio (given)" if given else "assumed (no value given)"
+
+
+def _missing_yaw_inertia(spec: Spec, modes: list[Mode]) -> list[str]:
+    """A yaw model on a tower head without a yaw inertia: the frequency can be off by a factor.
+
+    The rotor alone has the inertia J_p/2 about a diameter (a planar body: J_x = J_y + J_z,
+    J_y = J_z), a lower bound of the head's yaw inertia; the yaw frequency scales with
+    1/√J.
+    """
+    head = spec.tower_head
+    first = next((m for m in modes if m.id == "yaw.1"), None)
+    if (
+        first is None
+        or head is None
+        or spec.yaw.inertia_kgm2 is not None
+        or "inertia_yaw_kgm2" in head.model_fields_set
+    ):
+        return []
+    used = head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
+    j_p = yaw.rotor_polar_inertia(spec)
+    text = (
+        f"tower_head.inertia_yaw_kgm2: not given, so the yaw model uses {used:.3g} kg·m² (the "
+        f"head's mass at its CM offset only) and yaw.1 comes out at {first.frequency_hz:.3g} Hz"
+    )
+    if j_p and j_p / 2 > used:
+        estimate = first.frequency_hz * math.sqrt(max(used, 1e-9) / (used + j_p / 2))
+        text += (
+            f"; the rotor alone adds J_p/2 = {j_p / 2:.3g} kg·m², which would put it near "
+            f"{estimate:.3g} Hz"
+        )
+    return [text + " — give the head's yaw inertia"]
 
 
 def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
@@ -294,12 +344,10 @@ def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
             f"the highest steady speed ({speed.overspeed:.3g} rpm) is checked."
         )
     for name, _, damping in SUBSYSTEMS:
-        undamped = [m.id for m in modes if m.subsystem == name and m.damping_ratio is None]
-        if undamped:
-            out.append(
-                f"{name}: damping ratio {damping(spec):.3g} assumed for "
-                f"{', '.join(undamped)} (no value given)."
-            )
+        ids = [m.id for m in modes if m.subsystem == name and m.damping_source]
+        source = _damping_source(spec, name)
+        if ids and "assumed" in source:  # an assumption is stated only when it was made
+            out.append(f"{name}: damping ratio {damping(spec):.3g} {source} for {', '.join(ids)}.")
     stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:
         out.append(

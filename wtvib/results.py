@@ -102,6 +102,7 @@ class Mode:
     condition: str | None = None  # the condition the frequency holds in (generator free …)
     whirl: Whirl | None = field(default=None, compare=False)
     superseded_by: str | None = None  # the coupled mode judged in its place
+    damping_source: str | None = None  # where damping_ratio came from when not the mode's own
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
@@ -121,6 +122,7 @@ class Mode:
             **({"regimes": sorted(self.regimes)} if self.regimes is not None else {}),
             **({"condition": self.condition} if self.condition is not None else {}),
             **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
+            **({"damping_source": self.damping_source} if self.damping_source else {}),
         }
 
     @property

@@ -1,0 +1,45 @@
+"""The orchestrator: assumptions stated only when made, warnings for missing inputs that
+change a frequency by a factor, the damping each mode is judged with."""
+
+from wtvib import audit, spec
+
+HEAD = """
+tower_head: {mass_kg: 300000, cm_downwind_m: 0.5, cm_above_top_m: 2.0}
+yaw:
+  drive_stiffness_nm_rad: 2.0e9
+  rotor_polar_inertia_kgm2: 3.5e7
+"""
+
+
+def test_a_head_without_yaw_inertia_is_a_warning_with_an_estimate(write_spec):
+    """Issue 15: with no yaw inertia the yaw model saw only m·x² = 75,000 kg·m² and gave a
+    yaw frequency of 26 Hz silently; the rotor's J_p/2 = 1.75e7 kg·m² alone gives
+    √(2e9/(1.75e7 + 7.5e4))/2π = 1.70 Hz (one-mass model, the yaw module's)."""
+    r = audit.run(spec.load(write_spec(extra=HEAD)))
+    yaw1 = next(m for m in r.modes if m.id == "yaw.1")
+    assert yaw1.frequency_hz > 20  # what the inputs say
+    warning = next(w for w in r.warnings if w.startswith("tower_head.inertia_yaw_kgm2"))
+    assert "near 1.7 Hz" in warning
+    given = spec.load(
+        write_spec(
+            extra=HEAD.replace(
+                "cm_above_top_m: 2.0", "cm_above_top_m: 2.0, inertia_yaw_kgm2: 2.0e7"
+            ),
+            name="g.yaml",
+        )
+    )
+    assert not [w for w in audit.run(given).warnings if "inertia_yaw" in w]
+
+
+def test_a_given_damping_ratio_is_not_called_an_assumption(write_spec):
+    base = spec.load(write_spec())
+    assumed = audit.run(base)
+    assert any("tower: damping ratio" in a and "assumed" in a for a in assumed.assumptions)
+    text = write_spec().read_text().replace("tower:\n", "tower:\n  damping_ratio: 0.02\n", 1)
+    given = audit.run(spec.load(write_spec(text, name="given.yaml")))
+    assert not any(a.startswith("tower: damping ratio") for a in given.assumptions)
+    fa1 = next(m for m in given.modes if m.id == "tower.fa1")
+    assert fa1.damping_ratio == 0.02 and fa1.damping_source == "tower.damping_ratio (given)"
+    # the ζ used is the one shown (JSON and the terminal's column)
+    row = next(m for m in given.to_dict()["modes"] if m["id"] == "tower.fa1")
+    assert row["damping_ratio"] == 0.02
