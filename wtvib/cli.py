@@ -402,7 +402,7 @@ def window(
     options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
-    found = design.all_windows(turbine, report.modes)
+    found = design.all_windows(turbine, report.modes, report.rule)
     doc = {
         "schema": "wtvib-windows/1",
         "turbine": turbine.turbine.name,
@@ -421,7 +421,7 @@ def window(
         from .campbell import png_bytes, windows_plot
         from .outputs import write_atomic
 
-        tower_w = next(w for w in found if w.subsystem == "tower").allowed
+        tower_w = next((w.allowed for w in found if w.subsystem == "tower"), ())
         folder = out if out is not None else spec_file.parent
         path = write_atomic(
             folder / f"{spec_file.stem}.windows.png",
@@ -452,7 +452,10 @@ def size_command(
     goal = target_hz
     if target is not None:
         report = audit.run(turbine)
-        tw = next(w for w in design.all_windows(turbine, report.modes) if w.subsystem == "tower")
+        found = design.all_windows(turbine, report.modes, report.rule)
+        tw = next((w for w in found if w.subsystem == "tower"), None)
+        if tw is None:
+            raise design.DesignError("the turbine has no tower mode to place in a window")
         match = [
             w
             for w in tw.allowed

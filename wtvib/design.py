@@ -150,11 +150,15 @@ def position(f: float, allowed: Sequence[Band], forbidden: Sequence[Band]) -> Po
 
 @dataclass(frozen=True)
 class SubsystemWindows:
+    """A subsystem's windows and where each of its judged modes sits; ``mode_id`` and
+    ``position`` are the governing one (the first forbidden, else its first mode)."""
+
     subsystem: str
     mode_id: str | None
     forbidden: tuple[Band, ...]
     allowed: tuple[Band, ...]
     position: Position | None
+    modes: tuple[tuple[str, Position], ...] = ()
 
     def to_dict(self) -> dict[str, object]:
         return {
@@ -163,32 +167,53 @@ class SubsystemWindows:
             "forbidden": [b.to_dict() for b in self.forbidden],
             "allowed": [b.to_dict() for b in self.allowed],
             "position": self.position.to_dict() if self.position else None,
+            "modes": [{"id": i, **p.to_dict()} for i, p in self.modes],
         }
 
 
+#: The mode a subsystem's windows are read for first (the design's governing frequency).
 FIRST_MODES = {
-    "tower": ("tower.fa1", "tower.ss1"),
+    "tower": ("tower.fa1", "tower.ss1", "system.tower.fa1", "system.tower.ss1"),
     "blade": ("blade.flap1",),
     "drivetrain": ("drivetrain.grid.1", "drivetrain.free.1"),
     "yaw": ("yaw.1",),
 }
 
 
-def all_windows(spec: Spec, modes: Sequence[Mode]) -> list[SubsystemWindows]:
-    """Windows for the tower and the first blade, drive-train and yaw modes."""
-    rule = spec.audit.margin_rule()
+def steady_frequency(mode: Mode, op: OperatingRange) -> float:
+    """A mode's frequency where the windows hold: at the dwell speed (rated or fixed), else
+    the highest steady speed; the standstill value for modes that do not vary. [Hz]"""
+    speed = op.dwell[-1] if op.dwell else op.highest
+    return float(mode.frequency_at([speed])[0]) if mode.curve is not None else mode.frequency_hz
+
+
+def all_windows(
+    spec: Spec, modes: Sequence[Mode], rule: MarginRule | None = None
+) -> list[SubsystemWindows]:
+    """Windows of every subsystem with modes the audit judges in steady operation, and the
+    position of each such mode (the same modes ``check`` judges, under the same rule)."""
+    rule = rule or spec.audit.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
-    by_id = {m.id: m for m in modes}
     out = []
-    for sub, ids in FIRST_MODES.items():
+    order = [*FIRST_MODES, "system"]
+    for sub in order:
+        judged = [
+            m
+            for m in modes
+            if m.subsystem == sub and m.judged and (m.regimes is None or "steady" in m.regimes)
+        ]
+        if not judged:
+            continue
         forbidden = forbidden_bands(lines, op, rule, sub)
         allowed = windows(forbidden, spec.rotor.blades, tower_names=(sub == "tower"))
-        mode = next((by_id[i] for i in ids if i in by_id), None)
-        pos = position(mode.frequency_hz, allowed, forbidden) if mode else None
-        out.append(
-            SubsystemWindows(sub, mode.id if mode else None, tuple(forbidden), tuple(allowed), pos)
+        placed = tuple(
+            (m.id, position(steady_frequency(m, op), allowed, forbidden)) for m in judged
         )
+        first = [p for p in placed if p[1].blocked_by is not None]
+        first += [p for i in FIRST_MODES.get(sub, ()) for p in placed if p[0] == i]
+        gov = (first or list(placed))[0]
+        out.append(SubsystemWindows(sub, gov[0], tuple(forbidden), tuple(allowed), gov[1], placed))
     return out
 
 

@@ -187,17 +187,20 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
             high = "∞" if w["high_hz"] is None else f"{w['high_hz']:.4g}"
             table.add_row(w["name"], f"{w['low_hz']:.4g}", high)
         console.print(table)
-        pos = sub["position"]
-        if pos:
+        for pos in sub["modes"]:
+            name = str(pos["window"])
             where = (
-                f"in the {pos['window']} window"
+                (f"in {name}" if name.startswith("window") else f"in the {name} window")
                 if pos["window"] and not pos["forbidden_by"]
                 else f"FORBIDDEN by {pos['forbidden_by']}"
             )
             console.print(
-                f"  {sub['mode']} = {pos['frequency_hz']:.4g} Hz: {where}; nearest "
-                f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
-                f"{pos['distance_percent']:.1f} %)"
+                Text(
+                    f"  {pos['id']} = {pos['frequency_hz']:.4g} Hz: {where}; nearest "
+                    f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
+                    f"{pos['distance_percent']:.1f} %)",
+                    style="bold red" if pos["forbidden_by"] else "",
+                )
             )
 
 

@@ -101,3 +101,30 @@ def test_sizing_a_tower_given_by_frequencies_is_a_clear_error(write_spec):
     s = spec.load(write_spec())
     with pytest.raises(design.DesignError, match="tube sections"):
         design.size(s, 0.4)
+
+
+def test_window_judges_every_mode_check_judges():
+    """Issue 15: on the Aeroman, window said 'in window' where check fails on
+    drivetrain.grid.4 (stage-2 mesh) and yaw.play.1 (2P with gear play)."""
+    from conftest import TURBINES
+
+    s = spec.load(TURBINES / "aeroman.yaml")
+    r = audit.run(s)
+    found = {w.subsystem: w for w in design.all_windows(s, r.modes, r.rule)}
+    assert "blade" not in found  # no empty windows for a subsystem without judged modes
+    placed = {i: p for w in found.values() for i, p in w.modes}
+    assert placed["drivetrain.grid.4"].blocked_by.name == "mesh.stage2"  # type: ignore[union-attr]
+    assert placed["yaw.play.1"].blocked_by.name == "2P"  # type: ignore[union-attr]
+    assert "drivetrain.locked.1" not in placed  # reported only, as in check
+
+
+@pytest.mark.parametrize("name", ["aeroman", "mod-0", "mod-2", "wka-60", "growian", "wts-4"])
+def test_every_steady_dominant_failure_of_check_is_forbidden_in_window(name):
+    from conftest import TURBINES
+
+    s = spec.load(TURBINES / f"{name}.yaml")
+    r = audit.run(s)
+    placed = {i: p for w in design.all_windows(s, r.modes, r.rule) for i, p in w.modes}
+    for f in r.findings:
+        if f.regime == "steady" and f.energy == "dominant" and f.mode.curve is None:
+            assert placed[f.mode.id].blocked_by is not None, (f.mode.id, f.excitation.id)
