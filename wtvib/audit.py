@@ -227,16 +227,26 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
         tower_class=tower_class,
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes)),
-        warnings=tuple(suspicious(spec, all_modes)),
-        uncertainty=_uncertainty(spec, samples, seed) if samples else None,
+        warnings=tuple(suspicious(spec, all_modes) + _no_tolerance(spec, samples)),
+        uncertainty=_uncertainty(spec, samples, seed, all_modes, rule) if samples else None,
     )
 
 
-def _uncertainty(spec: Spec, samples: int, seed: int) -> dict[str, Any]:
+def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
     from . import uncertainty
 
+    return [uncertainty.NO_TOLERANCE] if samples and not uncertainty.uncertain(spec) else []
+
+
+def _uncertainty(
+    spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule
+) -> dict[str, Any] | None:
+    from . import uncertainty
+
+    if not uncertainty.uncertain(spec):
+        return None  # said in the warnings
     drawn = uncertainty.sample(spec, samples, seed)
-    out = uncertainty.summary(spec, drawn)
+    out = uncertainty.summary(spec, drawn, modes, rule)
     out["seed"] = seed
     out["sensitivities"] = uncertainty.sensitivities(spec)
     return out

@@ -24,6 +24,8 @@ from numpy.typing import NDArray
 
 from . import modal, tower
 from .excitation import excitations, operating_range
+from .results import Mode, Southwell
+from .rules import MarginRule
 from .spec import Quantity, Spec, from_data
 
 Array = NDArray[np.float64]
@@ -159,30 +161,66 @@ def wilson(hits: int, n: int, z: float = 1.96) -> tuple[float, float]:
     return max(0.0, centre - half), min(1.0, centre + half)
 
 
-def summary(spec: Spec, samples: Samples) -> dict[str, Any]:
-    """Percentiles per mode, and per dominant/secondary line the probability of falling
-    inside its margin band in steady operation (with its 95 % interval)."""
-    from .design import forbidden_bands
+#: Rotor speeds per steady range at which each sample is judged.
+SPEEDS_PER_RANGE = 41
 
-    rule = spec.audit.margin_rule()
+
+def sampled_curves(mode: Mode, factors: Array, omega: Array) -> Array:
+    """Frequencies [Hz] of each sample (rows) at rotor speeds ``omega`` [rad/s] (columns).
+
+    ``factors`` are the sampled standstill frequencies over the nominal one. A Southwell
+    curve keeps its rotational term, f² = (s·f₀)² + K·(Ω/2π)² (the tolerance is on the
+    standstill value the spec gives); any other curve is scaled by s.
+    """
+    if isinstance(mode.curve, Southwell):
+        rev = omega[None, :] / (2 * math.pi)
+        f0 = mode.curve.f0_hz * factors[:, None]
+        return np.sqrt(f0**2 + mode.curve.k * rev**2)
+    return factors[:, None] * mode.frequency_at(omega)[None, :]
+
+
+def summary(
+    spec: Spec,
+    samples: Samples,
+    modes: Sequence[Mode] | None = None,
+    rule: MarginRule | None = None,
+) -> dict[str, Any]:
+    """Percentiles per mode and, per rotor line that is not minor, the probability that the
+    sampled mode violates the margin somewhere in steady operation (with its 95 % interval).
+
+    Judged as the deterministic checks of the run are: the run's ``rule`` and margin
+    (``--margin``, ``--preset``), the predicate ``rule.violates`` of the one resonance
+    routine, every steady speed (quick-pass bands included) — not only the dwell speed —
+    and only where the mode exists; speed-dependent modes along their curves
+    (:func:`sampled_curves`).
+    """
+    rule = rule or spec.audit.margin_rule()
     op = operating_range(spec.rotor.speed)
-    lines = excitations(spec)
-    modes = {}
+    lines = [e for e in excitations(spec) if e.energy != "minor"]
+    by_id = {m.id: m for m in (modes if modes is not None else audit_modes(spec))}
+    omega = np.concatenate([np.linspace(a, b, SPEEDS_PER_RANGE) for a, b in op.steady])
+    out = {}
     for mode_id, f in sorted(samples.frequencies.items()):
-        sub = mode_id.split(".")[0]
+        mode = by_id.get(mode_id)
         p5, p50, p95 = np.percentile(f, [5, 50, 95])
         probs = {}
-        for e in lines:
-            bands = forbidden_bands([e], op, rule, sub)
-            if not bands:
-                continue
-            hits = int(np.sum(np.any([(f > b.low) & (f < b.high) for b in bands], axis=0)))
-            lo, hi = wilson(hits, len(f))
-            probs[e.id] = {
-                "probability": round(hits / len(f), 6),
-                "ci95": [round(lo, 6), round(hi, 6)],
-            }
-        modes[mode_id] = {
+        exists = (
+            mode is not None and mode.judged and (mode.regimes is None or "steady" in mode.regimes)
+        )
+        if exists:
+            assert mode is not None
+            curves = sampled_curves(mode, f / mode.frequency_hz, omega)
+            for e in lines:
+                if not e.acts_on(mode.subsystem):
+                    continue
+                bad = rule.violates(rule.separation(e.frequency_hz(omega)[None, :], curves))
+                hits = int(np.sum(np.any(bad, axis=1)))
+                lo, hi = wilson(hits, len(f))
+                probs[e.id] = {
+                    "probability": round(hits / len(f), 6),
+                    "ci95": [round(lo, 6), round(hi, 6)],
+                }
+        out[mode_id] = {
             "mean_hz": round(float(np.mean(f)), 6),
             "std_hz": round(float(np.std(f)), 6),
             "p5_hz": round(float(p5), 6),
@@ -192,9 +230,24 @@ def summary(spec: Spec, samples: Samples) -> dict[str, Any]:
         }
     return {
         "samples": len(next(iter(samples.frequencies.values()), [])),
-        "modes": modes,
+        "rule": rule.label,
+        "judged_over": "every steady speed where the mode exists, along its curve",
+        "modes": out,
         "not_propagated": list(samples.skipped),
     }
+
+
+def audit_modes(spec: Spec) -> list[Mode]:
+    from . import audit
+
+    return list(audit.run(spec).modes)
+
+
+NO_TOLERANCE = (
+    "--uncertainty: no value in the spec carries a tolerance, so there is nothing to sample; "
+    "give one as e.g. youngs_modulus_pa: {value: 2.1e11, tolerance: 0.05, distribution: "
+    "normal} (README, 'Design-stage answers')"
+)
 
 
 def sensitivities(spec: Spec, step: float = 0.01) -> dict[str, dict[str, float]]:

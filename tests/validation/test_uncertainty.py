@@ -127,3 +127,55 @@ def test_runs_unchanged_on_a_local_dask_cluster():
     ):
         remote = uncertainty.sample_distributed(s, 2000, 11, client, chunk=500)
     assert np.array_equal(local, remote.frequencies["tower.fa1"])
+
+
+TIGHT = """\
+wtvib: 1
+turbine: {name: tight tolerance}
+rotor:
+  blades: 3
+  orientation: upwind
+  hub: rigid
+  speed: {min_rpm: 8, max_rpm: 14}
+tower:
+  modes:
+    fa1: {value: 0.35, provenance: representative, tolerance: 1.0e-9}
+blade:
+  modes:
+    flap1: {value: 0.62, provenance: representative, tolerance: 1.0e-9}
+"""
+
+
+def test_probabilities_agree_with_the_deterministic_checks_of_the_run(tmp_path):
+    """Issue 15: with a vanishing tolerance every sample is the nominal turbine, so the
+    probability of a margin violation is 1 exactly where the run's own check finds one in
+    steady operation and 0 elsewhere — under the run's margin (--margin), over the whole
+    steady range (2P at 10.5 rpm here is partial load, not the 14 rpm dwell speed), and
+    along the blade's rotating curve (flap1 0.62 Hz at standstill, Southwell K = 1.19)."""
+    p = tmp_path / "t.yaml"
+    p.write_text(TIGHT)
+    s = spec.load(p)
+    for margin in (0.05, 0.10, 0.20):
+        settings = audit.override(s.audit, margin=margin)
+        r = audit.run(s, settings, samples=200, seed=1)
+        assert r.uncertainty is not None and f"{margin:.0%}" in r.uncertainty["rule"]
+        for c in r.checks:
+            if ".resonance." not in c.id or c.numbers.get("energy") == "minor":
+                continue
+            sub, line = c.subsystem, c.numbers["excitation"]
+            mode = f"{sub}.{'fa1' if sub == 'tower' else 'flap1'}"
+            prob = r.uncertainty["modes"][mode]["in_margin_band"][line]["probability"]
+            steady = c.numbers["regime"] in ("steady", "quick-pass")
+            assert prob == (1.0 if steady else 0.0), (margin, c.id, c.status, prob)
+
+
+def test_uncertainty_without_any_tolerance_says_so_in_one_line(write_spec):
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    result = CliRunner().invoke(app, ["check", str(write_spec()), "--uncertainty", "--no-plot"])
+    assert result.exit_code in (0, 1)
+    lines = [ln for ln in result.stderr.splitlines() if "tolerance" in ln]
+    assert len(lines) == 1 and "no value in the spec carries a tolerance" in lines[0]
+    assert "tolerance: 0.05" in lines[0]  # how to add one
