@@ -123,6 +123,16 @@ class Mode:
             **({"condition": self.condition} if self.condition is not None else {}),
             **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
             **({"damping_source": self.damping_source} if self.damping_source else {}),
+            **(
+                {
+                    "whirl": {
+                        "rpm": [round(w * 30 / np.pi, 4) for w in self.whirl.omega],
+                        "labels": list(self.whirl.labels),
+                    }
+                }
+                if self.whirl is not None
+                else {}
+            ),
         }
 
     @property
