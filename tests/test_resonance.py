@@ -141,3 +141,21 @@ def test_regime_of_speed():
     assert regime_of(float(rpm_to_rad_s(12)), o) == "steady"
     assert regime_of(float(rpm_to_rad_s(14.5)), o) == "quick-pass"
     assert regime_of(float(rpm_to_rad_s(22)), o) == "overspeed"
+
+
+def test_fixed_frame_lines_take_the_class_of_the_blade_harmonic_behind_them():
+    """DOMAIN.md §3 and excitation.driving_harmonic: three blades, fixed 3P on a backward
+    whirl is the blades' 4P (minor), on a forward whirl their 2P (secondary), on a
+    collective mode 3P (dominant); fixed 4P reaches a symmetric rotor's modes only through
+    asymmetry (minor); a tower mode (no whirl) keeps the line's own class."""
+    from wtvib.excitation import driving_harmonic, rotor_harmonics
+
+    lines = {e.id: e for e in rotor_harmonics(3, 6)}
+    assert [driving_harmonic(3, w) for w in ("backward", "forward", "collective")] == [4, 2, 3]
+    assert lines["3P"].energy_for("backward") == "minor"
+    assert lines["3P"].energy_for("forward") == "secondary"
+    assert lines["3P"].energy_for("collective") == "dominant"
+    assert lines["4P"].energy_for("forward") == "minor"  # blades' 3P, but N ∤ 4
+    assert lines["1P"].energy_for("forward") is None  # blades' 0P: a steady load
+    assert lines["2P"].energy_for(None) == "secondary" == lines["2P"].energy
+    assert lines["6P"].energy_for("forward") == "minor"  # blades' 5P

@@ -89,12 +89,17 @@ class Excitation:
 
     def energy_for(self, whirl: str | None) -> Energy | None:
         """Energy class of this line on a mode of ``whirl``; None: the line cannot drive it."""
-        if self.blades is None or whirl is None:
+        if self.blades is None or whirl is None or whirl == "fixed":
             return self.energy
         k = round(self.order)
         ms = (k - 1, k + 1) if whirl == "cyclic" else (driving_harmonic(k, whirl),)
         found = [harmonic_energy(m, self.blades) for m in ms if m >= 1]
-        return min(found, key=_ENERGY_RANK.index) if found else None
+        if not found:
+            return None
+        energy = min(found, key=_ENERGY_RANK.index)
+        # a symmetric rotor passes blade loads to its rotor modes only at fixed-frame
+        # multiples of N (driving_harmonic, Notes): other lines need rotor asymmetry
+        return energy if k % self.blades == 0 else "minor"
 
 
 def driving_harmonic(k: int, whirl: str) -> int:
@@ -112,6 +117,14 @@ def driving_harmonic(k: int, whirl: str) -> int:
     (k − 1)P; a collective mode kP. A cyclic pair that does not travel (standstill) is judged
     by the stronger of (k ± 1)P. For three blades, fixed 3P on a flap backward
     whirl is the blades' 4P (minor), on a forward whirl their 2P (secondary).
+
+    The same sums say which fixed-frame lines reach the rotor modes at all: the blades' mP
+    drives the collective only when N divides m, the cyclic pair only when N divides m ± 1,
+    so a rotor with identical blades excites its rotor modes at fixed-frame multiples of
+    N·P only. Any other fixed-frame line (4P on three blades) needs rotor asymmetry — blade
+    to blade differences in mass, pitch or shape — and is judged as a minor excitation
+    whatever the blade harmonic behind it (:meth:`Excitation.energy_for`); fixed-frame
+    modes (tower, drive train, yaw) keep each line's own class (1P imbalance, 2P).
 
     References
     ----------

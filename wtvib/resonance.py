@@ -433,7 +433,13 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
     if f.regime == "steady":
         text = f"{name} within the margin of {exc} in steady operation at {spans}: "
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
-        if f.energy == "minor":
+        blades = f.excitation.blades
+        if f.driven_by and blades and round(f.excitation.order) % blades:
+            text += (
+                "; reaches the rotor modes only through rotor asymmetry (not a multiple of "
+                f"{blades}P): minor"
+            )
+        elif f.energy == "minor":
             text += "; a low-energy harmonic (Hau 7.2.2)"
         elif f.energy == "secondary":
             dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
