@@ -356,8 +356,8 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("share of the mode's kinetic energy")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=4, frameon=False)
     ax.set_title(
-        f"{report.spec.turbine.name} — coupled modes, parked, generator "
-        f"{check.numbers['condition']}: where the energy is",
+        f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
+        "where the energy is",
         fontweight="bold",
         fontsize=10,
     )

@@ -334,7 +334,7 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
         )
     return [
         k.Spacer(1, 2 * k.mm),
-        k.p(f"Parked, generator {c['condition']}: {'; '.join(c['model'])}.", "BodyText"),
+        k.p(f"Coupled model, {c['condition']}: {'; '.join(c['model'])}.", "BodyText"),
         k.table(rows, [0.34, 0.12, 0.3, 0.12, 0.12]),
     ]
 

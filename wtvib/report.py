@@ -90,7 +90,12 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     for m in modes:
         zeta = "—" if m["damping_ratio"] is None else f"{m['damping_ratio']:.3g}"
         f = f"{m['frequency_hz']:.4g}" + (" ↗" if m["speed_dependent"] else "")
-        table.add_row(m["id"], m["description"], f, zeta)
+        text = Text(m["description"])
+        if m.get("superseded_by"):  # shown as what it is: the isolated value
+            text.append(f" — isolated; judged as {m['superseded_by']}", style="dim")
+        elif m.get("regimes") == []:
+            text.append(" — reported only (exists in no operating regime)", style="dim")
+        table.add_row(m["id"], text, f, zeta)
     return table
 
 
@@ -247,7 +252,7 @@ def _coupling(checks: list[dict[str, Any]]) -> Table | None:
     if c is None:
         return None
     table = Table(
-        title=f"Whole-turbine modes (coupled model, parked, generator {c['condition']})",
+        title=f"Whole-turbine modes (coupled model, {c['condition']})",
         title_justify="left",
     )
     for col in ("coupled mode", "f [Hz]", "isolated subsystem", "f [Hz] ", "shift"):
