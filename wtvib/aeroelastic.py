@@ -21,7 +21,7 @@ semichords, μ = m/(πρb²), r² = I_θ/(m b²), σ = ω_h/ω_θ.
 """
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -29,6 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import beam
+from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
 from .modal import solve, state_roots
 from .spec import check_section_inertia
@@ -672,3 +673,23 @@ def _rounded(values: Array) -> list[float]:
 def _finite(x: float) -> float | None:
     """JSON has no infinity: None stands for 'none in the range'."""
     return round(x, 6) if math.isfinite(x) else None
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis): the blade's aeroelastic stability
+
+NAME = "aeroelastic"
+
+
+def default_damping(spec: "Spec") -> Damping:
+    return section_damping(spec.blade, "blade")
+
+
+def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
+    return []  # it judges the blade's modes
+
+
+def analyse(spec: "Spec", ctx: Context) -> Analysis:
+    """``blade.divergence`` and ``blade.flutter``, with the station results."""
+    found, stations_ = checks(spec, ctx.modes)
+    return Analysis(checks=tuple(found), results={"stations": tuple(stations_)})

@@ -1,11 +1,12 @@
 """The only orchestrator: collect modes and checks, derive the verdict (DESIGN.md)."""
 
 import math
-from collections.abc import Callable
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 from . import aeroelastic, blade, coupled, drivetrain, floquet, stall, tower, yaw
+from .analysis import Analysis, Context, Subsystem
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
@@ -15,24 +16,17 @@ from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
 
 REPORT_SCHEMA = "wtvib-report/1"
 
-Built = dict[str, list[Mode]]
-
-#: Subsystems in report order: name, mode builder (given the modes built so far), default
-#: damping ratio of the section (a mode without its own ζ is judged with it).
-SUBSYSTEMS: tuple[tuple[str, Callable[[Spec, Built], list[Mode]], Callable[[Spec], float]], ...] = (
-    ("tower", lambda s, b: tower.modes(s), lambda s: s.tower.damping_ratio),
-    ("blade", lambda s, b: blade.modes(s), lambda s: s.blade.damping_ratio),
-    (
-        "drivetrain",
-        lambda s, b: drivetrain.modes(s, b["blade"]),
-        lambda s: s.drivetrain.damping_ratio,
-    ),
-    ("yaw", lambda s, b: yaw.modes(s), lambda s: s.yaw.damping_ratio),
-    (
-        "system",
-        lambda s, b: coupled.modes(s),
-        lambda s: min(s.tower.damping_ratio, s.blade.damping_ratio),
-    ),
+#: The analysed parts of a turbine, in report order: each a module with the subsystem
+#: protocol of :mod:`wtvib.analysis` (modes, default damping, its own checks and results).
+SUBSYSTEMS: tuple[Subsystem, ...] = (
+    tower,
+    blade,
+    drivetrain,
+    yaw,
+    coupled,
+    floquet,
+    aeroelastic,
+    stall,
 )
 
 
@@ -44,11 +38,17 @@ class Report:
     settings: AuditSettings
     modes: tuple[Mode, ...]
     checks: tuple[Check, ...]
-    tower_class: str | None
     findings: tuple[Finding, ...] = field(default_factory=tuple)
     assumptions: tuple[str, ...] = field(default_factory=tuple)
     warnings: tuple[str, ...] = field(default_factory=tuple)
     uncertainty: dict[str, Any] | None = None
+    results: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)  # by subsystem
+
+    @property
+    def tower_class(self) -> str | None:
+        """stiff, soft, soft-soft or resonant (None: no tower classification)."""
+        found = self.results.get("tower", {}).get("class")
+        return found.tower_class if found is not None else None
 
     @property
     def rule(self) -> MarginRule:
@@ -161,75 +161,72 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
     rule = settings.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
-    built: Built = {}
-    for name, build, _ in SUBSYSTEMS:
-        built[name] = build(spec, built)
-    # one truth per mode: isolated modes the coupled model has are shown, not judged
-    replaced = coupled.superseded(
-        built["system"], [m for n, ms in built.items() if n != "system" for m in ms], spec
-    )
-    for name in built:
-        built[name] = [
-            replace(m, superseded_by=replaced[m.id]) if m.id in replaced else m for m in built[name]
-        ]
-    for name, _, damping in SUBSYSTEMS:  # each mode carries the ζ it is judged with
-        source = _damping_source(spec, name)
-        built[name] = [
-            replace(m, damping_ratio=damping(spec), damping_source=source)
-            if m.damping_ratio is None
-            else m
-            for m in built[name]
-        ]
+    built: dict[str, list[Mode]] = {}
+    for sub in SUBSYSTEMS:
+        built[sub.NAME] = sub.build_modes(spec, built)
+    built = _one_truth_per_mode(spec, built)
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
-    tower_class = None
-    for name, _, damping in SUBSYSTEMS:
-        sub_modes = built[name]
-        if name == "tower" and spec.rotor.orientation != "vertical-axis":
-            first = tower.first_bending(sub_modes)
-            if first is not None and first.superseded_by is not None:
-                first = next(m for m in all_modes if m.id == first.superseded_by)
-            if first is not None:
-                harmonics = [e for e in lines if e.acts_on("tower")]
-                c = tower.classify(first, harmonics, spec.rotor.blades, op, rule, damping(spec))
-                tower_class = c.tower_class
-                checks.append(tower.class_check(c, spec.rotor.blades, op, rule))
+    results: dict[str, Mapping[str, Any]] = {}
+    assumptions: list[str] = []
+    for sub in SUBSYSTEMS:
         found = assess_all(
-            sub_modes,
+            built[sub.NAME],
             lines,
             op,
             rule,
             settings.severities(),
-            damping(spec),
+            sub.default_damping(spec).ratio,
             settings.heavy_damping_ratio,
         )
+        resonance = resonance_checks(found, op, rule)
+        ctx = Context(op, lines, rule, settings, tuple(all_modes), tuple(found), tuple(resonance))
+        analysis: Analysis = sub.analyse(spec, ctx)
+        if analysis.refine is not None:
+            resonance = [analysis.refine(c) for c in resonance]
         findings += found
-        checks += resonance_checks(found, op, rule)
-        if name == "yaw":
-            checks += yaw.checks(spec, op, rule, lines)
-        if name == "drivetrain":
-            checks = drivetrain.annotate(spec, built["blade"], checks)
-            power = drivetrain.power_check(spec, op, rule, lines, settings.heavy_damping_ratio)
-            checks += [power] if power else []
-    for extra in (coupled.check(spec, all_modes), coupled.stability_check(spec)):
-        checks += [extra] if extra else []
-    floquet_check, _ = floquet.check(spec, all_modes)
-    checks.append(floquet_check)
-    checks += aeroelastic.checks(spec, all_modes)[0]
-    checks += stall.checks(spec, all_modes)
+        checks += [*analysis.lead, *resonance, *analysis.checks]
+        if analysis.results:
+            results[sub.NAME] = analysis.results
+        assumptions += analysis.assumptions
     _assert_finite(all_modes)
     return Report(
         spec=spec,
         settings=settings,
         modes=tuple(all_modes),
         checks=tuple(checks),
-        tower_class=tower_class,
         findings=tuple(findings),
-        assumptions=tuple(_assumptions(spec, rule, all_modes)),
+        assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions)),
         warnings=tuple(suspicious(spec, all_modes) + _no_tolerance(spec, samples)),
         uncertainty=_uncertainty(spec, samples, seed, all_modes, rule) if samples else None,
+        results=results,
     )
+
+
+def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, list[Mode]]:
+    """Mark the isolated modes a coupled mode stands for (``replaces``: shown, not judged;
+    the first coupled mode of each wins) and give every mode without its own damping its
+    subsystem's default, saying where it came from."""
+    present = {m.id for ms in built.values() for m in ms}
+    replaced: dict[str, str] = {}
+    for ms in built.values():
+        for m in ms:
+            if m.replaces in present and m.replaces not in replaced:
+                replaced[m.replaces] = m.id
+    out = {}
+    for sub in SUBSYSTEMS:
+        damping = sub.default_damping(spec)
+        out[sub.NAME] = [
+            replace(
+                m,
+                superseded_by=replaced.get(m.id),
+                damping_ratio=damping.ratio if m.damping_ratio is None else m.damping_ratio,
+                damping_source=damping.source if m.damping_ratio is None else None,
+            )
+            for m in built[sub.NAME]
+        ]
+    return out
 
 
 def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
@@ -304,16 +301,6 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
     return out
 
 
-def _damping_source(spec: Spec, subsystem: str) -> str:
-    """Where a subsystem's default damping ratio comes from: the spec, or wtvib's default."""
-    keys = ("tower", "blade") if subsystem == "system" else (subsystem,)
-    given = [k for k in keys if "damping_ratio" in getattr(spec, k).model_fields_set]
-    if subsystem == "system":
-        where = "the lower of tower.damping_ratio and blade.damping_ratio"
-        return f"{where} ({'given' if len(given) == 2 else 'assumed: not all given'})"
-    return f"{subsystem}.damping_ratio (given)" if given else "assumed (no value given)"
-
-
 def _missing_yaw_inertia(spec: Spec, modes: list[Mode]) -> list[str]:
     """A yaw model on a tower head without a yaw inertia: the frequency can be off by a factor.
 
@@ -345,7 +332,9 @@ def _missing_yaw_inertia(spec: Spec, modes: list[Mode]) -> list[str]:
     return [text + " — give the head's yaw inertia"]
 
 
-def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
+def _assumptions(
+    spec: Spec, rule: MarginRule, modes: list[Mode], statements: list[str]
+) -> list[str]:
     out = [f"Margin rule: {rule.label} — {rule.source}."]
     speed = spec.rotor.speed
     if speed.overspeed_rpm is None and speed.overspeed_factor is None:
@@ -353,11 +342,14 @@ def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
             f"No overspeed given: a transient overspeed of {DEFAULT_OVERSPEED_FACTOR:.0%} of "
             f"the highest steady speed ({speed.overspeed:.3g} rpm) is checked."
         )
-    for name, _, damping in SUBSYSTEMS:
-        ids = [m.id for m in modes if m.subsystem == name and m.damping_source]
-        source = _damping_source(spec, name)
-        if ids and "assumed" in source:  # an assumption is stated only when it was made
-            out.append(f"{name}: damping ratio {damping(spec):.3g} {source} for {', '.join(ids)}.")
+    for sub in SUBSYSTEMS:
+        ids = [m.id for m in modes if m.subsystem == sub.NAME and m.damping_source]
+        damping = sub.default_damping(spec)
+        if ids and damping.assumed:  # an assumption is stated only when it was made
+            out.append(
+                f"{sub.NAME}: damping ratio {damping.ratio:.3g} {damping.source} for "
+                f"{', '.join(ids)}."
+            )
     stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:
         out.append(
@@ -366,59 +358,14 @@ def _assumptions(spec: Spec, rule: MarginRule, modes: list[Mode]) -> list[str]:
             + ", ".join(stiffened)
             + "."
         )
-    out += _model_statements(spec, modes)
+    out += statements  # how each subsystem's modes came about
+    given = sorted({m.subsystem for m in modes if m.origin == "given"})
+    if given:
+        out.append(f"Natural frequencies taken as given in the spec: {', '.join(given)}.")
     out += spec.assumptions
     if spec.rotor.orientation == "vertical-axis":
         out.append(
             "Vertical-axis rotor: no stiff/soft tower classification; resonance "
             "checks against per-rev excitations only."
         )
-    return out
-
-
-def _model_statements(spec: Spec, modes: list[Mode]) -> list[str]:
-    """Say which frequencies were computed, how, and which were taken as given."""
-    out = []
-    t = spec.tower
-    if t.has_structure:
-        kind = "tapered tube sections" if t.sections is not None else "distributed properties"
-        head = spec.tower_head
-        head_text = (
-            f"tower head {head.mass_kg:,.0f} kg as a rigid body (CM {head.cm_downwind_m:+.2f} m "
-            f"downwind, {head.cm_above_top_m:+.2f} m above the top)"
-            if head
-            else "no tower head given (bare tower)"
-        )
-        base = (
-            "clamped base"
-            if t.foundation.kind == "clamped"
-            else f"base on springs (lateral {t.foundation.lateral_n_m or '—'} N/m, rocking "
-            f"{t.foundation.rocking_nm_rad or '—'} N·m/rad)"
-        )
-        out.append(
-            f"Tower modes computed: Euler–Bernoulli beam, {tower.DEFAULT_ELEMENTS} elements, from "
-            f"{kind}; {head_text}; foundation: {base}; gravity "
-            f"{'included' if t.gravity else 'not included'}."
-        )
-    if spec.blade.structure is not None:
-        out.append(
-            "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with centrifugal "
-            f"stiffening and in-plane softening at {blade.SPEED_SAMPLES} speeds, followed by MAC."
-        )
-    if coupled.applies(spec):
-        out.append(
-            "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
-            f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
-            "coordinates); shaft tilt, precone, blade torsion, gravity on the blades and "
-            "all damping but the drive train's neglected."
-        )
-    given = sorted(
-        {
-            m.subsystem
-            for m in modes
-            if "(computed)" not in m.description and "(coupled" not in m.description
-        }
-    )
-    if given:
-        out.append(f"Natural frequencies taken as given in the spec: {', '.join(given)}.")
     return out

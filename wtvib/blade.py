@@ -1,9 +1,12 @@
 """Rotor blades: flap, edge and torsion modes with rotational (centrifugal) stiffening."""
 
+from collections.abc import Mapping
+
 import numpy as np
 from numpy.typing import NDArray
 
 from . import beam, modal
+from .analysis import Analysis, Context, Damping, section_damping
 from .given import given_modes, ordinal
 from .results import Mode, Sampled, Shape, Southwell, SpeedCurve
 from .spec import BladeStructure, ModeSpec, Spec
@@ -220,4 +223,32 @@ def _computed(
         damping_ratio=given.damping_ratio if isinstance(given, ModeSpec) else None,
         curve=curve,
         shape=shape,
+        origin="computed",
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis)
+
+NAME = "blade"
+
+
+def default_damping(spec: Spec) -> Damping:
+    return section_damping(spec.blade, "blade")
+
+
+def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    return modes(spec)
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """The blade's resonances are judged by the audit; this says how its modes came about."""
+    if spec.blade.structure is None:
+        return Analysis()
+    return Analysis(
+        assumptions=(
+            "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with "
+            "centrifugal stiffening and in-plane softening at "
+            f"{SPEED_SAMPLES} speeds, followed by MAC.",
+        )
     )

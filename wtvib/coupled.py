@@ -56,6 +56,7 @@ analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9
 
 import functools
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -63,6 +64,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import beam, blade, drivetrain, modal, tower, yaw
+from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
 from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
 from .multiblade import parked, sweep
@@ -620,6 +622,8 @@ def modes(spec: Spec) -> list[Mode]:
                 float(f),
                 regimes=exists(n),
                 condition=f"{condition}, parked",
+                origin="coupled",
+                replaces=isolated_id(n, cond),
             )
             for f, n, d in zip(res.frequency_hz, res.names, res.descriptions, strict=True)
         ]
@@ -647,6 +651,8 @@ def modes(spec: Spec) -> list[Mode]:
                 regimes=exists(name),
                 condition=condition,
                 whirl=whirl,
+                origin="coupled",
+                replaces=isolated_id(name, cond),
             )
         )
     return sorted(out, key=lambda m: m.frequency_hz)
@@ -667,25 +673,6 @@ def isolated_id(name: str, condition: str) -> str:
     if base.startswith("yaw"):
         return f"yaw.{base.removeprefix('yaw')}"
     return "blade." + name.split(".")[1]
-
-
-def superseded(system: list[Mode], isolated: list[Mode], spec: Spec) -> dict[str, str]:
-    """Isolated mode id → the coupled mode that replaces it in the judgement.
-
-    One truth per mode (DESIGN.md): where the coupled model has a subsystem's mode, in the
-    same generator condition, the coupled mode is judged and the isolated one is shown
-    beside it as what it is.
-    """
-    if not system or spec.coupled is None:
-        return {}
-    cond = spec.coupled.rotating_condition
-    have = {m.id for m in isolated}
-    out: dict[str, str] = {}
-    for m in system:
-        iso = isolated_id(m.id.removeprefix("system."), cond)
-        if iso in have and iso not in out:
-            out[iso] = m.id
-    return out
 
 
 def check(spec: Spec, isolated: list[Mode]) -> Check | None:
@@ -839,3 +826,42 @@ def stability_check(spec: Spec) -> Check | None:
             f"{cutoff:.3g} Hz, every blade coordinate)",
         },
     )
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis)
+
+NAME = "system"
+
+
+def default_damping(spec: Spec) -> Damping:
+    """The lower of the tower's and the blades' damping ratios (the coupled modes mix them)."""
+    tower_d = section_damping(spec.tower, "tower")
+    blade_d = section_damping(spec.blade, "blade")
+    where = "the lower of tower.damping_ratio and blade.damping_ratio"
+    assumed = tower_d.assumed or blade_d.assumed
+    return Damping(
+        min(tower_d.ratio, blade_d.ratio),
+        f"{where} ({'assumed: not all given' if assumed else 'given'})",
+        assumed,
+    )
+
+
+def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    return modes(spec)
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """``system.coupling`` (coupled vs isolated) and, for two blades, ``system.floquet``."""
+    found = (check(spec, list(ctx.modes)), stability_check(spec))
+    statements = (
+        (
+            "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
+            f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
+            "coordinates); shaft tilt, precone, blade torsion, gravity on the blades and "
+            "all damping but the drive train's neglected.",
+        )
+        if applies(spec)
+        else ()
+    )
+    return Analysis(checks=tuple(c for c in found if c is not None), assumptions=statements)

@@ -14,12 +14,14 @@ DOMAIN.md §3). The generator's electrical coupling (Hau Fig. 7.11) makes the co
 """
 
 import math
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
 
 from . import modal
+from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
 from .results import Check, Mode, Rule, Shape
@@ -282,6 +284,7 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
                     shape=Shape(positions, tuple(res.shapes[:, j - 1].tolist()), names),
                     regimes=regimes(spec, condition),
                     condition=CONDITIONS[condition],
+                    origin="computed",
                 )
             )
     return out
@@ -304,18 +307,22 @@ def _given(spec: Spec) -> list[Mode]:
     return out
 
 
-def power_check(
-    spec: Spec,
-    op: OperatingRange,
-    rule: MarginRule,
-    lines: list[Excitation],
-    heavy_damping: float = 0.3,
-) -> Check | None:
-    """Synchronous generator on the grid: the first grid mode over the power range.
+@dataclass(frozen=True)
+class PowerCurve:
+    """The first grid mode of a synchronous drive train over electrical power, and the
+    dominant lines it is judged against (what ``drivetrain-power.png`` draws)."""
+
+    power_fraction: tuple[float, ...]  # of rated power [-]
+    frequency_hz: tuple[float, ...]
+    damping_ratio: tuple[float, ...]
+    lines: tuple[tuple[str, float], ...]  # label, frequency [Hz] at each steady range's start
+
+
+def power_curve(spec: Spec) -> PowerCurve | None:
+    """Synchronous generator on the grid: the first grid mode at 0–95 % power.
 
     The magnetic stiffness falls with power (cos δ₀), so the grid modes sweep a band at a
-    fixed speed (Hau Fig. 7.14, MOD-0). Checked at 0–95 % power against the dominant
-    excitations over the steady operating speeds.
+    fixed speed (Hau Fig. 7.14, MOD-0). None for any other generator.
     """
     dt = spec.drivetrain
     if not (
@@ -333,6 +340,24 @@ def power_check(
         res = modal.damped(k, m, d)
         curve.append(float(res.frequency_hz[0]))
         zetas.append(float(res.damping_ratio[0]))
+    lines = tuple(
+        (f"{k}P at {a:g} rpm", k * a / 60.0)
+        for k in sorted({1, spec.rotor.blades})
+        for a, _ in spec.rotor.speed.steady_rpm
+    )
+    return PowerCurve(tuple(fractions.tolist()), tuple(curve), tuple(zetas), lines)
+
+
+def power_check(
+    power: PowerCurve,
+    op: OperatingRange,
+    rule: MarginRule,
+    lines: Sequence[Excitation],
+    heavy_damping: float = 0.3,
+) -> Check:
+    """``drivetrain.grid.power``: the power curve against the dominant excitations over the
+    steady operating speeds."""
+    fractions, curve, zetas = power.power_fraction, power.frequency_hz, power.damping_ratio
     speeds = np.concatenate([np.linspace(a, b, 25) for a, b in op.steady])
     dominant = [e for e in lines if e.energy == "dominant" and e.acts_on("drivetrain")]
     hits = [
@@ -373,32 +398,37 @@ def power_check(
     )
 
 
-def annotate(spec: Spec, blade_modes: list[Mode], checks: list[Check]) -> list[Check]:
-    """Add the forced-response torque amplification to each drive-train resonance check."""
+#: Condition key of a mode's condition text (Mode.condition holds the words).
+_CONDITION_KEY = {text: key for key, text in CONDITIONS.items()}
+
+
+def torque_refiner(spec: Spec, modes: Sequence[Mode]) -> Callable[[Check], Check] | None:
+    """Adds the forced-response torque amplification to a drive-train resonance check, in
+    the generator condition of the check's governing mode (None without a chain)."""
     if not spec.drivetrain.chain:
-        return checks
-    chain = reduce(spec, edge_frequency(spec, blade_modes))
-    out = []
-    for c in checks:
-        mode = str(c.numbers.get("mode", ""))
-        if (
-            c.subsystem == "drivetrain"
-            and mode.startswith("drivetrain.")
-            and "excitation_hz" in c.numbers
-        ):
-            condition = mode.split(".")[1]
-            gear = [i for i, n in enumerate(chain.names) if "gear" in n]
-            at = gear[0] if str(c.numbers.get("excitation", "")).startswith("mesh.") and gear else 0
-            amp = torque_amplification(
-                spec, chain, condition, float(c.numbers["excitation_hz"]), at
-            )
-            c = replace(
-                c,
-                numbers={**c.numbers, "torque_amplification": round(amp, 4)},
-                message=f"{c.message}; shaft torque amplification {amp:.3g}",
-            )
-        out.append(c)
-    return out
+        return None
+    chain = reduce(spec, edge_frequency(spec, [m for m in modes if m.subsystem == "blade"]))
+    condition_of = {
+        m.id: _CONDITION_KEY[m.condition]
+        for m in modes
+        if m.subsystem == "drivetrain" and m.condition in _CONDITION_KEY
+    }
+    gear = [i for i, n in enumerate(chain.names) if "gear" in n]
+
+    def refine(c: Check) -> Check:
+        condition = condition_of.get(str(c.numbers.get("mode", "")))
+        if condition is None or "excitation_hz" not in c.numbers:
+            return c
+        mesh = str(c.numbers.get("excitation", "")).startswith("mesh.")
+        at = gear[0] if mesh and gear else 0
+        amp = torque_amplification(spec, chain, condition, float(c.numbers["excitation_hz"]), at)
+        return replace(
+            c,
+            numbers={**c.numbers, "torque_amplification": round(amp, 4)},
+            message=f"{c.message}; shaft torque amplification {amp:.3g}",
+        )
+
+    return refine
 
 
 def torque_amplification(
@@ -428,3 +458,35 @@ def torque_amplification(
     if condition == "locked":
         torques = np.append(torques, (chain.stiffness[-1] + 1j * w * chain.damping[-1]) * q[-1])
     return float(np.max(np.abs(torques)))
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis)
+
+NAME = "drivetrain"
+
+
+def default_damping(spec: Spec) -> Damping:
+    return section_damping(spec.drivetrain, "drivetrain")
+
+
+def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    """Per generator condition; the blades' edgewise frequency (built before) sets the
+    blades' flexibility in the chain."""
+    return modes(spec, built.get("blade", []))
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """Torque amplification on each resonance check; the power curve of a synchronous
+    generator on the grid (``drivetrain.grid.power``)."""
+    curve = power_curve(spec)
+    checks = (
+        (power_check(curve, ctx.op, ctx.rule, ctx.lines, ctx.settings.heavy_damping_ratio),)
+        if curve is not None
+        else ()
+    )
+    return Analysis(
+        checks=checks,
+        refine=torque_refiner(spec, ctx.modes),
+        results={"power": curve} if curve is not None else {},
+    )

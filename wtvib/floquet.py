@@ -35,7 +35,7 @@ systems with applications to structural dynamics and helicopter rotor dynamics",
 """
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -43,6 +43,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import modal
+from .analysis import Analysis, Context, Damping, section_damping
 from .multiblade import parked
 from .units import rpm_to_rad_s
 
@@ -166,7 +167,8 @@ class Floquet:
         return np.abs(self.exponents.imag) / (2 * math.pi)
 
 
-def analyse(a: StateMatrix, period: float, steps: int = 400) -> Floquet:
+def stability(a: StateMatrix, period: float, steps: int = 400) -> Floquet:
+    """Floquet multipliers of ẋ = A(t)x over one period (the monodromy's eigenvalues)."""
     return Floquet(np.linalg.eigvals(monodromy(a, period, steps)).astype(complex), period)
 
 
@@ -599,3 +601,23 @@ def multipliers(
 
 #: Floquet multipliers above 1 + this count as growth (rounding stays far below it).
 GROWTH = 1e-6
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis): the rotor as a periodic system on the tower head
+
+NAME = "rotor"
+
+
+def default_damping(spec: "Spec") -> Damping:
+    return section_damping(spec.yaw, "yaw")
+
+
+def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
+    return []  # its modes are the tower's and the yaw system's; it judges their stability
+
+
+def analyse(spec: "Spec", ctx: Context) -> Analysis:
+    """``rotor.floquet`` and the stability map it draws (two-bladed rotors)."""
+    found, smap = check(spec, ctx.modes)
+    return Analysis(checks=(found,), results={"map": smap} if smap is not None else {})

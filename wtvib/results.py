@@ -103,6 +103,8 @@ class Mode:
     whirl: Whirl | None = field(default=None, compare=False)
     superseded_by: str | None = None  # the coupled mode judged in its place
     damping_source: str | None = None  # where damping_ratio came from when not the mode's own
+    origin: str = "given"  # given (in the spec), computed (a subsystem model) or coupled
+    replaces: str | None = None  # the isolated mode a coupled mode stands for (if it exists)
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""

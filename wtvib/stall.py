@@ -22,12 +22,14 @@ principal axes is ignored here.
 """
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
+from .analysis import Analysis, Context, Damping, section_damping
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
@@ -284,3 +286,22 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
             )
         )
     return out
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis): stall-induced vibration of the blade
+
+NAME = "stall"
+
+
+def default_damping(spec: "Spec") -> Damping:
+    return section_damping(spec.blade, "blade")
+
+
+def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
+    return []  # it judges the blade's modes
+
+
+def analyse(spec: "Spec", ctx: Context) -> Analysis:
+    """``blade.stall.flap1`` and ``blade.stall.edge1``."""
+    return Analysis(checks=tuple(checks(spec, list(ctx.modes))))

@@ -6,7 +6,7 @@ Hau, *Wind Turbines*, ch. 7.5.1 (tower stiffness, Figs. 7.19 and 7.20) and 7.5.2
 """
 
 import functools
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 
 from . import beam, modal
 from . import spec as spec_mod
+from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
 from .resonance import Finding, assess
@@ -407,4 +408,60 @@ def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mo
         frequency_hz=f,
         damping_ratio=zeta,
         shape=Shape(tuple(nodes.tolist()), tuple((full / peak).tolist())),
+        origin="computed",
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis)
+
+NAME = "tower"
+
+
+def default_damping(spec: Spec) -> Damping:
+    return section_damping(spec.tower, "tower")
+
+
+def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    return modes(spec)
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """The ``tower.class`` check, on the first bending mode as judged (the coupled one where
+    the coupled model has it), placed before the tower's resonance checks."""
+    statements = _statements(spec)
+    first = first_bending(ctx.own(NAME))
+    if first is not None and first.superseded_by is not None:
+        first = next(m for m in ctx.modes if m.id == first.superseded_by)
+    if first is None or spec.rotor.orientation == "vertical-axis":
+        return Analysis(assumptions=statements)
+    harmonics = [e for e in ctx.lines if e.acts_on(NAME)]
+    ratio = default_damping(spec).ratio
+    c = classify(first, harmonics, spec.rotor.blades, ctx.op, ctx.rule, ratio)
+    check = class_check(c, spec.rotor.blades, ctx.op, ctx.rule)
+    return Analysis(lead=(check,), results={"class": c}, assumptions=statements)
+
+
+def _statements(spec: Spec) -> tuple[str, ...]:
+    t = spec.tower
+    if not t.has_structure:
+        return ()
+    kind = "tapered tube sections" if t.sections is not None else "distributed properties"
+    head = spec.tower_head
+    head_text = (
+        f"tower head {head.mass_kg:,.0f} kg as a rigid body (CM {head.cm_downwind_m:+.2f} m "
+        f"downwind, {head.cm_above_top_m:+.2f} m above the top)"
+        if head
+        else "no tower head given (bare tower)"
+    )
+    base = (
+        "clamped base"
+        if t.foundation.kind == "clamped"
+        else f"base on springs (lateral {t.foundation.lateral_n_m or '—'} N/m, rocking "
+        f"{t.foundation.rocking_nm_rad or '—'} N·m/rad)"
+    )
+    return (
+        f"Tower modes computed: Euler–Bernoulli beam, {DEFAULT_ELEMENTS} elements, from "
+        f"{kind}; {head_text}; foundation: {base}; gravity "
+        f"{'included' if t.gravity else 'not included'}.",
     )

@@ -8,13 +8,14 @@ linearised by its describing function, so the frequency falls with vibration amp
 """
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import modal
+from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
 from .results import Check, Mode, Rule
@@ -181,6 +182,7 @@ def modes(spec: Spec) -> list[Mode]:
                 f"{ordinal(k)} yaw mode, yawing, no gear play ({_model_text(mdl)}) (computed)",
                 float(f),
                 zeta,
+                origin="computed",
             )
         )
     if mdl.half_gap and mdl.amplitude:
@@ -193,6 +195,7 @@ def modes(spec: Spec) -> list[Mode]:
                 f"at {math.degrees(mdl.amplitude):.2g}° amplitude (computed)",
                 f_play,
                 _friction_zeta(y.friction_moment_nm, mdl, f_play, mdl.amplitude),
+                origin="computed",
             )
         )
     if y.brake_moment_nm > 0:
@@ -204,6 +207,7 @@ def modes(spec: Spec) -> list[Mode]:
                 "1st yaw mode, parked with the brakes applied (play taken up) (computed)",
                 f0,
                 _friction_zeta(y.brake_moment_nm + y.friction_moment_nm, mdl, f0, amp),
+                origin="computed",
             )
         )
     return out
@@ -394,3 +398,22 @@ def _moment_budget(spec: Spec) -> Check:
         rule=Rule("moment budget about the yaw and tilt axes", "Hau ch. 7.4.1"),
         numbers={k: (None if v is None else round(v, 3)) for k, v in terms.items()},
     )
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis)
+
+NAME = "yaw"
+
+
+def default_damping(spec: Spec) -> Damping:
+    return section_damping(spec.yaw, "yaw")
+
+
+def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    return modes(spec)
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """``yaw.play``, ``yaw.inertia`` and ``yaw.moments`` after the yaw resonance checks."""
+    return Analysis(checks=tuple(checks(spec, ctx.op, ctx.rule, ctx.lines)))

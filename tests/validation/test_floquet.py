@@ -26,9 +26,9 @@ def mathieu(a: float, q: float):  # type: ignore[no-untyped-def]
 def test_mathieu_stability_boundaries(q, order):
     b, a = mathieu_b(order, q), mathieu_a(order, q)
     lo, hi = min(a, b), max(a, b)
-    inside = floquet.analyse(mathieu(0.5 * (lo + hi), q), math.pi, 400).largest
-    below = floquet.analyse(mathieu(lo - 0.02, q), math.pi, 400).largest
-    above = floquet.analyse(mathieu(hi + 0.02, q), math.pi, 400).largest
+    inside = floquet.stability(mathieu(0.5 * (lo + hi), q), math.pi, 400).largest
+    below = floquet.stability(mathieu(lo - 0.02, q), math.pi, 400).largest
+    above = floquet.stability(mathieu(hi + 0.02, q), math.pi, 400).largest
     assert inside > 1.0 + 1e-3
     assert below == pytest.approx(1.0, abs=1e-7) and above == pytest.approx(1.0, abs=1e-7)
 
@@ -64,7 +64,7 @@ def independent_largest(a, period: float) -> float:  # type: ignore[no-untyped-d
 
 def unstable_band(epsilon: float, zeta: float = 0.0) -> tuple[float, float] | None:
     ratios = np.linspace(0.8, 1.2, 161)
-    rho = [floquet.analyse(yaw_model(epsilon, r, zeta), 2 * math.pi, 300).largest for r in ratios]
+    rho = [floquet.stability(yaw_model(epsilon, r, zeta), 2 * math.pi, 300).largest for r in ratios]
     bad = ratios[np.array(rho) > 1 + 1e-6]
     return (float(bad.min()), float(bad.max())) if bad.size else None
 
@@ -75,7 +75,7 @@ def test_minimal_yaw_model_has_a_band_near_one_per_rev(epsilon):
     assert band is not None and band[0] < 1.0 < band[1]  # ω₀/Ω ≈ 1: 2Ω = 2ω₀
     # the edges agree with an independent integration (DOP853)
     for r in (band[0] + 0.0025, band[1] - 0.0025):
-        ours = floquet.analyse(yaw_model(epsilon, r), 2 * math.pi, 300).largest
+        ours = floquet.stability(yaw_model(epsilon, r), 2 * math.pi, 300).largest
         assert ours == pytest.approx(
             independent_largest(yaw_model(epsilon, r), 2 * math.pi), rel=1e-6
         )

@@ -1,0 +1,96 @@
+"""The subsystem protocol: what every analysed part of a turbine gives the audit (DESIGN.md).
+
+A subsystem is a module with four names — :data:`NAME`, ``default_damping(spec)``,
+``build_modes(spec, built)`` and ``analyse(spec, context)`` — so that the audit is a loop
+over them plus the one resonance judgement and the verdict, and a new subsystem is one
+module added to :data:`wtvib.audit.SUBSYSTEMS`:
+
+1. ``build_modes`` computes (or takes as given) the natural modes, seeing the modes of the
+   subsystems before it (``built``; the drive train takes the blades' edgewise frequency);
+2. the audit marks the modes the coupled model supersedes, fills in default damping, and
+   judges every mode against every excitation (:mod:`wtvib.resonance`);
+3. ``analyse`` returns the subsystem's own checks and results, seeing every mode and the
+   judgement of its own (:class:`Context`).
+"""
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any, Protocol
+
+if TYPE_CHECKING:
+    from .excitation import Excitation, OperatingRange
+    from .resonance import Finding
+    from .results import Check, Mode
+    from .rules import MarginRule
+    from .spec import AuditSettings, Spec
+
+
+@dataclass(frozen=True)
+class Context:
+    """What an analysis sees: the operating range (rad/s), the excitation lines, the rule in
+    force, every mode of the turbine (superseded ones marked) and the resonance judgement of
+    the analysed subsystem (``findings``, ``resonance``)."""
+
+    op: "OperatingRange"
+    lines: "Sequence[Excitation]"
+    rule: "MarginRule"
+    settings: "AuditSettings"
+    modes: "Sequence[Mode]"
+    findings: "Sequence[Finding]" = ()
+    resonance: "Sequence[Check]" = ()
+
+    def own(self, subsystem: str) -> "list[Mode]":
+        """The modes of one subsystem."""
+        return [m for m in self.modes if m.subsystem == subsystem]
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """A subsystem's contribution to the report.
+
+    ``lead`` checks go before the subsystem's resonance checks (the tower class), ``checks``
+    after them; ``refine`` rewrites each of its resonance checks (the drive train adds the
+    shaft-torque amplification); ``results`` are the typed objects its figures draw.
+    """
+
+    lead: "tuple[Check, ...]" = ()
+    checks: "tuple[Check, ...]" = ()
+    refine: "Callable[[Check], Check] | None" = None
+    results: Mapping[str, Any] = field(default_factory=dict)
+    assumptions: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Damping:
+    """The damping ratio of a subsystem's modes that carry none of their own, and where it
+    comes from (``assumed``: wtvib's default, not a value the spec gives)."""
+
+    ratio: float
+    source: str
+    assumed: bool
+
+
+class Subsystem(Protocol):
+    """The protocol a subsystem module satisfies (modules are protocol implementations)."""
+
+    NAME: str
+
+    def default_damping(self, spec: "Spec") -> Damping:
+        """Damping ratio of the modes that carry none of their own, and its source."""
+        ...
+
+    def build_modes(self, spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
+        """The subsystem's natural modes (``built``: the modes of the subsystems before)."""
+        ...
+
+    def analyse(self, spec: "Spec", ctx: Context) -> Analysis:
+        """The subsystem's own checks and results."""
+        ...
+
+
+def section_damping(section: Any, name: str) -> Damping:
+    """The ``damping_ratio`` of a spec section (``tower``, ``blade`` …): given, or the
+    schema's default, which is then an assumption."""
+    given = "damping_ratio" in section.model_fields_set
+    source = f"{name}.damping_ratio (given)" if given else "assumed (no value given)"
+    return Damping(float(section.damping_ratio), source, not given)
