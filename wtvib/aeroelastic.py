@@ -690,6 +690,21 @@ def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]"
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
-    """``blade.divergence`` and ``blade.flutter``, with the station results."""
+    """``blade.divergence`` and ``blade.flutter``, with the station results, the station
+    nearest to flutter (its V-g curves) and its stability-limits chart (Hau Fig. 7.6) at the
+    required speed."""
     found, stations_ = checks(spec, ctx.modes)
-    return Analysis(checks=tuple(found), results={"stations": tuple(stations_)})
+    ae = spec.blade.aeroelastic
+    if not stations_ or ae is None:
+        return Analysis(checks=tuple(found))
+    worst = min(stations_, key=lambda r: r.flutter.speed / r.section_speed)
+    required = worst.section_speed * (1 + ae.speed_margin)
+    return Analysis(
+        checks=tuple(found),
+        results={
+            "stations": tuple(stations_),
+            "worst": worst,
+            "required_speed_m_s": required,
+            "chart": stability_chart(worst.section, required),
+        },
+    )

@@ -54,28 +54,25 @@ def power_curve_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "drivetrain.grid.power"), None)
-    if check is None:
+    curve = report.results.get("drivetrain", {}).get("power")
+    if check is None or curve is None:
         return None
-    power = 100 * np.asarray(check.numbers["power_fraction"])
-    freq = np.asarray(check.numbers["frequency_hz"])
+    power = 100 * np.asarray(curve.power_fraction)
     fig = Figure(figsize=(8, 4.5), dpi=150, layout="constrained")
     ax = fig.add_subplot()
-    ax.plot(power, freq, lw=2.2, color="#1f77b4", label="1st grid mode")
-    speed = report.spec.rotor.speed
+    ax.plot(power, curve.frequency_hz, lw=2.2, color="#1f77b4", label="1st grid mode")
     lo, hi = report.rule.natural_band(1.0)
-    for k in sorted({1, report.spec.rotor.blades}):
-        for a, _ in speed.steady_rpm:
-            f_e = k * a / 60.0
-            ax.axhline(f_e, color="#212121", lw=1.4)
-            ax.axhspan(f_e * lo, f_e * hi, color="#e53935", alpha=0.12, lw=0)
-            ax.annotate(
-                f"{k}P at {a:g} rpm",
-                (power[-1], f_e),
-                xytext=(-4, 3),
-                textcoords="offset points",
-                ha="right",
-                fontsize=9,
-            )
+    for label, f_e in curve.lines:
+        ax.axhline(f_e, color="#212121", lw=1.4)
+        ax.axhspan(f_e * lo, f_e * hi, color="#e53935", alpha=0.12, lw=0)
+        ax.annotate(
+            label,
+            (power[-1], f_e),
+            xytext=(-4, 3),
+            textcoords="offset points",
+            ha="right",
+            fontsize=9,
+        )
     ax.set_xlabel("electrical power [% of rated]")
     ax.set_ylabel("frequency [Hz]")
     ax.set_title(
@@ -93,10 +90,10 @@ def floquet_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "rotor.floquet"), None)
-    if check is None or "map_rpm" not in check.numbers:
+    smap = report.results.get("rotor", {}).get("map")
+    if check is None or smap is None:
         return None
-    rpm = np.asarray(check.numbers["map_rpm"])
-    rho = np.asarray(check.numbers["map_largest_multiplier"])
+    rpm, rho = smap.speeds_rpm, smap.largest
     speed = report.spec.rotor.speed
     fig = Figure(figsize=(9, 4.8), dpi=150, layout="constrained")
     ax = fig.add_subplot()
@@ -106,9 +103,15 @@ def floquet_plot(report: Report) -> "Figure | None":
         else:
             ax.axvline(a, color="#66bb6a", lw=6, alpha=0.5, label="operating speed")
     ax.axvspan(speed.top_rpm, speed.overspeed, color="#fff3e0", lw=0, label="overspeed")
-    for a, b in check.numbers["unstable_rpm"]:
+    for a, b in smap.unstable_rpm:
         ax.axvspan(a, b, color="#e53935", alpha=0.2, lw=0)
     ax.plot(rpm, rho, color="#1f77b4", lw=2, label="largest |ρ| (Floquet multiplier)")
+    # a span of at least ±5 % about |ρ| = 1: rounding (1e-12) is not drawn as structure
+    finite = rho[np.isfinite(rho)]
+    low = min(0.95, float(finite.min(initial=1.0)) - 0.01)
+    high = max(1.05, float(finite.max(initial=1.0)) + 0.01)
+    ax.set_ylim(low, high)
+    ax.ticklabel_format(axis="y", useOffset=False)
     ax.axhline(1.0, color="#212121", lw=1, ls="--", label="stability limit |ρ| = 1")
     ax.set_xlabel("rotor speed [rpm]")
     ax.set_ylabel("largest Floquet multiplier |ρ|")
@@ -130,25 +133,25 @@ def flutter_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "blade.flutter"), None)
-    if check is None or "vg" not in check.numbers:
+    found = report.results.get("aeroelastic", {})
+    if check is None or "worst" not in found:
         return None
-    n = check.numbers
+    worst, required = found["worst"], found["required_speed_m_s"]
     fig = Figure(figsize=(9, 6.4), dpi=150, layout="constrained")
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
     colours = ("#1f77b4", "#d62728")
     names = ("bending branch", "torsion branch")
-    for branch, colour, label in zip(n["vg"], colours, names, strict=False):
-        v = np.asarray(branch["speed_m_s"])
-        f = np.asarray(branch["frequency_hz"], dtype=float)
+    for branch, colour, label in zip(worst.flutter.branches, colours, names, strict=False):
+        f = np.asarray(branch.omega, dtype=float) / (2 * np.pi)
         # real (non-oscillatory) roots are outside the p-k method's validity: not drawn
-        g = np.where(f > 0, -np.asarray(branch["damping_ratio"]), np.nan)
-        ax_g.plot(v, g, color=colour, lw=2, label=label)
-        ax_f.plot(v, np.where(f > 0, f, np.nan), color=colour, lw=2, label=label)
+        g = np.where(f > 0, -np.asarray(branch.damping), np.nan)
+        ax_g.plot(branch.speed, g, color=colour, lw=2, label=label)
+        ax_f.plot(branch.speed, np.where(f > 0, f, np.nan), color=colour, lw=2, label=label)
     for ax in (ax_g, ax_f):
-        ax.axvline(n["vg_section_speed_m_s"], color="#616161", ls="--", lw=1.2)
+        ax.axvline(worst.section_speed, color="#616161", ls="--", lw=1.2)
         ax.axvspan(
-            n["vg_section_speed_m_s"],
-            n["vg_section_speed_m_s"] * (1 + report.spec.blade.aeroelastic.speed_margin),  # type: ignore[union-attr]
+            worst.section_speed,
+            required,
             color="#fff3e0",
             lw=0,
             label="required margin",
@@ -166,7 +169,7 @@ def flutter_plot(report: Report) -> "Figure | None":
     )
     ax_g.annotate(
         "highest section speed",
-        (n["vg_section_speed_m_s"], 0.98),
+        (worst.section_speed, 0.98),
         xycoords=("data", "axes fraction"),
         fontsize=8,
         rotation=90,
@@ -179,7 +182,7 @@ def flutter_plot(report: Report) -> "Figure | None":
     ax_f.set_xlabel("section air speed [m/s]")
     ax_g.legend(fontsize=8, loc="best")
     ax_g.set_title(
-        f"{report.spec.turbine.name}\nblade flutter at r = {n['vg_section_radius_m']:.3g} m, "
+        f"{report.spec.turbine.name}\nblade flutter at r = {worst.radius_m:.3g} m, "
         f"Theodorsen p-k ({check.status.upper()})",
         fontweight="bold",
         fontsize=10,
@@ -192,16 +195,13 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     centre-of-mass offset, divergence and flutter limits at the required speed, the blade."""
     from matplotlib.figure import Figure
 
-    from .aeroelastic import Section, stability_chart
-
     check = next((c for c in report.checks if c.id == "blade.flutter"), None)
+    found = report.results.get("aeroelastic", {})
     ae = report.spec.blade.aeroelastic
-    if check is None or "vg_section" not in check.numbers or ae is None:
+    if check is None or "chart" not in found or ae is None:
         return None
     n = check.numbers
-    section = Section(**n["vg_section"])
-    speed = n["vg_section_speed_m_s"] * (1 + ae.speed_margin)
-    chart = stability_chart(section, speed)
+    chart, speed, worst = found["chart"], found["required_speed_m_s"], found["worst"]
     x = 100 * chart.offset_chord
     kilo = 1e-3
     fig = Figure(figsize=(9, 5.6), dpi=150, layout="constrained")
@@ -246,7 +246,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
         "o",
         ms=10,
         color="#1565c0",
-        label=f"blade section at r = {n['vg_section_radius_m']:.3g} m",
+        label=f"blade section at r = {worst.radius_m:.3g} m",
     )
     ratio = n.get("speed_ratio")
     ax.annotate(
@@ -277,21 +277,19 @@ def stall_damping_plot(report: Report) -> "Figure | None":
     """Total and aerodynamic damping of the first flap and edge modes over the wind speed."""
     from matplotlib.figure import Figure
 
-    curves = {
-        c.id.rsplit(".", 1)[1]: c
-        for c in report.checks
-        if c.id.startswith("blade.stall.") and "curve" in c.numbers
-    }
+    found = report.results.get("stall", {}).get("curves", {})
+    by_id = {c.id: c for c in report.checks}
+    curves = {name: by_id[f"blade.stall.{name}"] for name in found}
     if not curves:
         return None
     fig = Figure(figsize=(9, 5.2), dpi=150, layout="constrained")
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
     colours = {"pass": "#2e7d32", "warn": "#ef6c00", "fail": "#c62828", "info": "#1565c0"}
     for ax, (name, check) in zip(axes, curves.items(), strict=True):
-        pts = check.numbers["curve"]
-        wind = np.array([p["wind_m_s"] for p in pts])
-        total = 100 * np.array([p["total_damping_ratio"] for p in pts])
-        aero = 100 * np.array([p["aero_damping_ratio"] for p in pts])
+        pts = found[name]
+        wind = np.array([p.wind for p in pts])
+        total = 100 * np.array([p.total for p in pts])
+        aero = 100 * np.array([p.aero for p in pts])
         ax.axhline(0.0, color="#212121", lw=1)
         ax.fill_between(
             wind,

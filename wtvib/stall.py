@@ -201,6 +201,13 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
 
 
 def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]":
+    """The stall checks alone (see :func:`judge`)."""
+    return judge(spec, modes)[0]
+
+
+def judge(
+    spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]"
+) -> "tuple[list[Check], dict[str, list[Point]]]":
     """``blade.stall.flap1`` and ``blade.stall.edge1``: total damping over the operating
     range — negative fails, aerodynamic damping eating into the structural damping warns."""
     from .aeroelastic import rotor_radius
@@ -208,7 +215,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
 
     ae = spec.blade.aeroelastic
     if ae is None:
-        return []
+        return [], {}
     radius = rotor_radius(spec)
     by_id = {m.id: m for m in modes}
     polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
@@ -219,6 +226,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
         f"{polar}, axial induction a = {ae.axial_induction:g}",
     )
     out = []
+    curves: dict[str, list[Point]] = {}
     for name in ("flap1", "edge1"):
         cid = f"blade.stall.{name}"
         mode = by_id.get(f"blade.{name}")
@@ -242,6 +250,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
             ]
             out.append(Check(cid, "blade", "info", "not analysed: needs " + ", ".join(need), rule))
             continue
+        curves[name] = curve
         low = min(curve, key=lambda p: p.total)
         low_aero = min(curve, key=lambda p: p.aero)
         negative = [p for p in curve if p.total < 0]
@@ -285,7 +294,7 @@ def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]
                 },
             )
         )
-    return out
+    return out, curves
 
 
 # ---------------------------------------------------------------------------------------
@@ -303,5 +312,6 @@ def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]"
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
-    """``blade.stall.flap1`` and ``blade.stall.edge1``."""
-    return Analysis(checks=tuple(checks(spec, list(ctx.modes))))
+    """``blade.stall.flap1`` and ``blade.stall.edge1``, with the damping curves they judge."""
+    found, curves = judge(spec, list(ctx.modes))
+    return Analysis(checks=tuple(found), results={"curves": curves} if curves else {})
