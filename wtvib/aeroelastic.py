@@ -651,23 +651,10 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
                 for r in results
             ],
             "vg_section_radius_m": round(fw.radius_m, 4),
-            "vg_section": dict(fw.section.__dict__),
             "vg_section_speed_m_s": round(fw.section_speed, 4),
-            "vg": [
-                {
-                    "speed_m_s": _rounded(b.speed),
-                    "frequency_hz": _rounded(b.omega / (2 * math.pi)),
-                    "damping_ratio": _rounded(b.damping),
-                }
-                for b in fw.flutter.branches
-            ],
         },
     )
     return [div_check, flut_check], results
-
-
-def _rounded(values: Array) -> list[float]:
-    return [round(float(v), 6) for v in values]
 
 
 def _finite(x: float) -> float | None:

@@ -472,10 +472,6 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         "max_multiplier_in_operation": round(float(np.max(finite)), 6) if finite.size else None,
         "not_analysed_rpm": [round(x, 4) for x in skipped],
         "unstable_rpm": [[round(a, 4), round(b, 4)] for a, b in smap.unstable_rpm],
-        "map_rpm": [round(float(x), 4) for x in smap.speeds_rpm],
-        "map_largest_multiplier": [
-            round(float(x), 6) if np.isfinite(x) else None for x in smap.largest
-        ],
         "hub": hub,
         "polar_inertia_kgm2": model.polar,
     }
