@@ -242,10 +242,11 @@ def _uncertainty(
 
     if not uncertainty.uncertain(spec):
         return None  # said in the warnings
-    drawn = uncertainty.sample(spec, samples, seed)
+    nominal = uncertainty.nominal_of(spec, modes)
+    drawn = uncertainty.sample(spec, samples, seed, nominal=nominal)
     out = uncertainty.summary(spec, drawn, modes, rule)
     out["seed"] = seed
-    out["sensitivities"] = uncertainty.sensitivities(spec)
+    out["sensitivities"] = uncertainty.sensitivities(spec, nominal)
     return out
 
 

@@ -10,7 +10,6 @@ error* row naming the exception; the rest completes and the summaries are writte
 import csv
 import io
 import json
-import math
 import os
 import time
 from collections.abc import Callable, Iterable, Sequence
@@ -20,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import WtvibError
-from .rules import STATUS_ORDER
+from .rules import STATUS_ORDER, worst_check
 
 BATCH_SCHEMA = "wtvib-batch/1"
 SPEC_SUFFIXES = (".yaml", ".yml", ".dat", ".fst")
@@ -109,18 +108,6 @@ class Item:
             "margin": worst.get("margin") if worst else None,
             "message": worst["message"] if worst else None,
         }
-
-
-def worst_check(checks: Sequence[dict[str, Any]]) -> dict[str, Any] | None:
-    """The check that decided the verdict: the most severe warn or fail, among equals the one
-    with the least margin; None when every check passed (an info row decides nothing)."""
-
-    def severity(c: dict[str, Any]) -> tuple[int, float]:
-        margin = c.get("margin")
-        return STATUS_ORDER[c["status"]], -margin if margin is not None else -math.inf
-
-    deciding = [c for c in checks if c["status"] in ("warn", "fail")]
-    return max(deciding, key=severity, default=None)
 
 
 def discover(paths: Iterable[Path]) -> list[Path]:

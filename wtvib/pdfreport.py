@@ -6,7 +6,7 @@ The file is reproducible: reportlab's invariant mode drops creation dates and ra
 """
 
 import io
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from . import __version__
@@ -339,8 +339,8 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
     ]
 
 
-def _worst(checks: list[dict[str, Any]]) -> dict[str, Any] | None:
-    from .batch import worst_check
+def _worst(checks: list[dict[str, Any]]) -> Mapping[str, Any] | None:
+    from .rules import worst_check
 
     return worst_check(checks)
 

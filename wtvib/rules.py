@@ -19,8 +19,10 @@ References
    as widely quoted: f_exc/f_n <= 0.95 or >= 1.05. Not verified against the primary text.
 """
 
+import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -138,3 +140,15 @@ def dynamic_amplification(eta: ArrayLike, zeta: float) -> NDArray[np.float64]:
     e = np.asarray(eta, dtype=float)
     with np.errstate(divide="ignore"):
         return np.asarray(1.0 / np.sqrt((1.0 - e**2) ** 2 + (2.0 * zeta * e) ** 2))
+
+
+def worst_check(checks: Sequence[Mapping[str, Any]]) -> Mapping[str, Any] | None:
+    """The check that decided the verdict: the most severe warn or fail, among equals the one
+    with the least margin; None when every check passed (an info row decides nothing)."""
+
+    def severity(c: Mapping[str, Any]) -> tuple[int, float]:
+        margin = c.get("margin")
+        return STATUS_ORDER[c["status"]], -margin if margin is not None else -math.inf
+
+    deciding = [c for c in checks if c["status"] in ("warn", "fail")]
+    return max(deciding, key=severity, default=None)

@@ -1055,7 +1055,7 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
         )
     if hub is None and chain:
         hub = chain[1].inertia_kgm2 if len(chain) > 1 else 0.0
-    from .coupled import nacelle  # the one place that splits the head (imports this module)
+    from .rigid import nacelle  # the one place that splits the head
 
     apex = (cm.apex_downwind_m, 0.0, cm.apex_above_top_m)
     try:

@@ -15,7 +15,7 @@ J. Am. Stat. Assoc. 22, 1927 (confidence interval of a probability).
 """
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -84,11 +84,31 @@ class Samples:
     skipped: tuple[str, ...]
 
 
-def sample(spec: Spec, n: int, seed: int = 0, chunk: int = 2000) -> Samples:
-    """Monte Carlo samples of the uncertain modes (chunked, reproducible)."""
+Nominal = Mapping[str, float]
+
+
+def nominal_of(spec: Spec, modes: Sequence[Mode] | None = None) -> dict[str, float]:
+    """Nominal standstill frequencies [Hz] by mode id: the audit's ``modes`` where given,
+    else the frequencies the spec gives (all the sampling of given modes needs)."""
+    if modes is not None:
+        return {m.id: m.frequency_hz for m in modes}
+    out = {}
+    for path, q in spec.provenance.items():
+        mode = _path_of_mode(path)
+        if mode is not None:
+            out[mode] = float(q.value)
+    return out
+
+
+def sample(
+    spec: Spec, n: int, seed: int = 0, chunk: int = 2000, nominal: Nominal | None = None
+) -> Samples:
+    """Monte Carlo samples of the uncertain modes (chunked, reproducible); ``nominal``: the
+    audit's frequencies (:func:`nominal_of`)."""
+    base = nominal if nominal is not None else nominal_of(spec)
     seqs = np.random.SeedSequence(seed).spawn(max(1, math.ceil(n / chunk)))
     sizes = [min(chunk, n - i * chunk) for i in range(len(seqs))]
-    parts = [sample_chunk(spec, m, s) for m, s in zip(sizes, seqs, strict=True)]
+    parts = [sample_chunk(spec, m, s, base) for m, s in zip(sizes, seqs, strict=True)]
     return combine(parts)
 
 
@@ -99,16 +119,16 @@ def combine(parts: Sequence[Samples]) -> Samples:
     )
 
 
-def sample_chunk(spec: Spec, n: int, seq: np.random.SeedSequence) -> Samples:
+def sample_chunk(
+    spec: Spec, n: int, seq: np.random.SeedSequence, nominal: Nominal | None = None
+) -> Samples:
     """One chunk of samples: the unit of work for local or distributed runs."""
     rng = np.random.default_rng(seq)
     inputs = uncertain(spec)
     factors = {p: draw(q, n, rng) for p, q in sorted(inputs.items())}
     out: dict[str, Array] = {}
     skipped = []
-    from . import audit
-
-    nominal = {m.id: m.frequency_hz for m in audit.run(spec).modes}
+    nominal = nominal if nominal is not None else nominal_of(spec)
     tower_paths = [p for p in factors if p.startswith(LINEAR_TOWER)]
     if tower_paths and spec.tower.has_structure:
         out.update(_tower_samples(spec, {p: factors[p] for p in tower_paths}))
@@ -197,7 +217,7 @@ def summary(
     rule = rule or spec.audit.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = [e for e in excitations(spec) if e.energy != "minor"]
-    by_id = {m.id: m for m in (modes if modes is not None else audit_modes(spec))}
+    by_id = {m.id: m for m in modes or ()}
     omega = np.concatenate([np.linspace(a, b, SPEEDS_PER_RANGE) for a, b in op.steady])
     out = {}
     for mode_id, f in sorted(samples.frequencies.items()):
@@ -237,12 +257,6 @@ def summary(
     }
 
 
-def audit_modes(spec: Spec) -> list[Mode]:
-    from . import audit
-
-    return list(audit.run(spec).modes)
-
-
 NO_TOLERANCE = (
     "--uncertainty: no value in the spec carries a tolerance, so there is nothing to sample; "
     "give one as e.g. youngs_modulus_pa: {value: 2.1e11, tolerance: 0.05, distribution: "
@@ -250,38 +264,44 @@ NO_TOLERANCE = (
 )
 
 
-def sensitivities(spec: Spec, step: float = 0.01) -> dict[str, dict[str, float]]:
-    """One-at-a-time normalised sensitivities (∂f/∂p)·(p/f) of the uncertain modes."""
-    from . import audit
-
-    nominal = {m.id: m.frequency_hz for m in audit.run(spec).modes}
+def sensitivities(
+    spec: Spec, nominal: Nominal | None = None, step: float = 0.01
+) -> dict[str, dict[str, float]]:
+    """One-at-a-time normalised sensitivities (∂f/∂p)·(p/f) of the uncertain modes, by
+    central differences on the same fast paths the sampling takes (a given frequency: 1;
+    a tower input: the linearly decomposed tower matrices) — no audit is rerun."""
+    base = nominal if nominal is not None else nominal_of(spec)
     out: dict[str, dict[str, float]] = {}
     for p in sorted(uncertain(spec)):
         mode = _path_of_mode(p)
         if mode is not None:
             out[p] = {mode: 1.0}
             continue
-        try:
-            up_spec, down_spec = _with_scaled(spec, p, 1 + step), _with_scaled(spec, p, 1 - step)
-        except (KeyError, TypeError):
-            continue  # a path into a list: not a scalar input the sensitivity can vary
-        up = {m.id: m.frequency_hz for m in audit.run(up_spec).modes}
-        down = {m.id: m.frequency_hz for m in audit.run(down_spec).modes}
+        if not (p.startswith(LINEAR_TOWER) and spec.tower.has_structure):
+            continue  # not propagated (listed in not_propagated)
+        found = _tower_samples(spec, {p: np.array([1 + step, 1 - step])})
         out[p] = {
-            k: round((up[k] - down[k]) / (2 * step * nominal[k]), 4)
-            for k in nominal
-            if k in up
-            and k in down
-            and nominal[k] > 0
-            and abs(up[k] - down[k]) > 1e-12 * nominal[k]
+            k: round(float(f[0] - f[1]) / (2 * step * base[k]), 4)
+            for k, f in found.items()
+            if base.get(k, 0.0) > 0 and abs(f[0] - f[1]) > 1e-12 * base[k]
         }
     return out
 
 
-def sample_distributed(spec: Spec, n: int, seed: int, client: Any, chunk: int = 2000) -> Samples:
+def sample_distributed(
+    spec: Spec,
+    n: int,
+    seed: int,
+    client: Any,
+    chunk: int = 2000,
+    nominal: Nominal | None = None,
+) -> Samples:
     """:func:`sample` on a Dask cluster (``client``: a ``distributed.Client``): the same
     chunks and seeds, so the same samples as a local run (optional extra ``distributed``)."""
     seqs = np.random.SeedSequence(seed).spawn(max(1, math.ceil(n / chunk)))
     sizes = [min(chunk, n - i * chunk) for i in range(len(seqs))]
-    futures = client.map(sample_chunk, [spec] * len(seqs), sizes, seqs, pure=False)
+    base = nominal if nominal is not None else nominal_of(spec)
+    futures = client.map(
+        sample_chunk, [spec] * len(seqs), sizes, seqs, [base] * len(seqs), pure=False
+    )
     return combine(client.gather(futures))

@@ -179,3 +179,20 @@ def test_uncertainty_without_any_tolerance_says_so_in_one_line(write_spec):
     lines = [ln for ln in result.stderr.splitlines() if "tolerance" in ln]
     assert len(lines) == 1 and "no value in the spec carries a tolerance" in lines[0]
     assert "tolerance: 0.05" in lines[0]  # how to add one
+
+
+def test_uncertainty_runs_the_audit_once(monkeypatch):
+    """Issue 16: --uncertainty ran the whole audit once per 2,000-sample chunk plus twice
+    per uncertain input for the sensitivities (7 audits for one run); now the audit runs
+    once and hands its modes to one batched sampling."""
+    calls = []
+    real = audit._run
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        calls.append(1)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(audit, "_run", counted)
+    report = audit.run(cantilever(), samples=6000, seed=2)
+    assert len(calls) == 1
+    assert report.uncertainty is not None and report.uncertainty["samples"] == 6000

@@ -1,0 +1,94 @@
+"""The import graph of wtvib has no cycles (issue 16): every module can be read, and
+changed, without the ones that depend on it. Imports inside functions count (they are how
+the last cycles hid); imports under ``if TYPE_CHECKING:`` do not (they never run)."""
+
+import ast
+from pathlib import Path
+
+import wtvib
+
+ROOT = Path(wtvib.__file__).parent
+
+
+def modules() -> dict[str, Path]:
+    out = {}
+    for path in ROOT.rglob("*.py"):
+        parts = path.relative_to(ROOT.parent).with_suffix("").parts
+        name = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+        out[name] = path
+    return out
+
+
+def imports(name: str, path: Path, known: dict[str, Path]) -> set[str]:
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    typing_only = {
+        id(sub)
+        for node in ast.walk(tree)
+        if isinstance(node, ast.If) and getattr(node.test, "id", None) == "TYPE_CHECKING"
+        for sub in ast.walk(node)
+    }
+    package = name if path.name == "__init__.py" else name.rsplit(".", 1)[0]
+    found: set[str] = set()
+    for node in ast.walk(tree):
+        if id(node) in typing_only:
+            continue
+        if isinstance(node, ast.ImportFrom) and node.level:
+            base = package
+            for _ in range(node.level - 1):
+                base = base.rsplit(".", 1)[0]
+            mod = f"{base}.{node.module}" if node.module else base
+            for alias in node.names:
+                sub = f"{mod}.{alias.name}"
+                found.add(sub if sub in known else mod)
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            found.add(node.module)
+        elif isinstance(node, ast.Import):
+            found.update(a.name for a in node.names)
+    return {m for m in found if m in known and m != name}
+
+
+def cycle(graph: dict[str, set[str]]) -> list[str] | None:
+    """One import cycle of the graph, or None (depth-first search)."""
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(v: str) -> list[str] | None:
+        state[v] = 1
+        stack.append(v)
+        for w in sorted(graph[v]):
+            if state.get(w) == 1:
+                return [*stack[stack.index(w) :], w]
+            if w not in state and (found := visit(w)):
+                return found
+        stack.pop()
+        state[v] = 2
+        return None
+
+    for v in sorted(graph):
+        if v not in state and (found := visit(v)):
+            return found
+    return None
+
+
+def test_the_import_graph_has_no_cycle():
+    known = modules()
+    graph = {name: imports(name, path, known) for name, path in known.items()}
+    assert len(graph) > 30 and graph["wtvib.audit"]  # the graph was really read
+    assert cycle(graph) is None, " → ".join(cycle(graph) or [])
+
+
+def test_the_cycle_finder_finds_a_cycle():
+    assert cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}}) == ["a", "b", "c", "a"]
+    assert cycle({"a": {"b"}, "b": set()}) is None
+
+
+def test_models_never_import_the_rendering_layer():
+    """Calculate first, draw second: no model or study imports matplotlib, rich or the
+    report and figure modules (STYLE.md habit 3)."""
+    known = modules()
+    rendering = {"wtvib.campbell", "wtvib.modeshapes", "wtvib.report", "wtvib.pdfreport"}
+    models = set(known) - rendering - {"wtvib.cli", "wtvib.batch", "wtvib"}
+    for name in sorted(models):
+        text = known[name].read_text(encoding="utf-8")
+        assert "import matplotlib" not in text and "from rich" not in text, name
+        assert not imports(name, known[name], known) & rendering, name

@@ -1,0 +1,69 @@
+"""Rigid bodies on the tower top: the nacelle as the tower head less its rotor.
+
+Shared by the spec's load-time check of a ``coupled`` block (so that a mistake is one line
+naming field and file line) and the coupled model (:mod:`wtvib.coupled`), without either
+importing the other.
+"""
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .errors import SpecError
+
+if TYPE_CHECKING:
+    from .spec import TowerHead
+
+Array = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Rigid:
+    """A rigid part: mass at c (tower-top axes) and inertia about its CM (roll, tilt, yaw)."""
+
+    mass: float
+    c: Array
+    inertia: Array
+
+
+def nacelle(head: "TowerHead", apex: Array, m_rotor: float, j_polar: float) -> Rigid:
+    """The tower head minus a rotor of mass m_rotor at the apex with polar inertia J_p (and
+    J_p/2 about any diameter, exact for three or more blades).
+
+    Raises
+    ------
+    SpecError
+        The head's mass or an inertia cannot hold the rotor (``path`` names the field).
+    """
+    m_nac = head.mass_kg - m_rotor
+    if m_nac <= 0:
+        raise SpecError(
+            f"{head.mass_kg:,.0f} kg is no more than the rotor it must include "
+            f"({m_rotor:,.0f} kg, blades and hub) — the coupled model takes the nacelle as the "
+            "tower head minus the rotor",
+            path="tower_head.mass_kg",
+        )
+    c_head = np.array([head.cm_downwind_m, 0.0, head.cm_above_top_m])
+    c_nac = (head.mass_kg * c_head - m_rotor * apex) / m_nac
+    rotor_own = np.array([j_polar, 0.5 * j_polar, 0.5 * j_polar])
+    head_i = np.array([head.inertia_roll_kgm2, head.inertia_pitch_kgm2, head.inertia_yaw_kgm2])
+
+    def steiner(c: Array) -> Array:  # parallel-axis terms about the head CM: roll, tilt, yaw
+        dx, dz = c[0] - c_head[0], c[2] - c_head[2]
+        return np.array([dz**2, dx**2 + dz**2, dx**2])
+
+    rotor_share = rotor_own + m_rotor * steiner(apex) + m_nac * steiner(c_nac)
+    i_nac = head_i - rotor_share
+    tolerance = 0.02 * np.maximum(head_i, 1.0)
+    if np.any(i_nac < -tolerance):
+        k = int(np.argmin(i_nac + tolerance))
+        axis = ("roll", "pitch", "yaw")[k]
+        raise SpecError(
+            f"{head_i[k]:,.4g} kg·m² is less than the rotor's and the nacelle's offsets alone "
+            f"need about the head's CM ({rotor_share[k]:,.4g} kg·m²) — the coupled model "
+            "takes the tower head's inertias to include the rotor",
+            path=f"tower_head.inertia_{axis}_kgm2",
+        )
+    return Rigid(m_nac, c_nac, np.maximum(i_nac, 0.0))
