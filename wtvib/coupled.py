@@ -66,8 +66,10 @@ from numpy.typing import NDArray
 from . import beam, blade, drivetrain, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
+from .excitation import operating_range
 from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
 from .multiblade import parked, sweep
+from .resonance import regime_of
 from .results import Check, Mode, Rule, Sampled, Whirl
 from .rigid import Rigid, nacelle
 from .rules import Status
@@ -749,8 +751,13 @@ def stability_check(spec: Spec) -> Check | None:
             numbers={"not_analysed_rpm": skipped},
         )
     unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
-    steady = [n for n in unstable if any(a <= n <= b for a, b in speed.steady_rpm)]
-    gaps = [n for n in skipped if any(a <= n <= b for a, b in speed.steady_rpm)]
+    op = operating_range(speed)
+
+    def in_operation(n: float) -> bool:
+        return regime_of(float(rpm_to_rad_s(n)), op) in ("steady", "quick-pass")
+
+    steady = [n for n in unstable if in_operation(n)]
+    gaps = [n for n in skipped if in_operation(n)]
     status: Status = "fail" if steady else "warn" if unstable or gaps else "pass"
     where = ", ".join(f"{n:.3g}" for n in unstable) or "none"
     return Check(

@@ -24,6 +24,7 @@ from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
+from .resonance import lines_met
 from .results import Check, Mode, Rule, Shape
 from .rules import MarginRule
 from .spec import Spec
@@ -358,13 +359,11 @@ def power_check(
     """``drivetrain.grid.power``: the power curve against the dominant excitations over the
     steady operating speeds."""
     fractions, curve, zetas = power.power_fraction, power.frequency_hz, power.damping_ratio
-    speeds = np.concatenate([np.linspace(a, b, 25) for a, b in op.steady])
-    dominant = [e for e in lines if e.energy == "dominant" and e.acts_on("drivetrain")]
     hits = [
-        (float(p), e.id)
+        (float(p), line)
         for f, z, p in zip(curve, zetas, fractions, strict=True)
-        for e in dominant
-        if z < heavy_damping and np.any(rule.violates(rule.separation(e.frequency_hz(speeds), f)))
+        if z < heavy_damping
+        for line in lines_met(f, lines, op, rule, NAME)
     ]
     span = f"{min(curve):.3g}–{max(curve):.3g} Hz"
     if hits:

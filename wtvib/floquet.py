@@ -44,7 +44,9 @@ from numpy.typing import NDArray
 
 from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
+from .excitation import operating_range
 from .multiblade import parked
+from .resonance import split_by_regime
 from .units import rpm_to_rad_s
 
 if TYPE_CHECKING:
@@ -236,14 +238,8 @@ class HeadModel:
     def state_matrices(self, omegas: Array, psi: float) -> Array:
         """A at azimuth ψ for many rotor speeds Ω [rad/s], shape (speeds, 2n, 2n)."""
         m, g0, g1, k0, k2 = self.parts(psi)
-        n = m.shape[0]
-        minv = np.linalg.inv(m)
         w = np.asarray(omegas, dtype=float)[:, None, None]
-        out = np.zeros((w.shape[0], 2 * n, 2 * n))
-        out[:, :n, n:] = np.eye(n)
-        out[:, n:, :n] = -(minv @ (k0 + w**2 * k2))
-        out[:, n:, n:] = -(minv @ (g0 + w * g1))
-        return out
+        return modal.state_matrix(k0 + w**2 * k2, m, g0 + w * g1)
 
     def state_matrix(self, omega: float) -> StateMatrix:
         """A(t) of the first-order system at rotor speed Ω [rad/s]."""
@@ -418,22 +414,11 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         ), None
     smap = map_for(spec, model)
     speed = spec.rotor.speed
-    low, top, over = speed.steady_rpm[0][0], speed.top_rpm, speed.overspeed
-
-    def overlaps(a: float, b: float, x: float, y: float) -> bool:
-        return a <= y and x <= b
-
-    steady = [
-        bd
-        for bd in smap.unstable_rpm
-        if any(overlaps(bd[0], bd[1], a, b) for a, b in speed.steady_rpm)
-    ]
-    transient = [
-        bd
-        for bd in smap.unstable_rpm
-        if bd not in steady
-        and (overlaps(bd[0], bd[1], 0, low) or overlaps(bd[0], bd[1], top, over))
-    ]
+    op = operating_range(speed)
+    unstable = [(float(rpm_to_rad_s(a)), float(rpm_to_rad_s(b))) for a, b in smap.unstable_rpm]
+    split = split_by_regime(unstable, op, lambda w: any(a <= w <= b for a, b in unstable))
+    steady = split["steady"] + split["quick-pass"]
+    transient = split["overspeed"] + split["start-up"]
     bands = ", ".join(f"{a:.3g}–{b:.3g} rpm" for a, b in smap.unstable_rpm) or "none"
     hub = spec.rotor.hub
     if steady:
@@ -511,15 +496,9 @@ class Periodic:
 
     def states(self, omega: float, psi: Array) -> Array:
         """A(ψ) of ẋ = A x at rotor speed Ω for each azimuth ψ, stacked."""
-        r = self.k0.shape[0]
-        minv = np.linalg.inv(self.at(self.m, psi))
         k = self.k0 + omega**2 * self.at(self.k2, psi)
         d = self.d0 + omega * self.at(self.d1, psi)
-        a = np.zeros((len(psi), 2 * r, 2 * r))
-        a[:, :r, r:] = np.eye(r)
-        a[:, r:, :r] = -minv @ k
-        a[:, r:, r:] = -minv @ d
-        return a
+        return modal.state_matrix(k, self.at(self.m, psi), d)
 
 
 def reduction(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> Array:

@@ -131,13 +131,50 @@ def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
 
 
 def state_matrix(k: Array, m: Array, d: Array) -> Array:
-    """A = [[0, I], [−M⁻¹K, −M⁻¹D]] of M q̈ + D q̇ + K q = 0 in first-order form."""
-    n = k.shape[0]
+    """A = [[0, I], [−M⁻¹K, −M⁻¹D]] of M q̈ + D q̇ + K q = 0 in first-order form: the one
+    builder of it. Stacks (..., n, n) broadcast: many speeds or azimuths at once."""
+    n = k.shape[-1]
     try:
         minv = np.linalg.inv(m)
     except np.linalg.LinAlgError:
         raise ModalError("the inertia matrix is singular (a zero inertia?)") from None
-    return np.block([[np.zeros((n, n)), np.eye(n)], [-minv @ k, -minv @ d]])
+    shape = np.broadcast_shapes(k.shape, m.shape, d.shape)[:-2]
+    out = np.zeros((*shape, 2 * n, 2 * n))
+    out[..., :n, n:] = np.eye(n)
+    out[..., n:, :n] = -(minv @ k)
+    out[..., n:, n:] = -(minv @ d)
+    return out
+
+
+def oscillations(
+    k: Array,
+    m: Array,
+    d: Array,
+    floor: float | None = None,
+    unstable: str = "keep",
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+    """The oscillatory roots λ (Im λ > 0) of M q̈ + D q̇ + K q = 0, ascending |λ|, and the
+    displacement part of their (complex) eigenvectors — the state-space eigenproblem every
+    damped modal solve in wtvib shares.
+
+    Roots with |λ| below ``floor`` [rad/s] are no oscillation; None: 1e-5·|λ|max, which also
+    drops the λ ≈ 0 of rigid-body motion (a defective double root that rounding splits into
+    a pair of size ~√ε·|λ|max). ``unstable="refuse"`` raises ModalError on a root with a
+    positive real part.
+    """
+    n = k.shape[-1]
+    lam, vec = np.linalg.eig(state_matrix(k, m, d))
+    scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
+    if floor is None:
+        tiny, imag = 1e-5 * scale, 1e-9 * scale
+    else:
+        tiny, imag = floor, 1e-6
+    if unstable == "refuse" and np.any((lam.real > 1e-9 * scale) & (np.abs(lam) > tiny)):
+        raise ModalError("the drive train is unstable (an eigenvalue with positive real part)")
+    osc = (lam.imag > imag) & (np.abs(lam) > tiny)
+    lam, vec = lam[osc], vec[:n, osc]
+    order = np.argsort(np.abs(lam))
+    return lam[order], vec[:, order]
 
 
 def damped(k: Array, m: Array, d: Array) -> DampedModes:
@@ -156,17 +193,7 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
     n = k.shape[0]
     if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m)) and np.all(np.isfinite(d))):
         raise ModalError("the drive-train matrices hold NaN or infinite values")
-    lam, vec = np.linalg.eig(state_matrix(k, m, d))
-    scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
-    # λ ≈ 0 (a rigid-body root: a defective double root that rounding splits into a pair of
-    # size ~√ε·|λ|max) is neither an oscillation nor an instability
-    tiny = 1e-5 * scale
-    osc = (lam.imag > 1e-9 * scale) & (np.abs(lam) > tiny)
-    if np.any((lam.real > 1e-9 * scale) & (np.abs(lam) > tiny)):
-        raise ModalError("the drive train is unstable (an eigenvalue with positive real part)")
-    lam, vec = lam[osc], vec[:n, osc]
-    order = np.argsort(np.abs(lam))
-    lam, vec = lam[order], vec[:, order]
+    lam, vec = oscillations(k, m, d, unstable="refuse")
     shapes = np.empty((n, len(lam)))
     for j in range(len(lam)):
         v = vec[:, j]

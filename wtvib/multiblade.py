@@ -121,14 +121,11 @@ def parked(model: "Model", psi: float = 0.0, count: int = MODES_KEPT) -> SystemM
 def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
     m, d0, d1, k0, k2 = model.multiblade
-    lam, vec = np.linalg.eig(modal.state_matrix(k0 + omega**2 * k2, m, d0 + omega * d1))
-    n = m.shape[0]
-    osc = (lam.imag > 1e-6) & (np.abs(lam) > 2 * np.pi * 1e-3)
-    lam, vec = lam[osc], vec[:n, osc]
-    order = np.argsort(np.abs(lam))[:count]
-    f = np.abs(lam[order]) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
-    shapes = vec[:, order]
-    zeta = -lam.real[order] / np.abs(lam[order])
+    # modes below 1 mHz are the rotor turning on a free generator, not oscillations
+    lam, vec = modal.oscillations(k0 + omega**2 * k2, m, d0 + omega * d1, floor=2 * np.pi * 1e-3)
+    lam, shapes = lam[:count], vec[:, :count]
+    f = np.abs(lam) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
+    zeta = -lam.real / np.abs(lam)
     return SystemModes(f, shapes, *_name(model, m, shapes), damping_ratio=zeta)
 
 

@@ -92,7 +92,7 @@ def assess(
     grid = np.union1d(grid, np.array(crossings, dtype=float))
     forbidden = tuple(_runs(gap, grid, rule.violates(sep(grid))))
 
-    violations = _split_by_regime(forbidden, op, gap)
+    violations = split_by_regime(forbidden, op, lambda w: gap(w) < 0)
     if mode.regimes is not None:  # a condition that exists only in some regimes
         violations = {k: (v if k in mode.regimes else ()) for k, v in violations.items()}
     speed, margin = _worst_judged(sep, op, crossings, mode.regimes)
@@ -233,15 +233,17 @@ def _overlap(a: Interval, b: Interval) -> Interval | None:
     return (lo, hi) if hi - lo > 1e-9 * max(abs(hi), 1.0) else None
 
 
-def _split_by_regime(
-    forbidden: Sequence[Interval], op: OperatingRange, gap: ScalarFn
+def split_by_regime(
+    forbidden: Sequence[Interval], op: OperatingRange, violated: Callable[[float], bool]
 ) -> dict[str, tuple[Interval, ...]]:
-    """Forbidden speeds of each regime: steady, quick-pass, overspeed, start-up."""
+    """Speed intervals [rad/s] split by regime: steady, quick-pass, overspeed, start-up
+    (every transient speed below the highest steady one). ``violated(Ω)`` decides a fixed
+    (zero-width) steady speed. Shared by every check that judges speeds by regime."""
     steady: list[Interval] = []
     quick: list[Interval] = []
     for a, b in op.steady:
         if a == b:
-            if gap(a) < 0:
+            if violated(a):
                 steady.append((a, a))
             continue
         for f in forbidden:
@@ -299,6 +301,32 @@ def _worst_judged(
     s = sep(speeds)
     i = int(np.argmin(s))
     return float(speeds[i]), float(s[i])
+
+
+def steady_samples(op: OperatingRange, per_range: int = 25) -> NDArray[np.float64]:
+    """Rotor speeds [rad/s] sampling every steady range (a fixed speed repeats)."""
+    return np.concatenate([np.linspace(a, b, per_range) for a, b in op.steady])
+
+
+def lines_met(
+    frequency_hz: float,
+    lines: Sequence[Excitation],
+    op: OperatingRange,
+    rule: MarginRule,
+    subsystem: str,
+    energy: str = "dominant",
+) -> list[str]:
+    """Ids of the lines of an energy class acting on ``subsystem`` whose margin band holds a
+    natural frequency at some steady speed: the question the power-dependent drive train
+    and the yaw system with gear play ask of frequencies that are not modes' curves."""
+    speeds = steady_samples(op)
+    return [
+        e.id
+        for e in lines
+        if e.energy == energy
+        and e.acts_on(subsystem)
+        and np.any(rule.violates(rule.separation(e.frequency_hz(speeds), frequency_hz)))
+    ]
 
 
 def assess_all(

@@ -18,6 +18,7 @@ from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes, ordinal
+from .resonance import lines_met, steady_samples
 from .results import Check, Mode, Rule
 from .rules import MarginRule
 from .spec import Spec
@@ -273,15 +274,11 @@ def _play_check(
     if not mdl.half_gap:
         return None
     f0 = float(mdl.frequencies()[0])
-    speeds = np.concatenate([np.linspace(a, b, 25) for a, b in op.steady])
+    speeds = steady_samples(op)
     dominant = [e for e in lines if e.energy == "dominant" and e.acts_on("yaw")]
 
     def hit(f: float) -> list[str]:
-        return [
-            e.id
-            for e in dominant
-            if np.any(rule.violates(rule.separation(e.frequency_hz(speeds), f)))
-        ]
+        return lines_met(f, lines, op, rule, "yaw")
 
     # the amplitude at which the falling frequency first reaches a dominant line's band
     critical: list[tuple[float, str]] = []
