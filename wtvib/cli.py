@@ -403,12 +403,7 @@ def window(
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
     found = design.all_windows(turbine, report.modes, report.rule)
-    doc = {
-        "schema": "wtvib-windows/1",
-        "turbine": turbine.turbine.name,
-        "rule": report.rule.label,
-        "subsystems": [w.to_dict() for w in found],
-    }
+    doc = design.windows_document(turbine, found, report.rule)
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
     else:
@@ -453,22 +448,10 @@ def size_command(
     if target is not None:
         report = audit.run(turbine)
         found = design.all_windows(turbine, report.modes, report.rule)
-        tw = next((w for w in found if w.subsystem == "tower"), None)
-        if tw is None:
-            raise design.DesignError("the turbine has no tower mode to place in a window")
-        match = [
-            w
-            for w in tw.allowed
-            if w.name == target.value or w.name.startswith(f"{target.value} (")
-        ]
-        if target is Target.soft and not match:
-            raise design.DesignError("there is no soft window for this speed range and margin")
-        if not match:
-            raise design.DesignError(f"there is no {target.value} window")
-        goal = design.window_target(match[0])
+        goal = design.window_goal(found, target.value)
     assert goal is not None
     result = design.size(turbine, goal, scale.value)  # type: ignore[arg-type]
-    doc = {"schema": "wtvib-size/1", "turbine": turbine.turbine.name, **result.to_dict()}
+    doc = {"schema": design.SIZE_SCHEMA, "turbine": turbine.turbine.name, **result.to_dict()}
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
         return

@@ -217,6 +217,33 @@ def all_windows(
     return out
 
 
+WINDOWS_SCHEMA = "wtvib-windows/1"
+SIZE_SCHEMA = "wtvib-size/1"
+
+
+def windows_document(spec: Spec, found: Sequence[SubsystemWindows], rule: MarginRule) -> dict:  # type: ignore[type-arg]
+    """The ``wtvib window --format json`` document."""
+    return {
+        "schema": WINDOWS_SCHEMA,
+        "turbine": spec.turbine.name,
+        "rule": rule.label,
+        "subsystems": [w.to_dict() for w in found],
+    }
+
+
+def window_goal(found: Sequence[SubsystemWindows], target: str) -> float:
+    """The first-bending frequency [Hz] in the middle of the tower's ``target`` window
+    (soft-soft, soft or stiff; a split soft window: its first part)."""
+    tw = next((w for w in found if w.subsystem == "tower"), None)
+    if tw is None:
+        raise DesignError("the turbine has no tower mode to place in a window")
+    match = [w for w in tw.allowed if w.name == target or w.name.startswith(f"{target} (")]
+    if not match:
+        qualifier = " for this speed range and margin" if target == "soft" else ""
+        raise DesignError(f"there is no {target} window{qualifier}")
+    return window_target(match[0])
+
+
 # ------------------------------------------------------------------------------------------
 # Sizing
 
