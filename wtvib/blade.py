@@ -7,8 +7,8 @@ from numpy.typing import NDArray
 
 from . import beam, modal
 from .analysis import Analysis, Context, Damping, section_damping
-from .given import given_modes, ordinal
-from .results import Mode, Sampled, Shape, Southwell, SpeedCurve
+from .given import given_modes
+from .results import Mode, Sampled, Shape, Southwell, SpeedCurve, ordinal
 from .spec import BladeStructure, ModeSpec, Spec
 from .units import rpm_to_rad_s
 

@@ -23,9 +23,9 @@ from numpy.typing import NDArray
 from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
-from .given import given_modes, ordinal
+from .given import given_modes
 from .resonance import lines_met
-from .results import Check, Mode, Rule, Shape
+from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule
 from .spec import Spec
 

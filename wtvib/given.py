@@ -41,8 +41,3 @@ def given_modes(
             )
         )
     return sorted(modes, key=lambda m: m.frequency_hz)
-
-
-def ordinal(k: int) -> str:
-    """1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
-    return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"

@@ -20,7 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import modal
-from .given import ordinal
+from .results import ordinal
 from .units import rad_s_to_rpm
 
 if TYPE_CHECKING:

@@ -175,3 +175,8 @@ class Check:
             "rule": self.rule.to_dict(),
             **self.numbers,
         }
+
+
+def ordinal(k: int) -> str:
+    """Ordinal words of mode descriptions: 1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
+    return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"

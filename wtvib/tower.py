@@ -17,9 +17,9 @@ from . import beam, modal
 from . import spec as spec_mod
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
-from .given import given_modes, ordinal
+from .given import given_modes
 from .resonance import Finding, assess
-from .results import Check, Mode, Rule, Shape
+from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule, Status
 from .spec import Spec
 from .units import rad_s_to_hz, rad_s_to_rpm

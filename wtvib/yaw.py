@@ -17,9 +17,9 @@ from numpy.typing import ArrayLike, NDArray
 from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
-from .given import given_modes, ordinal
+from .given import given_modes
 from .resonance import lines_met, steady_samples
-from .results import Check, Mode, Rule
+from .results import Check, Mode, Rule, ordinal
 from .rules import MarginRule
 from .spec import Spec
 from .units import rpm_to_rad_s
