@@ -89,7 +89,7 @@ def test_no_aeroelastic_block_no_checks(write_spec: Callable[..., Path]) -> None
 
 
 def test_vg_and_stability_chart_drawn(write_spec: Callable[..., Path]) -> None:
-    from wtvib.campbell import diagrams
+    from wtvib.plots import diagrams
 
     figures = diagrams(audit.run(load(spec(write_spec))))
     assert {"blade-flutter", "blade-stability"} <= set(figures)

@@ -37,7 +37,7 @@ def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
     reader = PdfReader(io.BytesIO(wka60_pdf.read_bytes()))
     assert 2 <= len(reader.pages) <= 8
     images = [img for page in reader.pages for img in page.images]
-    from wtvib.campbell import diagrams
+    from wtvib.plots import diagrams
 
     # one image per diagram: tower and blades, drive-train Campbell and mode shapes
     assert len(images) == len(diagrams(audit.run(spec.load(TURBINES / "wka-60.yaml")))) == 3

@@ -167,7 +167,7 @@ def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
     t2 = time.perf_counter()
     pngs: dict[str, bytes] = {}
     if plots:
-        from .campbell import diagrams, png_bytes
+        from .plots import diagrams, png_bytes
 
         pngs = {suffix: png_bytes(fig) for suffix, fig in diagrams(report).items()}
     t3 = time.perf_counter()

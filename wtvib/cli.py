@@ -182,7 +182,7 @@ def check(
     report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
     written: list[Path] = []
     if plot:
-        from .campbell import diagrams, png_bytes
+        from .plots import diagrams, png_bytes
 
         folder = out if out is not None else spec_file.parent
         for suffix, fig in diagrams(report).items():
@@ -413,8 +413,9 @@ def window(
 
         windows_table(Console(), doc)
     if plot:
-        from .campbell import png_bytes, windows_plot
         from .outputs import write_atomic
+        from .plots import png_bytes
+        from .plots.campbell import windows_plot
 
         tower_w = next((w.allowed for w in found if w.subsystem == "tower"), ())
         folder = out if out is not None else spec_file.parent

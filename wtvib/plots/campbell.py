@@ -5,22 +5,20 @@ Calculate first, draw second: everything drawn comes from the audit
 imported lazily, with the Agg backend, so ``wtvib --help`` stays fast.
 """
 
-import io
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from . import __version__
-from .audit import Report
-from .excitation import operating_range
-from .rules import STATUS_ORDER
-from .units import rad_s_to_rpm, rpm_to_rad_s
+from ..audit import Report
+from ..excitation import operating_range
+from ..rules import STATUS_ORDER
+from ..units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from .design import Band
+    from ..design import Band
 
 STATUS_COLOUR = {"pass": "#2e7d32", "info": "#1565c0", "warn": "#ef6c00", "fail": "#c62828"}
 SUBSYSTEM_TITLE = {
@@ -283,48 +281,6 @@ def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # ty
         ncol=ncol,
         frameon=False,
     )
-
-
-def png_bytes(fig: "Figure") -> bytes:
-    """The figure as PNG bytes, tagged as written by wtvib (see :mod:`wtvib.outputs`)."""
-    buf = io.BytesIO()
-    fig.savefig(buf, format="png", metadata={"Software": f"wtvib {__version__}"})
-    return buf.getvalue()
-
-
-def diagrams(report: Report) -> dict[str, "Figure"]:
-    """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
-    shapes), keyed by file stem suffix."""
-    from .modeshapes import (
-        coupled_energy_plot,
-        drivetrain_shapes_plot,
-        floquet_plot,
-        flutter_plot,
-        power_curve_plot,
-        stability_chart_plot,
-        stall_damping_plot,
-    )
-
-    # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
-    # diagram of its own: the system diagram shows them where they are judged
-    present = {m.subsystem for m in report.modes if m.judged}
-    out = {
-        name: campbell_plot(report, subs)
-        for name, subs in DIAGRAMS.items()
-        if present.intersection(subs)
-    }
-    for name, fig in (
-        ("drivetrain-modes", drivetrain_shapes_plot(report)),
-        ("drivetrain-power", power_curve_plot(report)),
-        ("floquet", floquet_plot(report)),
-        ("blade-flutter", flutter_plot(report)),
-        ("blade-stability", stability_chart_plot(report)),
-        ("blade-stall", stall_damping_plot(report)),
-        ("system-energy", coupled_energy_plot(report)),
-    ):
-        if fig is not None:
-            out[name] = fig
-    return out
 
 
 def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":

@@ -1,0 +1,57 @@
+"""Figures: calculate first, draw second (python-control's ``x_plot(result)``).
+
+Every figure draws what the audit computed — :class:`~wtvib.audit.Report`'s modes,
+findings, checks and typed ``results`` — and computes nothing. One module per subject:
+:mod:`.campbell` (Campbell diagrams, the design windows), :mod:`.drivetrain`,
+:mod:`.rotor`, :mod:`.blade`, :mod:`.system`; :func:`diagrams` is the list of what
+``check`` writes. matplotlib is imported lazily, with the Agg backend, so ``wtvib --help``
+stays fast.
+"""
+
+import io
+from typing import TYPE_CHECKING
+
+from .. import __version__
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from ..audit import Report
+
+
+def png_bytes(fig: "Figure") -> bytes:
+    """The figure as PNG bytes, tagged as written by wtvib (see :mod:`wtvib.outputs`)."""
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", metadata={"Software": f"wtvib {__version__}"})
+    return buf.getvalue()
+
+
+def diagrams(report: "Report") -> dict[str, "Figure"]:
+    """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
+    shapes), keyed by file stem suffix."""
+    from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
+    from .campbell import DIAGRAMS, campbell_plot
+    from .drivetrain import drivetrain_shapes_plot, power_curve_plot
+    from .rotor import floquet_plot
+    from .system import coupled_energy_plot
+
+    # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
+    # diagram of its own: the system diagram shows them where they are judged
+    present = {m.subsystem for m in report.modes if m.judged}
+    out = {
+        name: campbell_plot(report, subs)
+        for name, subs in DIAGRAMS.items()
+        if present.intersection(subs)
+    }
+    for name, fig in (
+        ("drivetrain-modes", drivetrain_shapes_plot(report)),
+        ("drivetrain-power", power_curve_plot(report)),
+        ("floquet", floquet_plot(report)),
+        ("blade-flutter", flutter_plot(report)),
+        ("blade-stability", stability_chart_plot(report)),
+        ("blade-stall", stall_damping_plot(report)),
+        ("system-energy", coupled_energy_plot(report)),
+    ):
+        if fig is not None:
+            out[name] = fig
+    return out

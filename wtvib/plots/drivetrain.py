@@ -1,0 +1,83 @@
+"""Drive-train figures: mode shapes per generator condition (which masses swing against
+which, Hau Fig. 7.12) and the grid mode over power (Hau Fig. 7.14)."""
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..audit import Report
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
+def drivetrain_shapes_plot(report: Report) -> "Figure | None":
+    """One panel per condition: each computed drive-train mode's twist amplitude per mass."""
+    from matplotlib.figure import Figure
+
+    modes = [m for m in report.modes if m.subsystem == "drivetrain" and m.shape is not None]
+    if not modes:
+        return None
+    conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
+    fig = Figure(figsize=(10, 2.6 * len(conditions) + 0.8), dpi=150, layout="constrained")
+    axes = fig.subplots(len(conditions), 1, squeeze=False)[:, 0]
+    for ax, condition in zip(axes, conditions, strict=True):
+        for m in (m for m in modes if m.id.split(".")[1] == condition):
+            assert m.shape is not None
+            x = np.arange(len(m.shape.deflection))
+            ax.plot(
+                x,
+                m.shape.deflection,
+                marker="o",
+                lw=2,
+                label=f"{m.id.split('.', 1)[1]}: {m.frequency_hz:.3g} Hz — "
+                f"{m.description.split(': ', 1)[-1].replace(' (computed)', '')}",
+            )
+            ax.set_xticks(x, m.shape.labels or [str(i) for i in x])
+        ax.axhline(0, color="#9e9e9e", lw=0.8)
+        ax.set_ylabel("twist amplitude")
+        ax.set_title(f"condition: {condition}", loc="left", fontsize=10)
+        ax.legend(fontsize=7, loc="best")
+        ax.grid(True, alpha=0.3)
+    fig.suptitle(
+        f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
+        f"{report.spec.drivetrain.reference_shaft} shaft)",
+        fontweight="bold",
+    )
+    return fig
+
+
+def power_curve_plot(report: Report) -> "Figure | None":
+    """The grid-coupled synchronous drive train's first mode over power (Hau Fig. 7.14)."""
+    from matplotlib.figure import Figure
+
+    check = next((c for c in report.checks if c.id == "drivetrain.grid.power"), None)
+    curve = report.results.get("drivetrain", {}).get("power")
+    if check is None or curve is None:
+        return None
+    power = 100 * np.asarray(curve.power_fraction)
+    fig = Figure(figsize=(8, 4.5), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    ax.plot(power, curve.frequency_hz, lw=2.2, color="#1f77b4", label="1st grid mode")
+    lo, hi = report.rule.natural_band(1.0)
+    for label, f_e in curve.lines:
+        ax.axhline(f_e, color="#212121", lw=1.4)
+        ax.axhspan(f_e * lo, f_e * hi, color="#e53935", alpha=0.12, lw=0)
+        ax.annotate(
+            label,
+            (power[-1], f_e),
+            xytext=(-4, 3),
+            textcoords="offset points",
+            ha="right",
+            fontsize=9,
+        )
+    ax.set_xlabel("electrical power [% of rated]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.set_title(
+        f"{report.spec.turbine.name} — drive train on the grid: frequency vs power "
+        f"({check.status.upper()})",
+        fontweight="bold",
+    )
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    return fig

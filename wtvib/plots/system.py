@@ -1,0 +1,55 @@
+"""The coupled whole turbine: where each parked coupled mode's kinetic energy sits."""
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..audit import Report
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
+#: Colours of the coordinate groups (blade groups take the rest in turn).
+_GROUP_COLOUR = {
+    "tower.fa": "#1f77b4",
+    "tower.ss": "#17becf",
+    "tower.tor": "#7f7f7f",
+    "yaw": "#bcbd22",
+    "drivetrain": "#8c564b",
+}
+_BLADE_COLOURS = ["#d62728", "#ff9896", "#2ca02c", "#98df8a", "#9467bd", "#c5b0d5"]
+
+
+def coupled_energy_plot(report: Report) -> "Figure | None":
+    """Where each parked coupled mode's kinetic energy sits (check ``system.coupling``):
+    one bar per mode, split by tower, yaw, drive train and blade groups — a mode of one
+    colour is a subsystem mode, a mixed bar is a coupling mode (Hau §7.6)."""
+    from matplotlib.figure import Figure
+
+    check = next((c for c in report.checks if c.id == "system.coupling"), None)
+    if check is None:
+        return None
+    rows = check.numbers["modes"]
+    groups = list(dict.fromkeys(g for r in rows for g in r["energy"]))
+    blade_groups = [g for g in groups if g.startswith("blade.")]
+    colour = {**_GROUP_COLOUR, **dict(zip(blade_groups, _BLADE_COLOURS * 3, strict=False))}
+    fig = Figure(figsize=(10, 0.32 * len(rows) + 1.8), dpi=150, layout="constrained")
+    ax = fig.subplots()
+    y = np.arange(len(rows))[::-1]
+    for g in groups:
+        left = [sum(r["energy"].get(h, 0.0) for h in groups[: groups.index(g)]) for r in rows]
+        width = [r["energy"].get(g, 0.0) for r in rows]
+        ax.barh(y, width, left=left, color=colour.get(g, "#cccccc"), label=g, height=0.7)
+    ax.set_yticks(y, [f"{r['id'].removeprefix('system.')}  {r['coupled_hz']:.3g} Hz" for r in rows])
+    ax.tick_params(axis="y", labelsize=7)
+    ax.set_xlim(0, 1)
+    ax.set_xlabel("share of the mode's kinetic energy")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=4, frameon=False)
+    ax.set_title(
+        f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
+        "where the energy is",
+        fontweight="bold",
+        fontsize=10,
+    )
+    return fig
