@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from conftest import TURBINES, spec_text
+from tests.conftest import TURBINES, spec_text
 from wtvib import batch
 from wtvib.cli import app
 

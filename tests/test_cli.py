@@ -5,7 +5,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, spec
 from wtvib.cli import app
 

@@ -6,7 +6,7 @@ import pytest
 from pypdf import PdfReader
 from typer.testing import CliRunner
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, spec
 from wtvib.cli import app
 

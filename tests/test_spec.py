@@ -3,7 +3,7 @@
 import pytest
 from typer.testing import CliRunner
 
-from conftest import spec_text
+from tests.conftest import spec_text
 from wtvib import spec
 from wtvib.cli import app
 from wtvib.errors import SpecError

@@ -73,7 +73,7 @@ def test_stiffer_tower_never_classifies_softer(tmp_path_factory, f, factor):
 
     def cls(freq: float) -> str | None:
         path = folder / "t.yaml"
-        from conftest import spec_text
+        from tests.conftest import spec_text
 
         path.write_text(spec_text(blades=2, speed="fixed_rpm: 30", modes=f"fa1: {freq}"))
         return audit.run(spec.load(path)).tower_class

@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from conftest import spec_text
+from tests.conftest import spec_text
 from wtvib import audit, design, spec
 
 
@@ -106,7 +106,7 @@ def test_sizing_a_tower_given_by_frequencies_is_a_clear_error(write_spec):
 def test_window_judges_every_mode_check_judges():
     """Issue 15: on the Aeroman, window said 'in window' where check fails on
     drivetrain.grid.4 (stage-2 mesh) and yaw.play.1 (2P with gear play)."""
-    from conftest import TURBINES
+    from tests.conftest import TURBINES
 
     s = spec.load(TURBINES / "aeroman.yaml")
     r = audit.run(s)
@@ -120,7 +120,7 @@ def test_window_judges_every_mode_check_judges():
 
 @pytest.mark.parametrize("name", ["aeroman", "mod-0", "mod-2", "wka-60", "growian", "wts-4"])
 def test_every_steady_dominant_failure_of_check_is_forbidden_in_window(name):
-    from conftest import TURBINES
+    from tests.conftest import TURBINES
 
     s = spec.load(TURBINES / f"{name}.yaml")
     r = audit.run(s)

@@ -13,7 +13,7 @@ from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 from scipy.special import mathieu_a, mathieu_b
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, floquet, spec
 
 

@@ -4,7 +4,7 @@ import re
 
 import pytest
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import spec
 
 

@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, blade, importers, spec, tower
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, importers, spec
 from wtvib.report import to_json
 

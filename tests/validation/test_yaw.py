@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import TURBINES
+from tests.conftest import TURBINES
 from wtvib import audit, importers, spec, yaw
 
 
