@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import modal
 from .analysis import Analysis, Context, Damping, section_damping
+from .errors import SpecError
 from .excitation import Excitation, OperatingRange
 from .given import given_modes
 from .resonance import lines_met, steady_samples
@@ -138,6 +139,13 @@ def model(spec: Spec) -> YawModel:
         j = h.inertia_yaw_kgm2 + h.mass_kg * h.cm_downwind_m**2
     else:
         raise modal.ModalError("yaw.inertia_kgm2 or tower_head is needed for the yaw model")
+    if j <= 0:
+        raise SpecError(
+            "the yaw model needs the tower head's inertia about the yaw axis: give "
+            "tower_head.inertia_yaw_kgm2 (or yaw.inertia_kgm2); with no inertia and the CM on "
+            "the tower axis it is zero",
+            path="tower_head.inertia_yaw_kgm2",
+        )
     play = y.play
     half_gap = math.radians(play.half_gap_deg) if play else None
     k_drive = y.drives * y.drive_stiffness_nm_rad

@@ -1,0 +1,48 @@
+"""The drive train: conditions and the regimes they exist in, its analysis (torque
+amplification on its resonance checks, the synchronous power curve)."""
+
+import pytest
+
+from tests.conftest import TURBINES
+from wtvib import audit, drivetrain, spec
+
+
+@pytest.fixture(scope="module")
+def growian():
+    return spec.load(TURBINES / "growian.yaml")
+
+
+def test_conditions_and_their_regimes(growian):
+    assert drivetrain.conditions(growian) == ["grid", "free", "locked"]
+    assert drivetrain.regimes(growian, "grid") == {"steady", "quick-pass", "overspeed"}
+    assert drivetrain.regimes(growian, "free") == {"start-up", "overspeed"}
+    assert drivetrain.regimes(growian, "locked") == frozenset()  # reported only
+
+
+def test_free_is_the_operating_condition_without_a_grid_model(growian):
+    bare = growian.model_copy(
+        update={"drivetrain": growian.drivetrain.model_copy(update={"grid_coupling": "isolated"})}
+    )
+    assert "grid" not in drivetrain.conditions(bare)
+    assert "steady" in drivetrain.regimes(bare, "free")
+
+
+def test_every_computed_mode_carries_its_condition(growian):
+    modes = drivetrain.build_modes(growian, {"blade": []})
+    assert {m.condition for m in modes} == set(drivetrain.CONDITIONS.values())
+    assert all(m.origin == "computed" for m in modes)
+
+
+def test_resonance_checks_carry_the_torque_amplification(growian):
+    r = audit.run(growian)
+    checks = [c for c in r.checks if c.id.startswith("drivetrain.resonance.")]
+    assert checks and all("torque_amplification" in c.numbers for c in checks)
+    assert drivetrain.power_curve(growian) is None  # a converter: no grid power curve
+
+
+def test_the_synchronous_power_curve_is_a_result_the_figure_draws():
+    r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
+    curve = r.results["drivetrain"]["power"]
+    # Hau Fig. 7.14: the magnetic stiffness falls with power, and so does the frequency
+    assert curve.frequency_hz[0] > curve.frequency_hz[-1]
+    assert [label for label, _ in curve.lines] == ["1P at 40 rpm", "2P at 40 rpm"]

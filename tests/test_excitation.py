@@ -1,0 +1,44 @@
+"""Excitations: rotor harmonics with their energy class, the operating range in rad/s."""
+
+import math
+
+import pytest
+
+from tests.conftest import spec_text
+from wtvib import excitation, spec
+
+
+def test_harmonic_energy_classes(write_spec):
+    # Hau ch. 7.1/7.2.2/7.5.2: 1P and N_b·P dominant, between them secondary, above minor
+    assert [excitation.harmonic_energy(k, 3) for k in (1, 2, 3, 4)] == [
+        "dominant",
+        "secondary",
+        "dominant",
+        "minor",
+    ]
+    lines = excitation.rotor_harmonics(2, 1)  # N_b·P is always included
+    assert [e.id for e in lines] == ["1P", "2P"]
+
+
+def test_lines_are_straight_through_the_origin():
+    e = excitation.rotor_harmonics(3, 3)[2]
+    omega = 12.1 * math.pi / 30
+    assert float(e.frequency_hz(omega)) == pytest.approx(3 * 12.1 / 60)
+
+
+def test_operating_range_in_rad_s(write_spec):
+    s = spec.load(write_spec(speed="min_rpm: 6.9\nmax_rpm: 12.1"))
+    op = excitation.operating_range(s.rotor.speed)
+    assert op.lowest == pytest.approx(6.9 * math.pi / 30)
+    assert op.highest == pytest.approx(12.1 * math.pi / 30)
+    assert op.overspeed == pytest.approx(1.15 * op.highest)  # the default overspeed factor
+    assert op.variable and op.dwell == pytest.approx((op.highest,))
+
+
+def test_gear_mesh_line_acts_on_the_drive_train_only(write_spec):
+    extra = """drivetrain:
+  gear_stages: [{name: stage2, teeth: 19, shaft_speed_ratio: 27}]
+"""
+    s = spec.load(write_spec(spec_text() + extra, name="g.yaml"))
+    (mesh,) = excitation.gear_mesh(s)
+    assert mesh.order == 19 * 27 and mesh.acts_on("drivetrain") and not mesh.acts_on("tower")

@@ -1,0 +1,44 @@
+"""The one eigen-solver: undamped generalised problems, damped state space, MAC tracking."""
+
+import math
+
+import numpy as np
+import pytest
+
+from wtvib import modal
+
+
+def test_two_mass_chain_against_the_closed_form():
+    # free–free two masses on a spring: ω² = k(J1 + J2)/(J1·J2), plus a rigid-body 0
+    j1, j2, k = 3.0, 1.0, 12.0
+    res = modal.solve(np.array([[k, -k], [-k, k]]), np.diag([j1, j2]))
+    expected = math.sqrt(k * (j1 + j2) / (j1 * j2)) / (2 * math.pi)
+    assert res.frequency_hz == pytest.approx([0.0, expected], abs=1e-9)
+
+
+def test_damped_single_mode_gives_back_its_damping_ratio():
+    # m q̈ + c q̇ + k q = 0 with c = 2ζ√(km): ζ and ωn = √(k/m) come back exactly
+    m, k, zeta = 2.0, 800.0, 0.05
+    c = 2 * zeta * math.sqrt(k * m)
+    res = modal.damped(np.array([[k]]), np.array([[m]]), np.array([[c]]))
+    assert res.damping_ratio == pytest.approx([zeta])
+    assert res.frequency_hz == pytest.approx([math.sqrt(k / m) / (2 * math.pi)])
+
+
+def test_state_matrix_broadcasts_over_stacks():
+    k = np.stack([np.eye(2) * s for s in (1.0, 4.0)])
+    a = modal.state_matrix(k, np.eye(2), np.zeros((2, 2)))
+    assert a.shape == (2, 4, 4)
+    assert np.abs(np.linalg.eigvals(a[1])).max() == pytest.approx(2.0)  # ω = √4
+
+
+def test_an_unstable_drive_train_is_refused():
+    with pytest.raises(modal.ModalError, match="unstable"):
+        modal.damped(np.array([[1.0]]), np.array([[1.0]]), np.array([[-0.5]]))
+
+
+def test_track_follows_crossing_curves_by_shape():
+    a = np.eye(3)
+    b = np.eye(3)[:, [2, 0, 1]]  # the same shapes, shuffled
+    assert list(modal.track(a, b)) == [1, 2, 0]
+    assert modal.mac(a, b)[0, 1] == pytest.approx(1.0)

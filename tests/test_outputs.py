@@ -1,0 +1,34 @@
+"""Atomic writes that never replace a file wtvib did not write (without --force)."""
+
+import pytest
+
+from wtvib.errors import OutputError
+from wtvib.outputs import is_ours, write_atomic
+from wtvib.plots import png_bytes
+
+
+def test_a_users_file_is_never_replaced_without_force(tmp_path):
+    target = tmp_path / "notes.json"
+    target.write_text("my notes\n")
+    with pytest.raises(OutputError, match="was not written by wtvib"):
+        write_atomic(target, b'{\n  "schema": "wtvib-report/1"}\n')
+    assert target.read_text() == "my notes\n"
+    write_atomic(target, b"replaced\n", force=True)
+    assert target.read_bytes() == b"replaced\n"
+
+
+def test_own_files_are_recognised_and_replaced(tmp_path):
+    from matplotlib.figure import Figure
+
+    png = tmp_path / "a.png"
+    write_atomic(png, png_bytes(Figure(figsize=(1, 1))))
+    assert is_ours(png)  # the PNG's Software tag says wtvib
+    write_atomic(png, png_bytes(Figure(figsize=(2, 1))))  # no --force needed
+    assert not [p for p in tmp_path.iterdir() if p.suffix == ".tmp"]
+
+
+def test_an_unwritable_folder_is_an_output_error(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    with pytest.raises(OutputError, match="cannot write"):
+        write_atomic(blocker / "sub" / "out.json", b"{}")

@@ -1,0 +1,51 @@
+"""The yaw system: one-mass frequency, gear play as a dead-zone spring, its protocol."""
+
+import math
+
+import numpy as np
+import pytest
+
+from tests.conftest import spec_text
+from wtvib import audit, spec, yaw
+
+YAW = """tower_head: {mass_kg: 300000, inertia_yaw_kgm2: 2.0e7}
+yaw:
+  drive_stiffness_nm_rad: 2.0e9
+"""
+
+
+def test_one_mass_yaw_frequency(write_spec):
+    # f = √(k/J)/2π = √(2e9/2e7)/2π = 1.5915 Hz (rigid tower in torsion)
+    s = spec.load(write_spec(spec_text() + YAW, name="y.yaml"))
+    (first,) = [m for m in yaw.build_modes(s, {}) if m.id == "yaw.1"]
+    assert first.frequency_hz == pytest.approx(math.sqrt(2e9 / 2e7) / (2 * math.pi))
+    assert first.origin == "computed"
+
+
+def test_describing_function_of_the_dead_zone():
+    # the docstring's values (Gelb & Vander Velde ch. 2): A/δ = 1.2, 2, 5 → N/k
+    assert yaw.describing_function(np.array([1.2, 2.0, 5.0])) == pytest.approx(
+        [0.0796, 0.3910, 0.7471], abs=1e-4
+    )
+    assert float(yaw.describing_function(0.5)) == 0.0  # inside the gap: no stiffness
+
+
+def test_springs_in_series():
+    assert yaw.series(2.0, 2.0) == pytest.approx(1.0)
+
+
+def test_yaw_analysis_adds_its_own_checks(write_spec):
+    s = spec.load(write_spec(spec_text() + YAW, name="y.yaml"))
+    ids = [c.id for c in audit.run(s).checks if c.subsystem == "yaw"]
+    assert "yaw.moments" in ids and any(i.startswith("yaw.resonance.") for i in ids)
+
+
+def test_a_head_without_any_yaw_inertia_is_one_line_with_the_field(write_spec):
+    # found by the unit tests: the CM on the tower axis and no inertia gave J = 0 and a
+    # ZeroDivisionError (an internal error); it is the user's missing input
+    from wtvib.errors import SpecError
+
+    text = spec_text() + "tower_head: {mass_kg: 3.0e5}\nyaw:\n  drive_stiffness_nm_rad: 2.0e9\n"
+    with pytest.raises(SpecError) as err:
+        audit.run(spec.load(write_spec(text, name="z.yaml")))
+    assert err.value.path == "tower_head.inertia_yaw_kgm2"
