@@ -1,0 +1,49 @@
+"""ElastoDyn decks at unit level: values and tables, the operating range from the deck set."""
+
+from pathlib import Path
+
+import pytest
+
+from wtvib.importers import elastodyn
+
+DECK = """------- ELASTODYN -------
+          3   NumBl       - Number of blades (-)
+     12.1     RotSpeed    - Initial or fixed rotor speed (rpm)
+     97.0     GBRatio     - Gearbox ratio (-)
+---------------------- DISTRIBUTED TOWER PROPERTIES ----------------------------
+  HtFract       TMassDen         TwFAStif       TwSSStif
+   (-)           (kg/m)           (Nm^2)         (Nm^2)
+ 0.0            5590.87         6.14343E+11    6.14343E+11
+ 1.0            3235.34         1.87E+11       1.87E+11
+"""
+
+
+def test_values_and_tables_are_read(tmp_path):
+    deck = elastodyn.parse(tmp_path / "d.dat", DECK)
+    assert deck.num("NumBl") == 3 and deck.num("RotSpeed") == 12.1
+    assert list(deck.column("HtFract", "TMassDen")) == [5590.87, 3235.34]
+    assert deck.values["GBRatio"][1] == 4  # the line, for messages
+
+
+def test_fixed_speed_from_an_induction_generator(tmp_path):
+    # FAST v7 fixed speed: synchronous 1200 rpm + 1.5125 % slip over 22.5 → 54.14 rpm
+    # (the AWT-27 deck, ../shared/reference/AWT27/Test01.fst)
+    text = "0 VSContrl -\n1 GenModel -\n1.5125 SIG_SlPc -\n1200.0 SIG_SySp -\n22.5 GBRatio -\n"
+    deck = elastodyn.parse(tmp_path / "t.fst", text)
+    speed, note = elastodyn.operating_speed(deck, deck)  # type: ignore[misc]
+    assert speed["fixed_rpm"] == pytest.approx(1200 * 1.015125 / 22.5)
+    assert "synchronous speed 1200 rpm" in note
+
+
+def test_no_controller_inputs_give_no_range(tmp_path):
+    deck = elastodyn.parse(tmp_path / "d.dat", DECK)
+    assert elastodyn.operating_speed(deck, None) is None
+
+
+def test_rosco_discon_values(tmp_path):
+    p = Path(tmp_path / "DISCON.IN")
+    p.write_text(
+        "34.64286   ! VS_MinOMSpd - Minimum generator speed [rad/s]\n"
+        "122.90967  ! VS_RefSpd - Rated generator speed [rad/s]\n"
+    )
+    assert elastodyn._discon(p) == {"VS_MinOMSpd": 34.64286, "VS_RefSpd": 122.90967}
