@@ -1,0 +1,92 @@
+"""Building blocks of the spec schema: strict models, quantities with provenance, given modes."""
+
+import itertools
+from collections.abc import Mapping
+from typing import Annotated, Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(
+        extra="forbid", frozen=True, allow_inf_nan=False, str_strip_whitespace=True
+    )
+
+
+Positive = Annotated[float, Field(gt=0)]
+
+
+Ratio = Annotated[float, Field(ge=0, lt=1)]
+
+
+class Quantity(_Strict):
+    """A number with its provenance (accepted wherever a number is)."""
+
+    value: float = Field(description="The number itself, in the unit its key names.")
+    provenance: Literal["published", "derived", "representative"] = Field(
+        description="published: printed in the source; derived: computed or read from a "
+        "statement in the source; representative: a plausible value where the source gives "
+        "none."
+    )
+    source: str | None = Field(None, description="Key of the top-level `sources` mapping.")
+    note: str | None = Field(None, description="How the value was obtained.")
+    tolerance: float | None = Field(
+        None,
+        ge=0,
+        description="Uncertainty for `check --uncertainty`: normal — one standard deviation "
+        "as a fraction of the value (0.15 for ±15 %); uniform — half-width as a fraction; "
+        "lognormal — the factor at one standard deviation (2 for ×/÷ 2). [-]",
+    )
+    distribution: Literal["normal", "uniform", "lognormal"] = Field(
+        "normal", description="Distribution of the uncertain value."
+    )
+
+
+class ModeSpec(_Strict):
+    """A natural frequency given directly, with optional damping and stiffening."""
+
+    frequency_hz: Positive = Field(description="Natural frequency at standstill. [Hz]")
+    damping_ratio: Ratio | None = Field(
+        None,
+        description="Modal damping ratio (fraction of critical); subsystem default if omitted. [-]",
+    )
+    southwell: float | None = Field(
+        None,
+        ge=0,
+        description="Blade modes only: Southwell coefficient K in f² = f₀² + K·(Ω/2π)². "
+        "Default 1.19 for flap and 0.19 for edge modes (uniform cantilever), 0 for torsion. [-]",
+    )
+    description: str | None = Field(None, description="Free text shown in the report.")
+
+
+def _mode_tag(value: Any) -> str:
+    return "full" if isinstance(value, Mapping) else "number"
+
+
+ModeEntry = Annotated[
+    Annotated[Positive, Tag("number")] | Annotated[ModeSpec, Tag("full")],
+    Discriminator(_mode_tag),
+]
+
+
+TowerModeName = Annotated[str, Field(pattern=r"^(fa|ss|tor)[1-9]$")]
+
+
+BladeModeName = Annotated[str, Field(pattern=r"^(flap|edge|tor)[1-9]$")]
+
+
+YawModeName = Annotated[str, Field(pattern=r"^[1-9]$")]
+
+
+def _increasing(name: str, values: list[float]) -> None:
+    if len(values) < 2:
+        raise ValueError(f"{name} needs at least two stations")
+    if any(b <= a for a, b in itertools.pairwise(values)):
+        raise ValueError(f"{name} must increase strictly from station to station")
+
+
+def _same_length(model: BaseModel, reference: str) -> None:
+    n = len(getattr(model, reference))
+    for name, value in model:
+        if isinstance(value, list) and len(value) != n:
+            raise ValueError(f"{name} has {len(value)} values but {reference} has {n}")

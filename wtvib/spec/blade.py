@@ -1,0 +1,188 @@
+"""The blades: given modes or their structure, and the aeroelastic (typical-section) inputs."""
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import BladeModeName, ModeEntry, Positive, Ratio, _increasing, _same_length, _Strict
+
+
+class BladeStructure(_Strict):
+    """A blade as a table of distributed properties along its span (cantilevered at the root)."""
+
+    hub_radius_m: float = Field(0.0, ge=0, description="Rotor axis to blade root. [m]")
+    span_m: list[float] = Field(description="Distance from the blade root. [m]")
+    mass_per_length_kg_m: list[Positive] = Field(description="Mass per length. [kg/m]")
+    ei_flap_nm2: list[Positive] = Field(description="Flapwise bending stiffness. [N·m²]")
+    ei_edge_nm2: list[Positive] = Field(description="Edgewise bending stiffness. [N·m²]")
+    twist_deg: list[float] | None = Field(
+        None, description="Structural twist of the principal axes to the rotor plane. [deg]"
+    )
+    gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
+    torsional_inertia_kgm: list[Positive] | None = Field(
+        None, description="Mass moment of inertia per length about the pitch axis. [kg·m]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "BladeStructure":
+        _increasing("span_m", self.span_m)
+        if self.span_m[0] != 0:
+            raise ValueError("span_m must start at 0 (the blade root)")
+        _same_length(self, "span_m")
+        if (self.gj_nm2 is None) != (self.torsional_inertia_kgm is None):
+            raise ValueError("give gj_nm2 and torsional_inertia_kgm together")
+        return self
+
+
+class AeroSection(_Strict):
+    """A blade section as a typical section for divergence and flutter (Hau Fig. 7.6)."""
+
+    radius_fraction: float = Field(
+        0.75, gt=0, le=1, description="Position r/R of the section on the rotor radius. [-]"
+    )
+    chord_m: Positive = Field(description="Chord c. [m]")
+    elastic_axis_chord: Ratio = Field(
+        description="Elastic (shear-centre) axis behind the leading edge, fraction of c. [-]"
+    )
+    centre_of_mass_chord: Ratio = Field(
+        description="Centre of mass behind the leading edge, fraction of c. [-]"
+    )
+    mass_per_length_kg_m: Positive | None = Field(
+        None, description="Mass per length; default: blade.structure at this radius. [kg/m]"
+    )
+    torsional_inertia_kgm: Positive | None = Field(
+        None,
+        description="Mass moment of inertia per length about the elastic axis; default: "
+        "blade.structure at this radius. [kg·m]",
+    )
+    chord_angle_deg: float = Field(
+        0.0,
+        ge=-90,
+        le=90,
+        description="Angle of the chord to the rotor plane (twist + pitch), for the "
+        "centrifugal propeller moment. [deg]",
+    )
+
+    @model_validator(mode="after")
+    def _inertia_covers_offset(self) -> "AeroSection":
+        m, i = self.mass_per_length_kg_m, self.torsional_inertia_kgm
+        if m is not None and i is not None:
+            check_section_inertia(m, i, self.offset_m)
+        return self
+
+    @property
+    def offset_m(self) -> float:
+        """Centre of mass behind the elastic axis. [m]"""
+        return (self.centre_of_mass_chord - self.elastic_axis_chord) * self.chord_m
+
+
+def check_section_inertia(mass: float, inertia: float, offset: float) -> None:
+    """The inertia about the elastic axis includes the offset mass: I_EA ≥ m·d²."""
+    if inertia <= mass * offset**2:
+        raise ValueError(
+            f"torsional_inertia_kgm {inertia:g} kg·m is not more than m·d² = "
+            f"{mass * offset**2:.4g} kg·m: the inertia about the elastic axis includes the "
+            f"centre of mass's offset d = {offset:.3g} m"
+        )
+
+
+class Polar(_Strict):
+    """Aerofoil polar: lift and drag coefficients over the angle of attack."""
+
+    alpha_deg: list[float] = Field(min_length=3, description="Angle of attack. [deg]")
+    cl: list[float] = Field(description="Lift coefficient C_L. [-]")
+    cd: list[float] = Field(description="Drag coefficient C_D. [-]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Polar":
+        _increasing("alpha_deg", self.alpha_deg)
+        _same_length(self, "alpha_deg")
+        return self
+
+
+class Planform(_Strict):
+    """Chord and twist along the blade, for the stall-induced vibration check."""
+
+    radius_fraction: list[float] = Field(min_length=2, description="Position r/R. [-]")
+    chord_m: list[Positive] = Field(description="Chord. [m]")
+    twist_deg: list[float] = Field(
+        description="Angle of the chord to the rotor plane at zero pitch. [deg]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "Planform":
+        _increasing("radius_fraction", self.radius_fraction)
+        if self.radius_fraction[0] <= 0 or self.radius_fraction[-1] > 1:
+            raise ValueError("radius_fraction must lie in (0, 1]")
+        _same_length(self, "radius_fraction")
+        return self
+
+
+class BladeAeroelastic(_Strict):
+    """Data for the blade's divergence, flutter and stall-induced vibration checks."""
+
+    sections: list[AeroSection] = Field(min_length=1, max_length=10)
+    lift_slope_per_rad: Positive = Field(
+        6.283185307179586, description="Lift-curve slope C_Lα (thin aerofoil: 2π). [1/rad]"
+    )
+    air_density_kg_m3: Positive = Field(1.225, description="Air density ρ. [kg/m³]")
+    max_wind_m_s: Positive = Field(
+        25.0,
+        description="Highest wind speed in operation (cut-out), added to the "
+        "section's rotational speed at overspeed. [m/s]",
+    )
+    speed_margin: float = Field(
+        0.15,
+        gt=0,
+        lt=5,
+        description="Required margin of the divergence and flutter speeds over the highest "
+        "section speed (0.15: 1.15×, as CS-25.629 asks of aircraft). [-]",
+    )
+    polar: Polar | None = Field(
+        None, description="Aerofoil polar; default a built-in thin-aerofoil/flat-plate stall."
+    )
+    planform: Planform | None = Field(
+        None, description="Chord and twist along the blade; default: the sections (≥ 2)."
+    )
+    min_wind_m_s: Positive = Field(4.0, description="Lowest wind speed in operation. [m/s]")
+    axial_induction: float = Field(
+        0.0,
+        ge=0,
+        lt=0.5,
+        description="Axial induction a in the inflow model (0: geometric angle of attack, "
+        "the highest). [-]",
+    )
+    tip_speed_ratio: Positive = Field(
+        7.0, description="Tip-speed ratio of variable-speed partial load. [-]"
+    )
+    pitch_deg: float = Field(0.0, ge=-30, le=90, description="Blade pitch (held). [deg]")
+    regulation: Literal["stall", "pitch"] = Field(
+        "stall",
+        description="Power regulation: stall (pitch held at all winds) or pitch (the stall "
+        "check stops at the rated wind).",
+    )
+    rated_wind_m_s: Positive | None = Field(
+        None,
+        description="Rated wind speed (pitch regulation); default from the tip-speed ratio. [m/s]",
+    )
+
+
+class Blade(_Strict):
+    """The blades, by their natural frequencies at standstill."""
+
+    length_m: Positive | None = Field(None, description="Blade length. [m]")
+    mass_kg: Positive | None = Field(None, description="Mass of one blade. [kg]")
+    damping_ratio: Ratio = Field(
+        0.005, description="Default modal damping ratio of the blade modes. [-]"
+    )
+    modes: dict[BladeModeName, ModeEntry] = Field(
+        default_factory=dict,
+        description="Standstill natural frequencies [Hz]: flap1, flap2, edge1, edge2, tor1. "
+        "Ignored for modes the structural model computes.",
+    )
+    structure: BladeStructure | None = Field(
+        None, description="Distributed properties: frequencies computed, rotation included."
+    )
+    aeroelastic: BladeAeroelastic | None = Field(
+        None, description="Section data for the divergence and flutter checks."
+    )

@@ -1,0 +1,92 @@
+"""Cross-checks the schema alone cannot make (several fields at once), with field and line."""
+
+import numpy as np
+
+from ..errors import SpecError
+from ..yamlio import Document
+from .base import Quantity
+from .messages import _split
+from .turbine import Spec
+
+
+def _check_sources(spec: Spec, provenance: dict[str, Quantity], doc: Document) -> None:
+    for where, q in provenance.items():
+        if q.source is not None and q.source not in spec.sources:
+            known = ", ".join(spec.sources) or "none"
+            raise SpecError(
+                f"source {q.source!r} is not a key of the top-level 'sources' (known: {known})",
+                path=f"{where}.source",
+                line=doc.line_of(_split(where)),
+                source=doc.source,
+            )
+
+
+def _check_rotor_radius(spec: Spec, doc: Document) -> None:
+    """A rotor diameter that leaves no blade beyond the hub radius is a mistake."""
+    d, s = spec.turbine.rotor_diameter_m, spec.blade.structure
+    if d is not None and s is not None and d / 2 <= s.hub_radius_m:
+        raise SpecError(
+            f"a rotor radius of {d / 2:g} m leaves no blade beyond the blade root at "
+            f"blade.structure.hub_radius_m = {s.hub_radius_m:g} m",
+            path="turbine.rotor_diameter_m",
+            line=doc.line_of(("turbine", "rotor_diameter_m")),
+            source=doc.source,
+        )
+
+
+def _check_coupled(spec: Spec, doc: Document) -> None:
+    """The coupled model's needs, named with the line: the structures, and a tower head
+    heavy enough to carry the rotor it includes."""
+    cm = spec.coupled
+    if cm is None:
+        return
+    missing = [
+        name
+        for name, present in (
+            ("blade.structure", spec.blade.structure is not None),
+            ("tower sections or distributed properties", spec.tower.has_structure),
+            ("tower_head", spec.tower_head is not None),
+        )
+        if not present
+    ]
+    if spec.rotor.orientation == "vertical-axis":
+        missing.append("a horizontal-axis rotor")
+    if missing:
+        raise SpecError(
+            f"the coupled model needs {', '.join(missing)}",
+            path="coupled",
+            line=doc.line_of(("coupled",)),
+            source=doc.source,
+        )
+    s, head = spec.blade.structure, spec.tower_head
+    assert s is not None and head is not None
+    # the rotor's mass and polar inertia (blades by the trapezoid rule, + hub)
+    span, per_length = np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m)
+    m_blade = float(np.trapezoid(per_length, span))
+    j_blade = float(np.trapezoid(per_length * (s.hub_radius_m + span) ** 2, span))
+    n = spec.rotor.blades
+    chain = spec.drivetrain.chain
+    hub = cm.hub_inertia_kgm2
+    if hub is None and chain and chain[0].name != "blades":
+        raise SpecError(
+            f"the drive-train chain starts with {chain[0].name!r}: the coupled model models "
+            "the blades itself, so it needs the chain's blade inertia as a first mass named "
+            "'blades' (or coupled.hub_inertia_kgm2 for the hub alone)",
+            path="drivetrain.chain[0].name",
+            line=doc.line_of(("drivetrain", "chain", 0, "name")),
+            source=doc.source,
+        )
+    if hub is None and chain:
+        hub = chain[1].inertia_kgm2 if len(chain) > 1 else 0.0
+    from ..rigid import nacelle  # the one place that splits the head
+
+    apex = (cm.apex_downwind_m, 0.0, cm.apex_above_top_m)
+    try:
+        nacelle(head, np.array(apex), n * m_blade + cm.hub_mass_kg, n * j_blade + (hub or 0.0))
+    except SpecError as exc:
+        raise SpecError(
+            exc.message,
+            path=exc.path,
+            line=doc.line_of(_split(exc.path or "tower_head")),
+            source=doc.source,
+        ) from None

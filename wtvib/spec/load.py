@@ -1,0 +1,119 @@
+"""Reading a spec: files (bounded, UTF-8), YAML documents, quantities, validation."""
+
+import os
+from pathlib import Path as FsPath
+from typing import Any
+
+from pydantic import ValidationError
+
+from ..errors import SpecError
+from ..yamlio import Document, Path, format_path, parse
+from .base import Quantity
+from .checks import _check_coupled, _check_rotor_radius, _check_sources
+from .messages import _spec_error
+from .turbine import Spec
+
+FORMAT_VERSION = 1
+
+
+#: Files larger than this are refused before parsing; override with the environment
+#: variable WTVIB_MAX_BYTES (bytes) or the ``max_bytes`` argument.
+MAX_FILE_BYTES = int(os.environ.get("WTVIB_MAX_BYTES", 20 * 1024 * 1024))
+
+
+def load(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> Spec:
+    """Read and validate a wtvib spec file.
+
+    Raises
+    ------
+    SpecError
+        Unreadable, oversized, non-UTF-8 or invalid file; the message names field and line.
+    """
+    text = read_text(path, max_bytes=max_bytes)
+    return from_document(parse(text, source=str(path)))
+
+
+def read_text(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> str:
+    """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
+    p = FsPath(path)
+    try:
+        size = p.stat().st_size
+        if size > max_bytes:
+            raise SpecError(
+                f"file is {size:,} bytes, over the {max_bytes:,}-byte limit", source=str(p)
+            )
+        raw = p.read_bytes()
+    except IsADirectoryError:
+        raise SpecError("is a folder, not a file", source=str(p)) from None
+    except FileNotFoundError:
+        raise SpecError("no such file", source=str(p)) from None
+    except OSError as exc:
+        raise SpecError(f"cannot read: {exc.strerror}", source=str(p)) from None
+    if b"\x00" in raw:
+        raise SpecError("binary file, not a YAML text file", source=str(p))
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
+
+
+def load_document(path: str | FsPath, text: str) -> Document:
+    """Parse a file's text as a YAML document (safe, with line numbers)."""
+    return parse(text, source=str(path))
+
+
+def from_data(data: dict[str, Any], source: str | None = None) -> Spec:
+    """Validate a wtvib-format dictionary made by a program (an importer), not a file."""
+    return from_document(Document(data=data, lines={}, source=source))
+
+
+def from_document(doc: Document) -> Spec:
+    """Validate a parsed document as a :class:`Spec`."""
+    if not isinstance(doc.data, dict):
+        raise SpecError(
+            "expected a mapping of fields (wtvib:, turbine:, rotor:, …) at the top",
+            line=doc.line_of(()),
+            source=doc.source,
+        )
+    version = doc.data.get("wtvib")
+    if "wtvib" not in doc.data:
+        raise SpecError(
+            "not a wtvib spec: the version key 'wtvib: 1' is missing", line=1, source=doc.source
+        )
+    if version != FORMAT_VERSION:
+        raise SpecError(
+            f"unsupported spec format version {version!r}; this wtvib reads version "
+            f"{FORMAT_VERSION}",
+            path="wtvib",
+            line=doc.line_of(("wtvib",)),
+            source=doc.source,
+        )
+    provenance: dict[str, Quantity] = {}
+    data = _extract_quantities(doc, doc.data, (), provenance)
+    try:
+        spec = Spec.model_validate(data)
+    except ValidationError as exc:
+        raise _spec_error(exc, doc) from None
+    _check_sources(spec, provenance, doc)
+    _check_rotor_radius(spec, doc)
+    _check_coupled(spec, doc)
+    spec._source_file = doc.source
+    spec._provenance = provenance
+    return spec
+
+
+def _extract_quantities(doc: Document, node: Any, path: Path, out: dict[str, Quantity]) -> Any:
+    """Replace each ``{value: …, provenance: …}`` mapping by its number, recording it."""
+    if isinstance(node, dict):
+        if "value" in node and "provenance" in node:
+            try:
+                q = Quantity.model_validate(node)
+            except ValidationError as exc:
+                raise _spec_error(exc, doc, prefix=path) from None
+            out[format_path(path)] = q
+            return q.value
+        return {k: _extract_quantities(doc, v, (*path, k), out) for k, v in node.items()}
+    if isinstance(node, list):
+        return [_extract_quantities(doc, v, (*path, i), out) for i, v in enumerate(node)]
+    return node

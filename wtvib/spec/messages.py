@@ -1,0 +1,87 @@
+"""pydantic validation errors as one readable line with field path and YAML line."""
+
+from typing import Any
+
+from pydantic import ValidationError
+
+from ..errors import SpecError
+from ..yamlio import Document, Path, format_path
+
+
+def _split(dotted: str) -> Path:
+    parts: list[str | int] = []
+    for piece in dotted.replace("]", "").replace("[", ".").split("."):
+        parts.append(int(piece) if piece.isdigit() else piece)
+    return tuple(parts)
+
+
+_BRANCH = ("function-", "tuple[", "list[", "constrained-", "nullable[", "union[")
+
+
+_SCALAR_TYPES = (
+    "float_type",
+    "float_parsing",
+    "int_type",
+    "int_parsing",
+    "string_type",
+    "bool_type",
+    "none_required",
+)
+
+
+def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecError:
+    """The most telling validation error as one line with field path and YAML line.
+
+    A value that fails every branch of a union (a number or a list, say) reports the branch
+    that matches its own shape: a list's error rather than "should be a number".
+    """
+    errors = exc.errors(include_url=False)
+
+    def mismatch(e: Any) -> bool:
+        return e["type"] in _SCALAR_TYPES and isinstance(e.get("input"), list | dict)
+
+    err = min(errors, key=lambda e: (mismatch(e), errors.index(e)))
+    loc: list[str | int] = []
+    for part in err["loc"]:
+        if part in ("number", "full", "[key]", "int", "float", "str") or (
+            isinstance(part, str) and part.startswith(_BRANCH)
+        ):
+            continue
+        loc.append(part)
+    path: Path = (*prefix, *loc)
+    message = _message(err)
+    extra = len({tuple(e["loc"][: len(loc)]) for e in errors}) - 1
+    more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra > 0 else ""
+    return SpecError(
+        message + more,
+        path=format_path(path) or None,
+        line=doc.line_of(path),
+        source=doc.source,
+    )
+
+
+def _message(err: Any) -> str:
+    kind = err["type"]
+    got = err.get("input")
+    if kind == "missing":
+        return "required field is missing"
+    if kind == "extra_forbidden":
+        return "unknown field (not part of the wtvib spec; check the spelling)"
+    if kind == "string_pattern_mismatch":
+        pattern = err.get("ctx", {}).get("pattern", "")
+        names = {
+            r"^(fa|ss|tor)[1-9]$": "fa1…fa9, ss1…ss9, tor1…tor9",
+            r"^(flap|edge|tor)[1-9]$": "flap1…flap9, edge1…edge9, tor1…tor9",
+            r"^[1-9]$": "1…9",
+        }.get(pattern, pattern)
+        return f"{got!r} is not a known mode name (expected {names})"
+    if kind == "finite_number":
+        return "must be a finite number (NaN and infinity are not allowed)"
+    text = str(err["msg"])
+    if kind.startswith("value_error"):
+        text = text.removeprefix("Value error, ")
+    if got is not None and not isinstance(got, dict | list) and kind != "literal_error":
+        return f"{text} (got {got!r})"
+    if kind == "literal_error":
+        return f"{text} (got {got!r})"
+    return text

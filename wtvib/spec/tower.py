@@ -1,0 +1,150 @@
+"""The tower: given modes or its structure (tube sections or distributed properties),
+head and foundation."""
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import ModeEntry, Positive, Ratio, TowerModeName, _increasing, _same_length, _Strict
+
+
+class Material(_Strict):
+    """An isotropic material (steel by default values in the catalogue)."""
+
+    youngs_modulus_pa: Positive = Field(description="Young's modulus E. [Pa]")
+    shear_modulus_pa: Positive | None = Field(
+        None, description="Shear modulus G; default E / (2·(1 + 0.3)). [Pa]"
+    )
+    density_kg_m3: Positive = Field(description="Density. [kg/m³]")
+    mass_factor: Positive = Field(
+        1.0, description="Outfitting factor on the shell mass (flanges, paint, bolts). [-]"
+    )
+
+    @property
+    def shear(self) -> float:
+        """G, given or from E with Poisson's ratio 0.3 (steel). [Pa]"""
+        return self.shear_modulus_pa or self.youngs_modulus_pa / 2.6
+
+
+class TubularSections(_Strict):
+    """A tapered tube: outer diameter and wall thickness at stations, linear in between."""
+
+    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
+    outer_diameter_m: list[Positive] = Field(description="Outer diameter. [m]")
+    wall_thickness_m: list[Positive] = Field(description="Wall thickness. [m]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "TubularSections":
+        _increasing("height_m", self.height_m)
+        _same_length(self, "height_m")
+        for i, (d, t) in enumerate(zip(self.outer_diameter_m, self.wall_thickness_m, strict=True)):
+            if 2 * t >= d:
+                raise ValueError(
+                    f"station {i}: wall thickness {t} m is not less than half the diameter {d} m"
+                )
+        return self
+
+
+class DistributedTower(_Strict):
+    """A tower as a table of distributed properties (as in ElastoDyn tower files)."""
+
+    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
+    mass_per_length_kg_m: list[Positive] = Field(description="Mass per length. [kg/m]")
+    ei_fa_nm2: list[Positive] = Field(description="Fore-aft bending stiffness. [N·m²]")
+    ei_ss_nm2: list[Positive] = Field(description="Side-side bending stiffness. [N·m²]")
+    gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
+    polar_inertia_kgm: list[Positive] | None = Field(
+        None, description="Polar mass moment of inertia per length. [kg·m]"
+    )
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "DistributedTower":
+        _increasing("height_m", self.height_m)
+        _same_length(self, "height_m")
+        if (self.gj_nm2 is None) != (self.polar_inertia_kgm is None):
+            raise ValueError("give gj_nm2 and polar_inertia_kgm together (torsion needs both)")
+        return self
+
+
+class PointMass(_Strict):
+    """A concentrated mass on the tower (flange, platform, transition piece)."""
+
+    height_m: float = Field(description="Height above the tower base. [m]")
+    mass_kg: Positive = Field(description="Mass. [kg]")
+
+
+class Foundation(_Strict):
+    """How the tower base is held: clamped, or on springs."""
+
+    kind: Literal["clamped", "springs"] = Field("clamped", description="Base condition.")
+    lateral_n_m: Positive | None = Field(None, description="Lateral spring. [N/m]")
+    rocking_nm_rad: Positive | None = Field(None, description="Rocking spring. [N·m/rad]")
+    torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
+
+    @model_validator(mode="after")
+    def _springs(self) -> "Foundation":
+        if self.kind == "springs" and self.lateral_n_m is None and self.rocking_nm_rad is None:
+            raise ValueError("a 'springs' foundation needs lateral_n_m and/or rocking_nm_rad")
+        return self
+
+
+class TowerHead(_Strict):
+    """The rotor–nacelle assembly as a rigid body on the tower top."""
+
+    mass_kg: Positive = Field(description="Total tower-head mass (rotor, hub, nacelle). [kg]")
+    cm_downwind_m: float = Field(
+        0.0, ge=-1000, le=1000, description="CM downwind of the tower axis. [m]"
+    )
+    cm_above_top_m: float = Field(0.0, ge=-1000, le=1000, description="CM above the tower top. [m]")
+    inertia_pitch_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the lateral (nodding) axis through the CM. [kg·m²]"
+    )
+    inertia_roll_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the fore-aft (roll) axis through the CM. [kg·m²]"
+    )
+    inertia_yaw_kgm2: float = Field(
+        0.0, ge=0, description="Inertia about the vertical (yaw) axis through the CM. [kg·m²]"
+    )
+
+
+class Tower(_Strict):
+    """The tower with its tower head (rotor–nacelle mass), by its natural frequencies."""
+
+    construction: (
+        Literal[
+            "steel-tube", "concrete", "lattice", "guyed-tube", "hybrid", "rotor-column", "other"
+        ]
+        | None
+    ) = Field(None, description="Type of tower.")
+    height_m: Positive | None = Field(None, description="Tower height. [m]")
+    mass_kg: Positive | None = Field(None, description="Tower mass. [kg]")
+    damping_ratio: Ratio = Field(
+        0.01, description="Default modal damping ratio of the tower modes. [-]"
+    )
+    sections: TubularSections | None = Field(None, description="Tapered tube geometry.")
+    material: Material | None = Field(None, description="Material of the tube sections.")
+    distributed: DistributedTower | None = Field(
+        None, description="Distributed properties (instead of sections)."
+    )
+    point_masses: list[PointMass] = Field(default_factory=list)
+    foundation: Foundation = Field(default_factory=Foundation)
+    gravity: bool = Field(
+        True, description="Include the softening of the tower by its own and the head's weight."
+    )
+    modes: dict[TowerModeName, ModeEntry] = Field(
+        default_factory=dict,
+        description="Natural frequencies [Hz]: fa1, fa2 (fore-aft), ss1, ss2 (side-side), "
+        "tor1 (torsion). Ignored for modes the structural model computes.",
+    )
+
+    @model_validator(mode="after")
+    def _one_structure(self) -> "Tower":
+        if self.sections is not None and self.distributed is not None:
+            raise ValueError("give either sections (with material) or distributed, not both")
+        if self.sections is not None and self.material is None:
+            raise ValueError("tube sections need a material")
+        return self
+
+    @property
+    def has_structure(self) -> bool:
+        return self.sections is not None or self.distributed is not None

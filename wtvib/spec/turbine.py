@@ -1,0 +1,145 @@
+"""The whole spec: the coupled-model block, audit settings, and the Spec that holds every part."""
+
+from typing import Literal
+
+from pydantic import Field, PrivateAttr
+
+from ..rules import PRESETS, MarginRule, Status
+from .base import Quantity, _Strict
+from .blade import Blade
+from .drivetrain import Drivetrain
+from .rotor import Rotor, TurbineInfo
+from .tower import Tower, TowerHead
+from .yaw import Yaw
+
+
+class CoupledModel(_Strict):
+    """What the coupled rotor–tower model (whole-turbine modes, Hau §7.6) needs beyond the
+    subsystems: where the rotor sits on the tower head, the hub, and how many blade modes."""
+
+    apex_downwind_m: float = Field(
+        ge=-100,
+        le=100,
+        description="Rotor centre (apex) downwind of the tower axis; negative upwind. [m]",
+    )
+    apex_above_top_m: float = Field(
+        ge=-100, le=100, description="Rotor centre above the tower top. [m]"
+    )
+    hub_mass_kg: float = Field(0.0, ge=0, description="Hub mass (part of tower_head). [kg]")
+    hub_inertia_kgm2: float | None = Field(
+        None,
+        ge=0,
+        description="Hub inertia about the shaft; default: the drive-train chain's hub (or "
+        "0 without a chain). [kg·m²]",
+    )
+    blade_modes: int = Field(
+        3, ge=1, le=6, description="Flexible modes per blade, lowest first (flap1, edge1, …)."
+    )
+    parked_condition: Literal["locked", "free", "grid"] = Field(
+        "locked", description="Generator when parked (Jonkman et al. 2009 Table 9-1: locked)."
+    )
+    rotating_condition: Literal["locked", "free", "grid"] = Field(
+        "free",
+        description="Generator in the rotating sweep: free (converter, torque-controlled), "
+        "grid (the drivetrain.generator_model coupling), locked.",
+    )
+
+
+class Severity(_Strict):
+    """Status given to a margin violation in steady operation, by excitation energy."""
+
+    dominant: Status = Field("fail", description="1P and N_b·P (Hau ch. 7.1).")
+    secondary: Status | None = Field(
+        None,
+        description="kP with 1 < k < N_b, e.g. 2P on a three-bladed rotor, at a dwell speed "
+        "(fixed or rated speed); one step milder elsewhere in a variable-speed range (Hau "
+        "ch. 7.5.2: 'basically considered less critical', yet WKA-60's tower met 2P at rated "
+        "speed and resonated). Default: the preset's (hau: fail, gl2010: warn).",
+    )
+    minor: Status = Field(
+        "info", description="Higher harmonics above N_b·P (Hau ch. 7.2.2: little energy)."
+    )
+
+
+class AuditSettings(_Strict):
+    """How strictly to judge: the margin rule, its margin, and how many harmonics."""
+
+    preset: Literal["hau", "gl2010"] = Field(
+        "hau", description="Code whose rule and margin are the defaults: " + ", ".join(PRESETS)
+    )
+    rule: Literal["band", "ratio"] | None = Field(
+        None, description="band: |f_n−f_exc| ≥ m·f_exc; ratio: f_exc/f_n outside 1 ± m."
+    )
+    margin: float | None = Field(None, gt=0, lt=1, description="Margin m (0.10 = 10 %). [-]")
+    harmonics: int = Field(6, ge=1, le=60, description="Highest rotor harmonic kP checked.")
+    heavy_damping_ratio: float = Field(
+        0.3,
+        gt=0,
+        le=1,
+        description="A mode at least this damped (peak amplification 1/(2ζ√(1−ζ²)) ≤ 1.75 at "
+        "0.3) has no resonant peak: its margin violations are reported as info. [-]",
+    )
+    severity: Severity = Field(default_factory=Severity)
+
+    def severities(self) -> dict[str, Status]:
+        """Status of a steady-state margin violation per energy class, preset applied."""
+        out = self.severity.model_dump()
+        if out["secondary"] is None:
+            out["secondary"] = PRESETS[self.preset].secondary
+        return out
+
+    def margin_rule(self) -> MarginRule:
+        """The rule in force: the preset's, with the explicit rule and margin on top."""
+        preset = PRESETS[self.preset]
+        kind = self.rule or preset.rule
+        margin = self.margin if self.margin is not None else preset.margin
+        if kind == preset.rule and margin == preset.margin:
+            return MarginRule(kind, margin, preset.source, preset.name)
+        return MarginRule(kind, margin, f"user setting (preset {preset.name} overridden)")
+
+
+class Spec(_Strict):
+    """A wind turbine to audit (wtvib spec format version 1)."""
+
+    wtvib: Literal[1] = Field(description="Spec format version; this is version 1.")
+    turbine: TurbineInfo
+    sources: dict[str, str] = Field(
+        default_factory=dict, description="Citations, by a short key used in quantities."
+    )
+    rotor: Rotor
+    tower: Tower = Field(default_factory=Tower)
+    tower_head: TowerHead | None = Field(
+        None, description="Rotor–nacelle assembly on the tower top (for the tower model)."
+    )
+    blade: Blade = Field(default_factory=Blade)
+    drivetrain: Drivetrain = Field(default_factory=Drivetrain)
+    yaw: Yaw = Field(default_factory=Yaw)
+    coupled: CoupledModel | None = Field(
+        None,
+        description="Rotor position and hub for the coupled whole-turbine model (needs the "
+        "tower and blade structures and tower_head); absent: no coupled modes.",
+    )
+    audit: AuditSettings = Field(default_factory=AuditSettings)
+    notes: str | None = Field(None, description="Anything else worth keeping with the spec.")
+    assumptions: list[str] = Field(
+        default_factory=list,
+        description="How the spec was made (e.g. by an importer): shown in the report.",
+    )
+    warnings: list[str] = Field(
+        default_factory=list,
+        description="What the importer could not find and had to assume, loudly: shown in the "
+        "report's headline and warnings.",
+    )
+
+    _source_file: str | None = PrivateAttr(None)
+    _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
+
+    @property
+    def source_file(self) -> str | None:
+        """The file this spec was read from."""
+        return self._source_file
+
+    @property
+    def provenance(self) -> dict[str, Quantity]:
+        """Provenance of each annotated value, by dotted field path."""
+        return dict(self._provenance)
