@@ -7,8 +7,7 @@ import numpy as np
 import pytest
 from scipy.linalg import expm
 
-from tests.conftest import TURBINES
-from wtvib import audit, floquet, spec
+from wtvib import floquet
 
 
 def test_constant_coefficients_give_the_matrix_exponential():
@@ -23,16 +22,3 @@ def test_step_control_follows_the_fastest_mode():
     # two steps per period of the fastest mode, at least MIN_STEPS a revolution
     assert floquet.steps_for(0.1, 10.0) == floquet.MIN_STEPS
     assert floquet.steps_for(50.0, 10.0) == math.ceil(floquet.STEPS_PER_PERIOD * 500)
-
-
-def test_three_blades_need_no_floquet_analysis(write_spec):
-    r = audit.run(spec.load(write_spec(blades=3)))
-    c = next(c for c in r.checks if c.id == "rotor.floquet")
-    assert c.status == "info" and "time-invariant" in c.message
-    assert "rotor" not in r.results  # no map to draw
-
-
-def test_the_map_is_a_result_for_the_figure():
-    r = audit.run(spec.load(TURBINES / "aeroman.yaml"))
-    smap = r.results["rotor"]["map"]
-    assert len(smap.speeds_rpm) == len(smap.largest) and np.all(np.isfinite(smap.largest))

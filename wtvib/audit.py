@@ -5,7 +5,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from . import aeroelastic, blade, coupled, drivetrain, floquet, stall, tower, yaw
+from . import aeroelastic, blade, coupled, drivetrain, rotor, stall, tower, yaw
 from .analysis import Analysis, Context, Subsystem
 from .excitation import excitations, operating_range
 from .modal import ModalError
@@ -24,7 +24,7 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     drivetrain,
     yaw,
     coupled,
-    floquet,
+    rotor,
     aeroelastic,
     stall,
 )

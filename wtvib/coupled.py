@@ -66,13 +66,10 @@ from numpy.typing import NDArray
 from . import beam, blade, drivetrain, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
-from .excitation import operating_range
-from .floquet import GROWTH, MAX_STEPS, multipliers, periodic
 from .multiblade import parked, sweep
-from .resonance import regime_of
+from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl
 from .rigid import Rigid, nacelle
-from .rules import Status
 from .spec import BladeStructure, Spec
 from .units import rpm_to_rad_s
 
@@ -711,81 +708,6 @@ def _statements(model: Model) -> tuple[str, ...]:
     )
 
 
-_FLOQUET_RULE = Rule(
-    "Floquet multipliers of the coupled periodic system, |ρ| ≤ 1",
-    "Hau §7.6 and ch. 6.8.2 (periodic coefficients of two-bladed rotors, Floquet)",
-)
-
-
-def stability_check(spec: Spec) -> Check | None:
-    """``system.floquet``: parametric stability of the coupled two-bladed turbine over its
-    speed range (periodic coefficients; three or more blades are time-invariant)."""
-    if not applies(spec) or spec.rotor.blades >= 3:
-        return None
-    assert spec.coupled is not None
-    model = build(spec, spec.coupled.rotating_condition)
-    speed = spec.rotor.speed
-    # modes up to three times the highest excitation checked carry the parametric coupling
-    # (wtvib's choice of margin, no published figure; it keeps the basis small)
-    cutoff = max(2.0, 3 * spec.audit.harmonics * speed.overspeed / 60)
-    p = periodic(model, cutoff_hz=cutoff)
-    low = speed.steady_rpm[0][0]
-    rpm = np.unique(
-        np.concatenate(
-            [np.linspace(low, speed.overspeed, 12), [a for band in speed.steady_rpm for a in band]]
-        )
-    )
-    found = [multipliers(p, float(rpm_to_rad_s(n))) for n in rpm]
-    skipped = [float(n) for n, f in zip(rpm, found, strict=True) if f is None]
-    rpm = np.array([n for n, f in zip(rpm, found, strict=True) if f is not None])
-    largest = [float(np.abs(f).max()) for f in found if f is not None]
-    if not largest:
-        return Check(
-            id="system.floquet",
-            subsystem="system",
-            status="info",
-            message="Coupled two-bladed turbine not analysed: at these speeds one revolution "
-            f"would need more than {MAX_STEPS:,} integration steps of its fastest mode "
-            f"({p.highest_hz:.3g} Hz), or the multipliers were not finite",
-            rule=_FLOQUET_RULE,
-            numbers={"not_analysed_rpm": skipped},
-        )
-    unstable = [float(n) for n, r in zip(rpm, largest, strict=True) if r > 1 + GROWTH]
-    op = operating_range(speed)
-
-    def in_operation(n: float) -> bool:
-        return regime_of(float(rpm_to_rad_s(n)), op) in ("steady", "quick-pass")
-
-    steady = [n for n in unstable if in_operation(n)]
-    gaps = [n for n in skipped if in_operation(n)]
-    status: Status = "fail" if steady else "warn" if unstable or gaps else "pass"
-    where = ", ".join(f"{n:.3g}" for n in unstable) or "none"
-    return Check(
-        id="system.floquet",
-        subsystem="system",
-        status=status,
-        message=f"Coupled two-bladed turbine, Floquet multipliers over {low:.3g}–"
-        f"{speed.overspeed:.3g} rpm (generator {model.condition}): largest |ρ| "
-        f"{max(largest):.6f}; growing at {where} rpm"
-        + (
-            f"; not analysed at {', '.join(f'{n:.3g}' for n in skipped)} rpm (one revolution "
-            f"would need over {MAX_STEPS:,} steps of the basis's fastest mode, "
-            f"{p.highest_hz:.3g} Hz, or the multipliers were not finite)"
-            if skipped
-            else ""
-        ),
-        rule=_FLOQUET_RULE,
-        numbers={
-            "rpm": [round(float(n), 6) for n in rpm],
-            "max_multiplier": [round(r, 9) for r in largest],
-            "unstable_rpm": unstable,
-            "not_analysed_rpm": skipped,
-            "basis": f"{p.k0.shape[0]} coordinates (fixed parts of the parked modes up to "
-            f"{cutoff:.3g} Hz, every blade coordinate)",
-        },
-    )
-
-
 # ---------------------------------------------------------------------------------------
 # The subsystem protocol (wtvib.analysis)
 
@@ -811,7 +733,13 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """``system.coupling`` (coupled vs isolated) and, for two blades, ``system.floquet``."""
-    found = (check(spec, list(ctx.modes)), stability_check(spec))
+    two_bladed = applies(spec) and spec.rotor.blades < 3
+    periodic = (
+        stability_check(spec, build(spec, spec.coupled.rotating_condition))  # type: ignore[union-attr]
+        if two_bladed
+        else None
+    )
+    found = (check(spec, list(ctx.modes)), periodic)
     statements = (
         (
             "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "

@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import pytest
 
-from wtvib import audit, blade, coupled, floquet, importers, multiblade, spec, tower
+from wtvib import audit, blade, coupled, importers, multiblade, periodic, spec, tower
 
 NREL = "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
 
@@ -220,12 +220,12 @@ def test_floquet_of_the_periodic_equations_matches_the_multiblade_eigenvalues(nr
 
     model = coupled.build(nrel, "locked")
     omega = 12.1 * math.pi / 30
-    p = floquet.periodic(model, cutoff_hz=3.0)
-    rho = floquet.multipliers(p, omega)
+    p = periodic.periodic(model, cutoff_hz=3.0)
+    rho = periodic.multipliers(p, omega)
     assert rho is not None
     period = 2 * math.pi / omega
     floquet_f = np.sort(np.abs((np.log(rho) / period).imag)) / (2 * math.pi)
-    basis = floquet.reduction(model, cutoff_hz=3.0)  # blade block identity: MBC as well
+    basis = periodic.reduction(model, cutoff_hz=3.0)  # blade block identity: MBC as well
     m, d, k = (basis.T @ x @ basis for x in multiblade.fixed_frame(model, omega))
     f = np.abs(modal.state_roots(k, m, d).imag) / (2 * math.pi)
     rev = omega / (2 * math.pi)

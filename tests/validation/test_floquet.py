@@ -14,7 +14,7 @@ from scipy.linalg import expm
 from scipy.special import mathieu_a, mathieu_b
 
 from tests.conftest import TURBINES
-from wtvib import audit, floquet, spec
+from wtvib import audit, floquet, rotor, spec
 
 
 def mathieu(a: float, q: float):  # type: ignore[no-untyped-def]
@@ -88,8 +88,8 @@ def test_band_grows_with_epsilon_and_damping_shrinks_it():
     assert damped is None or (damped[1] - damped[0]) < (narrow[1] - narrow[0])
 
 
-def head(blades: int, hub: str = "hingeless") -> floquet.HeadModel:
-    return floquet.HeadModel(
+def head(blades: int, hub: str = "hingeless") -> rotor.HeadModel:
+    return rotor.HeadModel(
         blades,
         hub,
         1e6,
@@ -123,8 +123,8 @@ def test_period_doubling_hingeless_coefficients_repeat_every_half_revolution():
 
 def test_teetered_hub_decouples_and_hingeless_on_a_flexible_tower_is_hazardous():
     speeds = np.linspace(0.5, 6.0, 120)
-    hingeless = floquet.stability_map(head(2), speeds)
-    teetered = floquet.stability_map(head(2, "teetered"), speeds)
+    hingeless = rotor.stability_map(head(2), speeds)
+    teetered = rotor.stability_map(head(2, "teetered"), speeds)
     assert np.any(hingeless > 1.01)  # parametric instability bands
     assert np.all(teetered <= 1 + 1e-6)
 
