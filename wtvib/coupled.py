@@ -55,7 +55,6 @@ analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9
 """
 
 import functools
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -66,6 +65,20 @@ from numpy.typing import NDArray
 from . import beam, blade, drivetrain, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
+from .kinematics import (
+    GENERATORS,
+    PHI,
+    TX,
+    TY,
+    TZ,
+    UX,
+    UY,
+    Jet,
+    nacelle_rotation,
+    rx,
+    skew,
+    spin,
+)
 from .multiblade import parked, sweep
 from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl
@@ -76,101 +89,11 @@ from .units import rpm_to_rad_s
 Array = NDArray[np.float64]
 Index = NDArray[np.intp]
 
-# Local coordinates of the nacelle and rotor: tower-top displacement (x downwind, y lateral),
-# nacelle rotations about x (roll), y (tilt), z (yaw), drive-train rotation, blade modes.
-UX, UY, TX, TY, TZ, PHI = range(6)
 _RIGID = 6
 
 #: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed, the blade model's top speed too);
 #: 30 points is the Campbell sweep issue 11 sets the cost target for.
 SPEED_SAMPLES = 30
-
-
-def _skew(v: Array) -> Array:
-    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
-
-
-#: Generators of small rotations: G_i·v = e_i × v.
-_G = [_skew(e) for e in np.eye(3)]
-
-
-def _rx(angle: float) -> Array:
-    c, s = math.cos(angle), math.sin(angle)
-    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-
-
-# ---------------------------------------------------------------------------------------
-# Second-order expansions ("jets") of positions in the local coordinates
-
-
-@dataclass(frozen=True)
-class Jet:
-    """A vector field expanded to second order: v ≈ c0 + c1·q + ½ qᵀ·c2·q.
-
-    Shapes: c0 (..., 3), c1 (..., 3, n), c2 (..., 3, n, n) with c2 symmetric in (n, n);
-    c2 None: expanded to first order only (all the parked mass matrix needs).
-    """
-
-    c0: Array
-    c1: Array
-    c2: Array | None
-
-    def rotated(self, r: Array) -> "Jet":
-        """A constant matrix applied: r·v."""
-        return Jet(
-            self.c0 @ r.T,
-            np.moveaxis(np.tensordot(self.c1, r, axes=([-2], [1])), -1, -2),
-            None
-            if self.c2 is None
-            else np.moveaxis(np.tensordot(self.c2, r, axes=([-3], [1])), -1, -3),
-        )
-
-
-@dataclass(frozen=True)
-class MatrixJet:
-    """A 3×3 matrix field expanded to second order (constant over the points)."""
-
-    a0: Array
-    a1: Array
-    a2: Array
-
-    def apply(self, v: Jet) -> Jet:
-        """(A·v) truncated at the order of v (tensordot: BLAS rather than einsum loops)."""
-        c1 = np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2)
-        c1 = c1 + np.tensordot(v.c0, self.a1, axes=([-1], [1]))
-        if v.c2 is None:
-            return Jet(v.c0 @ self.a0.T, c1, None)
-        cross = np.tensordot(v.c1, self.a1, axes=([-2], [1]))  # (..., m, i, n)
-        cross = np.moveaxis(cross, -3, -1)  # (..., i, n, m)
-        return Jet(
-            v.c0 @ self.a0.T,
-            c1,
-            np.moveaxis(np.tensordot(v.c2, self.a0, axes=([-3], [1])), -1, -3)
-            + np.tensordot(v.c0, self.a2, axes=([-1], [1]))
-            + cross
-            + np.swapaxes(cross, -1, -2),
-        )
-
-
-def _nacelle_rotation(n: int) -> MatrixJet:
-    """R(θ) ≈ I + Θ + ½Θ² for the rotation vector θ = (q[TX], q[TY], q[TZ])."""
-    a1 = np.zeros((3, 3, n))
-    a2 = np.zeros((3, 3, n, n))
-    for i in range(3):
-        a1[:, :, TX + i] = _G[i]
-        for j in range(3):
-            a2[:, :, TX + i, TX + j] = 0.5 * (_G[i] @ _G[j] + _G[j] @ _G[i])
-    return MatrixJet(np.eye(3), a1, a2)
-
-
-def _spin(n: int, phi: bool) -> MatrixJet:
-    """Rₓ(φ) ≈ I + φG + ½φ²G² for the drive-train rotation φ = q[PHI] (identity without)."""
-    a1 = np.zeros((3, 3, n))
-    a2 = np.zeros((3, 3, n, n))
-    if phi:
-        a1[:, :, PHI] = _G[0]
-        a2[:, :, PHI, PHI] = _G[0] @ _G[0]
-    return MatrixJet(np.eye(3), a1, a2)
 
 
 # ---------------------------------------------------------------------------------------
@@ -293,8 +216,8 @@ class Model:
         kb = self.k_blades
         n = _RIGID + kb
         r = self.rotor
-        spin = _spin(n, lay.local[0][PHI] >= 0)
-        rot = _nacelle_rotation(n)
+        turn = spin(n, lay.local[0][PHI] >= 0)
+        rot = nacelle_rotation(n)
         c1 = np.zeros((len(r.radius), 3, n))
         c1[:, 0, _RIGID:] = r.flap
         c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
@@ -302,10 +225,10 @@ class Model:
         c0[:, 2] = r.radius
         mm = np.repeat(r.mass, 3)
         first_order = omega == 0.0  # parked: the mass matrix needs first-order terms only
-        b = spin.apply(Jet(c0, c1, None if first_order else np.zeros((len(r.radius), 3, n, n))))
-        g = _G[0]
+        b = turn.apply(Jet(c0, c1, None if first_order else np.zeros((len(r.radius), 3, n, n))))
+        g = GENERATORS[0]
         for j in range(self.blades):
-            rj = _rx(psi + 2 * np.pi * j / self.blades)
+            rj = rx(psi + 2 * np.pi * j / self.blades)
             v = b.rotated(rj)
             p = rot.apply(Jet(v.c0 + self.apex, v.c1, v.c2))
             p1 = p.c1.reshape(-1, n).copy()
@@ -353,7 +276,7 @@ def _rigid_mass(part: Rigid) -> Array:
     """Mass matrix of a rigid part in the local rigid coordinates (u, θ)."""
     jac = np.zeros((3, _RIGID))
     jac[0, UX] = jac[1, UY] = 1.0
-    jac[:, TX : TZ + 1] = -_skew(part.c)  # θ̇ × c = −c × θ̇
+    jac[:, TX : TZ + 1] = -skew(part.c)  # θ̇ × c = −c × θ̇
     m = part.mass * jac.T @ jac
     m[TX : TZ + 1, TX : TZ + 1] += np.diag(part.inertia)
     return m
