@@ -46,4 +46,29 @@ def test_rosco_discon_values(tmp_path):
         "34.64286   ! VS_MinOMSpd - Minimum generator speed [rad/s]\n"
         "122.90967  ! VS_RefSpd - Rated generator speed [rad/s]\n"
     )
-    assert elastodyn._discon(p) == {"VS_MinOMSpd": 34.64286, "VS_RefSpd": 122.90967}
+    assert elastodyn._discon(p) == {"VS_MinOMSpd": (34.64286, 1), "VS_RefSpd": (122.90967, 2)}
+
+
+@pytest.mark.parametrize(
+    ("discon", "message", "line"),
+    [
+        ("abc ! VS_MinOMSpd\n122.9 ! VS_RefSpd\n", "VS_MinOMSpd must be a number", 1),
+        ("inf ! VS_MinOMSpd\n122.9 ! VS_RefSpd\n", "VS_MinOMSpd must be a number", 1),
+        ("200 ! VS_MinOMSpd\n122.9 ! VS_RefSpd\n", "must lie between 0 and the rated", 1),
+    ],
+)
+def test_a_bad_controller_input_is_one_line_with_file_and_line(tmp_path, discon, message, line):
+    (tmp_path / "DISCON.IN").write_text(discon)
+    servo = elastodyn.parse(tmp_path / "s.dat", '5 VSContrl -\n"DISCON.IN" DLL_InFile -\n')
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    with pytest.raises(elastodyn.SpecError, match=message) as err:
+        elastodyn.operating_speed(main, servo)
+    assert err.value.line == line and str(err.value.source).endswith("DISCON.IN")
+
+
+def test_a_switch_must_be_a_whole_number(tmp_path):
+    servo = elastodyn.parse(tmp_path / "s.dat", "2.7 VSContrl - mode\n")
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    with pytest.raises(elastodyn.SpecError, match="VSContrl is a switch") as err:
+        elastodyn.operating_speed(main, servo)
+    assert err.value.line == 1

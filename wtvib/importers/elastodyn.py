@@ -163,24 +163,31 @@ def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str
     if servo is None or "VSContrl" not in servo.values:
         return None
     gb = main.num("GBRatio", default=1.0)
-    mode = int(servo.num("VSContrl"))
+    mode = _switch(servo, "VSContrl")
     rpm_of = 30 / math.pi
     if mode == 5 and "DLL_InFile" in servo.values:
         dll = _file(servo, "DLL_InFile")
         ctrl = _discon(dll)
-        ratio = ctrl.get("WE_GearboxRatio", gb)
+        ratio = ctrl.get("WE_GearboxRatio", (gb, 0))[0]
         low = ctrl.get("VS_MinOMSpd")
         rated = ctrl.get("VS_RefSpd", ctrl.get("PC_RefSpd"))
-        if low and rated and 0 < low < rated:
-            speed = {"min_rpm": low / ratio * rpm_of, "max_rpm": rated / ratio * rpm_of}
-            return speed, (
-                f"Operating range {speed['min_rpm']:.3g}–{speed['max_rpm']:.3g} rpm from "
-                f"{dll.name} (VS_MinOMSpd {low:g}, VS_RefSpd {rated:g} rad/s, gearbox "
-                f"{ratio:g}), named by {servo.path.name}."
+        if low is None or rated is None:
+            return None
+        if not (0 < low[0] < rated[0] and ratio > 0):
+            raise SpecError(
+                f"VS_MinOMSpd {low[0]:g} rad/s must lie between 0 and the rated generator "
+                f"speed {rated[0]:g} rad/s (and the gearbox ratio {ratio:g} above 0)",
+                line=low[1],
+                source=str(dll),
             )
-        return None
+        speed = {"min_rpm": low[0] / ratio * rpm_of, "max_rpm": rated[0] / ratio * rpm_of}
+        return speed, (
+            f"Operating range {speed['min_rpm']:.3g}–{speed['max_rpm']:.3g} rpm from "
+            f"{dll.name} (VS_MinOMSpd {low[0]:g}, VS_RefSpd {rated[0]:g} rad/s, gearbox "
+            f"{ratio:g}), named by {servo.path.name}."
+        )
     if mode == 0:
-        model = int(servo.num("GenModel", default=1))
+        model = _switch(servo, "GenModel", default=1)
         sync = (
             servo.num("SIG_SySp", default=0.0)
             if model == 1
@@ -199,16 +206,39 @@ def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str
     return None
 
 
-def _discon(path: Path) -> dict[str, float]:
-    """Numeric ``value ! Name`` lines of a ROSCO / Bladed-style controller input file."""
-    out: dict[str, float] = {}
-    for line in read_text(path).splitlines():
+#: The controller inputs the operating range is read from (ROSCO's names).
+DISCON_KEYS = ("VS_MinOMSpd", "VS_RefSpd", "PC_RefSpd", "WE_GearboxRatio")
+
+
+def _discon(path: Path) -> dict[str, tuple[float, int]]:
+    """The operating-range inputs of a ROSCO / Bladed-style controller file (``value ! Name``
+    lines): value and line. One of them that is not a finite number is a SpecError naming
+    file and line."""
+    out: dict[str, tuple[float, int]] = {}
+    for number, line in enumerate(read_text(path).splitlines(), start=1):
         value, _, rest = line.partition("!")
-        names = rest.split()
-        parts = value.split()
-        if len(parts) == 1 and names and _NUMBER.match(parts[0]):
-            out.setdefault(names[0], float(parts[0].replace("D", "E")))
+        names, parts = rest.split(), value.split()
+        if len(parts) != 1 or not names or names[0] not in DISCON_KEYS:
+            continue
+        if not _NUMBER.match(parts[0]):
+            raise SpecError(
+                f"{names[0]} must be a number (got {parts[0]!r})", line=number, source=str(path)
+            )
+        out.setdefault(names[0], (float(parts[0].replace("D", "E")), number))
     return out
+
+
+def _switch(deck: Deck, key: str, default: int | None = None) -> int:
+    """An integer switch of a deck (``VSContrl``, ``GenModel``): 2.7 is an error, not 2."""
+    value = deck.num(key, default=None if default is None else float(default))
+    if value != int(value):
+        line = deck.values[key][1] if key in deck.values else None
+        raise SpecError(
+            f"{key} is a switch and must be a whole number (got {value:g})",
+            line=line,
+            source=str(deck.path),
+        )
+    return int(value)
 
 
 def to_spec_data(path: Path, text: str) -> dict[str, Any]:
