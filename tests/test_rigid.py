@@ -31,3 +31,13 @@ def test_a_head_lighter_than_its_rotor_is_refused_with_the_field():
     with pytest.raises(SpecError) as err:
         nacelle(head, np.zeros(3), m_rotor=200.0, j_polar=0.0)
     assert err.value.path == "tower_head.mass_kg"
+
+
+def test_rotor_points_weigh_a_uniform_blade_exactly():
+    """A uniform blade of 100 kg/m over 40 m from a 2 m hub radius: mass 4,000 kg, polar
+    inertia ∫m r² dr = 100·(42³ − 2³)/3 kg·m² — Gauss points integrate it exactly."""
+    from wtvib.rigid import rotor_points
+
+    pts = rotor_points(2.0, np.array([0.0, 40.0]), np.array([100.0, 100.0]))
+    assert pts.mass.sum() == pytest.approx(4000.0)
+    assert pts.polar() == pytest.approx(100 * (42**3 - 2**3) / 3)

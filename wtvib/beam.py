@@ -203,6 +203,11 @@ def chain_dofs(elements: int, per_node: int, picks: tuple[int, ...]) -> NDArray[
     return np.concatenate([first + local, first + per_node + local], axis=1)
 
 
+#: Elements of the default blade mesh (input stations are nodes too; first flap and edge
+#: agree to 1e-5 with a 4× finer mesh, tests/validation/test_structure.py).
+BLADE_ELEMENTS = 30
+
+
 def interpolate(nodes_x: Array, stations: Array, values: Array) -> Array:
     """Property values at arbitrary positions, linear between input stations."""
     return np.interp(nodes_x, stations, values)

@@ -59,9 +59,8 @@ def _given(spec: Spec) -> list[Mode]:
 # The structural model: a cantilevered, twisted beam bending in and out of the rotor plane,
 # stiffened by the centrifugal force.
 
-#: Elements of the default blade mesh (input stations are nodes too; first flap and edge
-#: agree to 1e-5 with a 4× finer mesh, tests/validation/test_structure.py).
-DEFAULT_ELEMENTS = 30
+#: Elements of the default blade mesh (see wtvib.beam.BLADE_ELEMENTS).
+DEFAULT_ELEMENTS = beam.BLADE_ELEMENTS
 #: Rotor speeds at which the rotating modes are computed, 0 … overspeed.
 SPEED_SAMPLES = 13
 

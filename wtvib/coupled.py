@@ -82,7 +82,7 @@ from .kinematics import (
 from .multiblade import parked, sweep
 from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl
-from .rigid import Rigid, nacelle
+from .rigid import Rigid, nacelle, rotor_points
 from .spec import BladeStructure, Spec
 from .units import rpm_to_rad_s
 
@@ -130,26 +130,24 @@ def blade_modes(spec: Spec, count: int) -> BladeModes:
 
 
 def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
-    span = np.asarray(s.span_m, dtype=float)
-    nodes = beam.mesh(span, blade.DEFAULT_ELEMENTS)
+    points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
+    nodes, b = points.nodes, points.basis
     # the tension's geometric stiffness only: the kinematics give the in-plane softening
     k0, geo, _, m0 = blade.blade_parts(s, nodes)
     res = modal.solve(k0, m0, count)
     phi = res.shapes
     full = np.vstack([np.zeros((4, phi.shape[1])), phi])
-    b = beam.basis(nodes)
     n_el = len(nodes) - 1
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
     flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(-1, phi.shape[1])
     edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
-    m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m)) * b.w
     return BladeModes(
         tuple(blade.plane_names(phi)),
         2 * np.pi * res.frequency_hz,
         phi.T @ geo @ phi,
-        (s.hub_radius_m + b.x).ravel(),
-        m.ravel(),
+        points.radius,
+        points.mass,
         flap,
         edge,
     )

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
+from . import beam
 from .errors import SpecError
 
 if TYPE_CHECKING:
@@ -26,6 +27,33 @@ class Rigid:
     mass: float
     c: Array
     inertia: Array
+
+
+@dataclass(frozen=True)
+class RotorPoints:
+    """A blade as point masses at its elements' Gauss points: radius from the rotor axis
+    [m] and mass [kg] of each point — how the coupled model carries the blades, and how the
+    spec's load-time check weighs the rotor, so that both agree."""
+
+    radius: Array
+    mass: Array
+    nodes: Array
+    basis: beam.Basis
+
+    def polar(self) -> float:
+        """One blade's inertia about the rotor axis. [kg·m²]"""
+        return float(np.sum(self.mass * self.radius**2))
+
+
+def rotor_points(
+    hub_radius: float, span: Array, mass_per_length: Array, elements: int = beam.BLADE_ELEMENTS
+) -> RotorPoints:
+    """The blade's Gauss points on the mesh the blade model uses (``beam.mesh``)."""
+    span = np.asarray(span, dtype=float)
+    nodes = beam.mesh(span, elements)
+    b = beam.basis(nodes)
+    m = beam.interpolate(b.x, span, np.asarray(mass_per_length, dtype=float)) * b.w
+    return RotorPoints((hub_radius + b.x).ravel(), m.ravel(), nodes, b)
 
 
 def nacelle(head: "TowerHead", apex: Array, m_rotor: float, j_polar: float) -> Rigid:

@@ -60,10 +60,11 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
         )
     s, head = spec.blade.structure, spec.tower_head
     assert s is not None and head is not None
-    # the rotor's mass and polar inertia (blades by the trapezoid rule, + hub)
-    span, per_length = np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m)
-    m_blade = float(np.trapezoid(per_length, span))
-    j_blade = float(np.trapezoid(per_length * (s.hub_radius_m + span) ** 2, span))
+    from ..rigid import nacelle, rotor_points  # the one place that splits the head
+
+    # the rotor's mass and polar inertia: the blades as the coupled model carries them
+    points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
+    m_blade, j_blade = float(points.mass.sum()), points.polar()
     n = spec.rotor.blades
     chain = spec.drivetrain.chain
     hub = cm.hub_inertia_kgm2
@@ -78,8 +79,6 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
         )
     if hub is None and chain:
         hub = chain[1].inertia_kgm2 if len(chain) > 1 else 0.0
-    from ..rigid import nacelle  # the one place that splits the head
-
     apex = (cm.apex_downwind_m, 0.0, cm.apex_above_top_m)
     try:
         nacelle(head, np.array(apex), n * m_blade + cm.hub_mass_kg, n * j_blade + (hub or 0.0))
