@@ -6,12 +6,13 @@ caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
 """
 
 import functools
+import inspect
 import json
 import sys
 from collections.abc import Callable
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated, TypeVar
+from typing import Annotated, Any, TypeVar
 
 import click
 import typer
@@ -94,9 +95,50 @@ def _options(
     )
 
 
-_state = {"debug": False}
-
 F = TypeVar("F", bound=Callable[..., None])
+
+
+#: The options every command that audits shares (an import's operating range, the rule).
+RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
+    ("rpm", RpmOption, None),
+    ("rated", RatedOption, None),
+    ("head_mass", HeadMassOption, None),
+    ("clamped_base", ClampedOption, False),
+    ("margin", MarginOption, None),
+    ("rule", RuleOption, None),
+    ("preset", PresetOption, None),
+)
+
+
+def _run_options(command: F) -> F:
+    """Give a command the shared run options (RUN_OPTIONS) as one ``options`` argument.
+
+    typer reads a command's parameters from its signature; this rewrites the signature so
+    that the shared options are declared once, here, instead of in every command.
+    """
+    sig = inspect.signature(command)
+    own = [p for name, p in sig.parameters.items() if name != "options"]
+    extra = [
+        inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=kind)
+        for name, kind, default in RUN_OPTIONS
+    ]
+    debug = [p for p in own if p.name == "debug"]
+    rest = [p.replace(kind=inspect.Parameter.KEYWORD_ONLY) for p in own if p.name != "debug"]
+
+    @functools.wraps(command)
+    def wrapper(*args: object, **kwargs: Any) -> None:
+        shared = [kwargs.pop(name) for name, _, _ in RUN_OPTIONS]
+        command(*args, options=_options(*shared), **kwargs)
+
+    wrapper.__signature__ = sig.replace(parameters=[*rest, *extra, *debug])  # type: ignore[attr-defined]
+    wrapper.__annotations__ = {
+        **{k: v for k, v in command.__annotations__.items() if k != "options"},
+        **{name: kind for name, kind, _ in RUN_OPTIONS},
+    }
+    return wrapper  # type: ignore[return-value]
+
+
+_state = {"debug": False}
 
 
 def _user_errors(command: F) -> F:
@@ -142,6 +184,7 @@ def _root(
 
 @app.command()
 @_user_errors
+@_run_options
 def check(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
@@ -149,24 +192,19 @@ def check(
         Path | None,
         typer.Option("--out", "-o", help="Folder for the PNGs (default: next to the spec)."),
     ] = None,
-    margin: MarginOption = None,
-    rule: RuleOption = None,
-    preset: PresetOption = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write Campbell PNGs.")] = True,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
     force: Annotated[
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
     show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
-    rpm: RpmOption = None,
-    rated: RatedOption = None,
-    head_mass: HeadMassOption = None,
-    clamped_base: ClampedOption = False,
     uncertainty: Annotated[
         bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
     ] = False,
     samples: Annotated[int, typer.Option(min=10, help="Monte Carlo samples.")] = 2000,
     seed: Annotated[int, typer.Option(help="Seed of the sampling (reproducible).")] = 0,
+    *,
+    options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG.
@@ -176,7 +214,6 @@ def check(
     from . import audit
     from .outputs import write_atomic
 
-    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
     report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
@@ -208,26 +245,21 @@ def check(
 
 @app.command()
 @_user_errors
+@_run_options
 def report(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
     output: Annotated[Path, typer.Option("--output", "-o", help="PDF file to write.")],
     force: Annotated[
         bool, typer.Option(help="Replace an existing file not written by wtvib.")
     ] = False,
-    rpm: RpmOption = None,
-    rated: RatedOption = None,
-    head_mass: HeadMassOption = None,
-    clamped_base: ClampedOption = False,
-    margin: MarginOption = None,
-    rule: RuleOption = None,
-    preset: PresetOption = None,
+    *,
+    options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Write the PDF audit report of one turbine."""
     from . import batch, pdfreport
     from .outputs import write_atomic
 
-    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     if debug or _state["debug"]:
         item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
     else:
@@ -242,6 +274,7 @@ def report(
 
 @app.command("batch")
 @_user_errors
+@_run_options
 def batch_command(
     inputs: Annotated[list[Path], typer.Argument(help="Spec files or folders (searched).")],
     out: Annotated[
@@ -259,13 +292,8 @@ def batch_command(
     force: Annotated[
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
-    rpm: RpmOption = None,
-    rated: RatedOption = None,
-    head_mass: HeadMassOption = None,
-    clamped_base: ClampedOption = False,
-    margin: MarginOption = None,
-    rule: RuleOption = None,
-    preset: PresetOption = None,
+    *,
+    options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Audit a catalogue: every spec found, in parallel, with a summary and reports.
@@ -276,7 +304,6 @@ def batch_command(
     from . import batch
     from .report import batch_progress, batch_summary
 
-    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     paths = batch.discover(inputs)
     if not paths:
         from .errors import SpecError
@@ -381,25 +408,20 @@ class ScaleWhat(StrEnum):
 
 @app.command()
 @_user_errors
+@_run_options
 def window(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec, windIO or ElastoDyn file.")],
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
     out: Annotated[Path | None, typer.Option("--out", "-o", help="Folder for the PNG.")] = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write the windows PNG.")] = True,
     force: Annotated[bool, typer.Option(help="Replace a file not written by wtvib.")] = False,
-    rpm: RpmOption = None,
-    rated: RatedOption = None,
-    head_mass: HeadMassOption = None,
-    clamped_base: ClampedOption = False,
-    margin: MarginOption = None,
-    rule: RuleOption = None,
-    preset: PresetOption = None,
+    *,
+    options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Allowed frequency windows per subsystem, and where the design sits in them."""
     from . import audit, design
 
-    options = _options(rpm, rated, head_mass, clamped_base, margin, rule, preset)
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
     found = design.all_windows(turbine, report.modes, report.rule)
