@@ -134,3 +134,16 @@ def test_a_chain_without_its_blades_mass_is_one_line(tmp_path):
     result = CliRunner().invoke(app, ["check", str(p), "--no-plot"])
     assert result.exit_code == 2
     assert "drivetrain.chain[0].name:" in result.output and "'blades'" in result.output
+
+
+def test_blade_modes_are_computed_once_per_spec_and_never_shared_with_a_changed_copy(tmp_path):
+    """The coupled model's blade modes are cached on the spec object (no module-level
+    state); a copy with another blade (model_copy shares private state) gets its own."""
+    s = spec.load(write(tmp_path))
+    first = coupled.blade_modes(s, 3)
+    assert coupled.blade_modes(s, 3) is first  # once per spec
+    st = s.blade.structure
+    assert st is not None
+    stiffer = st.model_copy(update={"ei_flap_nm2": [2 * v for v in st.ei_flap_nm2]})
+    other = s.model_copy(update={"blade": s.blade.model_copy(update={"structure": stiffer})})
+    assert coupled.blade_modes(other, 3).omega[0] > first.omega[0]

@@ -113,19 +113,14 @@ class BladeModes:
     edge: Array  # in-plane deflection per mode (direction of rotation), (P, K)
 
 
-#: The last blade evaluated (its structure object, the mode count, the result): one audit
-#: builds the model twice (rotating and parked conditions) from the same blade.
-_LAST_BLADE: list[tuple[object, int, "BladeModes"]] = []
-
-
 def blade_modes(spec: Spec, count: int) -> BladeModes:
-    """The blade's lowest ``count`` cantilever modes (wtvib.blade model) at the Gauss points."""
+    """The blade's lowest ``count`` cantilever modes (wtvib.blade model) at the Gauss points;
+    computed once per spec object (one audit builds the model in several conditions)."""
     s = spec.blade.structure
     assert s is not None
-    if _LAST_BLADE and _LAST_BLADE[0][0] is s and _LAST_BLADE[0][1] == count:
-        return _LAST_BLADE[0][2]
-    out = _blade_modes(s, count)
-    _LAST_BLADE[:] = [(s, count, out)]
+    out: BladeModes = spec.derived(
+        ("coupled.blade_modes", count), s, lambda: _blade_modes(s, count)
+    )
     return out
 
 

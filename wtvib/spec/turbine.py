@@ -1,6 +1,7 @@
 """The whole spec: the coupled-model block, audit settings, and the Spec that holds every part."""
 
-from typing import Literal
+from collections.abc import Callable
+from typing import Any, Literal
 
 from pydantic import Field, PrivateAttr
 
@@ -133,6 +134,19 @@ class Spec(_Strict):
 
     _source_file: str | None = PrivateAttr(None)
     _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
+    # results derived from this spec that several analyses of one audit reuse (the coupled
+    # model's blade modes): they live and die with the spec object, never across specs
+    _derived: dict[tuple[str, int], tuple[object, Any]] = PrivateAttr(default_factory=dict)
+
+    def derived(self, key: tuple[str, int], source: object, make: Callable[[], Any]) -> Any:
+        """A value computed once from the part ``source`` of this spec (``make`` is pure in
+        it). The entry is kept only while ``source`` is the very object it was made from:
+        a copy of the spec with another part (model_copy shares private state) recomputes."""
+        found = self._derived.get(key)
+        if found is None or found[0] is not source:
+            found = (source, make())
+            self._derived[key] = found
+        return found[1]
 
     @property
     def source_file(self) -> str | None:
