@@ -25,7 +25,7 @@ from .floquet import _GAUSS, GROWTH, MAX_STEPS, propagate, steps_for
 from .multiblade import parked
 from .resonance import regime_of
 from .results import Check, Rule
-from .units import rpm_to_rad_s
+from .units import rad_s_to_hz, rpm_to_rad_s
 
 if TYPE_CHECKING:
     from .coupled import Model
@@ -154,7 +154,7 @@ def stability_check(spec: "Spec", model: "Model") -> "Check":
     speed = spec.rotor.speed
     # modes up to three times the highest excitation checked carry the parametric coupling
     # (wtvib's choice of margin, no published figure; it keeps the basis small)
-    cutoff = max(2.0, 3 * spec.audit.harmonics * speed.overspeed / 60)
+    cutoff = max(2.0, 3 * spec.audit.harmonics * float(rad_s_to_hz(rpm_to_rad_s(speed.overspeed))))
     p = periodic(model, cutoff_hz=cutoff)
     low = speed.steady_rpm[0][0]
     rpm = np.unique(

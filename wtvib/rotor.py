@@ -40,9 +40,10 @@ from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import operating_range
 from .floquet import MIN_STEPS, StateMatrix, monodromy_batch, steps_for
 from .resonance import split_by_regime
-from .units import rpm_to_rad_s
+from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
+    from .excitation import OperatingRange
     from .results import Check, Mode
     from .spec import Spec
 
@@ -214,31 +215,39 @@ def head_model(spec: "Spec", modes: "Sequence[Mode]") -> tuple[HeadModel | None,
 
 @dataclass(frozen=True)
 class StabilityMap:
-    speeds_rpm: Array
+    """Largest Floquet multiplier over rotor speed: ``speeds`` [rad/s], ``largest`` (NaN:
+    not analysed) and the ``unstable`` speed bands [rad/s]."""
+
+    speeds: Array
     largest: Array
-    unstable_rpm: tuple[tuple[float, float], ...]
+    unstable: tuple[tuple[float, float], ...]
+
+    @property
+    def speeds_rpm(self) -> Array:
+        return rad_s_to_rpm(self.speeds)
+
+    @property
+    def unstable_rpm(self) -> tuple[tuple[float, float], ...]:
+        return tuple((float(rad_s_to_rpm(a)), float(rad_s_to_rpm(b))) for a, b in self.unstable)
 
 
-def map_for(spec: "Spec", model: HeadModel, points: int = 200) -> StabilityMap:
+def map_for(op: "OperatingRange", model: HeadModel, points: int = 200) -> StabilityMap:
     """|ρ|max from 10 % of the lowest steady speed to 130 % of the overspeed limit."""
-    speed = spec.rotor.speed
-    lo = 0.1 * speed.steady_rpm[0][0]
-    hi = 1.3 * speed.overspeed
-    rpm = np.linspace(lo, hi, points)
-    largest = stability_map(model, rpm_to_rad_s(rpm))
+    w = np.linspace(0.1 * op.lowest, 1.3 * op.overspeed, points)
+    largest = stability_map(model, w)
     bad = largest > 1 + 1e-6
     bands = []
     i = 0
-    while i < len(rpm):
+    while i < len(w):
         if bad[i]:
             j = i
-            while j + 1 < len(rpm) and bad[j + 1]:
+            while j + 1 < len(w) and bad[j + 1]:
                 j += 1
-            bands.append((float(rpm[i]), float(rpm[j])))
+            bands.append((float(w[i]), float(w[j])))
             i = j + 1
         else:
             i += 1
-    return StabilityMap(rpm, largest, tuple(bands))
+    return StabilityMap(w, largest, tuple(bands))
 
 
 def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap | None]":
@@ -275,10 +284,10 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
             "two-bladed rotor not analysed: needs " + ", ".join(missing),
             rule,
         ), None
-    smap = map_for(spec, model)
     speed = spec.rotor.speed
     op = operating_range(speed)
-    unstable = [(float(rpm_to_rad_s(a)), float(rpm_to_rad_s(b))) for a, b in smap.unstable_rpm]
+    smap = map_for(op, model)
+    unstable = list(smap.unstable)
     split = split_by_regime(unstable, op, lambda w: any(a <= w <= b for a, b in unstable))
     steady = split["steady"] + split["quick-pass"]
     transient = split["overspeed"] + split["start-up"]
