@@ -212,3 +212,30 @@ def test_a_floating_windio_turbine_is_refused_unless_clamped_base_is_asked_for()
     assert clamped.exit_code in (0, 1)
     report = json.loads(clamped.stdout)
     assert any("--clamped-base" in w for w in report["warnings"])
+
+
+def test_user_text_is_neither_markup_nor_terminal_control(write_spec):
+    """A name with rich markup ('[/]' crashed the report) and ANSI escapes: printed as
+    written, escapes shown as '?' instead of reaching the terminal."""
+    text = spec_text_named("Turbine [/] \x1b[31mred\x1b[0m [onshore]")
+    result = run("check", str(write_spec(text)), "--no-plot")
+    assert result.exit_code in (0, 1), result.output
+    assert "Turbine [/] ?[31mred?[0m [onshore]" in result.stdout
+    assert "\x1b[31m" not in result.stdout
+
+
+def test_a_malformed_size_limit_is_one_line_not_a_crash(monkeypatch):
+    monkeypatch.setenv("WTVIB_MAX_BYTES", "abc")
+    result = run("check", str(TURBINES / "mod-2.yaml"), "--no-plot")
+    assert result.exit_code == 2
+    assert "WTVIB_MAX_BYTES must be a whole number of bytes" in result.stderr
+
+
+def spec_text_named(name: str) -> str:
+    import json as _json
+
+    from tests.conftest import spec_text
+
+    return spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75").replace(
+        "{name: Test turbine}", "{name: " + _json.dumps(name) + "}"
+    )

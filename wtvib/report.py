@@ -4,6 +4,7 @@ Rendering never decides: everything shown here is read from :class:`~wtvib.audit
 """
 
 import json
+import re
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
@@ -17,6 +18,15 @@ from rich.text import Text
 from .audit import Report
 
 STYLE = {"pass": "green", "info": "cyan", "warn": "yellow", "fail": "bold red"}
+
+#: Control characters (ESC, NUL, …) a user's text must not send to the terminal.
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
+
+
+def _t(value: object, style: str = "") -> Text:
+    """User text as plain rich Text: no markup parsed ("NREL 5-MW [onshore]" stays whole,
+    "[/]" cannot crash), control characters shown as "?" instead of reaching the terminal."""
+    return Text(_CONTROL.sub("?", str(value)), style=style)
 
 
 def to_json(report: Report) -> str:
@@ -48,9 +58,9 @@ def terminal(
         console.print(_uncertainty(data["uncertainty"]))
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
-        console.print(Text(f"  • {line}"))
+        console.print(_t(f"  • {line}"))
     for path in written:
-        console.print(f"[dim]wrote {path}[/dim]")
+        console.print(_t(f"wrote {path}", "dim"))
 
 
 def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
@@ -65,8 +75,8 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     grid = Table.grid(padding=(0, 2))
     grid.add_column(style="bold")
     grid.add_column()
-    grid.add_row("Turbine", t["name"])
-    grid.add_row("File", str(t["source_file"]))
+    grid.add_row("Turbine", _t(t["name"]))
+    grid.add_row("File", _t(t["source_file"]))
     grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")
     grid.add_row("Speed", f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm")
     grid.add_row("Tower class", str(data["tower_class"] or "—"))
@@ -77,7 +87,7 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     )
     grid.add_row("Verdict", Text(verdict.upper(), style=STYLE[verdict]))
     for line in data.get("warnings", []):  # what the audit had to assume, in the headline
-        grid.add_row(Text("Warning", style="yellow"), Text(line, style="yellow"))
+        grid.add_row(Text("Warning", style="yellow"), _t(line, "yellow"))
     return Panel(grid, title="wtvib audit", border_style=STYLE[verdict])
 
 
@@ -90,12 +100,12 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     for m in modes:
         zeta = "—" if m["damping_ratio"] is None else f"{m['damping_ratio']:.3g}"
         f = f"{m['frequency_hz']:.4g}" + (" ↗" if m["speed_dependent"] else "")
-        text = Text(m["description"])
+        text = _t(m["description"])
         if m.get("superseded_by"):  # shown as what it is: the isolated value
             text.append(f" — isolated; judged as {m['superseded_by']}", style="dim")
         elif m.get("regimes") == []:
             text.append(" — reported only (exists in no operating regime)", style="dim")
-        table.add_row(m["id"], text, f, zeta)
+        table.add_row(_t(m["id"]), text, f, zeta)
     return table
 
 
@@ -116,7 +126,11 @@ def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-a
         margin = f"{c['margin']:.1%}" if "margin" in c else ""
         daf = f"{c['daf']:.3g}" if c.get("daf") is not None else ""
         table.add_row(
-            Text(c["status"].upper(), style=STYLE[c["status"]]), c["id"], margin, daf, c["message"]
+            Text(c["status"].upper(), style=STYLE[c["status"]]),
+            _t(c["id"]),
+            margin,
+            daf,
+            _t(c["message"]),
         )
     return Group(table)
 
@@ -159,28 +173,28 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
         if row["verdict"] in ("input-error", "internal-error"):
             errors.append(row)
             kind = row["verdict"].replace("-", " ")
-            table.add_row(verdict, Path(row["file"]).name, "—", f"{kind} (below)", "")
+            table.add_row(verdict, _t(Path(row["file"]).name), "—", f"{kind} (below)", "")
             continue
         margin = "" if row["margin"] is None else f"{row['margin']:.1%}"
         table.add_row(
-            verdict, row["turbine"], row["tower_class"] or "—", row["worst_check"] or "—", margin
+            verdict,
+            _t(row["turbine"]),
+            row["tower_class"] or "—",
+            _t(row["worst_check"] or "—"),
+            margin,
         )
     console.print(table)
     for row in errors:
-        console.print(
-            Text(f"{row['verdict'].replace('-', ' ')}: {row['message']}", style="magenta")
-        )
+        console.print(_t(f"{row['verdict'].replace('-', ' ')}: {row['message']}", "magenta"))
     console.print(", ".join(f"{n} {k}" for k, n in sorted(counts.items())))
     if written:
         folder = {p.parent for p in written}
-        console.print(f"[dim]wrote {len(written)} files to {', '.join(map(str, folder))}[/dim]")
+        console.print(_t(f"wrote {len(written)} files to {', '.join(map(str, folder))}", "dim"))
 
 
 def windows_table(console: Console, doc: dict[str, Any]) -> None:
     """The allowed windows per subsystem and where the design sits."""
-    console.print(
-        Text(f"{doc['turbine']} — allowed frequency windows ({doc['rule']})", style="bold")
-    )
+    console.print(_t(f"{doc['turbine']} — allowed frequency windows ({doc['rule']})", "bold"))
     for sub in doc["subsystems"]:
         table = Table(
             title=f"{sub['subsystem']} ({sub['mode'] or 'no mode'})", title_justify="left"

@@ -18,10 +18,25 @@ FORMAT_VERSION = 1
 
 #: Files larger than this are refused before parsing; override with the environment
 #: variable WTVIB_MAX_BYTES (bytes) or the ``max_bytes`` argument.
-MAX_FILE_BYTES = int(os.environ.get("WTVIB_MAX_BYTES", 20 * 1024 * 1024))
+MAX_FILE_BYTES = 20 * 1024 * 1024
 
 
-def load(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> Spec:
+def max_file_bytes() -> int:
+    """The size limit in force: WTVIB_MAX_BYTES if set (a whole number of bytes), else
+    :data:`MAX_FILE_BYTES`; a malformed setting is one line, not a crash."""
+    raw = os.environ.get("WTVIB_MAX_BYTES")
+    if raw is None:
+        return MAX_FILE_BYTES
+    try:
+        value = int(raw.strip())
+    except ValueError:
+        value = -1
+    if value <= 0:
+        raise SpecError(f"WTVIB_MAX_BYTES must be a whole number of bytes above 0 (got {raw!r})")
+    return value
+
+
+def load(path: str | FsPath, *, max_bytes: int | None = None) -> Spec:
     """Read and validate a wtvib spec file.
 
     Raises
@@ -33,9 +48,10 @@ def load(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> Spec:
     return from_document(parse(text, source=str(path)))
 
 
-def read_text(path: str | FsPath, *, max_bytes: int = MAX_FILE_BYTES) -> str:
+def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
     """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
     p = FsPath(path)
+    max_bytes = max_bytes if max_bytes is not None else max_file_bytes()
     try:
         size = p.stat().st_size
         if size > max_bytes:
