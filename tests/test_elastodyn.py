@@ -72,3 +72,31 @@ def test_a_switch_must_be_a_whole_number(tmp_path):
     with pytest.raises(elastodyn.SpecError, match="VSContrl is a switch") as err:
         elastodyn.operating_speed(main, servo)
     assert err.value.line == 1
+
+
+@pytest.mark.parametrize(
+    ("edit", "message", "line"),
+    [
+        (("5590.87", "abc"), "column TMassDen: 'abc' is not a finite number", 8),
+        (("1.87E+11       1.87E+11", "1.87E+11       1.87E+"), r"column TwSSStif: '1\.87E\+'", 9),
+        (("5590.87", "nan"), "column TMassDen: 'nan' is not a finite number", 8),
+        (("          3   NumBl", "        2.7   NumBl"), "NumBl must be a whole number ≥ 1", 2),
+        (("          3   NumBl", "        nan   NumBl"), "NumBl must be a finite number", 2),
+    ],
+)
+def test_a_hostile_deck_is_one_line_with_file_and_line(tmp_path, edit, message, line):
+    """Issue 19's ElastoDyn classes: a text cell, a file cut off mid-number, NaN, a
+    fractional or NaN blade count — each one line naming file and line, never a traceback
+    or a silently truncated value."""
+    text = DECK.replace(*edit)
+    with pytest.raises(elastodyn.SpecError, match=message) as err:
+        deck = elastodyn.parse(tmp_path / "d.dat", text)
+        deck.whole("NumBl", low=1)
+    assert err.value.line == line
+
+
+def test_a_table_cut_short_is_refused():
+    # the tower table of a truncated file ends at 0.2 of the height: not the whole tower
+    deck = elastodyn.parse(Path("d.dat"), DECK.replace(" 1.0            3235.34", " 0.2 3235.34"))
+    with pytest.raises(elastodyn.SpecError, match="must increase from 0 to 1"):
+        deck.fractions("HtFract")

@@ -13,7 +13,7 @@ OpenFAST ElastoDyn input-file documentation (same keys).
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -32,6 +32,7 @@ class Deck:
     path: Path
     values: dict[str, tuple[str, int]]
     tables: dict[str, tuple[list[str], np.ndarray]]
+    table_lines: dict[str, int] = field(default_factory=dict)  # header line of each table
 
     def text(self, *keys: str) -> str:
         for key in keys:
@@ -44,14 +45,48 @@ class Deck:
             if key in self.values:
                 raw, line = self.values[key]
                 try:
-                    return float(raw.replace("D", "E").replace("d", "e"))
+                    value = float(raw.replace("D", "E").replace("d", "e"))
                 except ValueError:
                     raise SpecError(
                         f"{key} must be a number (got {raw!r})", line=line, source=str(self.path)
                     ) from None
+                if not math.isfinite(value):
+                    raise SpecError(
+                        f"{key} must be a finite number (got {raw!r})",
+                        line=line,
+                        source=str(self.path),
+                    )
+                return value
         if default is not None:
             return default
         raise SpecError(f"{keys[0]} is missing from the deck", source=str(self.path))
+
+    def fractions(self, table: str) -> np.ndarray:
+        """The table's first column (HtFract, BlFract): increasing from 0 to 1 — a table cut
+        short (a truncated file) would otherwise describe part of the member as all of it."""
+        frac = self.column(table, table)
+        ok = len(frac) == 1 or (
+            abs(frac[0]) < 1e-6 and abs(frac[-1] - 1.0) < 1e-6 and np.all(np.diff(frac) > 0)
+        )
+        if not ok:
+            raise SpecError(
+                f"the {table} column must increase from 0 to 1 (it runs "
+                f"{frac[0]:g} … {frac[-1]:g} over {len(frac)} stations: a truncated table?)",
+                line=self.table_lines.get(table),
+                source=str(self.path),
+            )
+        return frac
+
+    def whole(self, key: str, low: int = 0) -> int:
+        """A count (``NumBl``): a whole number ≥ ``low`` — 2.7 blades is an error, not 2."""
+        value = self.num(key)
+        if value != int(value) or value < low:
+            raise SpecError(
+                f"{key} must be a whole number ≥ {low} (got {self.values[key][0]!r})",
+                line=self.values[key][1],
+                source=str(self.path),
+            )
+        return int(value)
 
     def column(self, table: str, *names: str) -> np.ndarray:
         """A table column by any of its names; SpecError naming the file if it is absent."""
@@ -75,6 +110,7 @@ def parse(path: Path, text: str | None = None) -> Deck:
     text = read_text(path) if text is None else text
     values: dict[str, tuple[str, int]] = {}
     tables: dict[str, tuple[list[str], np.ndarray]] = {}
+    table_lines: dict[str, int] = {}
     lines = text.splitlines()
     i = 0
     while i < len(lines):
@@ -91,15 +127,31 @@ def parse(path: Path, text: str | None = None) -> Deck:
                 cells = lines[j].split()
                 if not cells or not _NUMBER.match(cells[0]):
                     break
-                rows.append([float(c.replace("D", "E")) for c in cells[: len(tokens)]])
+                rows.append(_row(path, tokens, cells, j + 1))
                 j += 1
             if rows:
                 width = min(len(r) for r in rows)
                 tables[tokens[0]] = (tokens[:width], np.array([r[:width] for r in rows]))
+                table_lines[tokens[0]] = i + 1
             i = j
             continue
         i += 1
-    return Deck(path, values, tables)
+    return Deck(path, values, tables, table_lines)
+
+
+def _row(path: Path, header: list[str], cells: list[str], line: int) -> list[float]:
+    """One table row as numbers; a cell that is not a finite number names file, line and
+    column (a text cell, a number cut off at the end of a truncated file)."""
+    out = []
+    for name, cell in zip(header, cells, strict=False):
+        text = cell.replace("D", "E").replace("d", "e")
+        value = float(text) if _NUMBER.match(cell) else math.nan
+        if not math.isfinite(value):
+            raise SpecError(
+                f"column {name}: {cell!r} is not a finite number", line=line, source=str(path)
+            )
+        out.append(value)
+    return out
 
 
 def _file(deck: Deck, *keys: str) -> Path:
@@ -248,10 +300,10 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     tower = parse(_file(main, "TwrFile"))
     blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
-    n_blades = int(main.num("NumBl"))
+    n_blades = main.whole("NumBl", low=1)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
 
-    frac = tower.column("HtFract", "HtFract")
+    frac = tower.fractions("HtFract")
     mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
     ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
     ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
@@ -261,7 +313,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
-    span = blade.column("BlFract", "BlFract") * length
+    span = blade.fractions("BlFract") * length
     bmass = blade.column("BlFract", "BMassDen") * blade.num("AdjBlMs", default=1.0)
     flap = blade.column("BlFract", "FlpStff") * blade.num("AdjFlSt", default=1.0)
     edge = blade.column("BlFract", "EdgStff") * blade.num("AdjEdSt", default=1.0)
