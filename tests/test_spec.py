@@ -1,5 +1,7 @@
 """Spec errors: one readable line naming the field and the YAML line, exit code 2."""
 
+import re
+
 import pytest
 from typer.testing import CliRunner
 
@@ -172,3 +174,23 @@ def test_json_schema_accepts_quantities():
     schema = spec.json_schema()
     assert "Quantity" in schema["$defs"]
     assert schema["title"].startswith("wtvib turbine spec")
+
+
+@pytest.mark.parametrize(
+    ("line", "replacement", "message"),
+    [
+        ("  blades: 2", "  blades: true", "rotor.blades: Input should be a valid integer"),
+        ("  blades: 2", "  blades: 2.0", "rotor.blades: Input should be a valid integer"),
+        ("    fixed_rpm: 30", "    fixed_rpm: 1:30", "Input should be a valid number (got '1:30')"),
+        ("    fixed_rpm: 30", '    fixed_rpm: "30"', "Input should be a valid number (got '30')"),
+        ("    fa1: 0.75", "    fa1: 0_75", "got '0_75'"),
+    ],
+)
+def test_numbers_must_be_numbers(write_spec, line, replacement, message):
+    """Issue 19: YAML 1.1 and lax validation made ``blades: true`` one blade, ``1:30`` 90 rpm
+    and "0_5" 5 Hz, and took the text "30" for a number. Strict types refuse each with the
+    field and line."""
+    text = spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    assert line in text
+    with pytest.raises(spec.SpecError, match=re.escape(message) if "(" in message else message):
+        spec.load(write_spec(text.replace(line, replacement)))

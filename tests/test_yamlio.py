@@ -31,3 +31,27 @@ def test_nesting_is_bounded_before_parsing():
     assert yamlio.nesting_depth("a: [[[1]]]\n") >= 3
     with pytest.raises(SpecError):
         yamlio.parse("a: " + "[" * 200 + "]" * 200 + "\n", "t.yaml")
+
+
+def test_plain_scalars_follow_the_yaml_1_2_core_schema():
+    """PyYAML implements YAML 1.1: 1.6e7 was text, 1:30 was 90 (sexagesimal), 0_5 was 5,
+    on was true. The spec reader resolves plain scalars by YAML 1.2's core schema."""
+    doc = yamlio.parse(
+        "a: 1.6e7\nb: 1:30\nc: 0_5\nd: on\ne: true\nf: 12\ng: -.inf\nh: '5'\ni: ~\n", "t.yaml"
+    )
+    assert doc.data == {
+        "a": 1.6e7,
+        "b": "1:30",
+        "c": "0_5",
+        "d": "on",
+        "e": True,
+        "f": 12,
+        "g": float("-inf"),
+        "h": "5",
+        "i": None,
+    }
+
+
+def test_a_number_of_thousands_of_digits_is_refused():
+    with pytest.raises(SpecError, match="digits is not a spec value"):
+        yamlio.parse("a: " + "9" * 5000 + "\n", "t.yaml")

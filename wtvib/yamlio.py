@@ -7,6 +7,7 @@ duplicate keys, object-constructing tags and documents that expand past a node b
 (alias bombs).
 """
 
+import re
 from collections.abc import Hashable
 from dataclasses import dataclass, field
 from typing import Any
@@ -26,6 +27,21 @@ MAX_DEPTH = 64
 
 _MAP_TAG = "tag:yaml.org,2002:map"
 _SEQ_TAG = "tag:yaml.org,2002:seq"
+
+#: Plain scalars as the YAML 1.2 core schema reads them (PyYAML implements YAML 1.1, where
+#: "1.6e7" is text but "1:30" is 90, "0_5" is 5 and "on" is true).
+_CORE_INT = re.compile(r"[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+")
+_CORE_FLOAT = re.compile(
+    r"[-+]?(\.[0-9]+|[0-9]+(\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\.(inf|Inf|INF)|\.(nan|NaN|NAN)"
+)
+_CORE_BOOL = {"true": True, "True": True, "TRUE": True, "false": False, "False": False}
+_CORE_BOOL["FALSE"] = False
+_CORE_NULL = {"", "~", "null", "Null", "NULL"}
+#: The tags PyYAML resolves plain scalars to; anything else on a plain scalar is explicit.
+_IMPLICIT = {f"tag:yaml.org,2002:{t}" for t in ("str", "int", "float", "bool", "null")}
+_IMPLICIT |= {"tag:yaml.org,2002:timestamp", "tag:yaml.org,2002:merge", "tag:yaml.org,2002:value"}
+#: Longer integers are refused: no spec number needs them, and converting one is costly.
+MAX_DIGITS = 30
 
 
 @dataclass(frozen=True)
@@ -191,10 +207,31 @@ class _Walker:
             if node.tag != _SEQ_TAG:
                 raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
             return [self.convert(item, (*path, i)) for i, item in enumerate(node.value)]
+        if isinstance(node, yaml.ScalarNode) and not node.style:  # plain: None or ""
+            return self._plain(node, path)
         try:
             return self.loader.construct_object(node, deep=True)
         except yaml.constructor.ConstructorError as exc:
             raise self.fail(f"not allowed: {exc.problem}", path, node) from None
+
+    def _plain(self, node: yaml.ScalarNode, path: Path) -> Any:
+        """A plain (unquoted) scalar by the YAML 1.2 core schema: 1.6e7 is a number, 1:30,
+        0_5 and on are text (which the spec then refuses where a number or flag goes)."""
+        text = node.value
+        if node.tag not in _IMPLICIT:
+            raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+        if text in _CORE_NULL:
+            return None
+        if text in _CORE_BOOL:
+            return _CORE_BOOL[text]
+        if _CORE_INT.fullmatch(text):
+            if len(text) > MAX_DIGITS:
+                raise self.fail(f"a number of {len(text)} digits is not a spec value", path, node)
+            return int(text, 0) if text[:2] in ("0o", "0x") else int(text)
+        if _CORE_FLOAT.fullmatch(text):
+            low = text.lower()
+            return float(low.replace(".", "") if low.lstrip("+-") in (".inf", ".nan") else text)
+        return text
 
     def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[Hashable, Any]:
         if node.tag != _MAP_TAG:

@@ -8,8 +8,12 @@ from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
 
 class _Strict(BaseModel):
+    """Every spec model: unknown keys refused, immutable, finite, and strict in type — a
+    number must be a number ("110000" is text, ``true`` is not one blade), a count a whole
+    number (issue 19: YAML 1.1 coerced both silently)."""
+
     model_config = ConfigDict(
-        extra="forbid", frozen=True, allow_inf_nan=False, str_strip_whitespace=True
+        extra="forbid", frozen=True, allow_inf_nan=False, str_strip_whitespace=True, strict=True
     )
 
 
@@ -22,7 +26,10 @@ Ratio = Annotated[float, Field(ge=0, lt=1)]
 class Quantity(_Strict):
     """A number with its provenance (accepted wherever a number is)."""
 
-    value: float = Field(description="The number itself, in the unit its key names.")
+    value: int | float = Field(
+        description="The number itself, in the unit its key names (a whole number where a "
+        "count goes: teeth, pole pairs)."
+    )
     provenance: Literal["published", "derived", "representative"] = Field(
         description="published: printed in the source; derived: computed or read from a "
         "statement in the source; representative: a plausible value where the source gives "
