@@ -55,3 +55,16 @@ def test_plain_scalars_follow_the_yaml_1_2_core_schema():
 def test_a_number_of_thousands_of_digits_is_refused():
     with pytest.raises(SpecError, match="digits is not a spec value"):
         yamlio.parse("a: " + "9" * 5000 + "\n", "t.yaml")
+
+
+def test_legal_yaml_stays_legal_and_a_recursive_alias_is_one_line():
+    """Issue 19: a merge key followed by an override was refused as a duplicate, indented
+    comments counted as nesting, and a recursive alias ended in a RecursionError."""
+    doc = yamlio.parse("base: &b {x: 1, y: 2}\nother:\n  <<: *b\n  y: 3\n", "t.yaml")
+    assert doc.data["other"] == {"x": 1, "y": 3}  # the explicit key wins (YAML merge)
+    comments = "a: 1\n" + "".join("  " * i + "# note\n" for i in range(80)) + "b: 2\n"
+    assert yamlio.parse(comments, "t.yaml").data == {"a": 1, "b": 2}
+    with pytest.raises(SpecError, match="recursive alias"):
+        yamlio.parse("notes: &a [*a]\n", "t.yaml")
+    with pytest.raises(SpecError, match="duplicate key 'x'"):
+        yamlio.parse("a: {x: 1, x: 2}\n", "t.yaml")

@@ -123,7 +123,8 @@ def nesting_depth(text: str) -> int:
             flow = max(flow, depth)
         elif ch in "]}":
             depth = max(depth - 1, 0)
-    indents = [len(ln) - len(ln.lstrip(" ")) for ln in text.splitlines() if ln.strip()]
+    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
+    indents = [len(ln) - len(ln.lstrip(" ")) for ln in lines]  # comments do not nest
     levels = len(set(indents))
     return max(flow, levels)
 
@@ -183,6 +184,7 @@ class _Walker:
         self.source = source
         self.lines: dict[Path, int] = {}
         self.count = 0
+        self.active: set[int] = set()  # nodes being converted (a recursive alias revisits one)
 
     def fail(self, message: str, path: Path, node: yaml.Node) -> SpecError:
         return SpecError(
@@ -193,6 +195,15 @@ class _Walker:
         )
 
     def convert(self, node: yaml.Node, path: Path) -> Any:
+        if id(node) in self.active:
+            raise self.fail("a recursive alias: the value contains itself", path, node)
+        self.active.add(id(node))
+        try:
+            return self._convert(node, path)
+        finally:
+            self.active.discard(id(node))
+
+    def _convert(self, node: yaml.Node, path: Path) -> Any:
         self.count += 1
         if self.count > MAX_NODES:
             raise self.fail(
@@ -236,16 +247,24 @@ class _Walker:
     def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[Hashable, Any]:
         if node.tag != _MAP_TAG:
             raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+        own = sum(1 for k, _ in node.value if k.tag != "tag:yaml.org,2002:merge")
         try:
             self.loader.flatten_mapping(node)  # resolves YAML merge keys (<<)
         except yaml.constructor.ConstructorError as exc:
             raise self.fail(f"bad merge key: {exc.problem}", path, node) from None
+        merged = len(node.value) - own  # flatten_mapping puts the merged pairs first
         out: dict[Hashable, Any] = {}
-        for key_node, value_node in node.value:
+        from_merge: set[str] = set()
+        for index, (key_node, value_node) in enumerate(node.value):
             key = self.loader.construct_object(key_node, deep=True)
             if not isinstance(key, str | int | float | bool):
                 raise self.fail("a key must be a plain name", path, key_node)
             key = str(key) if not isinstance(key, str) else key
+            if index < merged:
+                from_merge.add(key)
+            elif key in from_merge:  # an explicit key overrides a merged one (YAML merge)
+                from_merge.discard(key)
+                del out[key]
             if key in out:
                 first = self.lines.get((*path, key))
                 raise self.fail(
