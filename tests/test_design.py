@@ -26,3 +26,18 @@ def test_window_goal_is_the_middle_of_a_closed_window(write_spec):
     assert design.window_goal(found, "soft") == pytest.approx(0.5 * (0.55 + 0.9))
     with pytest.raises(design.DesignError, match="no tower mode"):
         design.window_goal([], "soft")
+
+
+@pytest.mark.parametrize("target", [0.0, -1.0, float("nan"), 1e4])
+def test_size_never_calls_an_unreached_target_a_success(write_spec, target):
+    """Issue 19: --target-hz 0 returned a tower scaled to its buckling limit as a success.
+    A target at or below 0 is refused; one no scaling reaches (10 kHz) is said so."""
+    from tests.validation.test_design import TUBE
+
+    text = (
+        "wtvib: 1\nturbine: {name: tube}\nrotor:\n  blades: 3\n  orientation: upwind\n"
+        "  hub: rigid\n  speed: {fixed_rpm: 15}\n" + TUBE
+    )
+    s = spec.load(write_spec(text))
+    with pytest.raises(design.DesignError, match="above 0 Hz|no wall scaling reaches"):
+        design.size(s, target, "wall")

@@ -308,6 +308,9 @@ def size(spec: Spec, target_hz: float, what: Scale = "wall") -> Sizing:
     than mass), which the bracket search checks. The wall may not exceed half the diameter.
     """
 
+    if not (math.isfinite(target_hz) and target_hz > 0):
+        raise DesignError(f"the target frequency must be above 0 Hz (got {target_hz:g})")
+
     def f(s: float) -> float:
         return first_bending(scaled(spec, s, what)) - target_hz
 
@@ -340,7 +343,15 @@ def size(spec: Spec, target_hz: float, what: Scale = "wall") -> Sizing:
             hi = mid
     s = 0.5 * (lo + hi)
     best = scaled(spec, s, what)
-    return Sizing(s, target_hz, first_bending(best), tower_mass(spec), tower_mass(best), what)
+    reached = first_bending(best)
+    # a bracket that closed on the tower's buckling limit (frequency → 0 under its head's
+    # weight) is no answer: the target must really be reached
+    if abs(reached - target_hz) > 1e-3 * target_hz:
+        raise DesignError(
+            f"no {what} scaling reaches {target_hz:.4g} Hz: the nearest is {reached:.4g} Hz "
+            f"at a scale of {s:.4g} (the tower near its buckling limit)"
+        )
+    return Sizing(s, target_hz, reached, tower_mass(spec), tower_mass(best), what)
 
 
 def window_target(w: Band) -> float:
