@@ -236,7 +236,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         rows += [
             [
                 k.p(m["id"]),
-                k.p(m["description"]),
+                k.p(m["description"] + _judged_note(m)),
                 k.p(f"{m['frequency_hz']:.4g}"),
                 k.p(_num(m["damping_ratio"])),
             ]
@@ -320,7 +320,9 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
     c = next((c for c in checks if c["id"] == "system.coupling"), None)
     if c is None:
         return []
-    rows = [k.header("coupled mode (parked)", "f [Hz]", "isolated subsystem", "f [Hz]", "shift")]
+    rows = [
+        k.header("coupled mode (standstill)", "f [Hz]", "isolated subsystem", "f [Hz]", "shift")
+    ]
     for row in c["modes"]:
         shift = row["change"]
         rows.append(
@@ -337,6 +339,15 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
         k.p(f"Coupled model, {c['condition']}: {'; '.join(c['model'])}.", "BodyText"),
         k.table(rows, [0.34, 0.12, 0.3, 0.12, 0.12]),
     ]
+
+
+def _judged_note(m: Mapping[str, Any]) -> str:
+    """Where a mode is not judged, say so beside it (as the terminal and figures do)."""
+    if m.get("superseded_by"):
+        return f" — isolated value; judged as {m['superseded_by']}"
+    if m.get("regimes") == []:
+        return " — reported only (exists in no operating regime)"
+    return ""
 
 
 def _worst(checks: list[dict[str, Any]]) -> Mapping[str, Any] | None:
