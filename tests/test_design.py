@@ -39,5 +39,5 @@ def test_size_never_calls_an_unreached_target_a_success(write_spec, target):
         "  hub: rigid\n  speed: {fixed_rpm: 15}\n" + TUBE
     )
     s = spec.load(write_spec(text))
-    with pytest.raises(design.DesignError, match="above 0 Hz|no wall scaling reaches"):
+    with pytest.raises(design.DesignError, match=r"above 0 Hz|no wall scaling reaches"):
         design.size(s, target, "wall")

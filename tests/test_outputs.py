@@ -1,5 +1,7 @@
 """Atomic writes that never replace a file wtvib did not write (without --force)."""
 
+from pathlib import Path
+
 import pytest
 
 from wtvib.errors import OutputError
@@ -32,3 +34,16 @@ def test_an_unwritable_folder_is_an_output_error(tmp_path):
     blocker.write_text("x")
     with pytest.raises(OutputError, match="cannot write"):
         write_atomic(blocker / "sub" / "out.json", b"{}")
+
+
+def test_a_device_or_pipe_is_never_an_output(tmp_path):
+    """Issue 19: the overwrite check opened the target for reading (a FIFO blocked forever)
+    and --force replaced a device node."""
+    import os
+
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    assert not is_ours(fifo)  # returns at once, the FIFO is not opened
+    for target in (fifo, Path("/dev/null")):
+        with pytest.raises(OutputError, match="not a regular file"):
+            write_atomic(target, b"x", force=True)

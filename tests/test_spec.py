@@ -1,6 +1,7 @@
 """Spec errors: one readable line naming the field and the YAML line, exit code 2."""
 
 import re
+from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
@@ -194,3 +195,14 @@ def test_numbers_must_be_numbers(write_spec, line, replacement, message):
     assert line in text
     with pytest.raises(spec.SpecError, match=re.escape(message) if "(" in message else message):
         spec.load(write_spec(text.replace(line, replacement)))
+
+
+def test_special_files_are_not_specs(tmp_path):
+    """Issue 19: /dev/zero has size 0 and grew to gigabytes; a FIFO blocked the read."""
+    import os
+
+    fifo = tmp_path / "spec.yaml"
+    os.mkfifo(fifo)
+    for path in (Path("/dev/zero"), fifo):
+        with pytest.raises(SpecError, match="not a regular file"):
+            spec.load(path)

@@ -20,7 +20,10 @@ CSV_HEADER = b"file,turbine,tower_class,verdict,worst_check,margin,message"
 
 
 def is_ours(path: Path) -> bool:
-    """True if ``path`` is a file wtvib wrote earlier."""
+    """True if ``path`` is a file wtvib wrote earlier (only regular files are opened: a FIFO
+    would block the read)."""
+    if not path.is_file():
+        return False
     try:
         with path.open("rb") as fh:
             head = fh.read(65536)
@@ -58,6 +61,8 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         ``force`` is false.
     """
     path = Path(path)
+    if path.exists() and not path.is_file():  # a device, pipe or folder: never replaced
+        raise OutputError(f"{path} is not a regular file; give a file name to write")
     if path.exists() and not force and not is_ours(path):
         raise OutputError(f"{path} exists and was not written by wtvib; use --force to replace it")
     try:

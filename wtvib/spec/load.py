@@ -1,6 +1,7 @@
 """Reading a spec: files (bounded, UTF-8), YAML documents, quantities, validation."""
 
 import os
+import stat
 from pathlib import Path as FsPath
 from typing import Any
 
@@ -53,12 +54,22 @@ def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
     p = FsPath(path)
     max_bytes = max_bytes if max_bytes is not None else max_file_bytes()
     try:
-        size = p.stat().st_size
-        if size > max_bytes:
+        info = p.stat()
+        if stat.S_ISDIR(info.st_mode):
+            raise IsADirectoryError
+        if not stat.S_ISREG(info.st_mode):  # /dev/zero, a FIFO, a socket: size says nothing
             raise SpecError(
-                f"file is {size:,} bytes, over the {max_bytes:,}-byte limit", source=str(p)
+                "not a regular file (a device, pipe or socket); give a file", source=str(p)
             )
-        raw = p.read_bytes()
+        if info.st_size > max_bytes:
+            raise SpecError(
+                f"file is {info.st_size:,} bytes, over the {max_bytes:,}-byte limit",
+                source=str(p),
+            )
+        with p.open("rb") as fh:
+            raw = fh.read(max_bytes + 1)  # a file that grows while read stops at the limit
+        if len(raw) > max_bytes:
+            raise SpecError(f"file is over the {max_bytes:,}-byte limit", source=str(p))
     except IsADirectoryError:
         raise SpecError("is a folder, not a file", source=str(p)) from None
     except FileNotFoundError:
