@@ -206,3 +206,15 @@ def test_special_files_are_not_specs(tmp_path):
     for path in (Path("/dev/zero"), fifo):
         with pytest.raises(SpecError, match="not a regular file"):
             spec.load(path)
+
+
+def test_an_absurd_wind_speed_is_refused(write_spec):
+    # issue 19: max_wind_m_s: 1e9 allocated 24 GB in the stall sweep
+    from tests.conftest import TURBINES
+
+    text = (TURBINES / "stall-rotor-1mw.yaml").read_text()
+    assert "aeroelastic:" in text
+    text = text.replace("max_wind_m_s: {value: 25,", "max_wind_m_s: {value: 1.0e9,", 1)
+    assert "1.0e9" in text
+    with pytest.raises(SpecError, match="max_wind_m_s: Input should be less than or equal to 100"):
+        spec.load(write_spec(text))

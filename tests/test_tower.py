@@ -93,3 +93,33 @@ def test_resonant_class_names_the_speed_where_the_margin_is_violated(shared):
     c = next(c for c in r.checks if c.id == "tower.class")
     assert c.status == "fail" and "within the margin of 3P at 6.9" in c.message
     assert "3P = 0.345 Hz at 6.9 rpm" in c.message and "12.1 rpm" not in c.message
+
+
+def test_a_long_station_table_is_sampled_by_a_bounded_mesh(write_spec):
+    """Issue 19: a 10,000-station tower took 300 s and 15 GB meshed at every station. Past
+    beam.MAX_STATION_NODES stations a uniform mesh samples the table (said in the report):
+    the same taper tabulated at 2,000 and at 11 stations gives one frequency (0.2 %)."""
+    import numpy as np
+
+    from wtvib import audit, beam
+
+    def tube(n: int) -> str:
+        h = np.linspace(0, 90, n)
+        d, t = np.linspace(6, 4, n), np.linspace(0.03, 0.02, n)
+        m = np.pi * (d**2 - (d - 2 * t) ** 2) / 4 * 8500
+        ei = 2.1e11 * np.pi / 64 * (d**4 - (d - 2 * t) ** 4)
+        lst = lambda a: "[" + ", ".join(f"{v:.8g}" for v in a) + "]"  # noqa: E731
+        return (
+            "wtvib: 1\nturbine: {name: t}\nrotor: {blades: 3, orientation: upwind, hub: rigid,"
+            " speed: {min_rpm: 8, max_rpm: 16}}\ntower:\n  distributed:\n"
+            f"    height_m: {lst(h)}\n    mass_per_length_kg_m: {lst(m)}\n"
+            f"    ei_fa_nm2: {lst(ei)}\n    ei_ss_nm2: {lst(ei)}\n"
+            "tower_head: {mass_kg: 200000, cm_above_top_m: 2.0}\n"
+        )
+
+    long = audit.run(spec.load(write_spec(tube(2000), name="long.yaml")))
+    short = audit.run(spec.load(write_spec(tube(11), name="short.yaml")))
+    f_long = next(m for m in long.modes if m.id == "tower.fa1").frequency_hz
+    f_short = next(m for m in short.modes if m.id == "tower.fa1").frequency_hz
+    assert f_long == pytest.approx(f_short, rel=2e-3)
+    assert any(f"uniform mesh of {beam.MAX_STATION_NODES} elements" in a for a in long.assumptions)

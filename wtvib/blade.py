@@ -242,12 +242,20 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """The blade's resonances are judged by the audit; this says how its modes came about."""
-    if spec.blade.structure is None:
+    s = spec.blade.structure
+    if s is None:
         return Analysis()
+    long = beam.resampled(np.asarray(s.span_m))
+    mesh = (
+        f" (a uniform mesh of {beam.MAX_STATION_NODES} elements samples the table's "
+        f"{len(s.span_m):,} stations)"
+        if long
+        else ""
+    )
     return Analysis(
         assumptions=(
             "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with "
             "centrifugal stiffening and in-plane softening at "
-            f"{SPEED_SAMPLES} speeds, followed by MAC.",
+            f"{SPEED_SAMPLES} speeds, followed by MAC{mesh}.",
         )
     )

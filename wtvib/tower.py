@@ -460,8 +460,15 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         else f"base on springs (lateral {t.foundation.lateral_n_m or '—'} N/m, rocking "
         f"{t.foundation.rocking_nm_rad or '—'} N·m/rad)"
     )
+    table = t.sections.height_m if t.sections is not None else t.distributed.height_m  # type: ignore[union-attr]
+    mesh = (
+        f"a uniform mesh of {beam.MAX_STATION_NODES} elements sampling the table's "
+        f"{len(table):,} stations"
+        if beam.resampled(np.asarray(table))
+        else f"{DEFAULT_ELEMENTS} elements"
+    )
     return (
-        f"Tower modes computed: Euler–Bernoulli beam, {DEFAULT_ELEMENTS} elements, from "
+        f"Tower modes computed: Euler–Bernoulli beam, {mesh}, from "
         f"{kind}; {head_text}; foundation: {base}; gravity "
         f"{'included' if t.gravity else 'not included'}.",
     )

@@ -1,10 +1,14 @@
 """The blades: given modes or their structure, and the aeroelastic (typical-section) inputs."""
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
 from .base import BladeModeName, ModeEntry, Positive, Ratio, _increasing, _same_length, _Strict
+
+#: No operating wind is faster (the work of the stall sweep grows with it: 1e9 m/s
+#: allocated 24 GB, issue 19). [m/s]
+MAX_WIND_M_S = 100.0
 
 
 class BladeStructure(_Strict):
@@ -128,6 +132,7 @@ class BladeAeroelastic(_Strict):
     air_density_kg_m3: Positive = Field(1.225, description="Air density ρ. [kg/m³]")
     max_wind_m_s: Positive = Field(
         25.0,
+        le=MAX_WIND_M_S,
         description="Highest wind speed in operation (cut-out), added to the "
         "section's rotational speed at overspeed. [m/s]",
     )
@@ -144,7 +149,9 @@ class BladeAeroelastic(_Strict):
     planform: Planform | None = Field(
         None, description="Chord and twist along the blade; default: the sections (≥ 2)."
     )
-    min_wind_m_s: Positive = Field(4.0, description="Lowest wind speed in operation. [m/s]")
+    min_wind_m_s: Positive = Field(
+        4.0, le=MAX_WIND_M_S, description="Lowest wind speed in operation. [m/s]"
+    )
     axial_induction: float = Field(
         0.0,
         ge=0,
@@ -161,7 +168,7 @@ class BladeAeroelastic(_Strict):
         description="Power regulation: stall (pitch held at all winds) or pitch (the stall "
         "check stops at the rated wind).",
     )
-    rated_wind_m_s: Positive | None = Field(
+    rated_wind_m_s: Annotated[Positive, Field(le=MAX_WIND_M_S)] | None = Field(
         None,
         description="Rated wind speed (pitch regulation); default from the tip-speed ratio. [m/s]",
     )
