@@ -21,7 +21,7 @@ semichords, μ = m/(πρb²), r² = I_θ/(m b²), σ = ω_h/ω_θ.
 """
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import beam
-from .analysis import Analysis, Context, Damping, section_damping
+from .analysis import Analysis, Context, blade_damping, no_modes
 from .errors import SpecError
 from .modal import solve, state_roots
 from .spec import check_section_inertia
@@ -668,12 +668,8 @@ def _finite(x: float) -> float | None:
 NAME = "aeroelastic"
 
 
-def default_damping(spec: "Spec") -> Damping:
-    return section_damping(spec.blade, "blade")
-
-
-def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
-    return []  # it judges the blade's modes
+default_damping = blade_damping
+build_modes = no_modes  # it judges the blade's modes
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:

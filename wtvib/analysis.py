@@ -94,3 +94,13 @@ def section_damping(section: Any, name: str) -> Damping:
     given = "damping_ratio" in section.model_fields_set
     source = f"{name}.damping_ratio (given)" if given else "assumed (no value given)"
     return Damping(float(section.damping_ratio), source, not given)
+
+
+def no_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
+    """``build_modes`` of an analysis that judges other subsystems' modes (it has none)."""
+    return []
+
+
+def blade_damping(spec: "Spec") -> Damping:
+    """``default_damping`` of the analyses that judge the blade's modes."""
+    return section_damping(spec.blade, "blade")

@@ -28,7 +28,7 @@ Hau ch. 6.8.2 and 7.6; DOMAIN.md §3; P. P. Friedmann, Computers & Structures 35
 """
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import modal
-from .analysis import Analysis, Context, Damping, section_damping
+from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .excitation import operating_range
 from .floquet import MIN_STEPS, StateMatrix, monodromy_batch, steps_for
 from .resonance import split_by_regime
@@ -345,8 +345,7 @@ def default_damping(spec: "Spec") -> Damping:
     return section_damping(spec.yaw, "yaw")
 
 
-def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
-    return []  # its modes are the tower's and the yaw system's; it judges their stability
+build_modes = no_modes  # its modes are the tower's and the yaw system's; it judges them
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:

@@ -22,14 +22,13 @@ principal axes is ignored here.
 """
 
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .analysis import Analysis, Context, Damping, section_damping
+from .analysis import Analysis, Context, blade_damping, no_modes
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
@@ -303,12 +302,8 @@ def judge(
 NAME = "stall"
 
 
-def default_damping(spec: "Spec") -> Damping:
-    return section_damping(spec.blade, "blade")
-
-
-def build_modes(spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
-    return []  # it judges the blade's modes
+default_damping = blade_damping
+build_modes = no_modes  # it judges the blade's modes
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
