@@ -43,3 +43,28 @@ def test_a_given_damping_ratio_is_not_called_an_assumption(write_spec):
     # the ζ used is the one shown (JSON and the terminal's column)
     row = next(m for m in given.to_dict()["modes"] if m["id"] == "tower.fa1")
     assert row["damping_ratio"] == 0.02
+
+
+def test_a_number_that_is_not_finite_is_null_with_a_reason(write_spec):
+    """Issue 19: reports carried Infinity/NaN (invalid JSON). Whatever a model returns, the
+    JSON contract writes null for it and names the field in warnings."""
+    import dataclasses
+    import json
+
+    from wtvib.report import to_json
+    from wtvib.results import Check, Rule
+
+    r = audit.run(spec.load(write_spec()))
+    odd = Check(
+        "x.odd",
+        "tower",
+        "info",
+        "m",
+        Rule("r", "s"),
+        {"margin": float("inf"), "series": [1.0, float("nan")]},
+    )
+    r = dataclasses.replace(r, checks=(*r.checks, odd))
+    doc = json.loads(to_json(r), parse_constant=lambda c: (_ for _ in ()).throw(ValueError(c)))
+    row = next(c for c in doc["checks"] if c["id"] == "x.odd")
+    assert row["margin"] is None and row["series"] == [1.0, None]
+    assert any("checks[" in w and "margin" in w for w in doc["warnings"])

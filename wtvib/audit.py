@@ -61,6 +61,21 @@ class Report:
         return "pass" if w == "info" else w
 
     def to_dict(self) -> dict[str, Any]:
+        """The JSON contract: every number finite — one that is not is written as null and
+        named in ``warnings`` (strict JSON has no NaN or Infinity)."""
+        doc = self._document()
+        nonfinite: list[str] = []
+        doc = _finite(doc, "", nonfinite)
+        if nonfinite:
+            doc["warnings"] = [
+                *doc["warnings"],
+                "numbers that came out infinite or undefined, written as null: "
+                + ", ".join(nonfinite[:20])
+                + (f" and {len(nonfinite) - 20} more" if len(nonfinite) > 20 else ""),
+            ]
+        return doc
+
+    def _document(self) -> dict[str, Any]:
         spec = self.spec
         speed = spec.rotor.speed
         rule = self.rule
@@ -105,6 +120,18 @@ class Report:
                 for path, q in sorted(spec.provenance.items())
             },
         }
+
+
+def _finite(value: Any, path: str, bad: list[str]) -> Any:
+    """``value`` with every non-finite float replaced by None, its path recorded."""
+    if isinstance(value, float) and not math.isfinite(value):
+        bad.append(path or "(top)")
+        return None
+    if isinstance(value, dict):
+        return {k: _finite(v, f"{path}.{k}" if path else str(k), bad) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite(v, f"{path}[{i}]", bad) for i, v in enumerate(value)]
+    return value
 
 
 def override(

@@ -264,7 +264,7 @@ def results_json(items: Sequence[Item]) -> str:
             for it in items
         ],
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return json.dumps(doc, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def exit_code(items: Sequence[Item], strict: bool = False) -> int:

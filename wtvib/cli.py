@@ -361,7 +361,7 @@ class _BatchWriter:
 
     def item(self, item: "batch.Item") -> None:  # type: ignore[name-defined]  # noqa: F821
         if item.report is not None:
-            text = json.dumps(item.report, indent=2, ensure_ascii=False) + "\n"
+            text = json.dumps(item.report, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
             self._write(f"{item.key}.json", text.encode())
         for suffix, png in item.pngs.items():
             self._write(f"{item.key}.{suffix}.png", png)

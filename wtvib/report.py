@@ -31,7 +31,7 @@ def _t(value: object, style: str = "") -> Text:
 
 def to_json(report: Report) -> str:
     """The JSON contract: exactly ``report.to_dict()``, stable key order, trailing newline."""
-    return json.dumps(report.to_dict(), indent=2, ensure_ascii=False) + "\n"
+    return json.dumps(report.to_dict(), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def terminal(
