@@ -211,3 +211,12 @@ def test_report_and_batch_take_the_operating_and_rule_options(shared, tmp_path):
     report = json.loads(result.stdout)["results"][0]["report"]
     assert report["operation"]["steady_rpm"] == [[6.9, 12.1]]
     assert report["rule"]["preset"] == "gl2010"
+
+
+def test_output_keys_never_collide_nor_take_the_batch_own_names():
+    """Issue 19: a/t/x.yaml and b/t/x.yaml both wrote t__x.json, y.yaml and y.yml both
+    y.json, and an input named summary.yaml was overwritten by the summary."""
+    paths = [Path(p) for p in ("a/t/x.yaml", "b/t/x.yaml", "y.yaml", "y.yml", "summary.yaml")]
+    keys = batch.output_keys(paths)
+    assert keys == ["a__t__x", "b__t__x", "y__yaml", "y__yml", "input__summary"]
+    assert len(set(keys)) == len(keys) and not set(keys) & batch.RESERVED

@@ -131,10 +131,30 @@ def discover(paths: Iterable[Path]) -> list[Path]:
     return unique
 
 
+#: Stems of the batch's own files: an input may not take them (its report would be
+#: overwritten by the summary).
+RESERVED = frozenset({"summary", "run-metadata", "audit"})
+
+
 def output_keys(paths: Sequence[Path]) -> list[str]:
-    """File stems for the outputs, made unique with the parent folder where stems clash."""
-    stems = [p.stem for p in paths]
-    return [f"{p.parent.name}__{p.stem}" if stems.count(p.stem) > 1 else p.stem for p in paths]
+    """File stems for the outputs, one per input and never one of the batch's own.
+
+    A stem shared by several inputs (``a/x.yaml``, ``b/x.yaml``; ``y.yaml`` and ``y.yml``)
+    takes as many parent folders as make it unique (``a/t/x`` and ``b/t/x`` →
+    ``a__t__x`` and ``b__t__x``), then its suffix; a reserved stem is prefixed ``input__``.
+    """
+    parts = [p.resolve().with_suffix("").parts for p in paths]
+    keys = []
+    for p, mine in zip(paths, parts, strict=True):
+        others = {q for q in parts if q != mine}
+        depth = 1
+        while depth < len(mine) and any(q[-depth:] == mine[-depth:] for q in others):
+            depth += 1
+        key = "__".join(mine[-depth:])
+        if sum(q == mine for q in parts) > 1:  # same path, other suffix (y.yaml, y.yml)
+            key += "__" + p.suffix.lstrip(".")
+        keys.append(f"input__{key}" if key in RESERVED else key)
+    return keys
 
 
 def audit_one(path: str, key: str, plots: bool, options: Options | None = None) -> Item:
