@@ -145,8 +145,11 @@ def test_interrupted_batch_says_what_was_completed(folder, tmp_path, monkeypatch
     result = runner.invoke(app, ["batch", str(folder), "--out", str(out), "--no-plots"])
     assert result.exit_code == 130
     assert "interrupted: 1 of 5 inputs completed" in result.stderr
-    assert not (out / "summary.json").exists()
-    assert list(out.glob(".*.tmp")) == []
+    # issue 19: what is complete is written — its summary says so — and nothing is half
+    summary = json.loads((out / "summary.json").read_text())
+    assert len(summary["turbines"]) == 1
+    assert json.loads((out / "run-metadata.json").read_text())["interrupted"] is True
+    assert list(out.glob(".*.tmp")) == [] and not (out / batch.FolderLock.NAME).exists()
 
 
 def test_a_10_kw_and_a_22_mw_turbine_in_one_batch(tmp_path):
@@ -220,3 +223,20 @@ def test_output_keys_never_collide_nor_take_the_batch_own_names():
     keys = batch.output_keys(paths)
     assert keys == ["a__t__x", "b__t__x", "y__yaml", "y__yml", "input__summary"]
     assert len(set(keys)) == len(keys) and not set(keys) & batch.RESERVED
+
+
+def test_two_batches_never_write_into_one_folder(folder, tmp_path):
+    """Issue 19: two batches into one --out interleaved (the summary disagreed with the
+    reports). A live lock refuses the second; a stale one (its process gone) is taken over."""
+    import os
+
+    out = tmp_path / "audit"
+    out.mkdir()
+    lock = out / batch.FolderLock.NAME
+    lock.write_text(str(os.getpid()))  # a live process holds it
+    result = runner.invoke(app, ["batch", str(folder), "-o", str(out), "--no-plots"])
+    assert result.exit_code == 2 and "another wtvib batch is writing into" in result.stderr
+    lock.write_text("999999999")  # no such process
+    result = runner.invoke(app, ["batch", str(folder), "-o", str(out), "--no-plots"])
+    assert result.exit_code == 2 and (out / "summary.json").exists()  # (2: the corrupt file)
+    assert not lock.exists()  # released

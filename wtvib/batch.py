@@ -7,12 +7,13 @@ and anything else that goes wrong in one turbine (a bug, a crashed worker) an *i
 error* row naming the exception; the rest completes and the summaries are written.
 """
 
+import contextlib
 import csv
 import io
 import json
 import os
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -247,9 +248,83 @@ def run(
                 if on_done:
                     on_done(item)
         except BaseException:
+            # stop now: pending work is cancelled and running workers are ended (their
+            # results would be thrown away), so Ctrl-C or SIGTERM returns at once
+            workers = list((getattr(pool, "_processes", None) or {}).values())
             pool.shutdown(wait=False, cancel_futures=True)
+            for process in workers:
+                process.terminate()
             raise
     return [results[i] for i in range(len(paths))]
+
+
+class FolderLock:
+    """One batch at a time writes into a folder: a lock file made exclusively (O_EXCL),
+    holding the writer's process id; a lock left by a process that is gone is taken over."""
+
+    NAME = ".wtvib-batch.lock"
+
+    def __init__(self, folder: Path) -> None:
+        self.path = Path(folder) / self.NAME
+
+    def __enter__(self) -> "FolderLock":
+        from .errors import OutputError
+
+        try:
+            self.path.parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise OutputError(f"cannot write to {self.path.parent}: {exc.strerror}") from None
+        for _ in range(2):
+            try:
+                fd = os.open(self.path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
+            except FileExistsError:
+                if self._stale():
+                    self.path.unlink(missing_ok=True)
+                    continue
+                raise OutputError(
+                    f"another wtvib batch is writing into {self.path.parent} ({self.path} "
+                    "holds its process id); wait for it, or give another --out"
+                ) from None
+            with os.fdopen(fd, "w") as fh:
+                fh.write(str(os.getpid()))
+            return self
+        raise OutputError(f"cannot lock {self.path.parent}")
+
+    def _stale(self) -> bool:
+        try:
+            pid = int(self.path.read_text().strip() or "0")
+            os.kill(pid, 0)
+        except (ValueError, ProcessLookupError):
+            return True
+        except (OSError, PermissionError):
+            return False
+        return False
+
+    def __exit__(self, *exc: object) -> None:
+        self.path.unlink(missing_ok=True)
+
+
+@contextlib.contextmanager
+def terminate_as_interrupt() -> Iterator[Callable[[], bool]]:
+    """SIGTERM handled like Ctrl-C (pending work cancelled, workers stopped, what is complete
+    written); yields a function telling whether SIGTERM was the cause."""
+    import signal
+
+    seen = {"term": False}
+
+    def handler(signum: int, frame: object) -> None:
+        seen["term"] = True
+        raise KeyboardInterrupt
+
+    try:
+        previous = signal.signal(signal.SIGTERM, handler)
+    except ValueError:  # not the main thread (tests): leave signals alone
+        yield lambda: False
+        return
+    try:
+        yield lambda: seen["term"]
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def summary(items: Sequence[Item]) -> dict[str, Any]:

@@ -5,6 +5,7 @@ Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or o
 caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
 """
 
+import contextlib
 import functools
 import inspect
 import json
@@ -310,26 +311,30 @@ def batch_command(
 
         raise SpecError(f"no spec files ({', '.join(batch.SPEC_SUFFIXES)}) found in the inputs")
     err = Console(stderr=True)
+    lock = batch.FolderLock(out) if out is not None else None
     writer = _BatchWriter(out, force) if out is not None else None
     done: list[batch.Item] = []
-    with batch_progress(err, len(paths)) as advance:
+    with lock or contextlib.nullcontext(), batch.terminate_as_interrupt() as stopped:
+        with batch_progress(err, len(paths)) as advance:
 
-        def on_done(item: batch.Item) -> None:
-            if writer is not None:
-                writer.item(item)
-            done.append(item)
-            advance(item)
+            def on_done(item: batch.Item) -> None:
+                if writer is not None:
+                    writer.item(item)
+                done.append(item)
+                advance(item)
 
-        try:
-            items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done, options=options)
-        except KeyboardInterrupt:
-            err.print(
-                f"interrupted: {len(done)} of {len(paths)} inputs completed; "
-                f"their files are complete, nothing is half-written"
-            )
-            raise typer.Exit(130) from None
-    if writer is not None:
-        writer.finish(items, plots)
+            try:
+                items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done, options=options)
+            except KeyboardInterrupt:
+                if writer is not None:  # the summaries of what was completed
+                    writer.finish(done, plots=False, interrupted=True)
+                err.print(
+                    f"interrupted: {len(done)} of {len(paths)} inputs completed; their files "
+                    "and the summaries of them are written, nothing is half-written"
+                )
+                raise typer.Exit(143 if stopped() else 130) from None
+        if writer is not None:
+            writer.finish(items, plots)
     if format is Format.json:
         sys.stdout.write(batch.results_json(items))
     else:
@@ -367,7 +372,7 @@ class _BatchWriter:
             self._write(f"{item.key}.{suffix}.png", png)
         self.timings.setdefault(item.key, {}).update(item.timings)
 
-    def finish(self, items: list, plots: bool) -> None:  # type: ignore[type-arg]
+    def finish(self, items: list, plots: bool, interrupted: bool = False) -> None:  # type: ignore[type-arg]
         import platform
 
         from . import __version__, batch, pdfreport
@@ -390,6 +395,7 @@ class _BatchWriter:
             "python": platform.python_version(),
             "machine": platform.machine(),
             "timings_s": self.timings,
+            **({"interrupted": True} if interrupted else {}),
         }
         self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
 
