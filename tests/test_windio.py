@@ -30,3 +30,71 @@ def test_a_floating_turbine_is_refused_naming_the_component(tmp_path):
         windio.to_spec_data(tmp_path / "f.yaml", text)
     assert err.value.path == "components.floating_platform"
     assert "--clamped-base" in str(err.value)
+
+
+def iea15() -> dict:  # type: ignore[type-arg]
+    windio_pkg = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    from wtvib.yamlio import parse_plain
+
+    path = Path(windio_pkg.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    return parse_plain(path.read_text()).data  # type: ignore[no-any-return]
+
+
+def load_mutated(tmp_path, doc):  # type: ignore[no-untyped-def]
+    import yaml
+
+    from wtvib import audit, importers
+
+    p = tmp_path / "m.yaml"
+    p.write_text(yaml.safe_dump(doc, sort_keys=False))
+    return audit.run(importers.load(p))
+
+
+@pytest.mark.parametrize(
+    ("mutate", "message"),
+    [
+        (
+            lambda d: d["components"]["tower"]["structure"]["layers"][0].pop("thickness"),
+            r"components\.tower\.structure\.layers\.0\.thickness is missing",
+        ),
+        (
+            lambda d: d["components"]["blade"]["outer_shape"]["twist"].pop("grid"),
+            r"components\.blade\.outer_shape\.twist\.grid is missing",
+        ),
+        (
+            lambda d: d["assembly"].update(number_of_blades=True),
+            "number_of_blades must be a whole number",
+        ),
+        (
+            lambda d: d["components"]["tower"].update(outer_shape=-1.0),
+            "does not have the shape wtvib reads",
+        ),
+    ],
+)
+def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message):
+    """Issue 19: two thirds of ~750 single-key mutations of the IEA-15 2.x example ended in a
+    KeyError, TypeError or IndexError; blades: true was one blade."""
+    doc = iea15()
+    mutate(doc)
+    with pytest.raises(SpecError, match=message):
+        load_mutated(tmp_path, doc)
+
+
+def test_a_negative_component_mass_is_refused(tmp_path):
+    doc = iea15()
+    comps = doc["components"]
+    part = next(
+        (
+            comps[k]
+            for k in ("nacelle", "drivetrain", "hub")
+            if "elastic_properties" in comps.get(k, {})
+        ),
+        None,
+    )
+    if part is None:
+        pytest.skip("the example has no component mass")
+    part["elastic_properties"]["mass"] = -1.0
+    with pytest.raises(SpecError, match=r"elastic_properties\.mass must be a mass ≥ 0 kg"):
+        load_mutated(tmp_path, doc)

@@ -38,6 +38,28 @@ FLOATING = ("floating_platform", "mooring")
 def to_spec_data(
     path: Path, text: str, head_mass: float | None = None, clamped_base: bool = False
 ) -> dict[str, Any]:
+    """wtvib spec data from a windIO turbine file (see :func:`_to_spec_data`).
+
+    A field wtvib needs that is missing is one line naming its path; anything else a
+    hostile file can do to the reader (a number where a mapping goes, tables of unequal
+    length) is one line naming the file and what failed — never a traceback.
+    """
+    try:
+        return _to_spec_data(path, text, head_mass, clamped_base)
+    except SpecError:
+        raise
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
+        detail = f"{type(exc).__name__}: {exc}" if str(exc) else type(exc).__name__
+        raise SpecError(
+            "the windIO file does not have the shape wtvib reads (a field of the wrong type "
+            f"or tables of different lengths): {detail}",
+            source=str(path),
+        ) from None
+
+
+def _to_spec_data(
+    path: Path, text: str, head_mass: float | None = None, clamped_base: bool = False
+) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file.
 
     A floating turbine (``floating_platform``/``mooring`` components) is refused: its tower
@@ -46,7 +68,7 @@ def to_spec_data(
     in its headline.
     """
     doc = parse_plain(text, str(path))
-    d = doc.data
+    d = _paths(doc.data, (), str(path))
     if not isinstance(d, dict) or "components" not in d:
         raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
     floating = [c for c in FLOATING if c in d["components"]]
@@ -71,7 +93,12 @@ def to_spec_data(
         )
     reader = _Reader(d, path, v2)
     asm = d.get("assembly", {})
-    blades = int(asm.get("number_of_blades", 3))
+    blades = asm.get("number_of_blades", 3)
+    if isinstance(blades, bool) or not isinstance(blades, int) or blades < 1:
+        raise SpecError(
+            f"assembly.number_of_blades must be a whole number ≥ 1 (got {blades!r})",
+            source=str(path),
+        )
     speed, speed_note = reader.speed()
     notes.append(speed_note)
     tower, tower_notes = reader.tower()
@@ -120,6 +147,32 @@ def to_spec_data(
     if structure and reader.apex:
         data["coupled"] = {**reader.apex, **reader.hub}
     return data
+
+
+class _Map(dict):  # type: ignore[type-arg]
+    """A windIO mapping that knows where it is: a missing key is one line naming its path."""
+
+    def __init__(self, items: Any, path: tuple[Any, ...], source: str) -> None:
+        super().__init__(items)
+        self.path, self.source = path, source
+
+    def __missing__(self, key: Any) -> Any:
+        where = ".".join(str(p) for p in (*self.path, key))
+        raise SpecError(f"{where} is missing (wtvib reads it)", source=self.source)
+
+    def __deepcopy__(self, memo: dict[int, Any]) -> "_Map":
+        import copy
+
+        return _Map({k: copy.deepcopy(v, memo) for k, v in self.items()}, self.path, self.source)
+
+
+def _paths(node: Any, path: tuple[Any, ...], source: str) -> Any:
+    """The parsed document with every mapping a :class:`_Map` (lists stay lists)."""
+    if isinstance(node, dict):
+        return _Map({k: _paths(v, (*path, k), source) for k, v in node.items()}, path, source)
+    if isinstance(node, list):
+        return [_paths(v, (*path, i), source) for i, v in enumerate(node)]
+    return node
 
 
 def _symmetric(upper: np.ndarray) -> np.ndarray:
@@ -393,6 +446,12 @@ class _Reader:
             if not ep or "mass" not in ep:
                 continue
             m = float(ep["mass"])
+            if not (math.isfinite(m) and m >= 0):
+                raise SpecError(
+                    f"components.{name}.elastic_properties.mass must be a mass ≥ 0 kg "
+                    f"(got {ep['mass']!r})",
+                    source=str(self.path),
+                )
             if name == "hub":
                 x, z = hub_x, hub_z
                 ii = ep.get("inertia", [0, 0, 0])
