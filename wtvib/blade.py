@@ -98,7 +98,9 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     beta = np.radians(beam.interpolate(b.x, span, twist))
     c, sn = np.cos(beta), np.sin(beta)
     ei_ww, ei_vv, ei_wv = ef * c**2 + ee * sn**2, ef * sn**2 + ee * c**2, (ee - ef) * sn * c
+    # a tip mass pulls on every section (its centrifugal force per Ω²: m_tip·R)
     tension = _centrifugal_integral(nodes, m, s.hub_radius_m)
+    tension = tension + s.tip_mass_kg * (s.hub_radius_m + nodes[-1])
     k_ww, geo, mass = beam.bending_elements(b, ei_ww, m, tension)
     k_vv, _, _ = beam.bending_elements(b, ei_vv, m)
     k_wv, _, _ = beam.bending_elements(b, ei_wv, m)
@@ -118,6 +120,10 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     blocks[3, :, :4, :4] = mass
     blocks[3, :, 4:, 4:] = mass
     k0, g, m_v, mm = (beam.assemble(blk, both, size)[4:, 4:] for blk in blocks)
+    if s.tip_mass_kg:  # a point mass on the tip node's deflections (w, v): dofs −4 and −2
+        for dof in (-4, -2):
+            mm[dof, dof] += s.tip_mass_kg
+        m_v[-2, -2] += s.tip_mass_kg
     return k0, g, m_v, mm
 
 

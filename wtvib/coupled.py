@@ -137,12 +137,18 @@ def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
     flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(-1, phi.shape[1])
     edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
+    radius, mass = points.radius, points.mass
+    if s.tip_mass_kg:  # one more point: the tip mass, moving with the tip node
+        radius = np.append(radius, s.hub_radius_m + nodes[-1])
+        mass = np.append(mass, s.tip_mass_kg)
+        flap = np.vstack([flap, full[-4]])
+        edge = np.vstack([edge, full[-2]])
     return BladeModes(
         tuple(blade.plane_names(phi)),
         2 * np.pi * res.frequency_hz,
         phi.T @ geo @ phi,
-        points.radius,
-        points.mass,
+        radius,
+        mass,
         flap,
         edge,
     )

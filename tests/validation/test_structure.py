@@ -301,3 +301,37 @@ def test_windio_six_by_six_condensation_removes_the_offset_term():
     assert flap[0] == pytest.approx(ei_1, rel=1e-9)
     assert edge[0] == pytest.approx(ei_2, rel=1e-9)
     assert tors[0] == pytest.approx(gj, rel=1e-9)
+
+
+def test_blade_tip_mass_against_the_closed_form():
+    """A uniform cantilever carrying a tip mass equal to its own mass: β₁L = 1.247917, so
+    f₁ = β₁²/(2πL²)·√(EI/m) (DOMAIN.md §5; Blevins, Formulas for Natural Frequency and Mode
+    Shape, Table 8-8). Issue 18: ElastoDyn TipMass reached only the head's mass."""
+    import math
+
+    from wtvib import blade as blade_mod
+    from wtvib.spec import BladeStructure
+
+    length, m, ei = 30.0, 200.0, 4.0e9
+    s = BladeStructure(
+        span_m=[0.0, length],
+        mass_per_length_kg_m=[m, m],
+        ei_flap_nm2=[ei, ei],
+        ei_edge_nm2=[4 * ei, 4 * ei],
+        tip_mass_kg=m * length,
+    )
+    names, freqs, _, _ = blade_mod.rotating_modes(s, np.array([0.0]))
+    flap = dict(zip(names, freqs[0], strict=True))["flap1"]
+    exact = 1.247917**2 / (2 * math.pi * length**2) * math.sqrt(ei / m)
+    assert flap == pytest.approx(exact, rel=1e-4)
+    bare = blade_mod.rotating_modes(s.model_copy(update={"tip_mass_kg": 0.0}), np.array([0.0]))
+    assert dict(zip(bare[0], bare[1][0], strict=True))["flap1"] > 1.3 * flap
+
+
+def test_elastodyn_tip_mass_reaches_the_blade(shared):
+    """The AWT-27 deck's 11.34 kg tip brakes are on the blade model (and so in the rotor's
+    polar inertia of the coupled model): the blade frequencies drop (issue 18)."""
+    from wtvib import importers
+
+    s = importers.load(shared / "reference" / "AWT27" / "Test01.fst")
+    assert s.blade.structure is not None and s.blade.structure.tip_mass_kg == pytest.approx(11.34)

@@ -336,6 +336,9 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     }
     if twist is not None:
         structure["twist_deg"] = _list(twist)
+    tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
+    if tip_mass > 0:  # tip brakes: on the blade model too, not only in the head's mass
+        structure["tip_mass_kg"] = tip_mass
     q = _quantity(source)
     data: dict[str, Any] = {
         "wtvib": 1,
@@ -453,7 +456,8 @@ def tower_head(
     z_apex = main.num("Twr2Shft") + over * math.sin(tilt)
     m_blade = float(np.trapezoid(bmass, span)) + main.num("TipMass(1)", "TipMass1", default=0.0)
     radius = hub_r + span
-    j_blades = n_blades * float(np.trapezoid(bmass * radius**2, span))
+    tip = main.num("TipMass(1)", "TipMass1", default=0.0)
+    j_blades = n_blades * (float(np.trapezoid(bmass * radius**2, span)) + tip * radius[-1] ** 2)
     hub_iner = main.num("HubIner", default=0.0)
     parts = [  # name, mass, x, z
         (

@@ -26,6 +26,9 @@ class BladeStructure(_Strict):
     torsional_inertia_kgm: list[Positive] | None = Field(
         None, description="Mass moment of inertia per length about the pitch axis. [kg·m]"
     )
+    tip_mass_kg: float = Field(
+        0.0, ge=0, description="Point mass at the tip (a tip brake: ElastoDyn TipMass). [kg]"
+    )
 
     @model_validator(mode="after")
     def _consistent(self) -> "BladeStructure":

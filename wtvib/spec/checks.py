@@ -64,7 +64,9 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
 
     # the rotor's mass and polar inertia: the blades as the coupled model carries them
     points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
-    m_blade, j_blade = float(points.mass.sum()), points.polar()
+    tip_r = s.hub_radius_m + float(s.span_m[-1])
+    m_blade = float(points.mass.sum()) + s.tip_mass_kg
+    j_blade = points.polar() + s.tip_mass_kg * tip_r**2
     n = spec.rotor.blades
     chain = spec.drivetrain.chain
     hub = cm.hub_inertia_kgm2
