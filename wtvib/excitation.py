@@ -82,10 +82,12 @@ class Excitation:
 
     def blade_harmonic(self, whirl: str | None) -> int | None:
         """The rotating-frame harmonic that drives a fixed-frame rotor mode of ``whirl`` on
-        this fixed-frame line (:func:`driving_harmonic`); None for other lines and modes."""
-        if self.blades is None or whirl is None:
+        this fixed-frame line (:func:`driving_harmonic`); None for other lines, for modes
+        that do not whirl (``fixed``) and for a cyclic pair at rest (two harmonics, k ± 1:
+        :meth:`energy_for` takes the stronger)."""
+        if self.blades is None or whirl in (None, "fixed", "cyclic"):
             return None
-        return driving_harmonic(round(self.order), whirl)
+        return driving_harmonic(round(self.order), str(whirl))
 
     def energy_for(self, whirl: str | None) -> Energy | None:
         """Energy class of this line on a mode of ``whirl``; None: the line cannot drive it."""

@@ -56,6 +56,7 @@ class Finding:
     heavily_damped: bool = False
     energy: str = "dominant"  # the line's energy class on this mode (by its whirl)
     driven_by: str | None = None  # rotating-frame harmonic behind a fixed-frame rotor mode
+    whirl: str | None = None  # the whirl the class was taken from (where the line meets it)
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
         """Status of a violation at one rotor speed, by the regime that speed is in (pass
@@ -148,6 +149,7 @@ def assess(
         heavily_damped,
         line_energy,
         driven_by,
+        whirl,
     )
 
 
@@ -436,7 +438,7 @@ def _span(iv: Interval) -> str:
 
 
 def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
-    whirl = f.mode.whirl.at(f.speed) if f.mode.whirl is not None else None
+    whirl = f.whirl if f.whirl not in (None, "fixed") else None
     name = f"{f.mode.id} ({f.natural_hz:.3g} Hz{', ' + whirl if whirl else ''})"
     need = f"needs {rule.margin:.0%}"
     exc = f.excitation.id
