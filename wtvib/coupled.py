@@ -295,7 +295,15 @@ def _nacelle(spec: Spec, rotor: BladeModes, hub_mass: float, hub_polar: float) -
 
 
 def build(spec: Spec, condition: str) -> Model:
-    """The coupled model of the spec in a generator condition (``locked`` or ``free``)."""
+    """The coupled model of the spec in a generator condition (``locked``, ``free`` or
+    ``grid``); built once per spec object and condition (an audit asks for it for the modes,
+    the coupling table and the two-bladed Floquet check)."""
+    key = ("coupled.model." + condition, 0)
+    model: Model = spec.derived(key, spec, lambda: _build(spec, condition))
+    return model
+
+
+def _build(spec: Spec, condition: str) -> Model:
     cm = spec.coupled
     t = spec.tower
     if cm is None or spec.blade.structure is None or spec.tower_head is None:
