@@ -5,7 +5,18 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from . import aeroelastic, blade, coupled, drivetrain, rotor, stall, tower, yaw
+from . import (
+    aerodamping,
+    aeroelastic,
+    blade,
+    campbell,
+    coupled,
+    drivetrain,
+    rotor,
+    stall,
+    tower,
+    yaw,
+)
 from .analysis import Analysis, Context, Subsystem
 from .excitation import excitations, operating_range
 from .modal import ModalError
@@ -24,6 +35,7 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     drivetrain,
     yaw,
     coupled,
+    aerodamping,
     rotor,
     aeroelastic,
     stall,
@@ -59,6 +71,18 @@ class Report:
         """Worst check status; ``info`` counts as a pass."""
         w = worst([c.status for c in self.checks])
         return "pass" if w == "info" else w
+
+    @property
+    def campbell(self) -> "campbell.Campbell":
+        """The sampled curves of every speed-dependent judged mode (README: the JSON
+        contract's ``campbell``)."""
+        return campbell.build(self.modes, operating_range(self.spec.rotor.speed))
+
+    @property
+    def damping_model(self) -> str:
+        """How the modes were damped: ``aeroelastic`` (aerodynamics at the operating points)
+        or ``structural`` (given or assumed ratios only)."""
+        return "aeroelastic" if any(m.operating for m in self.modes) else "structural"
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON contract: every number finite — one that is not is written as null and
@@ -105,7 +129,9 @@ class Report:
                 "harmonics": self.settings.harmonics,
                 "severity": self.settings.severities(),
             },
+            "damping": self.damping_model,
             "modes": [m.to_dict() for m in self.modes],
+            "campbell": self.campbell.to_dict(),
             "checks": [c.to_dict() for c in self.checks],
             "assumptions": list(self.assumptions),
             "warnings": list(self.warnings),
@@ -192,11 +218,13 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
     for sub in SUBSYSTEMS:
         built[sub.NAME] = sub.build_modes(spec, built)
     built = _one_truth_per_mode(spec, built)
+    # the aerodynamics (where given) damp every judged mode at the operating points
+    built, in_operation = aerodamping.in_operation(spec, built, settings.heavy_damping_ratio)
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
     results: dict[str, Mapping[str, Any]] = {}
-    assumptions: list[str] = []
+    assumptions: list[str] = list(in_operation.assumptions) if in_operation else []
     for sub in SUBSYSTEMS:
         found = assess_all(
             built[sub.NAME],

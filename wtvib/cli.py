@@ -204,6 +204,14 @@ def check(
     ] = False,
     samples: Annotated[int, typer.Option(min=10, help="Monte Carlo samples.")] = 2000,
     seed: Annotated[int, typer.Option(help="Seed of the sampling (reproducible).")] = 0,
+    campbell_csv: Annotated[
+        Path | None,
+        typer.Option(
+            "--campbell-csv",
+            help="Write the Campbell data (frequency and damping of every speed-dependent "
+            "mode per operating point) as CSV.",
+        ),
+    ] = None,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
@@ -226,6 +234,9 @@ def check(
         for suffix, fig in diagrams(report).items():
             path = folder / f"{spec_file.stem}.{suffix}.png"
             written.append(write_atomic(path, png_bytes(fig), force=force))
+    if campbell_csv is not None:
+        data = report.campbell.to_csv().encode()
+        written.append(write_atomic(campbell_csv, data, force=force))
     if format is Format.json:
         from .report import to_json
 

@@ -111,6 +111,7 @@ class BladeModes:
     mass: Array  # point masses, (P,)
     flap: Array  # out-of-plane deflection per mode, (P, K)
     edge: Array  # in-plane deflection per mode (direction of rotation), (P, K)
+    length: Array  # blade length each point stands for (Gauss weight; 0: the tip mass), (P,)
 
 
 def blade_modes(spec: Spec, count: int) -> BladeModes:
@@ -138,9 +139,11 @@ def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
     flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(-1, phi.shape[1])
     edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
     radius, mass = points.radius, points.mass
+    length = np.asarray(b.w, float).ravel()
     if s.tip_mass_kg:  # one more point: the tip mass, moving with the tip node
         radius = np.append(radius, s.hub_radius_m + nodes[-1])
         mass = np.append(mass, s.tip_mass_kg)
+        length = np.append(length, 0.0)
         flap = np.vstack([flap, full[-4]])
         edge = np.vstack([edge, full[-2]])
     return BladeModes(
@@ -151,6 +154,7 @@ def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
         mass,
         flap,
         edge,
+        length,
     )
 
 
@@ -258,6 +262,43 @@ class Model:
         c_hub[TZ, TY] = -0.5 * self.hub_polar * omega
         self._scatter(d, c_hub - c_hub.T, 0, rigid_only=True)
         return m, d, k
+
+    @functools.cached_property
+    def section_velocity(self) -> Array:
+        """(blades, P, 2, n): each blade point's velocity out of the rotor plane (downwind)
+        and in it (direction of rotation) per rate of the blade's local coordinates, at
+        ψ = 0 — first order, the directions those of the undeflected rotor (the section
+        velocities an aerodynamic damping acts on)."""
+        kb = self.k_blades
+        n = _RIGID + kb
+        r = self.rotor
+        turn = spin(n, self.layout.local[0][PHI] >= 0)
+        rot = nacelle_rotation(n)
+        c1 = np.zeros((len(r.radius), 3, n))
+        c1[:, 0, _RIGID:] = r.flap
+        c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
+        c0 = np.zeros((len(r.radius), 3))
+        c0[:, 2] = r.radius
+        b = turn.apply(Jet(c0, c1, None))
+        out = []
+        for j in range(self.blades):
+            rj = rx(2 * np.pi * j / self.blades)
+            v = b.rotated(rj)
+            p1 = rot.apply(Jet(v.c0 + self.apex, v.c1, None)).c1.copy()
+            p1[:, 0, UX] += 1.0
+            p1[:, 1, UY] += 1.0
+            tangent = rj @ np.array([0.0, -1.0, 0.0])
+            out.append(np.stack([p1[:, 0, :], np.einsum("i,pin->pn", tangent, p1)], axis=1))
+        return np.stack(out)
+
+    def section_damping(self, c: Array) -> Array:
+        """The damping matrix (global coordinates, ψ = 0) of section forces −c·v per blade
+        point: ``c`` (P, 2, 2) [N·s/m] acts on the (out-of-plane, in-plane) velocity."""
+        d = np.zeros((self.layout.size, self.layout.size))
+        for j, jac in enumerate(self.section_velocity):
+            cj = np.einsum("pab,pbk->pak", c, jac).reshape(-1, jac.shape[-1])
+            self._scatter(d, jac.reshape(-1, jac.shape[-1]).T @ cj, j)
+        return d
 
     def _scatter(
         self, target: Array, local: Array, blade_no: int, rigid_only: bool = False

@@ -79,6 +79,14 @@ def fixed_frame(model: "Model", omega: float, psi: float = 0.0) -> tuple[Array, 
     )
 
 
+def fixed_frame_damping(model: "Model", d: Array, omega: float) -> tuple[Array, Array]:
+    """A damping matrix ``d`` of the periodic equations (at ψ = 0) in multi-blade
+    coordinates: Tᵀ·D·T to the damping and Ω·Tᵀ·D·T′ to the stiffness (q̇ = T·ż + Ω·T′·z),
+    exact for an isotropic rotor of three or more blades."""
+    t, t1, _ = _transform(model, 0.0)
+    return t.T @ d @ t, omega * (t.T @ d @ t1)
+
+
 def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
     lay = model.layout
     b, b1, b2, _ = coleman(model.blades, psi)
@@ -118,14 +126,27 @@ def parked(model: "Model", psi: float = 0.0, count: int = MODES_KEPT) -> SystemM
     return SystemModes(f, shapes.astype(complex), *_name(model, m, shapes.astype(complex)))
 
 
-def rotating(model: "Model", omega: float, count: int = MODES_KEPT) -> SystemModes:
-    """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3)."""
+def rotating(
+    model: "Model",
+    omega: float,
+    count: int = MODES_KEPT,
+    extra: tuple[Array, Array] | None = None,
+    named: bool = True,
+) -> SystemModes:
+    """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3);
+    ``extra`` adds a damping and a stiffness matrix in multi-blade coordinates (the
+    aerodynamic ones of an operating point, :func:`fixed_frame_damping`)."""
     m, d0, d1, k0, k2 = model.multiblade
+    d, k = d0 + omega * d1, k0 + omega**2 * k2
+    if extra is not None:
+        d, k = d + extra[0], k + extra[1]
     # modes below 1 mHz are the rotor turning on a free generator, not oscillations
-    lam, vec = modal.oscillations(k0 + omega**2 * k2, m, d0 + omega * d1, floor=2 * np.pi * 1e-3)
+    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3)
     lam, shapes = lam[:count], vec[:, :count]
     f = np.abs(lam) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
     zeta = -lam.real / np.abs(lam)
+    if not named:  # followed by shape only (the names come from where the path starts)
+        return SystemModes(f, shapes, (), (), (), (), damping_ratio=zeta)
     return SystemModes(f, shapes, *_name(model, m, shapes), damping_ratio=zeta)
 
 
@@ -149,11 +170,14 @@ def _groups(model: "Model") -> dict[str, Index]:
 
 
 def shares(
-    model: "Model", m: Array, x: NDArray[np.complex128]
+    model: "Model",
+    m: Array,
+    x: NDArray[np.complex128],
+    groups: dict[str, Index] | None = None,
 ) -> tuple[dict[str, float], dict[str, float]]:
     """A mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed, normalised),
     and the same with each cyclic cos/sin pair merged into one ``cyclic`` group."""
-    groups = _groups(model)
+    groups = _groups(model) if groups is None else groups
     energy = np.abs(np.real(np.conj(x) * (m @ x)))
     total = float(energy.sum()) or 1.0
     share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
@@ -177,7 +201,7 @@ def _name(
     counters: dict[str, int] = {}
     for j in range(shapes.shape[1]):
         x = shapes[:, j]
-        share, merged = shares(model, m, x)
+        share, merged = shares(model, m, x, groups)
         top = max(merged, key=lambda g: merged[g])
         name, text, whirl = _mode_name(top, share, x, groups, counters)
         if name in names:
@@ -255,28 +279,70 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
     if model.blades < 3:
         raise ValueError("the rotating sweep needs three or more blades (MBC)")
-    first = rotating(model, float(speeds[0]), count)
+    path = track(model, [(float(om), None) for om in speeds], count)
+    rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
+    texts = tuple(
+        f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
+        for a, b in zip(path.first.descriptions, path.last, strict=True)
+    )
+    assert path.first.damping_ratio is not None
+    by_mode = tuple(tuple(row[j] for row in path.whirl) for j in range(path.kept))
+    return Sweep(
+        np.asarray(speeds, float),
+        path.frequency_hz,
+        path.first.names,
+        texts,
+        path.first.damping_ratio,
+        by_mode,
+    )
+
+
+@dataclass(frozen=True)
+class Path:
+    """Modes along a path of rotor speeds (and added matrices), followed by shape from the
+    first point's modes."""
+
+    first: SystemModes  # at the first point: the names
+    frequency_hz: Array  # (points, modes): |λ|/2π
+    damping_ratio: Array  # (points, modes): −Re λ/|λ|
+    last: tuple[str, ...]  # descriptions at the last point
+    whirl: tuple[tuple[str | None, ...], ...]  # (points, modes)
+
+    @property
+    def kept(self) -> int:
+        return len(self.first.frequency_hz)
+
+
+def track(
+    model: "Model",
+    points: list[tuple[float, tuple[Array, Array] | None]],
+    count: int = MODES_KEPT,
+    named: bool = True,
+) -> Path:
+    """Modes at each (Ω, extra matrices) point, each followed from the point before by
+    mass-weighted MAC (modal.track); ``named``: whirl and description at every point (else
+    at the first only, the rest empty)."""
+    first = rotating(model, points[0][0], count, points[0][1])
     kept = len(first.frequency_hz)
     # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
     # would otherwise weigh by their units, not by their share of the motion
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
-    freqs = np.empty((len(speeds), kept))
+    freqs = np.empty((len(points), kept))
+    zetas = np.empty((len(points), kept))
     freqs[0] = first.frequency_hz
+    assert first.damping_ratio is not None
+    zetas[0] = first.damping_ratio
     shapes = first.shapes
     last = first.descriptions
     whirl = [list(first.whirl)]
-    for i, om in enumerate(speeds[1:], start=1):
-        cur = rotating(model, float(om), kept + 4)
+    for i, (om, extra) in enumerate(points[1:], start=1):
+        cur = rotating(model, om, kept + 4, extra, named)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
+        assert cur.damping_ratio is not None
+        zetas[i] = cur.damping_ratio[order]
         shapes = cur.shapes[:, order]
-        last = tuple(cur.descriptions[o] for o in order)
-        whirl.append([cur.whirl[o] for o in order])
-    rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
-    texts = tuple(
-        f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
-        for a, b in zip(first.descriptions, last, strict=True)
-    )
-    assert first.damping_ratio is not None
-    by_mode = tuple(tuple(row[j] for row in whirl) for j in range(kept))
-    return Sweep(np.asarray(speeds, float), freqs, first.names, texts, first.damping_ratio, by_mode)
+        if named:
+            last = tuple(cur.descriptions[o] for o in order)
+            whirl.append([cur.whirl[o] for o in order])
+    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl))

@@ -2,8 +2,9 @@
 
 A file is written to a temporary name in the target folder and renamed over the target, so
 an interrupted run never leaves a half-written file. An existing file is replaced only if
-wtvib wrote it (a PNG whose ``Software`` text chunk names wtvib, a PDF whose creator is wtvib, a
-JSON document with a ``wtvib-`` schema, the summary CSV) or the caller passes ``force``.
+wtvib wrote it (a PNG whose ``Software`` text chunk names wtvib, a PDF whose creator is
+wtvib, a JSON document with a ``wtvib-`` schema, the summary and Campbell CSVs) or the
+caller passes ``force``.
 """
 
 import mmap
@@ -17,6 +18,8 @@ from .errors import OutputError
 SOFTWARE_TAG = "wtvib"
 #: First line of the batch summary CSV (recognised as a wtvib output).
 CSV_HEADER = b"file,turbine,tower_class,verdict,worst_check,margin,message"
+#: First line of the Campbell data CSV (``check --campbell-csv``).
+CAMPBELL_HEADER = b"mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
 
 
 def is_ours(path: Path) -> bool:
@@ -34,7 +37,7 @@ def is_ours(path: Path) -> bool:
         return False
     if head.startswith(b"\x89PNG\r\n\x1a\n"):
         return _png_software(head).startswith(SOFTWARE_TAG)
-    return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER))
+    return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER, CAMPBELL_HEADER))
 
 
 def _png_software(data: bytes) -> str:

@@ -80,6 +80,23 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")
     grid.add_row("Speed", f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm")
     grid.add_row("Tower class", str(data["tower_class"] or "—"))
+    camp = data.get("campbell", {})
+    if data.get("damping") == "aeroelastic" and camp.get("wind_m_s"):
+        winds = camp["wind_m_s"]
+        grid.add_row(
+            "Damping",
+            f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "
+            "(quasi-steady, aerodynamic + structural)",
+        )
+    else:
+        grid.add_row(
+            "Damping",
+            Text(
+                "structural only — no aerodynamics: flapwise resonances judged without "
+                "their aerodynamic damping",
+                style="yellow",
+            ),
+        )
     grid.add_row(
         "Rule",
         f"{data['rule']['kind']} margin {data['rule']['margin']:.0%} "
@@ -97,15 +114,20 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     table.add_column("description")
     table.add_column("f [Hz]", justify="right")
     table.add_column("ζ", justify="right")
+    operating = any(m.get("damping_in_operation") for m in modes)
+    if operating:
+        table.add_column("ζ min in op.", justify="right")
     for m in modes:
         zeta = "—" if m["damping_ratio"] is None else f"{m['damping_ratio']:.3g}"
+        op = m.get("damping_in_operation")
+        low = f"{op['lowest_total_damping_ratio']:.3g} @ {op['at_wind_m_s']:.3g} m/s" if op else "—"
         f = f"{m['frequency_hz']:.4g}" + (" ↗" if m["speed_dependent"] else "")
         text = _t(m["description"])
         if m.get("superseded_by"):  # shown as what it is: the isolated value
             text.append(f" — isolated; judged as {m['superseded_by']}", style="dim")
         elif m.get("regimes") == []:
             text.append(" — reported only (exists in no operating regime)", style="dim")
-        table.add_row(_t(m["id"]), text, f, zeta)
+        table.add_row(_t(m["id"]), text, f, zeta, *([low] if operating else []))
     return table
 
 

@@ -57,6 +57,9 @@ class Finding:
     energy: str = "dominant"  # the line's energy class on this mode (by its whirl)
     driven_by: str | None = None  # rotating-frame harmonic behind a fixed-frame rotor mode
     whirl: str | None = None  # the whirl the class was taken from (where the line meets it)
+    damping: float = 0.0  # the damping ratio the DAF was computed with (at ``speed``)
+    damping_in_operation: bool = False  # ζ from the aerodynamics at the operating points
+    damping_met: float = 0.0  # the damping ratio where the line meets the mode (heavy or not)
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
         """Status of a violation at one rotor speed, by the regime that speed is in (pass
@@ -116,7 +119,10 @@ def assess(
         "overspeed": _MILDER[energy],
         "start-up": "info" if line_energy != "minor" and energy != "pass" else "pass",
     }
-    heavily_damped = mode.damping_ratio is not None and mode.damping_ratio >= heavy_damping
+    # the damping where the line meets the mode (in operation: the aerodynamics' lowest
+    # at that rotor speed, structural included)
+    zeta_met = mode.damping_at(at, default_damping)
+    heavily_damped = zeta_met >= heavy_damping
     if heavily_damped:
         # no resonant peak to speak of: report, do not judge (see AuditSettings)
         regime_status = {k: ("info" if v != "pass" else v) for k, v in regime_status.items()}
@@ -130,8 +136,8 @@ def assess(
     w = np.array([speed])
     f_e = float(exc.frequency_hz(w)[0])
     f_n = float(mode.frequency_at(w)[0])
-    zeta = mode.damping_ratio if mode.damping_ratio is not None else default_damping
-    daf = float(dynamic_amplification(f_e / f_n, zeta)) if f_n > 0 else float("inf")
+    zeta = mode.damping_at(speed, default_damping)
+    daf = float(dynamic_amplification(f_e / f_n, max(zeta, 0.0))) if f_n > 0 else float("inf")
     return Finding(
         mode,
         exc,
@@ -150,6 +156,9 @@ def assess(
         line_energy,
         driven_by,
         whirl,
+        zeta,
+        mode.operating is not None,
+        zeta_met,
     )
 
 
@@ -392,6 +401,11 @@ def _check(
         "speed_rpm": _r(float(rad_s_to_rpm(gov.speed))),
         "excitation_hz": _r(gov.excitation_hz),
         "daf": _r(gov.daf) if np.isfinite(gov.daf) else None,
+        **(
+            {"damping_ratio": _r(gov.damping), "damping": "in operation"}
+            if gov.damping_in_operation
+            else {}
+        ),
         "regime": gov.regime,
         "energy_on_mode": gov.energy,
         **({"driven_by": gov.driven_by} if gov.driven_by else {}),
@@ -455,14 +469,16 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
     spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
     if f.heavily_damped and f.regime not in (None, "start-up"):
-        zeta = f.mode.damping_ratio or 0.0
+        where = " in operation, aerodynamic + structural" if f.damping_in_operation else ""
         return (
             f"{name} within the margin of {exc} ({f.regime}, {spans}) but heavily damped "
-            f"(ζ = {zeta:.2f}): no resonant peak, info"
+            f"(ζ = {f.damping_met:.2f}{where}): no resonant peak, info"
         )
     if f.regime == "steady":
         text = f"{name} within the margin of {exc} in steady operation at {spans}: "
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
+        if f.damping_in_operation:
+            text += f" (ζ = {f.damping:.3f} in operation, aerodynamic + structural)"
         blades = f.excitation.blades
         if f.driven_by and blades and round(f.excitation.order) % blades:
             text += (

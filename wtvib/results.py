@@ -84,6 +84,36 @@ class Whirl:
 
 
 @dataclass(frozen=True)
+class OperatingDamping:
+    """A mode's damping at the steady operating points (aerodynamic + structural).
+
+    Points in wind order; ``total`` = ``aero`` + the mode's structural damping ratio.
+    """
+
+    wind: tuple[float, ...]  # [m/s]
+    omega: tuple[float, ...]  # rotor speed [rad/s]
+    pitch_deg: tuple[float, ...]
+    aero: tuple[float, ...]  # aerodynamic damping ratio ζ_a
+    total: tuple[float, ...]  # ζ_a + structural
+    source: str  # the model it came from
+
+    def at(self, omega: float) -> float:
+        """The lowest total damping of the operating points at rotor speed Ω [rad/s]
+        (several winds share the rated speed), linear between speeds, held beyond them."""
+        om = np.round(np.asarray(self.omega), 9)
+        speeds = np.unique(om)
+        low = np.array(
+            [min(t for t, o in zip(self.total, om, strict=True) if o == s) for s in speeds]
+        )
+        return float(np.interp(omega, speeds, low))
+
+    @property
+    def lowest(self) -> int:
+        """Index of the operating point with the lowest total damping."""
+        return int(np.argmin(self.total))
+
+
+@dataclass(frozen=True)
 class Mode:
     """A natural mode of one subsystem.
 
@@ -105,6 +135,14 @@ class Mode:
     damping_source: str | None = None  # where damping_ratio came from when not the mode's own
     origin: str = "given"  # given (in the spec), computed (a subsystem model) or coupled
     replaces: str | None = None  # the isolated mode a coupled mode stands for (if it exists)
+    operating: OperatingDamping | None = field(default=None, compare=False)  # in operation
+
+    def damping_at(self, omega: float, default: float) -> float:
+        """The damping ratio judged at rotor speed Ω [rad/s]: in operation where known (the
+        aerodynamics), else the mode's own or the default."""
+        if self.operating is not None:
+            return self.operating.at(omega)
+        return self.damping_ratio if self.damping_ratio is not None else default
 
     def frequency_at(self, omega: ArrayLike) -> NDArray[np.float64]:
         """Natural frequency [Hz] at rotor speeds ``omega`` [rad/s]."""
@@ -125,6 +163,7 @@ class Mode:
             **({"condition": self.condition} if self.condition is not None else {}),
             **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
             **({"damping_source": self.damping_source} if self.damping_source else {}),
+            **({"damping_in_operation": self._operating()} if self.operating else {}),
             **(
                 {
                     "whirl": {
@@ -135,6 +174,18 @@ class Mode:
                 if self.whirl is not None
                 else {}
             ),
+        }
+
+    def _operating(self) -> dict[str, Any]:
+        op = self.operating
+        assert op is not None
+        i = op.lowest
+        return {
+            "lowest_total_damping_ratio": round(op.total[i], 6),
+            "aerodynamic_damping_ratio": round(op.aero[i], 6),
+            "at_wind_m_s": round(op.wind[i], 4),
+            "at_rpm": round(op.omega[i] * 30 / np.pi, 4),
+            "source": op.source,
         }
 
     @property

@@ -21,6 +21,7 @@ from ``wtvib.spec``.
 """
 
 from ..errors import SpecError  # the error every spec mistake raises
+from .aerodynamics import Aerodynamics, AirfoilPolar, BladeStations, Control
 from .base import (
     BladeModeName,
     ModeEntry,
@@ -77,13 +78,17 @@ __all__ = [
     "FORMAT_VERSION",
     "MAX_FILE_BYTES",
     "AeroSection",
+    "Aerodynamics",
+    "AirfoilPolar",
     "AuditSettings",
     "Blade",
     "BladeAeroelastic",
     "BladeModeName",
+    "BladeStations",
     "BladeStructure",
     "ChainMass",
     "ChainShaft",
+    "Control",
     "CoupledModel",
     "DistributedTower",
     "Drivetrain",

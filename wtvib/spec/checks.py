@@ -91,3 +91,44 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
             line=doc.line_of(_split(exc.path or "tower_head")),
             source=doc.source,
         ) from None
+
+
+def _check_aerodynamics(spec: Spec, doc: Document) -> None:
+    """The aerodynamic stations must lie on a horizontal-axis rotor whose radius is known,
+    inside it, and the schedule needs a rated power when it pitches."""
+    aero = spec.aerodynamics
+    if aero is None:
+        return
+
+    def fail(message: str, *where: str | int) -> None:
+        raise SpecError(
+            message,
+            path=".".join(str(w) for w in ("aerodynamics", *where)),
+            line=doc.line_of(("aerodynamics", *where)),
+            source=doc.source,
+        )
+
+    if spec.rotor.orientation == "vertical-axis":
+        fail("the blade-element momentum model is for horizontal-axis rotors")
+    d = spec.turbine.rotor_diameter_m
+    if d is None:
+        raise SpecError(
+            "aerodynamics needs turbine.rotor_diameter_m (the tip radius)",
+            path="turbine.rotor_diameter_m",
+            line=doc.line_of(("turbine",)),
+            source=doc.source,
+        )
+    tip = aero.stations.radius_m[-1]
+    if tip > d / 2 * (1 + 1e-6):
+        fail(
+            f"the last station at {tip:g} m lies beyond the rotor radius {d / 2:g} m",
+            "stations",
+            "radius_m",
+        )
+    c = aero.control
+    if c.regulation == "pitch" and (c.rated_power_kw or spec.turbine.rated_power_kw) is None:
+        fail(
+            "pitch regulation needs a rated power (control.rated_power_kw or "
+            "turbine.rated_power_kw)",
+            "control",
+        )

@@ -10,7 +10,7 @@ from pydantic import ValidationError
 from ..errors import SpecError
 from ..yamlio import Document, Path, format_path, parse
 from .base import Quantity
-from .checks import _check_coupled, _check_rotor_radius, _check_sources
+from .checks import _check_aerodynamics, _check_coupled, _check_rotor_radius, _check_sources
 from .messages import _spec_error
 from .turbine import Spec
 
@@ -125,6 +125,7 @@ def from_document(doc: Document) -> Spec:
     _check_sources(spec, provenance, doc)
     _check_rotor_radius(spec, doc)
     _check_coupled(spec, doc)
+    _check_aerodynamics(spec, doc)
     spec._source_file = doc.source
     spec._provenance = provenance
     return spec

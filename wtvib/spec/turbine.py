@@ -6,6 +6,7 @@ from typing import Any, Literal
 from pydantic import Field, PrivateAttr
 
 from ..rules import PRESETS, MarginRule, Status
+from .aerodynamics import Aerodynamics
 from .base import Quantity, _Strict
 from .blade import Blade
 from .drivetrain import Drivetrain
@@ -119,6 +120,11 @@ class Spec(_Strict):
         None,
         description="Rotor position and hub for the coupled whole-turbine model (needs the "
         "tower and blade structures and tower_head); absent: no coupled modes.",
+    )
+    aerodynamics: Aerodynamics | None = Field(
+        None,
+        description="Blade stations, polars and control: steady operating points and the "
+        "aerodynamic damping of the modes; absent: a structural audit (assumed damping).",
     )
     audit: AuditSettings = Field(default_factory=AuditSettings)
     notes: str | None = Field(None, description="Anything else worth keeping with the spec.")

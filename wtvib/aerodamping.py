@@ -1,0 +1,488 @@
+"""Aerodynamic damping of every mode in operation: the quasi-steady blade-element forces,
+linearised about each steady operating point, added to the modal models.
+
+Section model (Hau ch. 7.2.3; DOMAIN.md §3): a blade section in the relative wind W, inflow
+angle φ to the rotor plane, feels per unit length the normal (downwind) and tangential
+(direction of rotation) forces
+
+    F_n = ½ρcW(C_L U_t + C_D U_n),   F_t = ½ρcW(C_L U_n − C_D U_t),
+
+with U_n = V(1 − a) − v_n and U_t = Ωr(1 + a′) + v_t for section velocities v_n (downwind)
+and v_t (direction of rotation). Linearised about the steady point at frozen induction
+(the wake does not respond: quasi-steady, as OpenFAST's frozen-wake linearisation) they
+are −C·v with (s = sin φ, c = cos φ, ′ = d/dα)
+
+    C_nn = ½ρcW [C_L sc + C_D(1 + s²) + C_L′ c² + C_D′ sc]
+    C_nt = −½ρcW [C_L(1 + c²) + C_D sc − C_L′ sc − C_D′ s²]
+    C_tn = ½ρcW [C_L(1 + s²) − C_D sc + C_L′ sc − C_D′ c²]
+    C_tt = ½ρcW [−C_L sc + C_D(1 + c²) + C_L′ s² − C_D′ sc];
+
+C_nn and C_tt are the stall check's c(ψ) for flapwise (ψ = 90° − φ) and edgewise
+(ψ = 180° − φ) motion. Past stall C_L′ < 0 makes C_tt, and in deep stall C_nn, negative.
+
+Models:
+
+* the coupled whole-turbine model (three or more blades): each blade point's velocity from
+  the model's kinematics (blade modes, tower-top translation and rotation, drive train),
+  D = Σ Jᵀ C J per blade, in multi-blade coordinates; the damped eigenproblem at each
+  operating point, modes followed by shape from standstill;
+* isolated blade modes: ζ_a = ∫ C φ² dr / (2ω ∫ m φ² dr) (flap: C_nn, edge: C_tt);
+* isolated first tower bending modes: the rotor's hub-velocity damping N_b∫C_nn dr
+  (fore-aft) and (N_b/2)∫C_tt dr (side-side, azimuth mean) on the tower's first-mode
+  generalised mass, the head plus 33/140 of the tower (a cantilever's equivalent tip
+  mass, Blevins Table 8-8).
+
+Neglected and stated: aerodynamic stiffness (the rotor plane's tilt and yaw, blade
+torsion), dynamic inflow and dynamic stall, the tower's own drag. Structural damping is the
+mode's given or assumed ratio, added to the aerodynamic one and stated separately.
+"""
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+
+import numpy as np
+from numpy.typing import NDArray
+
+from . import bem
+from .analysis import Analysis, Context, Damping, no_modes, section_damping
+from .results import Check, Mode, OperatingDamping, Rule
+from .spec import Spec
+
+Array = NDArray[np.float64]
+
+#: Steps of the aerodynamics switched on at the first operating point, so that shape
+#: tracking follows each structural mode into its heavily damped aeroelastic form.
+RAMP = (0.25, 0.5, 0.75)
+
+#: The tower's equivalent tip mass in its first bending mode: 33/140 of its mass (a
+#: uniform cantilever, Rayleigh; Blevins, Formulas for Natural Frequency, Table 8-8).
+TOWER_EQUIVALENT = 33 / 140
+
+
+def section_matrix(
+    rho: float, chord: Array, w: Array, phi: Array, cl: Array, cd: Array, dcl: Array, dcd: Array
+) -> Array:
+    """The quasi-steady damping matrix per unit length [N·s/m²] of sections, shaped
+    (…, 2, 2) over (out-of-plane, in-plane) velocities (see the module notes)."""
+    q = 0.5 * rho * chord * w
+    s, c = np.sin(phi), np.cos(phi)
+    out = np.empty((*np.shape(q), 2, 2))
+    out[..., 0, 0] = q * (cl * s * c + cd * (1 + s * s) + dcl * c * c + dcd * s * c)
+    out[..., 0, 1] = -q * (cl * (1 + c * c) + cd * s * c - dcl * s * c - dcd * s * s)
+    out[..., 1, 0] = q * (cl * (1 + s * s) - cd * s * c + dcl * s * c - dcd * c * c)
+    out[..., 1, 1] = q * (-cl * s * c + cd * (1 + c * c) + dcl * s * s - dcd * s * c)
+    return out
+
+
+@dataclass(frozen=True)
+class Sections:
+    """The blade sections' damping matrices at each steady operating point."""
+
+    schedule: bem.Schedule
+    radius: Array  # stations [m], (S,)
+    c: Array  # per unit length and blade [N·s/m²], (K, S, 2, 2)
+
+    def at(self, radius: Array) -> Array:
+        """The matrices at other radii (K, P, 2, 2): linear between stations, zero
+        outside them."""
+        r = np.asarray(radius, float)
+        flat = self.c.reshape(len(self.c), len(self.radius), 4)
+        out = np.empty((len(self.c), len(r), 4))
+        for k in range(len(self.c)):
+            for e in range(4):
+                out[k, :, e] = np.interp(r, self.radius, flat[k, :, e], left=0.0, right=0.0)
+        return out.reshape(len(self.c), len(r), 2, 2)
+
+
+def sections(spec: Spec) -> Sections:
+    """The spec's operating points and section matrices (computed once per spec object)."""
+    assert spec.aerodynamics is not None
+    out: Sections = spec.derived(
+        ("aerodamping.sections", 0), spec.aerodynamics, lambda: _sections(spec)
+    )
+    return out
+
+
+def _sections(spec: Spec) -> Sections:
+    r = bem.rotor(spec)
+    sch = bem.schedule(spec)
+    sol = sch.solution
+    h = math.radians(bem.SLOPE_STEP_DEG)
+    cl_p, cd_p = r.polar(sol.alpha + h)
+    cl_m, cd_m = r.polar(sol.alpha - h)
+    dcl, dcd = (cl_p - cl_m) / (2 * h), (cd_p - cd_m) / (2 * h)
+    c = section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
+    return Sections(sch, r.radius, c)
+
+
+def _operating(sch: bem.Schedule, aero: Array, structural: float, source: str) -> OperatingDamping:
+    sol = sch.solution
+    return OperatingDamping(
+        tuple(float(v) for v in sol.wind),
+        tuple(float(o) for o in sol.omega),
+        tuple(float(p) for p in np.degrees(sol.pitch)),
+        tuple(float(a) for a in aero),
+        tuple(float(a) + structural for a in aero),
+        source,
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# The coupled model
+
+
+@dataclass(frozen=True)
+class Coupled:
+    """The coupled model's modes at the operating points: names, |λ|/2π and −Re λ/|λ|."""
+
+    names: tuple[str, ...]
+    frequency_hz: Array  # (K, modes)
+    damping_ratio: Array  # (K, modes), eigenvalue damping (aerodynamics + dampers)
+    standstill: Array  # (modes,), the eigenvalue damping at standstill (the dampers)
+
+
+def coupled(spec: Spec, sec: Sections) -> Coupled | None:
+    """The coupled model's damped modes at each operating point (None: no coupled model
+    with a rotating multi-blade view)."""
+    from . import coupled as coupled_model
+    from .multiblade import fixed_frame_damping, track
+
+    if not coupled_model.applies(spec) or spec.rotor.blades < 3:
+        return None
+    assert spec.coupled is not None
+    model = coupled_model.build(spec, spec.coupled.rotating_condition)
+    sol = sec.schedule.solution
+    c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
+    extras = []
+    for k, om in enumerate(sol.omega):
+        d = model.section_damping(c_points[k])
+        extras.append(fixed_frame_damping(model, d, float(om)))
+    first = float(sol.omega[0])
+    speeds = [float(w) for w in coupled_model.speeds(spec) if w < first]
+    points: list[tuple[float, tuple[Array, Array] | None]] = [(w, None) for w in speeds]
+    points += [(first, (s * extras[0][0], s * extras[0][1])) for s in RAMP]
+    lead = len(points)
+    points += [(float(om), e) for om, e in zip(sol.omega, extras, strict=True)]
+    path = track(model, points, named=False)
+    assert path.first.damping_ratio is not None
+    return Coupled(
+        tuple(f"system.{n}" for n in path.first.names),
+        path.frequency_hz[lead:],
+        path.damping_ratio[lead:],
+        np.asarray(path.first.damping_ratio),
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# Isolated modes
+
+
+def blade_shape(mode: Mode, r: Array, root: float) -> Array:
+    """The mode's deflection at radii r: its computed shape, else the uniform cantilever's
+    first bending mode (β₁l = 1.8751, Blevins Table 8-1), normalised to the tip."""
+    if mode.shape is not None:
+        x = np.asarray(mode.shape.position_m) + root
+        return np.interp(r, x, np.asarray(mode.shape.deflection))
+    bl = 1.8751040687
+    length = r[-1] - root
+    xi = np.clip((r - root) / length, 0, 1) * bl
+    sigma = (math.cosh(bl) + math.cos(bl)) / (math.sinh(bl) + math.sin(bl))
+    phi = np.cosh(xi) - np.cos(xi) - sigma * (np.sinh(xi) - np.sin(xi))
+    return np.asarray(phi / phi[-1])
+
+
+def blade_mass(spec: Spec, r: Array, root: float) -> Array | None:
+    """Mass per length [kg/m] at radii r: the structure's, else the blade mass spread
+    evenly; None without either."""
+    st = spec.blade.structure
+    if st is not None:
+        return np.interp(r - st.hub_radius_m, st.span_m, st.mass_per_length_kg_m)
+    if spec.blade.mass_kg is not None:
+        return np.full_like(r, spec.blade.mass_kg / (r[-1] - root))
+    return None
+
+
+def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
+    """ζ_a of an isolated blade mode (flap: out-of-plane, edge: in-plane) at each
+    operating point; None without the blade's mass."""
+    kind = mode.id.split(".")[1].rstrip("0123456789")
+    if kind not in ("flap", "edge"):
+        return None
+    st = spec.blade.structure
+    root = st.hub_radius_m if st is not None else float(sec.radius[0])
+    tip = float(sec.radius[-1])
+    r = np.linspace(root, tip, 80)
+    m = blade_mass(spec, r, root)
+    if m is None or tip <= root:
+        return None
+    shape = blade_shape(mode, r, root)
+    gen_mass = float(np.trapezoid(m * shape**2, r))
+    if st is not None and st.tip_mass_kg:
+        gen_mass += st.tip_mass_kg * float(shape[-1]) ** 2
+    if not gen_mass > 0:
+        return None
+    e = 0 if kind == "flap" else 1
+    c = sec.at(r)[:, :, e, e]
+    omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
+    return np.asarray(np.trapezoid(c * shape**2, r, axis=1) / (2 * omega * gen_mass))
+
+
+def tower_mass(spec: Spec) -> float | None:
+    """The tower's mass [kg]: given, else from its structure."""
+    t = spec.tower
+    if t.mass_kg is not None:
+        return t.mass_kg
+    if not t.has_structure:
+        return None
+    from .tower import discretise
+
+    b = discretise(t)
+    return float(np.sum(b.mass * b.basis.w))
+
+
+def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
+    """ζ_a of an isolated first tower bending mode at each operating point (the rotor's
+    damping of the hub's velocity); None for other modes or without the masses."""
+    if mode.id not in ("tower.fa1", "tower.ss1") or spec.tower_head is None:
+        return None
+    m_tower = tower_mass(spec)
+    if m_tower is None:
+        return None
+    gen_mass = spec.tower_head.mass_kg + TOWER_EQUIVALENT * m_tower
+    r = sec.radius
+    nb = spec.rotor.blades
+    if mode.id == "tower.fa1":
+        c = nb * np.trapezoid(sec.c[:, :, 0, 0], r, axis=1)
+    else:  # the in-plane velocity of a blade is v·cos ψⱼ: the azimuth mean of cos² is ½
+        c = 0.5 * nb * np.trapezoid(sec.c[:, :, 1, 1], r, axis=1)
+    omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
+    return np.asarray(c / (2 * omega * gen_mass))
+
+
+# ---------------------------------------------------------------------------------------
+# Every judged mode
+
+
+@dataclass(frozen=True)
+class InOperation:
+    """What the aerodynamics did to the modes: the schedule, the coupled solution and the
+    statements the report makes about them."""
+
+    sections: Sections
+    coupled: Coupled | None
+    assumptions: tuple[str, ...]
+    frequency_shift: float  # the largest |f_aeroelastic/f_structural − 1| of a judged mode
+
+
+def in_operation(
+    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
+) -> tuple[dict[str, list[Mode]], InOperation | None]:
+    """Every judged mode with its damping at the operating points (``Mode.operating``);
+    unchanged without aerodynamics. ``heavy``: the damping ratio above which a mode has no
+    resonant peak (its frequency shift by the aerodynamics is not worth stating)."""
+    if spec.aerodynamics is None:
+        return dict(built), None
+    sec = sections(spec)
+    sch = sec.schedule
+    cpl = coupled(spec, sec)
+    index = {n: j for j, n in enumerate(cpl.names)} if cpl else {}
+    shift = 0.0
+    out: dict[str, list[Mode]] = {}
+    skipped: list[str] = []
+    for sub, modes in built.items():
+        done = []
+        for m in modes:
+            aero: Array | None = None
+            source = ""
+            if not m.judged:
+                pass
+            elif m.id in index and cpl is not None:
+                j = index[m.id]
+                aero = cpl.damping_ratio[:, j] - cpl.standstill[j]
+                source = "coupled model, damped eigenvalues at the operating points"
+                f_struct = m.frequency_at(sch.solution.omega)
+                ok = (f_struct > 0) & (aero + (m.damping_ratio or 0.0) < heavy)
+                if np.any(ok):
+                    rel = np.abs(cpl.frequency_hz[ok, j] / f_struct[ok] - 1)
+                    shift = max(shift, float(rel.max()))
+            elif m.subsystem == "blade":
+                aero = isolated_blade(spec, m, sec)
+                source = "isolated blade mode, section damping on its shape"
+            elif m.subsystem == "tower":
+                aero = isolated_tower(spec, m, sec)
+                source = "isolated tower mode, the rotor's damping on 33/140 of the tower + head"
+            if aero is None:
+                if m.judged and m.subsystem in ("blade", "tower", "system"):
+                    skipped.append(m.id)
+                done.append(m)
+                continue
+            structural = m.damping_ratio or 0.0
+            done.append(replace(m, operating=_operating(sch, aero, structural, source)))
+        out[sub] = done
+    notes = [*sch.assumptions, _statement(spec, sch)]
+    notes.append(
+        "Aerodynamic damping: quasi-steady blade-element forces linearised at each operating "
+        "point with frozen induction (no dynamic inflow or dynamic stall), lift and drag "
+        f"slopes over ±{bem.SLOPE_STEP_DEG:g}°; aerodynamic stiffness (tilt, yaw, torsion) "
+        "neglected; total damping = aerodynamic + the mode's structural ratio."
+    )
+    if cpl is not None:
+        notes.append(
+            "Coupled modes: the damped eigenproblem of the whole-turbine model at each "
+            "operating point (multi-blade coordinates), followed by shape from standstill; "
+            "frequencies are judged on the structural curve, which the aeroelastic |λ| of "
+            f"the modes damped below ζ = {heavy:g} departs from by at most {shift:.1%}."
+        )
+    if skipped:
+        notes.append(
+            "No aerodynamic damping for " + ", ".join(skipped) + " (no model of it): judged "
+            "with the structural damping."
+        )
+    return out, InOperation(sec, cpl, tuple(notes), shift)
+
+
+def _statement(spec: Spec, sch: bem.Schedule) -> str:
+    c = spec.aerodynamics.control  # type: ignore[union-attr]
+    rpm = sch.rpm
+    pitch = sch.pitch_deg
+    text = (
+        f"Operating points: {len(sch.wind)} winds {sch.wind[0]:g}–{sch.wind[-1]:g} m/s, "
+        f"{rpm.min():.3g}–{rpm.max():.3g} rpm, pitch {pitch.min():.3g}–{pitch.max():.3g}°; "
+        f"region-2 tip-speed ratio {sch.tip_speed_ratio:.3g} ({sch.tsr_source}); "
+    )
+    if c.regulation == "pitch" and sch.rated_wind is not None and sch.rated_power:
+        text += (
+            f"rated wind {sch.rated_wind:.3g} m/s, pitch holding {sch.rated_power / 1e3:,.0f} "
+            "kW aerodynamic above it"
+        )
+    else:
+        text += f"{c.regulation} regulation at the fine pitch {c.fine_pitch_deg:g}°"
+    return text + "."
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem protocol (wtvib.analysis): the aerodynamics' own checks
+
+NAME = "aerodynamics"
+
+
+def default_damping(spec: Spec) -> Damping:
+    return section_damping(spec.blade, "blade")  # no modes of its own: never used
+
+
+build_modes = no_modes  # it damps the others' modes (in_operation)
+
+
+def _rule_operation() -> Rule:
+    return Rule(
+        "steady operating points (blade-element momentum) over cut-in … cut-out",
+        "Hau ch. 5 and 7.5.1 (system damping = structural + aerodynamic); Ning 2014 (BEM "
+        "residual); Jonkman et al. 2009 §7 (the controller's schedule)",
+    )
+
+
+def analyse(spec: Spec, ctx: Context) -> Analysis:
+    """``aerodynamics.operation`` (the schedule, or that the audit is structural) and
+    ``aerodynamics.stability`` (negative total damping of a judged mode anywhere in
+    operation fails)."""
+    if spec.aerodynamics is None:
+        text = (
+            "not analysed: no aerodynamics — a structural audit (modes judged with their "
+            "structural damping only; no aeroelastic instability looked for)"
+        )
+        return Analysis(checks=(Check(f"{NAME}.operation", NAME, "info", text, _rule_operation()),))
+    sec = sections(spec)
+    sch = sec.schedule
+    r = bem.rotor(spec)
+    cp, ct = sch.coefficients(r)
+    sol = sch.solution
+    best = int(np.argmax(cp))
+    operation = Check(
+        f"{NAME}.operation",
+        NAME,
+        "info",
+        f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "
+        f"C_p up to {cp[best]:.3f} (at {sch.wind[best]:.3g} m/s), thrust up to "
+        f"{sol.thrust.max() / 1e3:,.0f} kN, {sch.rpm.min():.3g}–{sch.rpm.max():.3g} rpm, "
+        f"pitch {sch.pitch_deg.min():.3g}–{sch.pitch_deg.max():.3g}°"
+        + (f", rated wind {sch.rated_wind:.3g} m/s" if sch.rated_wind is not None else ""),
+        _rule_operation(),
+        {
+            "rated_wind_m_s": round(sch.rated_wind, 4) if sch.rated_wind is not None else None,
+            "tip_speed_ratio": round(sch.tip_speed_ratio, 4),
+            "points": [
+                {
+                    "wind_m_s": round(float(v), 4),
+                    "rpm": round(float(n), 4),
+                    "pitch_deg": round(float(p), 4),
+                    "region": reg,
+                    "power_kw": round(float(pw) / 1e3, 3),
+                    "thrust_kn": round(float(t) / 1e3, 3),
+                    "cp": round(float(a), 5),
+                    "ct": round(float(b), 5),
+                }
+                for v, n, p, reg, pw, t, a, b in zip(
+                    sch.wind,
+                    sch.rpm,
+                    sch.pitch_deg,
+                    sch.region,
+                    sol.power,
+                    sol.thrust,
+                    cp,
+                    ct,
+                    strict=True,
+                )
+            ],
+        },
+    )
+    return Analysis(checks=(operation, stability(ctx.modes)), results={"schedule": sch})
+
+
+def stability(modes: Sequence[Mode]) -> Check:
+    """Negative total damping of a judged mode at any operating point is an instability."""
+    rule = Rule(
+        "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
+        "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; quasi-steady section damping "
+        "(DOMAIN.md §3), frozen wake",
+    )
+    damped = [m for m in modes if m.judged and m.operating is not None]
+    if not damped:
+        return Check(f"{NAME}.stability", NAME, "info", "not analysed: no mode in operation", rule)
+    unstable = []
+    for m in damped:
+        op = m.operating
+        assert op is not None
+        bad = [v for v, z in zip(op.wind, op.total, strict=True) if z < 0]
+        if bad:
+            unstable.append((m, bad))
+    low = min(damped, key=lambda m: m.operating.total[m.operating.lowest])  # type: ignore[union-attr]
+    lop = low.operating
+    assert lop is not None
+    i = lop.lowest
+    numbers = {
+        "lowest": {
+            "mode": low.id,
+            "total_damping_ratio": round(lop.total[i], 6),
+            "aerodynamic_damping_ratio": round(lop.aero[i], 6),
+            "at_wind_m_s": round(lop.wind[i], 4),
+        },
+        "unstable": {m.id: [round(v, 4) for v in bad] for m, bad in unstable},
+    }
+    if unstable:
+        text = "; ".join(
+            f"{m.id} negative total damping at {bad[0]:.3g}–{bad[-1]:.3g} m/s"
+            for m, bad in unstable
+        )
+        return Check(
+            f"{NAME}.stability", NAME, "fail", f"aeroelastic instability: {text}", rule, numbers
+        )
+    return Check(
+        f"{NAME}.stability",
+        NAME,
+        "pass",
+        f"every judged mode positively damped in operation; lowest: {low.id} ζ = "
+        f"{lop.total[i]:.4f} (aerodynamic {lop.aero[i]:+.4f}) at {lop.wind[i]:.3g} m/s",
+        rule,
+        numbers,
+    )

@@ -1,0 +1,86 @@
+"""The Campbell data: every speed-dependent judged mode's frequency and damping, sampled.
+
+With aerodynamics the samples are the steady operating points (wind, rotor speed, pitch),
+the damping the mode's total (aerodynamic + structural) there; without, rotor speeds from
+standstill to the overspeed limit and the structural damping. Frequencies are the judged
+ones (the mode's curve), so each id has one frequency everywhere in the report.
+"""
+
+import csv
+import io
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .excitation import OperatingRange
+from .outputs import CAMPBELL_HEADER
+from .results import Mode
+
+#: Rotor speeds sampled without a schedule (standstill … overspeed).
+SPEED_SAMPLES = 30
+
+
+@dataclass(frozen=True)
+class Campbell:
+    """Sampled curves: ``rpm`` (and, with a schedule, ``wind``, ``pitch``) per sample."""
+
+    rpm: tuple[float, ...]
+    wind: tuple[float, ...] | None
+    pitch_deg: tuple[float, ...] | None
+    modes: dict[str, tuple[tuple[float, ...], tuple[float, ...]]]  # id → (f [Hz], ζ)
+
+    def to_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {
+            "damping": "in operation (aerodynamic + structural)" if self.wind else "structural",
+            "rpm": [round(v, 4) for v in self.rpm],
+        }
+        if self.wind is not None and self.pitch_deg is not None:
+            out["wind_m_s"] = [round(v, 4) for v in self.wind]
+            out["pitch_deg"] = [round(v, 4) for v in self.pitch_deg]
+        out["modes"] = {
+            mid: {
+                "frequency_hz": [round(v, 6) for v in f],
+                "damping_ratio": [round(v, 6) for v in z],
+            }
+            for mid, (f, z) in self.modes.items()
+        }
+        return out
+
+    def to_csv(self) -> str:
+        """One row per mode and sample: mode, rpm, wind_m_s, pitch_deg, frequency_hz,
+        damping_ratio (wind and pitch empty without a schedule)."""
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(CAMPBELL_HEADER.decode().split(","))
+        for mid, (f, z) in self.modes.items():
+            for i, n in enumerate(self.rpm):
+                wind = f"{self.wind[i]:.4f}" if self.wind else ""
+                pitch = f"{self.pitch_deg[i]:.4f}" if self.pitch_deg else ""
+                w.writerow([mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}"])
+        return buf.getvalue()
+
+
+def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
+    """The Campbell data of the judged speed-dependent modes (and every mode damped in
+    operation)."""
+    picked = [m for m in modes if m.judged and (m.curve is not None or m.operating is not None)]
+    scheduled = next((m.operating for m in picked if m.operating is not None), None)
+    if scheduled is not None:
+        omega = np.asarray(scheduled.omega)
+        wind: tuple[float, ...] | None = scheduled.wind
+        pitch: tuple[float, ...] | None = scheduled.pitch_deg
+    else:
+        omega = np.linspace(0.0, op.overspeed, SPEED_SAMPLES)
+        wind = pitch = None
+    rpm = tuple(float(v) for v in omega * 30 / np.pi)
+    out: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {}
+    for m in picked:
+        f = tuple(float(v) for v in m.frequency_at(omega))
+        if m.operating is not None and m.operating.omega == tuple(float(v) for v in omega):
+            z = m.operating.total
+        else:
+            z = tuple(float(m.damping_ratio or 0.0) for _ in omega)
+        out[m.id] = (f, z)
+    return Campbell(rpm, wind, pitch, out)

@@ -1,0 +1,206 @@
+"""OpenFAST AeroDyn 15 inputs → the spec's ``aerodynamics`` block.
+
+Follows the deck set: the ``.fst``'s AeroFile (``CompAero`` = 2), its blade file
+(``ADBlFile(1)``: BlSpn, BlTwist, BlChord, BlAFID) and aerofoil files (``AFNames``:
+AirfoilInfo tables, the first table of each); the controller's region-2 tip-speed ratio,
+rated power and fine pitch from ROSCO's ``DISCON.IN`` (VS_TSRopt, VS_RtPwr, PC_FinePit) and
+the generator efficiency from ServoDyn (GenEff). Only files the deck set names are read.
+
+References
+----------
+OpenFAST AeroDyn 15 and AirfoilInfo input definitions (openfast.readthedocs.io, AeroDyn
+"Input Files"); ROSCO input definitions (DISCON.IN).
+"""
+
+import math
+from pathlib import Path
+from typing import Any
+
+from ..errors import SpecError
+from ..spec import read_text
+from ..spec.aerodynamics import MAX_AIRFOILS, MAX_POLAR_POINTS, MAX_STATIONS
+from .deck import _NUMBER, Deck, _file, parse
+
+
+def _number(cell: str, what: str, line: int, path: Path) -> float:
+    value = float(cell.replace("D", "E").replace("d", "e")) if _NUMBER.match(cell) else math.nan
+    if not math.isfinite(value):
+        raise SpecError(f"{what}: {cell!r} is not a finite number", line=line, source=str(path))
+    return value
+
+
+def _table(path: Path, lines: list[str], start: int, rows: int, width: int, what: str) -> list:
+    """``rows`` numeric rows of at least ``width`` cells from line index ``start`` on
+    (comment lines starting with ! skipped)."""
+    out: list[list[float]] = []
+    i = start
+    while len(out) < rows:
+        if i >= len(lines):
+            raise SpecError(
+                f"the {what} table ends after {len(out)} of {rows} rows (a truncated file?)",
+                line=len(lines),
+                source=str(path),
+            )
+        cells = lines[i].split()
+        i += 1
+        if not cells or cells[0].startswith("!"):
+            continue
+        if len(cells) < width:
+            raise SpecError(
+                f"the {what} table needs {width} columns (got {len(cells)})",
+                line=i,
+                source=str(path),
+            )
+        out.append([_number(c, what, i, path) for c in cells[:width]])
+    return out
+
+
+def _count(deck: Deck, key: str, high: int) -> int:
+    n = deck.whole(key, low=1)
+    if n > high:
+        raise SpecError(
+            f"{key} {n} exceeds wtvib's limit of {high}",
+            line=deck.values[key][1],
+            source=str(deck.path),
+        )
+    return n
+
+
+def blade_stations(path: Path, hub_radius: float) -> dict[str, Any]:
+    """The AeroDyn blade file's stations (radius = HubRad + BlSpn: precone neglected)."""
+    deck = parse(path)
+    n = _count(deck, "NumBlNds", MAX_STATIONS)
+    lines = read_text(path).splitlines()
+    head = next(
+        (i for i, ln in enumerate(lines) if ln.split()[:1] == ["BlSpn"]),
+        None,
+    )
+    if head is None:
+        raise SpecError("the blade table (BlSpn … BlAFID) is missing", source=str(path))
+    names = lines[head].split()
+    for need in ("BlSpn", "BlTwist", "BlChord", "BlAFID"):
+        if need not in names:
+            raise SpecError(
+                f"the blade table has no {need} column", line=head + 1, source=str(path)
+            )
+    rows = _table(path, lines, head + 2, n, len(names), "blade")
+    col = {k: names.index(k) for k in ("BlSpn", "BlTwist", "BlChord", "BlAFID")}
+    span = [r[col["BlSpn"]] for r in rows]
+    keep = [0] + [i for i in range(1, n) if span[i] > span[i - 1]]  # repeated tip node
+    if len(keep) < n - 1 or len(keep) < 3:
+        raise SpecError(
+            "BlSpn must increase from node to node (at least three nodes)",
+            line=head + 3,
+            source=str(path),
+        )
+    ids = []
+    for i in keep:
+        af = rows[i][col["BlAFID"]]
+        if af != int(af) or af < 1:
+            raise SpecError(
+                f"BlAFID must be a whole number ≥ 1 (got {af:g})",
+                line=head + 3 + i,
+                source=str(path),
+            )
+        ids.append(int(af))
+    return {
+        "radius_m": [hub_radius + span[i] for i in keep],
+        "chord_m": [rows[i][col["BlChord"]] for i in keep],
+        "twist_deg": [rows[i][col["BlTwist"]] for i in keep],
+        "ids": ids,
+    }
+
+
+def polar(path: Path) -> dict[str, list[float]]:
+    """The first table of an AirfoilInfo file: α [deg], C_L, C_D."""
+    lines = read_text(path).splitlines()
+    at = next((i for i, ln in enumerate(lines) if ln.split()[1:2] == ["NumAlf"]), None)
+    if at is None:
+        raise SpecError("NumAlf is missing (not an AirfoilInfo file?)", source=str(path))
+    raw = lines[at].split()[0]
+    count = _number(raw, "NumAlf", at + 1, path)
+    if count != int(count) or not 3 <= count <= MAX_POLAR_POINTS:
+        raise SpecError(
+            f"NumAlf must be a whole number from 3 to {MAX_POLAR_POINTS} (got {raw!r})",
+            line=at + 1,
+            source=str(path),
+        )
+    rows = _table(path, lines, at + 1, int(count), 3, "aerofoil")
+    return {
+        "alpha_deg": [r[0] for r in rows],
+        "cl": [r[1] for r in rows],
+        "cd": [r[2] for r in rows],
+    }
+
+
+def _airfoil_files(deck: Deck) -> list[Path]:
+    """AFNames: the first on its key's line, the rest on the lines after it."""
+    n = _count(deck, "NumAFfiles", MAX_AIRFOILS)
+    lines = read_text(deck.path).splitlines()
+    line = deck.values["AFNames"][1]
+    names = [deck.values["AFNames"][0]]
+    i = line
+    while len(names) < n and i < len(lines):
+        cells = lines[i].split()
+        i += 1
+        if cells and not cells[0].startswith(("!", "-", "=")):
+            names.append(cells[0])
+    out = []
+    for k, name in enumerate(names, start=1):
+        p = (deck.path.parent / name.strip('"')).resolve()
+        if not p.is_file():
+            raise SpecError(
+                f"AFNames entry {k} names {name!r}, which does not exist",
+                line=line + k - 1,
+                source=str(deck.path),
+            )
+        out.append(p)
+    return out
+
+
+def aerodynamics(
+    fst: Deck | None,
+    hub_radius: float,
+    servo: Deck | None,
+    controller: dict[str, tuple[float, int]],
+) -> tuple[dict[str, Any], list[str]] | None:
+    """The ``aerodynamics`` block and the files read, or None where the deck set has no
+    AeroDyn 15 input."""
+    if fst is None or "AeroFile" not in fst.values or fst.num("CompAero", default=0) != 2:
+        return None
+    ad = parse(_file(fst, "AeroFile"))
+    blade = _file(ad, "ADBlFile(1)", "ADBlFile1")
+    stations = blade_stations(blade, hub_radius)
+    files = _airfoil_files(ad)
+    ids = stations.pop("ids")
+    if max(ids) > len(files):
+        raise SpecError(f"BlAFID {max(ids)} exceeds NumAFfiles {len(files)}", source=str(blade))
+    used = sorted(set(ids))
+    airfoils = {files[i - 1].stem: polar(files[i - 1]) for i in used}
+    stations["airfoil"] = [files[i - 1].stem for i in ids]
+    control: dict[str, Any] = {"regulation": "pitch"}
+    if "VS_TSRopt" in controller:
+        control["tip_speed_ratio"] = controller["VS_TSRopt"][0]
+    if "VS_RtPwr" in controller:
+        control["rated_power_kw"] = controller["VS_RtPwr"][0] / 1e3
+    if "PC_FinePit" in controller:
+        control["fine_pitch_deg"] = math.degrees(controller["PC_FinePit"][0])
+    if servo is not None and "GenEff" in servo.values:
+        eff = servo.num("GenEff")
+        if not 0 < eff <= 100:
+            raise SpecError(
+                f"GenEff must lie in (0, 100] % (got {eff:g})",
+                line=servo.values["GenEff"][1],
+                source=str(servo.path),
+            )
+        control["generator_efficiency"] = eff / 100
+    block = {
+        "air_density_kg_m3": ad.num("AirDens", "AirDens(1)", default=1.225),
+        "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
+        "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
+        "stations": stations,
+        "airfoils": airfoils,
+        "control": control,
+    }
+    read = [ad.path.name, blade.name, *(files[i - 1].name for i in used)]
+    return block, read

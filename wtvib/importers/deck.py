@@ -1,0 +1,157 @@
+"""The text format of FAST / OpenFAST input files: ``value Key - description`` lines and
+the tables of tower and blade stations; files named by a deck, resolved beside it.
+
+Shared by the ElastoDyn and AeroDyn importers (OpenFAST input-file documentation).
+"""
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import SpecError
+from ..spec import read_text
+
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$")
+
+
+@dataclass(frozen=True)
+class Deck:
+    """Scalar inputs (key → raw text, line) and tables (first column name → rows)."""
+
+    path: Path
+    values: dict[str, tuple[str, int]]
+    tables: dict[str, tuple[list[str], np.ndarray]]
+    table_lines: dict[str, int] = field(default_factory=dict)  # header line of each table
+
+    def text(self, *keys: str) -> str:
+        for key in keys:
+            if key in self.values:
+                return self.values[key][0].strip('"')
+        raise SpecError(f"{keys[0]} is missing from the deck", source=str(self.path))
+
+    def num(self, *keys: str, default: float | None = None) -> float:
+        for key in keys:
+            if key in self.values:
+                raw, line = self.values[key]
+                try:
+                    value = float(raw.replace("D", "E").replace("d", "e"))
+                except ValueError:
+                    raise SpecError(
+                        f"{key} must be a number (got {raw!r})", line=line, source=str(self.path)
+                    ) from None
+                if not math.isfinite(value):
+                    raise SpecError(
+                        f"{key} must be a finite number (got {raw!r})",
+                        line=line,
+                        source=str(self.path),
+                    )
+                return value
+        if default is not None:
+            return default
+        raise SpecError(f"{keys[0]} is missing from the deck", source=str(self.path))
+
+    def fractions(self, table: str) -> np.ndarray:
+        """The table's first column (HtFract, BlFract): increasing from 0 to 1 — a table cut
+        short (a truncated file) would otherwise describe part of the member as all of it."""
+        frac = self.column(table, table)
+        ok = len(frac) == 1 or (
+            abs(frac[0]) < 1e-6 and abs(frac[-1] - 1.0) < 1e-6 and np.all(np.diff(frac) > 0)
+        )
+        if not ok:
+            raise SpecError(
+                f"the {table} column must increase from 0 to 1 (it runs "
+                f"{frac[0]:g} … {frac[-1]:g} over {len(frac)} stations: a truncated table?)",
+                line=self.table_lines.get(table),
+                source=str(self.path),
+            )
+        return frac
+
+    def whole(self, key: str, low: int = 0) -> int:
+        """A count (``NumBl``): a whole number ≥ ``low`` — 2.7 blades is an error, not 2."""
+        value = self.num(key)
+        if value != int(value) or value < low:
+            raise SpecError(
+                f"{key} must be a whole number ≥ {low} (got {self.values[key][0]!r})",
+                line=self.values[key][1],
+                source=str(self.path),
+            )
+        return int(value)
+
+    def column(self, table: str, *names: str) -> np.ndarray:
+        """A table column by any of its names; SpecError naming the file if it is absent."""
+        found = self.optional_column(table, *names)
+        if found is None:
+            raise SpecError(f"the {table} table has no {names[0]} column", source=str(self.path))
+        return found
+
+    def optional_column(self, table: str, *names: str) -> np.ndarray | None:
+        if table not in self.tables:
+            return None
+        header, rows = self.tables[table]
+        for name in names:
+            if name in header:
+                return np.asarray(rows[:, header.index(name)], dtype=float)
+        return None
+
+
+def parse(path: Path, text: str | None = None) -> Deck:
+    """Read a FAST/ElastoDyn-style input file: ``value Key - description`` lines and tables."""
+    text = read_text(path) if text is None else text
+    values: dict[str, tuple[str, int]] = {}
+    tables: dict[str, tuple[list[str], np.ndarray]] = {}
+    table_lines: dict[str, int] = {}
+    lines = text.splitlines()
+    i = 0
+    while i < len(lines):
+        tokens = lines[i].split()
+        if len(tokens) >= 2 and tokens[1][:1].isalpha() and not tokens[0].startswith("--"):
+            values.setdefault(tokens[1], (tokens[0], i + 1))
+        if (
+            len(tokens) >= 3
+            and all(t[:1].isalpha() for t in tokens[:3])
+            and (tokens[0] in ("HtFract", "BlFract"))
+        ):
+            rows, j = [], i + 2  # skip the units line
+            while j < len(lines):
+                cells = lines[j].split()
+                if not cells or not _NUMBER.match(cells[0]):
+                    break
+                rows.append(_row(path, tokens, cells, j + 1))
+                j += 1
+            if rows:
+                width = min(len(r) for r in rows)
+                tables[tokens[0]] = (tokens[:width], np.array([r[:width] for r in rows]))
+                table_lines[tokens[0]] = i + 1
+            i = j
+            continue
+        i += 1
+    return Deck(path, values, tables, table_lines)
+
+
+def _row(path: Path, header: list[str], cells: list[str], line: int) -> list[float]:
+    """One table row as numbers; a cell that is not a finite number names file, line and
+    column (a text cell, a number cut off at the end of a truncated file)."""
+    out = []
+    for name, cell in zip(header, cells, strict=False):
+        text = cell.replace("D", "E").replace("d", "e")
+        value = float(text) if _NUMBER.match(cell) else math.nan
+        if not math.isfinite(value):
+            raise SpecError(
+                f"column {name}: {cell!r} is not a finite number", line=line, source=str(path)
+            )
+        out.append(value)
+    return out
+
+
+def _file(deck: Deck, *keys: str) -> Path:
+    name = deck.text(*keys)
+    path = (deck.path.parent / name).resolve()
+    if not path.is_file():
+        line = next((deck.values[k][1] for k in keys if k in deck.values), None)
+        raise SpecError(
+            f"{keys[0]} names {name!r}, which does not exist", line=line, source=str(deck.path)
+        )
+    return path

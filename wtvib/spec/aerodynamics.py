@@ -1,0 +1,128 @@
+"""The rotor's aerodynamics: blade stations, aerofoil polars and the controller's schedule.
+
+With this block the audit solves steady blade-element momentum operating points over the
+wind range and adds the quasi-steady aerodynamic damping to the modes (``wtvib.bem``,
+``wtvib.aerodamping``); without it the audit is structural and says so.
+"""
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import Positive, _increasing, _same_length, _Strict
+from .blade import MAX_WIND_M_S
+
+#: The most aerofoils and stations a spec may name (the OpenFAST decks hold 8 aerofoils and
+#: 19 nodes, windIO files ~10 aerofoils; the work of a BEM solve grows with both).
+MAX_AIRFOILS, MAX_STATIONS, MAX_POLAR_POINTS = 60, 200, 400
+
+
+class AirfoilPolar(_Strict):
+    """One aerofoil's static polar: lift and drag over the angle of attack (−180 … 180°)."""
+
+    alpha_deg: list[float] = Field(
+        min_length=3, max_length=MAX_POLAR_POINTS, description="Angle of attack. [deg]"
+    )
+    cl: list[float] = Field(description="Lift coefficient C_L. [-]")
+    cd: list[float] = Field(description="Drag coefficient C_D. [-]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "AirfoilPolar":
+        _increasing("alpha_deg", self.alpha_deg)
+        _same_length(self, "alpha_deg")
+        if self.alpha_deg[0] < -180 or self.alpha_deg[-1] > 180:
+            raise ValueError("alpha_deg must lie within -180 … 180")
+        if min(self.cd) < 0:
+            raise ValueError("cd must not be negative")
+        return self
+
+
+class BladeStations(_Strict):
+    """The blade's aerodynamic stations, from root to tip."""
+
+    radius_m: list[float] = Field(
+        min_length=3, max_length=MAX_STATIONS, description="Distance from the rotor axis. [m]"
+    )
+    chord_m: list[Positive] = Field(description="Chord. [m]")
+    twist_deg: list[float] = Field(
+        description="Aerodynamic twist: angle of the chord to the rotor plane at zero pitch "
+        "(positive towards feather). [deg]"
+    )
+    airfoil: list[str] = Field(description="Aerofoil of each station (a key of `airfoils`).")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "BladeStations":
+        _increasing("radius_m", self.radius_m)
+        if self.radius_m[0] <= 0:
+            raise ValueError("radius_m must be positive (measured from the rotor axis)")
+        _same_length(self, "radius_m")
+        return self
+
+
+class Control(_Strict):
+    """The controller's steady schedule (Hau ch. 5; Jonkman et al. 2009 §7).
+
+    Variable speed: the optimal tip-speed ratio between the rotor's min and rated speed,
+    then constant speed; fixed speed: the rotor's fixed speed. Pitch regulation pitches to
+    feather above rated power; stall regulation holds the fine pitch at every wind.
+    """
+
+    regulation: Literal["pitch", "stall"] = Field(
+        "pitch", description="Power regulation above rated wind."
+    )
+    cut_in_wind_m_s: Positive = Field(
+        3.0, le=MAX_WIND_M_S, description="Lowest wind in operation. [m/s]"
+    )
+    cut_out_wind_m_s: Positive = Field(
+        25.0, le=MAX_WIND_M_S, description="Highest wind in operation. [m/s]"
+    )
+    rated_power_kw: Positive | None = Field(
+        None,
+        description="Rated electrical power; default turbine.rated_power_kw. Pitch regulation "
+        "holds the aerodynamic power at rated / generator_efficiency. [kW]",
+    )
+    generator_efficiency: float = Field(
+        1.0, gt=0, le=1, description="Drive train and generator efficiency. [-]"
+    )
+    tip_speed_ratio: Positive | None = Field(
+        None,
+        le=30,
+        description="Region-2 tip-speed ratio; default: the one with the highest C_p at "
+        "the fine pitch (from the BEM solution). [-]",
+    )
+    fine_pitch_deg: float = Field(
+        0.0, ge=-30, le=90, description="Blade pitch below rated power. [deg]"
+    )
+
+    @model_validator(mode="after")
+    def _range(self) -> "Control":
+        if self.cut_in_wind_m_s >= self.cut_out_wind_m_s:
+            raise ValueError(
+                f"cut_in_wind_m_s ({self.cut_in_wind_m_s}) must be below cut_out_wind_m_s "
+                f"({self.cut_out_wind_m_s})"
+            )
+        return self
+
+
+class Aerodynamics(_Strict):
+    """Blade stations, aerofoil polars and control: steady operating points and the
+    aerodynamic damping of every mode in operation."""
+
+    air_density_kg_m3: Positive = Field(1.225, le=2.0, description="Air density ρ. [kg/m³]")
+    stations: BladeStations
+    airfoils: dict[str, AirfoilPolar] = Field(
+        min_length=1, max_length=MAX_AIRFOILS, description="Polars by name."
+    )
+    control: Control = Field(default_factory=Control)
+    tip_loss: bool = Field(True, description="Prandtl's tip-loss factor. [-]")
+    hub_loss: bool = Field(True, description="Prandtl's hub-loss factor. [-]")
+
+    @model_validator(mode="after")
+    def _named(self) -> "Aerodynamics":
+        missing = sorted(set(self.stations.airfoil) - set(self.airfoils))
+        if missing:
+            raise ValueError(
+                f"stations.airfoil names {', '.join(missing)}, not in airfoils "
+                f"({', '.join(sorted(self.airfoils))})"
+            )
+        return self
