@@ -295,7 +295,7 @@ def in_operation(
         for m in modes:
             aero: Array | None = None
             source = ""
-            if not m.judged:
+            if m.id in index and not m.judged:
                 pass
             elif m.id in index and cpl is not None:
                 j = index[m.id]
@@ -306,6 +306,8 @@ def in_operation(
                 if np.any(ok):
                     rel = np.abs(cpl.frequency_hz[ok, j] / f_struct[ok] - 1)
                     shift = max(shift, float(rel.max()))
+            elif not m.judged and m.subsystem not in ("blade", "tower"):
+                pass
             elif m.subsystem == "blade":
                 aero = isolated_blade(spec, m, sec)
                 source = "isolated blade mode, section damping on its shape"

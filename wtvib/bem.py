@@ -170,12 +170,13 @@ def _induction(
         (g1 - np.sqrt(g2)) / np.where(np.abs(g3) < 1e-6, 1.0, g3),
     )
     a_pos = np.where(k <= 2 / 3, k / (1 + k), buhl)
-    a_neg = k / (k - 1)  # propeller brake (φ < 0), Ning eq. 20
+    a_neg = k / np.where(np.abs(k - 1) < 1e-12, 1e-12, k - 1)  # propeller brake (φ < 0)
     a = np.where(phi > 0, a_pos, a_neg)
-    a_t = kp / (1 - kp)
+    a_t = kp / np.where(np.abs(1 - kp) < 1e-12, 1e-12, 1 - kp)
+    one_minus_a = np.where(np.abs(1 - a) < 1e-12, 1e-12, 1 - a)  # a = 1: no through-flow
     res = np.where(
         phi > 0,
-        s / (1 - a) - c / speed_ratio * (1 - kp),
+        s / one_minus_a - c / speed_ratio * (1 - kp),
         s * (1 - k) - c / speed_ratio * (1 - kp),
     )
     return res, a, a_t, cl, cd

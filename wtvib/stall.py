@@ -163,7 +163,11 @@ def operating_points(spec: "Spec", radius: float) -> list[tuple[float, float]]:
 
 def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | None:
     """The mode's aerodynamic and total damping over the operating points; None without
-    planform or mass data."""
+    planform or mass data. With the spec's aerodynamics: the mode's damping in operation
+    (the BEM operating points, :mod:`wtvib.aerodamping`), so that this check and
+    ``aerodynamics.stability`` judge the same numbers."""
+    if spec.aerodynamics is not None:
+        return _in_operation(spec, mode)
     ae = spec.blade.aeroelastic
     assert ae is not None
     plan = _planform(spec, radius)
@@ -199,6 +203,28 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
     return out
 
 
+def judged_as(mode: "Mode", modes: "list[Mode] | tuple[Mode, ...]") -> "Mode":
+    """The mode as judged: where the coupled model has it (the modes that replace it), the
+    least damped of those in operation — one truth per mode (issue 17)."""
+    coupled = [m for m in modes if m.replaces == mode.id and m.operating is not None]
+    if not coupled:
+        return mode
+    return min(coupled, key=lambda m: m.operating.total[m.operating.lowest])  # type: ignore[union-attr]
+
+
+def _in_operation(spec: "Spec", mode: "Mode") -> list[Point] | None:
+    op = mode.operating
+    if op is None:
+        return None
+    from .bem import schedule
+
+    alpha = np.degrees(schedule(spec).solution.alpha[:, -2])  # the station inboard of the tip
+    return [
+        Point(w, float(rad_s_to_rpm(o)), a, t, float(al))
+        for w, o, a, t, al in zip(op.wind, op.omega, op.aero, op.total, alpha, strict=True)
+    ]
+
+
 def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]":
     """The stall checks alone (see :func:`judge`)."""
     return judge(spec, modes)[0]
@@ -213,22 +239,29 @@ def judge(
     from .results import Check, Rule
 
     ae = spec.blade.aeroelastic
-    if ae is None:
+    if ae is None and spec.aerodynamics is None:
         return [], {}
     radius = rotor_radius(spec)
     by_id = {m.id: m for m in modes}
-    polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
+    if spec.aerodynamics is not None:
+        inflow = "the aerodynamics' polars at the BEM operating points (frozen induction)"
+    else:
+        assert ae is not None
+        polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
+        inflow = f"{polar}, axial induction a = {ae.axial_induction:g}"
     rule = Rule(
         "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
         "is negative",
         "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), DOMAIN.md §3; "
-        f"{polar}, axial induction a = {ae.axial_induction:g}",
+        + inflow,
     )
     out = []
     curves: dict[str, list[Point]] = {}
     for name in ("flap1", "edge1"):
         cid = f"blade.stall.{name}"
         mode = by_id.get(f"blade.{name}")
+        if mode is not None and spec.aerodynamics is not None:
+            mode = judged_as(mode, modes)
         curve = damping_curve(spec, mode, radius) if mode and radius else None
         if curve is None:
             need = [
@@ -238,7 +271,9 @@ def judge(
                     ("turbine.rotor_diameter_m", radius is not None),
                     (
                         "blade.aeroelastic.planform (or two sections)",
-                        radius is None or _planform(spec, radius) is not None,
+                        radius is None
+                        or spec.aerodynamics is not None
+                        or _planform(spec, radius) is not None,
                     ),
                     (
                         "blade.mass_kg or blade.structure",
@@ -253,7 +288,9 @@ def judge(
         low = min(curve, key=lambda p: p.total)
         low_aero = min(curve, key=lambda p: p.aero)
         negative = [p for p in curve if p.total < 0]
-        where = f"{low.wind:g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
+        where = f"{low.wind:.3g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
+        if mode is not None and mode.id != f"blade.{name}":
+            where += f", as {mode.id}"
         status: Status
         if negative:
             status = "fail"

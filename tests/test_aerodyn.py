@@ -1,0 +1,81 @@
+"""AeroDyn 15 inputs of an OpenFAST deck set → the spec's aerodynamics block; a broken input
+is one line naming file and line, never a traceback."""
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from wtvib.errors import SpecError
+from wtvib.importers import load
+
+
+@pytest.fixture
+def deck(shared: Path, tmp_path: Path) -> Path:
+    """A copy of the NREL 5-MW deck set to break."""
+    dst = tmp_path / "NREL5MW"
+    shutil.copytree(shared / "reference/NREL5MW", dst)
+    return dst
+
+
+def test_the_nrel_deck_set_gives_its_aerodynamics(shared: Path):
+    spec = load(shared / "reference/NREL5MW/NREL-5MW.fst")
+    aero = spec.aerodynamics
+    assert aero is not None
+    st = aero.stations
+    assert len(st.radius_m) == 19  # NumBlNds (the 61.5 m row after the table is not read)
+    assert st.radius_m[-1] == pytest.approx(1.5 + 61.4999)
+    assert st.radius_m[0] == pytest.approx(1.5)  # HubRad + BlSpn
+    assert st.chord_m[0] == pytest.approx(3.542) and st.twist_deg[0] == pytest.approx(13.308)
+    assert st.airfoil[0] == "Cylinder1" and st.airfoil[-1] == "NACA64_A17"
+    assert aero.control.tip_speed_ratio == pytest.approx(7.5)  # VS_TSRopt
+    assert aero.control.generator_efficiency == pytest.approx(0.944)  # GenEff
+    assert aero.control.rated_power_kw == pytest.approx(5000.0)  # VS_RtPwr
+    assert aero.air_density_kg_m3 == pytest.approx(1.225)
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text()
+    assert old in text
+    path.write_text(text.replace(old, new, 1))
+
+
+@pytest.mark.parametrize(
+    ("file", "old", "new", "said"),
+    [
+        (
+            "NRELOffshrBsline5MW_AeroDyn_blade.dat",
+            "4.6520000E+00        4",
+            "4.65x        4",
+            "not a finite number",
+        ),
+        (
+            "NRELOffshrBsline5MW_AeroDyn_blade.dat",
+            "1.4190000E+00        8\n\n",
+            "1.4190000E+00        9\n\n",
+            "BlAFID 9 exceeds NumAFfiles 8",
+        ),
+        ("NRELOffshrBsline5MW_AeroDyn_blade.dat", "19   NumBlNds", "40   NumBlNds", "ends after"),
+        (
+            "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
+            '"Airfoils/DU25_A17.dat"',
+            '"Airfoils/none.dat"',
+            "does not exist",
+        ),
+        ("Airfoils/DU25_A17.dat", "140   NumAlf", "14.5   NumAlf", "whole number"),
+        ("NRELOffshrBsline5MW_Onshore_ServoDyn.dat", "94.4   GenEff", "0   GenEff", "GenEff"),
+    ],
+)
+def test_broken_aerodyn_inputs_name_file_and_line(
+    deck: Path, file: str, old: str, new: str, said: str
+):
+    _edit(deck / file, old, new)
+    with pytest.raises(SpecError) as err:
+        load(deck / "NREL-5MW.fst")
+    assert said in str(err.value)
+    assert err.value.source is not None
+
+
+def test_no_aerodyn_no_aerodynamics(deck: Path):
+    _edit(deck / "NREL-5MW.fst", "2   CompAero", "0   CompAero")
+    assert load(deck / "NREL-5MW.fst").aerodynamics is None

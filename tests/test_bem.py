@@ -1,0 +1,110 @@
+"""Steady blade-element momentum: the solution satisfies both of its theories, and the
+controller's schedule does what the controller does.
+
+Expected relations (no reference number needed, each can fail): at a converged station the
+blade-element thrust equals the momentum thrust 4πrρV²a(1 − a)F·dr (Hansen, *Aerodynamics of
+Wind Turbines*, eq. 6.23, valid for a ≤ 0.4 where Buhl's correction is not used) and the
+torque 4πr³ρVΩa′(1 − a)F·dr (eq. 6.24); the schedule holds rated aerodynamic power above the
+rated wind and the optimal tip-speed ratio below rated speed.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from wtvib import bem
+from wtvib.importers import load
+
+
+@pytest.fixture(scope="module")
+def nrel(shared):  # type: ignore[no-untyped-def]
+    return load(shared / "reference/NREL5MW/NREL-5MW.fst")
+
+
+def test_element_and_momentum_thrust_agree_where_induction_is_moderate(nrel):
+    r = bem.rotor(nrel)
+    wind = np.array([6.0, 9.0])
+    omega = 7.5 * wind / r.tip_radius
+    sol = bem.solve(r, wind, omega, np.zeros(2))
+    f = bem._losses(r, sol.phi)
+    q = 0.5 * r.rho * sol.w**2 * r.chord
+    s, c = np.sin(sol.phi), np.cos(sol.phi)
+    element_dt = r.blades * q * (sol.cl * c + sol.cd * s)
+    momentum_dt = 4 * np.pi * r.radius * r.rho * wind[:, None] ** 2 * sol.a * (1 - sol.a) * f
+    element_dq = r.blades * q * (sol.cl * s - sol.cd * c) * r.radius
+    momentum_dq = (
+        4 * np.pi * r.radius**3 * r.rho * wind[:, None] * omega[:, None] * sol.a_t * (1 - sol.a) * f
+    )
+    ok = sol.converged & (sol.a > 0.02) & (sol.a < 0.35) & (r.radius < 0.97 * r.tip_radius)
+    assert ok.sum() > 20
+    np.testing.assert_allclose(element_dt[ok], momentum_dt[ok], rtol=1e-5)
+    np.testing.assert_allclose(element_dq[ok], momentum_dq[ok], rtol=1e-5)
+
+
+def test_the_polar_lookup_is_periodic_and_interpolates(nrel):
+    r = bem.rotor(nrel)
+    a = np.radians(np.array([[-179.9] * len(r.radius), [179.9] * len(r.radius)]))
+    cl, _ = r.polar(a)
+    np.testing.assert_allclose(cl[0], cl[1], atol=0.02)  # ±180° meet
+    p = nrel.aerodynamics.airfoils["NACA64_A17"]
+    i = len(r.radius) - 1  # the tip station uses NACA64_A17
+    x = np.radians(np.full((1, len(r.radius)), 4.3))
+    assert r.polar(x)[0][0, i] == pytest.approx(np.interp(4.3, p.alpha_deg, p.cl), abs=1e-3)
+
+
+def test_schedule_regions(nrel):
+    sch = bem.schedule(nrel)
+    sol = sch.solution
+    p_rated = 5000e3 / 0.944  # VS_RtPwr over GenEff: the aerodynamic power held
+    full = np.array([reg == "full load" for reg in sch.region])
+    assert full.any() and (~full).any()
+    np.testing.assert_allclose(sol.power[full], p_rated, rtol=1e-3)
+    assert np.all(sol.power[~full] <= p_rated * 1.001)
+    assert np.all(np.diff(sch.pitch_deg[full]) > 0)  # feathering as the wind rises
+    below = (~full) & (sch.rpm < 12.1 - 1e-6) & (sch.rpm > sch.rpm.min() + 1e-6)
+    tsr = sol.omega[below] * 63.0 / sol.wind[below]
+    np.testing.assert_allclose(tsr, 7.5, rtol=1e-9)  # VS_TSRopt
+    assert sch.rated_wind is not None and sch.rated_wind in sch.wind
+
+
+def test_fixed_speed_stall_regulation_holds_pitch(write_spec):
+    path = write_spec(SMALL + AERO.format(regulation="stall"))
+    from wtvib.spec import load as load_spec
+
+    sch = bem.schedule(load_spec(path))
+    assert set(sch.region) == {"stall"}
+    np.testing.assert_allclose(sch.rpm, 30.0)
+    np.testing.assert_allclose(sch.pitch_deg, 2.0)
+
+
+SMALL = """\
+wtvib: 1
+turbine: {name: Small stall rotor, rotor_diameter_m: 40, rated_power_kw: 500}
+rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {fixed_rpm: 30}}
+tower: {modes: {fa1: 0.8}}
+blade: {mass_kg: 2000, modes: {flap1: 1.5, edge1: 2.5}}
+"""
+
+AERO = """
+aerodynamics:
+  stations:
+    radius_m: [1.5, 5, 10, 15, 19.5]
+    chord_m: [1.6, 1.5, 1.2, 0.9, 0.6]
+    twist_deg: [12, 8, 4, 1, 0]
+    airfoil: [foil, foil, foil, foil, foil]
+  airfoils:
+    foil: {{alpha_deg: [-180, -20, -10, 0, 10, 14, 20, 45, 90, 180],
+           cl: [0, -0.8, -0.9, 0.3, 1.3, 1.45, 1.1, 1.0, 0.0, 0],
+           cd: [0.02, 0.3, 0.02, 0.008, 0.015, 0.05, 0.3, 1.0, 1.6, 0.02]}}
+  control: {{regulation: {regulation}, fine_pitch_deg: 2, cut_in_wind_m_s: 4,
+            cut_out_wind_m_s: 25}}
+"""
+
+
+def test_the_optimal_tip_speed_ratio_maximises_cp(nrel):
+    r = bem.rotor(nrel)
+    best = bem.optimal_tsr(r, 0.0)
+    cp = bem.power_coefficient(r, np.array([best - 0.5, best, best + 0.5]), 0.0)
+    assert cp[1] >= cp[0] and cp[1] >= cp[2]
+    assert math.isfinite(best)

@@ -1,0 +1,48 @@
+"""The Campbell data: the judged frequency curves and the damping they are judged with."""
+
+import numpy as np
+
+from wtvib import audit
+from wtvib.excitation import operating_range
+from wtvib.spec import load
+
+
+def test_structural_campbell_samples_standstill_to_overspeed(write_spec):
+    spec = load(
+        write_spec(speed="min_rpm: 10\nmax_rpm: 20", extra="blade: {modes: {flap1: 1.2}}\n")
+    )
+    report = audit.run(spec)
+    data = report.campbell.to_dict()
+    assert data["damping"] == "structural" and "wind_m_s" not in data
+    rpm = np.array(data["rpm"])
+    assert rpm[0] == 0 and rpm[-1] == __import__("pytest").approx(
+        operating_range(spec.rotor.speed).overspeed * 30 / np.pi, rel=1e-6
+    )
+    flap = data["modes"]["blade.flap1"]
+    mode = next(m for m in report.modes if m.id == "blade.flap1")
+    np.testing.assert_allclose(flap["frequency_hz"], mode.frequency_at(rpm * np.pi / 30), atol=1e-6)
+    assert set(flap["damping_ratio"]) == {mode.damping_ratio}
+    assert "tower.fa1" not in data["modes"]  # not speed-dependent
+
+
+def test_campbell_csv_has_a_row_per_mode_and_sample(write_spec):
+    report = audit.run(load(write_spec(extra="blade: {modes: {flap1: 1.2, edge1: 2.0}}\n")))
+    csv = report.campbell.to_csv().splitlines()
+    assert csv[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
+    assert len(csv) == 1 + 2 * 30
+    assert csv[1].startswith("blade.flap1,0.0000,,,")
+
+
+def test_aeroelastic_campbell_follows_the_operating_points(shared):
+    from wtvib.importers import load as load_any
+
+    report = audit.run(load_any(shared / "reference/NREL5MW/NREL-5MW.fst"))
+    data = report.to_dict()["campbell"]
+    assert data["damping"].startswith("in operation")
+    n = len(data["wind_m_s"])
+    assert n == len(data["rpm"]) == len(data["pitch_deg"]) >= 25
+    fa = data["modes"]["system.tower.fa1"]
+    mode = next(m for m in report.modes if m.id == "system.tower.fa1")
+    assert mode.operating is not None
+    np.testing.assert_allclose(fa["damping_ratio"], mode.operating.total, atol=1e-6)
+    assert all(not k.startswith("tower.") for k in data["modes"])  # superseded: not judged
