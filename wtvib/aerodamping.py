@@ -25,7 +25,8 @@ Models:
 * the coupled whole-turbine model (three or more blades): each blade point's velocity from
   the model's kinematics (blade modes, tower-top translation and rotation, drive train),
   D = Σ Jᵀ C J per blade, in multi-blade coordinates; the damped eigenproblem at each
-  operating point, modes followed by shape from standstill;
+  operating point, each mode matched by shape to the structural mode at the same rotor
+  speed (overdamped roots kept, with ζ = 1);
 * isolated blade modes: ζ_a = ∫ C φ² dr / (2ω ∫ m φ² dr) (flap: C_nn, edge: C_tt);
 * isolated first tower bending modes: the rotor's hub-velocity damping N_b∫C_nn dr
   (fore-aft) and (N_b/2)∫C_tt dr (side-side, azimuth mean) on the tower's first-mode
@@ -51,9 +52,9 @@ from .spec import Spec
 
 Array = NDArray[np.float64]
 
-#: Steps of the aerodynamics switched on at the first operating point, so that shape
-#: tracking follows each structural mode into its heavily damped aeroelastic form.
-RAMP = (0.25, 0.5, 0.75)
+#: A damped mode stands for a structural one when MAC + energy overlap reaches this (of 2);
+#: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
+MATCH = 1.5
 
 #: The tower's equivalent tip mass in its first bending mode: 33/140 of its mass (a
 #: uniform cantilever, Rayleigh; Blevins, Formulas for Natural Frequency, Table 8-8).
@@ -140,13 +141,14 @@ class Coupled:
     frequency_hz: Array  # (K, modes)
     damping_ratio: Array  # (K, modes), eigenvalue damping (aerodynamics + dampers)
     standstill: Array  # (modes,), the eigenvalue damping at standstill (the dampers)
+    first_order: NDArray[np.bool_]  # (K, modes): no damped mode matched, first-order ζ
 
 
 def coupled(spec: Spec, sec: Sections) -> Coupled | None:
     """The coupled model's damped modes at each operating point (None: no coupled model
     with a rotating multi-blade view)."""
     from . import coupled as coupled_model
-    from .multiblade import fixed_frame_damping, track
+    from .multiblade import fixed_frame_damping, matched, perturbed, track
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
         return None
@@ -154,23 +156,40 @@ def coupled(spec: Spec, sec: Sections) -> Coupled | None:
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
     sol = sec.schedule.solution
     c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
-    extras = []
+    # the structural modes at each operating speed, followed from standstill (through the
+    # sweep's speeds below the first operating speed): the names and reference shapes
+    speeds = sorted({round(float(w), 12) for w in sol.omega})
+    lead = [float(w) for w in coupled_model.speeds(spec) if w < speeds[0]]
+    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False)
+    at = {w: i for i, w in enumerate(speeds, start=len(lead))}
+    kept = path.kept
+    freq = np.empty((len(sol.omega), kept))
+    zeta = np.empty((len(sol.omega), kept))
+    unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
     for k, om in enumerate(sol.omega):
+        i = at[round(float(om), 12)]
+        ref = path.shapes[i]
         d = model.section_damping(c_points[k])
-        extras.append(fixed_frame_damping(model, d, float(om)))
-    first = float(sol.omega[0])
-    speeds = [float(w) for w in coupled_model.speeds(spec) if w < first]
-    points: list[tuple[float, tuple[Array, Array] | None]] = [(w, None) for w in speeds]
-    points += [(first, (s * extras[0][0], s * extras[0][1])) for s in RAMP]
-    lead = len(points)
-    points += [(float(om), e) for om, e in zip(sol.omega, extras, strict=True)]
-    path = track(model, points, named=False)
+        extra = fixed_frame_damping(model, d, float(om))
+        freq[k], zeta[k], score = matched(model, float(om), extra, ref)
+        # where no damped mode resembles the structural one (veering, overdamping): the
+        # first-order estimate on the structural mode instead
+        poor = score < MATCH
+        if np.any(poor):
+            z0 = path.damping_ratio[i]
+            w0 = 2 * np.pi * path.frequency_hz[i]
+            lam = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
+            first = perturbed(model, float(om), extra, ref, lam)
+            zeta[k, poor] = first[poor]
+            freq[k, poor] = path.frequency_hz[i][poor]
+            unresolved[k] = poor
     assert path.first.damping_ratio is not None
     return Coupled(
         tuple(f"system.{n}" for n in path.first.names),
-        path.frequency_hz[lead:],
-        path.damping_ratio[lead:],
+        freq,
+        zeta,
         np.asarray(path.first.damping_ratio),
+        unresolved,
     )
 
 
@@ -335,6 +354,20 @@ def in_operation(
             "operating point (multi-blade coordinates), followed by shape from standstill; "
             "frequencies are judged on the structural curve, which the aeroelastic |λ| of "
             f"the modes damped below ζ = {heavy:g} departs from by at most {shift:.1%}."
+        )
+    if cpl is not None and cpl.first_order.any():
+        named = [
+            f"{n} ({int(cpl.first_order[:, j].sum())})"
+            for j, n in enumerate(cpl.names)
+            if cpl.first_order[:, j].any() and n in {m.id for ms in out.values() for m in ms}
+        ]
+        notes.append(
+            f"At {int(cpl.first_order.sum())} of {cpl.first_order.size} mode-points no "
+            "damped mode resembled the structural one (MAC + energy overlap below "
+            f"{MATCH:g} of 2: strong aerodynamic coupling, overdamping or veering); there "
+            "the structural mode's first-order damping xᴴ(λD + K′)x / xᴴ(2λM + G)x is used: "
+            + ", ".join(named)
+            + "."
         )
     if skipped:
         notes.append(

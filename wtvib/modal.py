@@ -96,7 +96,18 @@ def track(previous: NDArray[Any], current: NDArray[Any]) -> NDArray[np.intp]:
     left out). Exhaustive over permutations for up to 7 modes of a square problem (an exact
     assignment), greedy otherwise.
     """
-    score = mac(previous, current)
+    return assign(mac(previous, current))
+
+
+def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
+    """For each row of a similarity matrix (previous modes × candidates) the column that
+    continues it (max total score): exhaustive for up to 7 square, greedy otherwise;
+    ``optimal``: the best assignment always (Hungarian method, scipy)."""
+    if optimal:
+        from scipy.optimize import linear_sum_assignment
+
+        rows, cols = linear_sum_assignment(score, maximize=True)
+        return np.asarray(cols[np.argsort(rows)], dtype=np.intp)
     n, candidates = score.shape
     if n <= 7 and candidates == n:
         best = max(
@@ -152,6 +163,7 @@ def oscillations(
     d: Array,
     floor: float | None = None,
     unstable: str = "keep",
+    overdamped: bool = False,
 ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
     """The oscillatory roots λ (Im λ > 0) of M q̈ + D q̇ + K q = 0, ascending |λ|, and the
     displacement part of their (complex) eigenvectors — the state-space eigenproblem every
@@ -160,7 +172,8 @@ def oscillations(
     Roots with |λ| below ``floor`` [rad/s] are no oscillation; None: 1e-5·|λ|max, which also
     drops the λ ≈ 0 of rigid-body motion (a defective double root that rounding splits into
     a pair of size ~√ε·|λ|max). ``unstable="refuse"`` raises ModalError on a root with a
-    positive real part.
+    positive real part. ``overdamped``: real roots count too (a mode damped past critical
+    keeps a place, with ζ = 1, so that shape tracking does not hand its name to another).
     """
     n = k.shape[-1]
     lam, vec = np.linalg.eig(state_matrix(k, m, d))
@@ -172,6 +185,8 @@ def oscillations(
     if unstable == "refuse" and np.any((lam.real > 1e-9 * scale) & (np.abs(lam) > tiny)):
         raise ModalError("the drive train is unstable (an eigenvalue with positive real part)")
     osc = (lam.imag > imag) & (np.abs(lam) > tiny)
+    if overdamped:
+        osc |= (np.abs(lam.imag) <= imag) & (lam.real < 0) & (np.abs(lam) > tiny)
     lam, vec = lam[osc], vec[:n, osc]
     order = np.argsort(np.abs(lam))
     return lam[order], vec[:, order]

@@ -140,8 +140,9 @@ def rotating(
     d, k = d0 + omega * d1, k0 + omega**2 * k2
     if extra is not None:
         d, k = d + extra[0], k + extra[1]
-    # modes below 1 mHz are the rotor turning on a free generator, not oscillations
-    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3)
+    # modes below 1 mHz are the rotor turning on a free generator, not oscillations; a path
+    # followed by shape alone keeps overdamped roots (heavily damped flap modes)
+    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3, overdamped=not named)
     lam, shapes = lam[:count], vec[:, :count]
     f = np.abs(lam) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
     zeta = -lam.real / np.abs(lam)
@@ -307,6 +308,7 @@ class Path:
     damping_ratio: Array  # (points, modes): −Re λ/|λ|
     last: tuple[str, ...]  # descriptions at the last point
     whirl: tuple[tuple[str | None, ...], ...]  # (points, modes)
+    shapes: tuple[NDArray[np.complex128], ...]  # (points): each (coordinates, modes)
 
     @property
     def kept(self) -> int:
@@ -333,6 +335,7 @@ def track(
     assert first.damping_ratio is not None
     zetas[0] = first.damping_ratio
     shapes = first.shapes
+    every = [shapes]
     last = first.descriptions
     whirl = [list(first.whirl)]
     for i, (om, extra) in enumerate(points[1:], start=1):
@@ -342,7 +345,68 @@ def track(
         assert cur.damping_ratio is not None
         zetas[i] = cur.damping_ratio[order]
         shapes = cur.shapes[:, order]
+        every.append(shapes)
         if named:
             last = tuple(cur.descriptions[o] for o in order)
             whirl.append([cur.whirl[o] for o in order])
-    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl))
+    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every))
+
+
+def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128]) -> Array:
+    """Similarity of modes by where their kinetic energy sits, coordinate by coordinate
+    (Bhattacharyya overlap of the mass-weighted |x|² distributions): blind to phase, so a
+    whirling structural mode and its overdamped, standing aeroelastic form still match."""
+    weight = np.diag(model.multiblade[0])[:, None]
+
+    def dist(x: NDArray[np.complex128]) -> Array:
+        e = weight * np.abs(x) ** 2
+        return np.asarray(e / np.maximum(e.sum(axis=0, keepdims=True), 1e-300))
+
+    return np.sqrt(dist(a)).T @ np.sqrt(dist(b))
+
+
+def matched(
+    model: "Model",
+    omega: float,
+    extra: tuple[Array, Array],
+    reference: NDArray[np.complex128],
+    spare: int = 24,
+) -> tuple[Array, Array, Array]:
+    """|λ|/2π and ζ of the modes with ``extra`` matrices at Ω, each matched to a column of
+    ``reference`` (the structural modes at the same speed) by shape and by where its energy
+    sits (:func:`_overlap`): one assignment per point, so a heavily damped mode cannot hand
+    its name along a chain. The third array is each match's score (0 … 2: MAC + overlap)."""
+    kept = reference.shape[1]
+    cur = rotating(model, omega, kept + spare, extra, named=False)
+    weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
+    # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
+    # (blind to phase: keeps an overdamped, standing form with its whirling origin)
+    score = modal.mac(weight * reference, weight * cur.shapes) + _overlap(
+        model, reference, cur.shapes
+    )
+    order = modal.assign(score, optimal=True)
+    assert cur.damping_ratio is not None
+    best = score[np.arange(kept), order]
+    return cur.frequency_hz[order], cur.damping_ratio[order], best
+
+
+def perturbed(
+    model: "Model",
+    omega: float,
+    extra: tuple[Array, Array],
+    reference: NDArray[np.complex128],
+    lam: NDArray[np.complex128],
+) -> Array:
+    """ζ of each reference mode (eigenvalue ``lam``, shape x) with ``extra`` damping D and
+    stiffness K′ added, to first order: Δλ = −xᴴ(λD + K′)x / xᴴ(2λM + G)x (the left
+    eigenvector of a gyroscopic system is x̄; G: the structural damping matrix)."""
+    m, d0, d1, _, _ = model.multiblade
+    g = d0 + omega * d1
+    d, k = extra
+    x = reference
+    num = lam * np.einsum("ij,ik,kj->j", x.conj(), d, x) + np.einsum("ij,ik,kj->j", x.conj(), k, x)
+    den = 2 * lam * np.einsum("ij,ik,kj->j", x.conj(), m, x) + np.einsum(
+        "ij,ik,kj->j", x.conj(), g, x
+    )
+    new = lam - num / den
+    return np.asarray(-new.real / np.abs(new))

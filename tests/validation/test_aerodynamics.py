@@ -247,7 +247,7 @@ def test_nrel5mw_damped_modes_in_operation(nrel):
         assert zeta(k).min() > 0.25  # tens of per cent
     for k in edge:
         assert 0 < zeta(k).max() < 0.05
-    assert 0.02 < zeta("system.tower.fa1").min() and zeta("system.tower.fa1").max() < 0.15
+    assert zeta("system.tower.fa1").min() > 0.02 and zeta("system.tower.fa1").max() < 0.15
     assert zeta("system.tower.ss1").max() < 0.02
     # the same ζ in the verdicts: a flap crossing is heavily damped, a side-side one is not
     found = {(f.mode.id, f.excitation.id): f for f in report.findings}

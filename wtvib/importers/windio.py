@@ -141,6 +141,14 @@ def _to_spec_data(
         "assumptions": notes,
         **({"warnings": warnings} if warnings else {}),
     }
+    if blade_len:
+        from .windio_aero import aerodynamics
+
+        hub_r = float(d["components"].get("hub", {}).get("diameter", 0.0)) / 2.0
+        aero = aerodynamics(d, v2, hub_r, blade_len, str(path))
+        if aero is not None:
+            data["aerodynamics"] = aero[0]
+            notes.append(aero[1])
     gear = reader.gear_ratio()
     if gear:
         data["drivetrain"] = {"gear_ratio": gear}

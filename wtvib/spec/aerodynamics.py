@@ -13,15 +13,16 @@ from .base import Positive, _increasing, _same_length, _Strict
 from .blade import MAX_WIND_M_S
 
 #: The most aerofoils and stations a spec may name (the OpenFAST decks hold 8 aerofoils and
-#: 19 nodes, windIO files ~10 aerofoils; the work of a BEM solve grows with both).
-MAX_AIRFOILS, MAX_STATIONS, MAX_POLAR_POINTS = 60, 200, 400
+#: 19 nodes, windIO files ~10 aerofoils blended into one polar per station; the work of a
+#: BEM solve grows with both).
+MAX_AIRFOILS, MAX_STATIONS, MAX_POLAR_POINTS = 250, 200, 400
 
 
 class AirfoilPolar(_Strict):
     """One aerofoil's static polar: lift and drag over the angle of attack (−180 … 180°)."""
 
     alpha_deg: list[float] = Field(
-        min_length=3, max_length=MAX_POLAR_POINTS, description="Angle of attack. [deg]"
+        min_length=2, max_length=MAX_POLAR_POINTS, description="Angle of attack. [deg]"
     )
     cl: list[float] = Field(description="Lift coefficient C_L. [-]")
     cd: list[float] = Field(description="Drag coefficient C_D. [-]")

@@ -1,0 +1,166 @@
+"""windIO blade outer shape, aerofoil polars and control → the spec's ``aerodynamics`` block.
+
+windIO 2.x: ``components.blade.outer_shape`` (chord, twist in degrees, ``airfoils`` with
+their spanwise positions), ``airfoils[].polars[0].re_sets[0]`` (α in degrees),
+``control.optimal_tsr`` / ``fine_pitch`` (degrees), ``assembly.cut_in_wind_speed`` /
+``cut_out_wind_speed``. windIO 1.x: ``outer_shape_bem`` (twist in radians,
+``airfoil_position``), ``airfoils[].polars[0].c_l/c_d`` (α in radians),
+``control.torque.tsr``, ``control.pitch.min_pitch`` (radians), ``control.supervisory.Vin/
+Vout``. Between two named aerofoils a station's polar is blended linearly in span position
+(as WISDEM does); stations sit at hub radius + span fraction × blade length (precone and
+prebend neglected). windIO schema documentation (windio.readthedocs.io).
+"""
+
+import math
+from typing import Any
+
+import numpy as np
+
+from ..errors import SpecError
+from ..spec.aerodynamics import MAX_POLAR_POINTS, MAX_STATIONS
+
+#: A blended polar on more points than the spec takes is resampled every 1°.
+_RESAMPLED = np.arange(-180.0, 180.0 + 1e-9, 1.0)
+
+
+def _field(node: Any, key: str) -> tuple[np.ndarray, np.ndarray]:
+    f = node[key]
+    return np.asarray(f["grid"], float), np.asarray(f["values"], float)
+
+
+def _polar(foil: Any, v2: bool, source: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """α [deg], C_L, C_D of an aerofoil's first polar (first Reynolds set)."""
+    p = foil["polars"][0]
+    if v2:
+        p = p["re_sets"][0]
+        a_l, cl = _field(p, "cl")
+        a_d, cd = _field(p, "cd")
+    else:
+        a_l, cl = _field(p, "c_l")
+        a_d, cd = _field(p, "c_d")
+        a_l, a_d = np.degrees(a_l), np.degrees(a_d)
+    alpha = np.union1d(np.round(a_l, 6), np.round(a_d, 6))
+    alpha = alpha[(alpha >= -180) & (alpha <= 180)]
+    if len(alpha) < 2 or not (np.all(np.isfinite(cl)) and np.all(np.isfinite(cd))):
+        raise SpecError(
+            f"airfoils: {foil.get('name')!r} has no usable polar (α within ±180°)", source=source
+        )
+    return alpha, np.interp(alpha, a_l, cl), np.interp(alpha, a_d, cd)
+
+
+def aerodynamics(
+    d: Any, v2: bool, hub_radius: float, length: float, source: str
+) -> tuple[dict[str, Any], str] | None:
+    """The aerodynamics block and a sentence on how it was read; None where the file has
+    no outer shape with aerofoils."""
+    blade = d["components"]["blade"]
+    shape = blade.get("outer_shape" if v2 else "outer_shape_bem")
+    foils = {f.get("name"): f for f in d.get("airfoils", []) if isinstance(f, dict)}
+    if not shape or "chord" not in shape or "twist" not in shape or not foils:
+        return None
+    grid, chord = _field(shape, "chord")
+    t_grid, twist = _field(shape, "twist")
+    twist = np.interp(grid, t_grid, twist if v2 else np.degrees(twist))
+    if v2:
+        placed = sorted(
+            (float(a["spanwise_position"]), str(a["name"])) for a in shape.get("airfoils", [])
+        )
+    else:
+        pos = shape["airfoil_position"]
+        placed = sorted(zip(map(float, pos["grid"]), map(str, pos["labels"]), strict=True))
+    if not placed:
+        return None
+    missing = sorted({n for _, n in placed} - set(foils))
+    if missing:
+        raise SpecError(
+            f"the blade names aerofoils not in 'airfoils': {', '.join(missing)}", source=source
+        )
+    tip = float(d.get("assembly", {}).get("rotor_diameter", 0.0)) / 2
+    if tip > hub_radius and hub_radius + length > tip:
+        length = tip - hub_radius  # precone and prebend: the span projected on the rotor plane
+    radius = hub_radius + grid * length
+    keep = radius > 0
+    if keep.sum() > MAX_STATIONS:  # thin a long table evenly
+        keep &= np.isin(
+            np.arange(len(grid)), np.linspace(0, len(grid) - 1, MAX_STATIONS).astype(int)
+        )
+    polars = {n: _polar(foils[n], v2, source) for n in {n for _, n in placed}}
+    out_foils: dict[str, dict[str, list[float]]] = {}
+    names: list[str] = []
+    where = np.array([p for p, _ in placed])
+    for s in grid[keep]:
+        k = int(np.clip(np.searchsorted(where, s, side="right") - 1, 0, len(placed) - 1))
+        a = placed[k][1]
+        b = placed[min(k + 1, len(placed) - 1)][1]
+        span = where[min(k + 1, len(placed) - 1)] - where[k]
+        t = float(np.clip((s - where[k]) / span, 0, 1)) if span > 0 else 0.0
+        if a == b or t < 1e-3 or t > 1 - 1e-3:
+            name = a if t <= 0.5 or a == b else b
+            if name not in out_foils:
+                al, cl, cd = polars[name]
+                out_foils[name] = _table(al, cl, cd)
+        else:
+            name = f"{a}|{b}@{t:.3f}"
+            if name not in out_foils:
+                out_foils[name] = _blend(polars[a], polars[b], t)
+        names.append(name)
+    ctl = d.get("control", {})
+    asm = d.get("assembly", {})
+    if v2:
+        tsr = ctl.get("optimal_tsr")
+        fine = float(ctl.get("fine_pitch", 0.0))
+        cut_in, cut_out = asm.get("cut_in_wind_speed"), asm.get("cut_out_wind_speed")
+    else:
+        tsr = ctl.get("torque", {}).get("tsr")
+        fine = math.degrees(float(ctl.get("pitch", {}).get("min_pitch", 0.0)))
+        sup = ctl.get("supervisory", {})
+        cut_in, cut_out = sup.get("Vin"), sup.get("Vout")
+    control: dict[str, Any] = {"regulation": "pitch", "fine_pitch_deg": fine}
+    if tsr:
+        control["tip_speed_ratio"] = float(tsr)
+    if cut_in:
+        control["cut_in_wind_m_s"] = float(cut_in)
+    if cut_out:
+        control["cut_out_wind_m_s"] = float(cut_out)
+    block: dict[str, Any] = {
+        "air_density_kg_m3": float((d.get("environment") or {}).get("air_density", 1.225)),
+        "stations": {
+            "radius_m": [float(r) for r in radius[keep]],
+            "chord_m": [float(c) for c in chord[keep]],
+            "twist_deg": [float(t) for t in twist[keep]],
+            "airfoil": names,
+        },
+        "airfoils": out_foils,
+        "control": control,
+    }
+    note = (
+        f"Aerodynamics from the blade's outer shape ({int(keep.sum())} stations at hub radius + "
+        "span fraction × the blade's length in the rotor plane, up to the rotor radius: "
+        "precone and prebend otherwise neglected) and the first polar of "
+        "each aerofoil, blended linearly between the named positions; rated power held as "
+        "aerodynamic power (no drivetrain efficiency read)"
+        + ("; the region-2 minimum-pitch table (peak shaving) is not modelled" if v2 else "")
+        + "."
+    )
+    return block, note
+
+
+def _table(alpha: np.ndarray, cl: np.ndarray, cd: np.ndarray) -> dict[str, list[float]]:
+    if len(alpha) > MAX_POLAR_POINTS:
+        cl, cd, alpha = (
+            np.interp(_RESAMPLED, alpha, cl),
+            np.interp(_RESAMPLED, alpha, cd),
+            _RESAMPLED,
+        )
+    return {"alpha_deg": alpha.tolist(), "cl": cl.tolist(), "cd": np.maximum(cd, 0.0).tolist()}
+
+
+def _blend(
+    a: tuple[np.ndarray, np.ndarray, np.ndarray],
+    b: tuple[np.ndarray, np.ndarray, np.ndarray],
+    t: float,
+) -> dict[str, list[float]]:
+    alpha = np.union1d(a[0], b[0])
+    cl = (1 - t) * np.interp(alpha, a[0], a[1]) + t * np.interp(alpha, b[0], b[1])
+    cd = (1 - t) * np.interp(alpha, a[0], a[2]) + t * np.interp(alpha, b[0], b[2])
+    return _table(alpha, cl, cd)
