@@ -338,8 +338,15 @@ def _schedule(spec: Spec) -> Schedule:
     p_rated = rated_kw * 1e3 / c.generator_efficiency if rated_kw is not None else None
     winds = np.linspace(c.cut_in_wind_m_s, c.cut_out_wind_m_s, WIND_SAMPLES)
 
+    def lowest(v: Array) -> Array:  # the pitch below rated: fine, or the peak-shaving table
+        base = np.full_like(v, fine)
+        if c.min_pitch is None:
+            return base
+        table = np.radians(np.interp(v, c.min_pitch.wind_m_s, c.min_pitch.pitch_deg))
+        return np.maximum(base, table)
+
     def at_fine(v: Array) -> Solution:
-        return solve(r, v, _rotor_speed(spec, r, v, tsr, fine), np.full_like(v, fine))
+        return solve(r, v, _rotor_speed(spec, r, v, tsr, fine), lowest(v))
 
     rated_wind = None
     pitching = c.regulation == "pitch" and p_rated is not None
@@ -363,13 +370,15 @@ def _schedule(spec: Spec) -> Schedule:
                 "cut-out: no pitching"
             )
     omega = _rotor_speed(spec, r, winds, tsr, fine)
-    pitch = np.full_like(winds, fine)
+    pitch = lowest(winds)
+    if c.min_pitch is not None:
+        notes.append("below rated the pitch follows the controller's minimum-pitch table")
     region = ["stall" if c.regulation == "stall" else "partial load"] * len(winds)
     if pitching and rated_wind is not None:
         assert p_rated is not None
         full = winds > rated_wind * (1 + 1e-9)
         if np.any(full):
-            pitch[full] = _pitch_to_rated(r, winds[full], omega[full], fine, p_rated)
+            pitch[full] = _pitch_to_rated(r, winds[full], omega[full], pitch[full], p_rated)
             for i in np.nonzero(full)[0]:
                 region[i] = "full load"
     sol = solve(r, winds, omega, pitch)
@@ -419,17 +428,19 @@ def _rated_wind(excess: Callable[[float], float], lo: float, hi: float) -> float
 PITCH_STEP_DEG, PITCH_SPAN_DEG, PITCH_REFINE = 5.0, 60.0, 5
 
 
-def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, fine: float, p_rated: float) -> Array:
-    """The pitch (towards feather) at which each wind's aerodynamic power is rated."""
-    grid = fine + np.radians(np.arange(0.0, PITCH_SPAN_DEG + 1e-9, PITCH_STEP_DEG))
-    k, g = len(wind), len(grid)
-    power = solve(r, np.repeat(wind, g), np.repeat(omega, g), np.tile(grid, k)).power
+def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: float) -> Array:
+    """The pitch (towards feather from ``low``, each wind's lowest) at which each wind's
+    aerodynamic power is rated."""
+    steps = np.radians(np.arange(0.0, PITCH_SPAN_DEG + 1e-9, PITCH_STEP_DEG))
+    grid = low[:, None] + steps[None, :]  # (winds, grid)
+    k, g = grid.shape
+    power = solve(r, np.repeat(wind, g), np.repeat(omega, g), grid.ravel()).power
     excess = power.reshape(k, g) - p_rated
     below = excess <= 0
     j = np.where(below.any(axis=1), np.argmax(below, axis=1), g - 1)
     j = np.maximum(j, 1)
     rows = np.arange(k)
-    lo, hi = grid[j - 1], grid[j]
+    lo, hi = grid[rows, j - 1], grid[rows, j]
     f_lo, f_hi = excess[rows, j - 1], excess[rows, j]
     x = hi
     for _ in range(PITCH_REFINE):
@@ -441,4 +452,4 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, fine: float, p_rated: f
         f_lo = np.where(swap, f_hi, 0.5 * f_lo)  # Illinois: halve the end that stays
         hi, f_hi = x, f_x
     # a wind whose power stays above rated at the last grid pitch: the last grid pitch
-    return np.where(below.any(axis=1) | (j < g - 1), x, grid[-1])
+    return np.where(below.any(axis=1) | (j < g - 1), x, grid[:, -1])

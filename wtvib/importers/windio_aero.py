@@ -116,6 +116,12 @@ def aerodynamics(
         sup = ctl.get("supervisory", {})
         cut_in, cut_out = sup.get("Vin"), sup.get("Vout")
     control: dict[str, Any] = {"regulation": "pitch", "fine_pitch_deg": fine}
+    table = ctl.get("min_pitch_table") if v2 else None
+    if table and len(table.get("wind_speed", [])) >= 2:
+        control["min_pitch"] = {
+            "wind_m_s": [float(v) for v in table["wind_speed"]],
+            "pitch_deg": [float(p) for p in table["min_pitch"]],
+        }
     if tsr:
         control["tip_speed_ratio"] = float(tsr)
     if cut_in:
@@ -139,7 +145,11 @@ def aerodynamics(
         "precone and prebend otherwise neglected) and the first polar of "
         "each aerofoil, blended linearly between the named positions; rated power held as "
         "aerodynamic power (no drivetrain efficiency read)"
-        + ("; the region-2 minimum-pitch table (peak shaving) is not modelled" if v2 else "")
+        + (
+            "; below rated the pitch follows control.min_pitch_table"
+            if "min_pitch" in control
+            else ""
+        )
         + "."
     )
     return block, note

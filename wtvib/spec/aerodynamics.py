@@ -60,6 +60,22 @@ class BladeStations(_Strict):
         return self
 
 
+class MinimumPitch(_Strict):
+    """The controller's minimum pitch over wind (ROSCO's peak shaving, windIO
+    ``control.min_pitch_table``): the pitch is at least this below rated."""
+
+    wind_m_s: list[float] = Field(min_length=2, max_length=400, description="Wind. [m/s]")
+    pitch_deg: list[float] = Field(description="Minimum pitch. [deg]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "MinimumPitch":
+        _increasing("wind_m_s", self.wind_m_s)
+        _same_length(self, "wind_m_s")
+        if any(abs(p) > 90 for p in self.pitch_deg):
+            raise ValueError("pitch_deg must lie within ±90")
+        return self
+
+
 class Control(_Strict):
     """The controller's steady schedule (Hau ch. 5; Jonkman et al. 2009 §7).
 
@@ -93,6 +109,11 @@ class Control(_Strict):
     )
     fine_pitch_deg: float = Field(
         0.0, ge=-30, le=90, description="Blade pitch below rated power. [deg]"
+    )
+    min_pitch: MinimumPitch | None = Field(
+        None,
+        description="Minimum pitch over wind (peak shaving); the pitch below rated is the "
+        "higher of this and fine_pitch_deg.",
     )
 
     @model_validator(mode="after")
