@@ -33,3 +33,31 @@ def test_the_registry_names_every_figure_and_tags_the_png(reports):
     assert {"campbell", "campbell-drivetrain", "drivetrain-power", "floquet"} <= names
     data = png_bytes(campbell.campbell_plot(reports["wka-60"]))
     assert data.startswith(b"\x89PNG") and SOFTWARE_TAG.encode() in data[:4096]
+
+
+def test_damping_diagram_and_crossing_dafs(shared, tmp_path):
+    """With aerodynamics: a damping-versus-wind diagram beside the Campbell diagrams, and
+    the Campbell crossings labelled with their DAF (the numbers the findings hold)."""
+    from wtvib import audit
+    from wtvib.importers import load as load_any
+    from wtvib.plots import diagrams
+    from wtvib.plots.campbell import campbell_plot
+
+    report = audit.run(load_any(shared / "reference/NREL5MW/NREL-5MW.fst"))
+    figs = diagrams(report)
+    assert "damping" in figs
+    ax = figs["damping"].axes[0]
+    assert len(ax.get_lines()) >= sum(1 for m in report.modes if m.judged and m.operating)
+    texts = [t.get_text() for t in campbell_plot(report, ("system",)).axes[0].texts]
+    ss = next(
+        f for f in report.findings if f.mode.id == "system.tower.ss1" and f.excitation.id == "3P"
+    )
+    assert f"DAF {ss.crossing_daf[0]:.3g}" in texts
+
+
+def test_no_damping_diagram_without_aerodynamics(write_spec):
+    from wtvib import audit
+    from wtvib.plots import diagrams
+    from wtvib.spec import load
+
+    assert "damping" not in diagrams(audit.run(load(write_spec())))

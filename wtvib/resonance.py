@@ -60,6 +60,7 @@ class Finding:
     damping: float = 0.0  # the damping ratio the DAF was computed with (at ``speed``)
     damping_in_operation: bool = False  # ζ from the aerodynamics at the operating points
     damping_met: float = 0.0  # the damping ratio where the line meets the mode (heavy or not)
+    crossing_daf: tuple[float, ...] = ()  # DAF at each crossing, 1/(2ζ) with ζ there
 
     def status_at(self, omega: float, op: OperatingRange) -> Status:
         """Status of a violation at one rotor speed, by the regime that speed is in (pass
@@ -159,6 +160,10 @@ def assess(
         zeta,
         mode.operating is not None,
         zeta_met,
+        tuple(
+            1 / (2 * z) if z > 0 else float("inf")
+            for z in (mode.damping_at(c, default_damping) for c in crossings)
+        ),
     )
 
 

@@ -30,7 +30,7 @@ def diagrams(report: "Report") -> dict[str, "Figure"]:
     """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
     shapes), keyed by file stem suffix."""
     from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
-    from .campbell import DIAGRAMS, campbell_plot
+    from .campbell import DIAGRAMS, campbell_plot, damping_plot
     from .drivetrain import drivetrain_shapes_plot, power_curve_plot
     from .rotor import floquet_plot
     from .system import coupled_energy_plot
@@ -44,6 +44,7 @@ def diagrams(report: "Report") -> dict[str, "Figure"]:
         if present.intersection(subs)
     }
     for name, fig in (
+        ("damping", damping_plot(report)),
         ("drivetrain-modes", drivetrain_shapes_plot(report)),
         ("drivetrain-power", power_curve_plot(report)),
         ("floquet", floquet_plot(report)),

@@ -133,8 +133,9 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             lw=0,
             label="yaw frequency range with gear play",
         )
+    labels: list[tuple[float, float, float, str]] = []  # rpm, Hz, DAF, colour
     for f in findings:
-        for c in f.crossings:
+        for c, daf in zip(f.crossings, f.crossing_daf or [None] * len(f.crossings), strict=True):
             f_c = float(f.excitation.frequency_hz(np.array([c]))[0])
             if f_c > f_top:
                 continue
@@ -151,6 +152,23 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
                 mew=0.8,
                 zorder=5,
             )
+            if status != "pass" and daf is not None:  # the crossing's amplification
+                labels.append((float(rad_s_to_rpm(c)), f_c, daf, colour))
+    # each crossing's DAF, the largest first; one label where several crossings coincide
+    placed: list[tuple[float, float]] = []
+    for x, y, daf, colour in sorted(labels, key=lambda t: -t[2]):
+        if any(abs(x - px) < 0.04 * rpm_top and abs(y - py) < 0.04 * f_top for px, py in placed):
+            continue
+        placed.append((x, y))
+        ax.annotate(
+            f"DAF {daf:.3g}" if np.isfinite(daf) else "DAF ∞",
+            (x, y),
+            xytext=(5, -10),
+            textcoords="offset points",
+            fontsize=7,
+            color=colour,
+            zorder=6,
+        )
 
     for f in findings:
         if f.regime in ("steady", "quick-pass") and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:
@@ -303,4 +321,63 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
             va="center",
         )
     ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10)
+    return fig
+
+
+def damping_plot(report: Report) -> "Figure | None":
+    """The damping of every judged mode in operation (aerodynamic + structural) over the
+    wind, as the aeroelastic solution gave it; None without aerodynamics."""
+    from matplotlib.figure import Figure
+
+    modes = [m for m in report.modes if m.judged and m.operating is not None]
+    if not modes:
+        return None
+    from matplotlib import colormaps
+
+    fig = Figure(figsize=(10, 6.5), dpi=150, layout="constrained")
+    ax = fig.add_subplot()
+    cmap = colormaps["tab20"]
+    colours = [cmap(i % 20) for i in range(len(modes))]
+    for mode, colour in zip(modes, colours, strict=True):
+        op = mode.operating
+        assert op is not None
+        zeta = 100 * np.asarray(op.total)
+        ls = "-" if zeta.min() < 5 else "--"  # lightly damped modes drawn solid
+        ax.plot(op.wind, zeta, color=colour, lw=2.0 if ls == "-" else 1.2, ls=ls, label=mode.id)
+    ax.set_yscale("symlog", linthresh=0.1)
+    schedule = report.results.get("aerodynamics", {}).get("schedule")
+    if schedule is not None and schedule.rated_wind is not None:
+        ax.axvline(schedule.rated_wind, color="#616161", lw=0.8, ls="--")
+        ax.annotate(
+            f"rated {schedule.rated_wind:.3g} m/s",
+            (schedule.rated_wind, 0.99),
+            xycoords=("data", "axes fraction"),
+            xytext=(3, -3),
+            textcoords="offset points",
+            va="top",
+            fontsize=8,
+            color="#616161",
+        )
+    ax.axhspan(-100, 0, color="#ffcdd2", alpha=0.6, lw=0)
+    ax.axhline(0, color="#c62828", lw=1.0)
+    ax.axhline(1, color="#ef6c00", lw=0.8, ls=":")
+    ax.annotate(
+        "1 %",
+        (0.995, 1),
+        xycoords=("axes fraction", "data"),
+        ha="right",
+        va="bottom",
+        fontsize=8,
+        color="#ef6c00",
+    )
+    low = min(100 * min(m.operating.total) for m in modes)  # type: ignore[union-attr]
+    ax.set_ylim(min(-0.2, low * 1.3), 150)
+    ax.set_xlabel("wind speed [m/s]")
+    ax.set_ylabel("damping ratio ζ [% of critical], aerodynamic + structural")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.set_title(
+        f"{report.spec.turbine.name} — damping in operation (quasi-steady, frozen wake)",
+        fontweight="bold",
+    )
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=8, ncol=3, frameon=False)
     return fig
