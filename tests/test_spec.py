@@ -218,3 +218,29 @@ def test_an_absurd_wind_speed_is_refused(write_spec):
     assert "1.0e9" in text
     with pytest.raises(SpecError, match="max_wind_m_s: Input should be less than or equal to 100"):
         spec.load(write_spec(text))
+
+
+def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
+    """The README's documented `aerodynamics` block loads as written, and its mistakes are
+    one line with the field (a station beyond the tip, an aerofoil not defined)."""
+    import re
+
+    from tests.conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    block = re.search(r"```yaml\n(aerodynamics:\n.*?)```", readme, re.S)
+    assert block is not None
+    head = (
+        "wtvib: 1\nturbine: {name: T, rotor_diameter_m: 40, rated_power_kw: 500}\n"
+        "rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {min_rpm: 10, max_rpm: 30}}\n"
+    )
+    loaded = spec.load(write_spec(head + block.group(1)))
+    assert loaded.aerodynamics is not None and loaded.aerodynamics.control.min_pitch is not None
+    with pytest.raises(SpecError, match="beyond the rotor radius"):
+        spec.load(
+            write_spec(
+                head.replace("rotor_diameter_m: 40", "rotor_diameter_m: 30") + block.group(1)
+            )
+        )
+    with pytest.raises(SpecError, match="not in airfoils"):
+        spec.load(write_spec(head + block.group(1).replace("airfoil: [foil,", "airfoil: [other,")))
