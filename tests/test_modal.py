@@ -42,3 +42,20 @@ def test_track_follows_crossing_curves_by_shape():
     b = np.eye(3)[:, [2, 0, 1]]  # the same shapes, shuffled
     assert list(modal.track(a, b)) == [1, 2, 0]
     assert modal.mac(a, b)[0, 1] == pytest.approx(1.0)
+
+
+def test_the_optimal_assignment_is_the_best_of_all():
+    """modal.assign(optimal=True) against every assignment of rows to distinct columns."""
+    import itertools
+
+    rng = np.random.default_rng(7)
+    for _ in range(200):
+        n = int(rng.integers(1, 6))
+        m = n + int(rng.integers(0, 4))
+        score = rng.random((n, m))
+        got = modal.assign(score, optimal=True)
+        assert len(set(got.tolist())) == n
+        best = max(
+            sum(score[i, j] for i, j in enumerate(p)) for p in itertools.permutations(range(m), n)
+        )
+        assert score[np.arange(n), got].sum() == pytest.approx(best, abs=1e-12)

@@ -144,9 +144,10 @@ class Coupled:
     first_order: NDArray[np.bool_]  # (K, modes): no damped mode matched, first-order ζ
 
 
-def coupled(spec: Spec, sec: Sections) -> Coupled | None:
+def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     """The coupled model's damped modes at each operating point (None: no coupled model
-    with a rotating multi-blade view)."""
+    with a rotating multi-blade view); ``reduced``: in the model's Ritz basis of standstill
+    modes (``coupled.RITZ_MODES``), else the full model."""
     from . import coupled as coupled_model
     from .multiblade import fixed_frame_damping, matched, perturbed, track
 
@@ -160,7 +161,7 @@ def coupled(spec: Spec, sec: Sections) -> Coupled | None:
     # sweep's speeds below the first operating speed): the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
     lead = [float(w) for w in coupled_model.speeds(spec) if w < speeds[0]]
-    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False)
+    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=reduced)
     at = {w: i for i, w in enumerate(speeds, start=len(lead))}
     kept = path.kept
     freq = np.empty((len(sol.omega), kept))
@@ -171,7 +172,7 @@ def coupled(spec: Spec, sec: Sections) -> Coupled | None:
         ref = path.shapes[i]
         d = model.section_damping(c_points[k])
         extra = fixed_frame_damping(model, d, float(om))
-        freq[k], zeta[k], score = matched(model, float(om), extra, ref)
+        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=reduced)
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode instead
         poor = score < MATCH

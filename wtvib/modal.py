@@ -104,10 +104,7 @@ def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
     continues it (max total score): exhaustive for up to 7 square, greedy otherwise;
     ``optimal``: the best assignment always (Hungarian method, scipy)."""
     if optimal:
-        from scipy.optimize import linear_sum_assignment
-
-        rows, cols = linear_sum_assignment(score, maximize=True)
-        return np.asarray(cols[np.argsort(rows)], dtype=np.intp)
+        return _hungarian(np.asarray(score, float))
     n, candidates = score.shape
     if n <= 7 and candidates == n:
         best = max(
@@ -122,6 +119,48 @@ def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
         order[i] = j
         free.remove(j)
     return order
+
+
+def _hungarian(score: NDArray[np.float64]) -> NDArray[np.intp]:
+    """The assignment of rows to distinct columns with the largest total score (n ≤ m):
+    Kuhn–Munkres with potentials, O(n²m) — scipy's ``linear_sum_assignment`` does the same,
+    but importing scipy.optimize costs most of a second an audit need not pay."""
+    cost = score.max() - score  # minimise
+    n, m = cost.shape
+    u, v = np.zeros(n + 1), np.zeros(m + 1)
+    owner = np.zeros(m + 1, dtype=np.intp)  # column → row (1-based; 0: free)
+    way = np.zeros(m + 1, dtype=np.intp)
+    for i in range(1, n + 1):
+        owner[0] = i
+        j0 = 0
+        low = np.full(m + 1, np.inf)
+        used = np.zeros(m + 1, dtype=bool)
+        while True:
+            used[j0] = True
+            i0 = owner[j0]
+            free = ~used[1:]
+            reduced = cost[i0 - 1] - u[i0] - v[1:]
+            better = free & (reduced < low[1:])
+            low[1:] = np.where(better, reduced, low[1:])
+            way[1:] = np.where(better, j0, way[1:])
+            cand = np.where(free, low[1:], np.inf)
+            j1 = int(np.argmin(cand)) + 1
+            delta = cand[j1 - 1]
+            u[owner[used]] += delta
+            v[used] -= delta
+            low[1:] = np.where(free, low[1:] - delta, low[1:])
+            j0 = j1
+            if owner[j0] == 0:
+                break
+        while j0:  # augment along the path
+            j1 = way[j0]
+            owner[j0] = owner[j1]
+            j0 = j1
+    out = np.full(n, -1, dtype=np.intp)
+    for j in range(1, m + 1):
+        if owner[j]:
+            out[owner[j] - 1] = j - 1
+    return out
 
 
 @dataclass(frozen=True)

@@ -132,18 +132,29 @@ def rotating(
     count: int = MODES_KEPT,
     extra: tuple[Array, Array] | None = None,
     named: bool = True,
+    reduced: bool = False,
 ) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3);
     ``extra`` adds a damping and a stiffness matrix in multi-blade coordinates (the
-    aerodynamic ones of an operating point, :func:`fixed_frame_damping`)."""
-    m, d0, d1, k0, k2 = model.multiblade
+    aerodynamic ones of an operating point, :func:`fixed_frame_damping`); ``reduced``
+    solves in the model's Ritz basis (``Model.ritz``)."""
+    if reduced:  # in the Ritz basis of standstill modes, shapes mapped back
+        basis, (m, d0, d1, k0, k2) = model.ritz
+    else:
+        m, d0, d1, k0, k2 = model.multiblade
     d, k = d0 + omega * d1, k0 + omega**2 * k2
     if extra is not None:
-        d, k = d + extra[0], k + extra[1]
+        ed, ek = extra
+        if reduced:
+            ed, ek = basis.T @ ed @ basis, basis.T @ ek @ basis
+        d, k = d + ed, k + ek
     # modes below 1 mHz are the rotor turning on a free generator, not oscillations; a path
     # followed by shape alone keeps overdamped roots (heavily damped flap modes)
     lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3, overdamped=not named)
     lam, shapes = lam[:count], vec[:, :count]
+    if reduced:
+        shapes = basis @ shapes
+        m = model.multiblade[0]
     f = np.abs(lam) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
     zeta = -lam.real / np.abs(lam)
     if not named:  # followed by shape only (the names come from where the path starts)
@@ -280,7 +291,7 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
     if model.blades < 3:
         raise ValueError("the rotating sweep needs three or more blades (MBC)")
-    path = track(model, [(float(om), None) for om in speeds], count)
+    path = track(model, [(float(om), None) for om in speeds], count, reduced=True)
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
     texts = tuple(
         f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
@@ -320,11 +331,12 @@ def track(
     points: list[tuple[float, tuple[Array, Array] | None]],
     count: int = MODES_KEPT,
     named: bool = True,
+    reduced: bool = False,
 ) -> Path:
     """Modes at each (Ω, extra matrices) point, each followed from the point before by
     mass-weighted MAC (modal.track); ``named``: whirl and description at every point (else
     at the first only, the rest empty)."""
-    first = rotating(model, points[0][0], count, points[0][1])
+    first = rotating(model, points[0][0], count, points[0][1], reduced=reduced)
     kept = len(first.frequency_hz)
     # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
     # would otherwise weigh by their units, not by their share of the motion
@@ -339,7 +351,7 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     for i, (om, extra) in enumerate(points[1:], start=1):
-        cur = rotating(model, om, kept + 4, extra, named)
+        cur = rotating(model, om, kept + 4, extra, named, reduced)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
@@ -371,13 +383,14 @@ def matched(
     extra: tuple[Array, Array],
     reference: NDArray[np.complex128],
     spare: int = 24,
+    reduced: bool = False,
 ) -> tuple[Array, Array, Array]:
     """|λ|/2π and ζ of the modes with ``extra`` matrices at Ω, each matched to a column of
     ``reference`` (the structural modes at the same speed) by shape and by where its energy
     sits (:func:`_overlap`): one assignment per point, so a heavily damped mode cannot hand
     its name along a chain. The third array is each match's score (0 … 2: MAC + overlap)."""
     kept = reference.shape[1]
-    cur = rotating(model, omega, kept + spare, extra, named=False)
+    cur = rotating(model, omega, kept + spare, extra, named=False, reduced=reduced)
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
     # (blind to phase: keeps an overdamped, standing form with its whirling origin)
@@ -404,9 +417,11 @@ def perturbed(
     g = d0 + omega * d1
     d, k = extra
     x = reference
-    num = lam * np.einsum("ij,ik,kj->j", x.conj(), d, x) + np.einsum("ij,ik,kj->j", x.conj(), k, x)
-    den = 2 * lam * np.einsum("ij,ik,kj->j", x.conj(), m, x) + np.einsum(
-        "ij,ik,kj->j", x.conj(), g, x
-    )
+
+    def quad(a: Array) -> NDArray[np.complex128]:  # xⱼᴴ A xⱼ for every column (BLAS)
+        return np.asarray(np.sum(x.conj() * (a @ x), axis=0))
+
+    num = lam * quad(d) + quad(k)
+    den = 2 * lam * quad(m) + quad(g)
     new = lam - num / den
     return np.asarray(-new.real / np.abs(new))
