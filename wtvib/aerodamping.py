@@ -52,6 +52,10 @@ from .spec import Spec
 
 Array = NDArray[np.float64]
 
+#: Evenly spaced structural solves from standstill up to the first operating speed, which
+#: follow each mode's shape (and name) there.
+LEAD = 8
+
 #: A damped mode stands for a structural one when MAC + energy overlap reaches this (of 2);
 #: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
 MATCH = 1.5
@@ -157,10 +161,10 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
     sol = sec.schedule.solution
     c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
-    # the structural modes at each operating speed, followed from standstill (through the
-    # sweep's speeds below the first operating speed): the names and reference shapes
+    # the structural modes at each operating speed, followed from standstill (LEAD steps up
+    # to the first operating speed): the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
-    lead = [float(w) for w in coupled_model.speeds(spec) if w < speeds[0]]
+    lead = [float(w) for w in np.linspace(0.0, speeds[0], LEAD + 1)[:-1]]
     path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=reduced)
     at = {w: i for i, w in enumerate(speeds, start=len(lead))}
     kept = path.kept
