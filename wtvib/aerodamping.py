@@ -151,21 +151,22 @@ class Coupled:
 def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     """The coupled model's damped modes at each operating point (None: no coupled model
     with a rotating multi-blade view); ``reduced``: in the model's Ritz basis of standstill
-    modes (``coupled.RITZ_MODES``), else the full model."""
+    modes (``multiblade.RITZ_DAMPED``), else the full model."""
     from . import coupled as coupled_model
-    from .multiblade import fixed_frame_damping, matched, perturbed, track
+    from .multiblade import RITZ_DAMPED, fixed_frame_damping, matched, perturbed, track
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
         return None
     assert spec.coupled is not None
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
+    basis = RITZ_DAMPED if reduced else None
     sol = sec.schedule.solution
     c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
     # the structural modes at each operating speed, followed from standstill (LEAD steps up
     # to the first operating speed): the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
     lead = [float(w) for w in np.linspace(0.0, speeds[0], LEAD + 1)[:-1]]
-    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=reduced)
+    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=basis)
     at = {w: i for i, w in enumerate(speeds, start=len(lead))}
     kept = path.kept
     freq = np.empty((len(sol.omega), kept))
@@ -176,7 +177,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         ref = path.shapes[i]
         d = model.section_damping(c_points[k])
         extra = fixed_frame_damping(model, d, float(om))
-        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=reduced)
+        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=basis)
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode instead
         poor = score < MATCH

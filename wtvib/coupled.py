@@ -95,11 +95,6 @@ _RIGID = 6
 #: 30 points is the Campbell sweep issue 11 sets the cost target for.
 SPEED_SAMPLES = 30
 
-#: Standstill modes spanning the reduced basis of the damped solves at the operating points
-#: (three times the modes kept: the damped low modes differ from the full model's by < 1e-3
-#: in ζ on the NREL 5-MW and IEA-15, tests/validation/test_aerodynamics.py).
-RITZ_MODES = 48
-
 
 # ---------------------------------------------------------------------------------------
 # The parts
@@ -215,15 +210,18 @@ class Model:
         _, d1, k1 = fixed_frame(self, 1.0)
         return m, d0, d1 - d0, k0, k1 - k0
 
-    @functools.cached_property
-    def ritz(self) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
-        """A reduced basis Φ (the lowest RITZ_MODES standstill modes in multi-blade
-        coordinates, M-orthonormal) and the multi-blade matrices projected on it, ΦᵀXΦ:
-        the damped solves at the operating points run in it (issue 17)."""
-        m, d0, d1, k0, k2 = self.multiblade
-        count = min(RITZ_MODES, m.shape[0])
-        basis = modal.solve(k0, m, count).shapes
-        return basis, tuple(basis.T @ x @ basis for x in (m, d0, d1, k0, k2))  # type: ignore[return-value]
+    def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
+        """A reduced basis Φ (the lowest ``count`` standstill modes in multi-blade
+        coordinates, M-orthonormal) and the multi-blade matrices projected on it, ΦᵀXΦ
+        (computed once per model and count): the sweep and the damped solves at the
+        operating points run in it."""
+        cache = self.__dict__.setdefault("_ritz", {})  # frozen: the cache lives in __dict__
+        if count not in cache:
+            m, d0, d1, k0, k2 = self.multiblade
+            basis = modal.solve(k0, m, min(count, m.shape[0])).shapes
+            cache[count] = (basis, tuple(basis.T @ x @ basis for x in (m, d0, d1, k0, k2)))
+        out: tuple[Array, tuple[Array, Array, Array, Array, Array]] = cache[count]
+        return out
 
     def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]:
         """M, D, K of the periodic equations at rotor speed Ω [rad/s] and azimuth ψ."""

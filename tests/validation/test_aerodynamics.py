@@ -253,3 +253,15 @@ def test_nrel5mw_damped_modes_in_operation(nrel):
     found = {(f.mode.id, f.excitation.id): f for f in report.findings}
     assert found[("system.tower.ss1", "3P")].damping < 0.02
     assert report.damping_model == "aeroelastic"
+
+
+def test_the_reduced_damped_solve_matches_the_full_model(nrel):
+    """The damped solves run in the Ritz basis of coupled.RITZ_DAMPED standstill modes: ζ
+    and |λ| of every tracked mode at every operating point as the full model gives them
+    (the dropped modes are the towers' and blades' high ones)."""
+    sec = aerodamping.sections(nrel)
+    full = aerodamping.coupled(nrel, sec, reduced=False)
+    reduced = aerodamping.coupled(nrel, sec)
+    assert full is not None and reduced is not None
+    np.testing.assert_allclose(reduced.damping_ratio, full.damping_ratio, atol=1e-5)
+    np.testing.assert_allclose(reduced.frequency_hz, full.frequency_hz, rtol=1e-4)
