@@ -73,6 +73,7 @@ def test_cli_batch_writes_every_output_and_exits_with_the_worst(folder, tmp_path
     files = {p.name for p in out.iterdir()}
     for key in ("mod-2", "wts-4", "wka-60", "other"):
         assert f"{key}.json" in files and f"{key}.campbell.png" in files
+        assert f"{key}.campbell.csv" in files  # the Campbell data beside the report
     assert {"summary.json", "summary.csv", "audit.pdf", "run-metadata.json"} <= files
     assert not [f for f in files if f.endswith(".tmp")]
     summary = json.loads((out / "summary.json").read_text())

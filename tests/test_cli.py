@@ -239,3 +239,20 @@ def spec_text_named(name: str) -> str:
     return spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75").replace(
         "{name: Test turbine}", "{name: " + _json.dumps(name) + "}"
     )
+
+
+def test_check_writes_the_campbell_csv_and_never_clobbers(tmp_path):
+    from tests.conftest import TURBINES
+
+    out = tmp_path / "wka.campbell.csv"
+    args = ["check", str(TURBINES / "wka-60.yaml"), "--no-plot", "--campbell-csv", str(out)]
+    result = runner.invoke(app, args)
+    assert result.exit_code in (0, 1), result.output
+    lines = out.read_text().splitlines()
+    assert lines[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
+    assert len(lines) > 30
+    assert runner.invoke(app, args).exit_code in (0, 1)  # ours: replaced
+    foreign = tmp_path / "mine.csv"
+    foreign.write_text("my data\n")
+    result = runner.invoke(app, [*args[:-1], str(foreign)])
+    assert result.exit_code == 2 and foreign.read_text() == "my data\n"

@@ -74,8 +74,8 @@ class Report:
 
     @property
     def campbell(self) -> "campbell.Campbell":
-        """The sampled curves of every speed-dependent judged mode (README: the JSON
-        contract's ``campbell``)."""
+        """The sampled curves of every judged mode (README: the JSON contract's
+        ``campbell``)."""
         return campbell.build(self.modes, operating_range(self.spec.rotor.speed))
 
     @property

@@ -80,6 +80,7 @@ class Item:
     pngs: dict[str, bytes] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)
     internal: bool = False
+    campbell_csv: str | None = None  # the Campbell data (written beside the JSON)
 
     @property
     def outcome(self) -> str:
@@ -198,6 +199,7 @@ def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
         report=report.to_dict(),
         pngs=pngs,
         timings={"load": t1 - t0, "solve": t2 - t1, "plot": t3 - t2},
+        campbell_csv=report.campbell.to_csv(),
     )
 
 

@@ -1,4 +1,4 @@
-"""The Campbell data: every speed-dependent judged mode's frequency and damping, sampled.
+"""The Campbell data: every judged mode's frequency and damping, sampled over speed.
 
 With aerodynamics the samples are the steady operating points (wind, rotor speed, pitch),
 the damping the mode's total (aerodynamic + structural) there; without, rotor speeds from
@@ -63,9 +63,9 @@ class Campbell:
 
 
 def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
-    """The Campbell data of the judged speed-dependent modes (and every mode damped in
-    operation)."""
-    picked = [m for m in modes if m.judged and (m.curve is not None or m.operating is not None)]
+    """The Campbell data of every judged mode (a mode without a speed curve is a constant
+    line of the diagram, and is sampled as one)."""
+    picked = [m for m in modes if m.judged]
     scheduled = next((m.operating for m in picked if m.operating is not None), None)
     if scheduled is not None:
         omega = np.asarray(scheduled.omega)

@@ -208,7 +208,7 @@ def check(
         Path | None,
         typer.Option(
             "--campbell-csv",
-            help="Write the Campbell data (frequency and damping of every speed-dependent "
+            help="Write the Campbell data (frequency and damping of every judged "
             "mode per operating point) as CSV.",
         ),
     ] = None,
@@ -379,6 +379,8 @@ class _BatchWriter:
         if item.report is not None:
             text = json.dumps(item.report, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
             self._write(f"{item.key}.json", text.encode())
+        if item.campbell_csv is not None:
+            self._write(f"{item.key}.campbell.csv", item.campbell_csv.encode())
         for suffix, png in item.pngs.items():
             self._write(f"{item.key}.{suffix}.png", png)
         self.timings.setdefault(item.key, {}).update(item.timings)
