@@ -26,6 +26,7 @@ SUBSYSTEM_NAMES = {
     "yaw": "Yaw system",
     "rotor": "Rotor on the tower head (periodic coefficients, Floquet)",
     "system": "Whole turbine: coupled rotor–tower model (Hau §7.6)",
+    "aerodynamics": "In operation: aerodynamic damping of every mode (Hau §7.5.1)",
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
@@ -34,6 +35,7 @@ DIAGRAM_FOR = {
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
     "system": ("campbell-system", "system-energy"),
+    "aerodynamics": ("damping",),
 }
 
 
@@ -199,6 +201,13 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         ],
         ["tower class", r["tower_class"] or "—"],
         [
+            "damping",
+            "aeroelastic: the modes' damping at the steady operating points (aerodynamic + "
+            "structural)"
+            if r.get("damping") == "aeroelastic"
+            else "structural only: no aerodynamics given",
+        ],
+        [
             "margin rule",
             f"{rule['kind']}, m = {rule['margin']:.0%} "
             f"({rule['preset'] or 'custom'}): {rule['source']}",
@@ -232,13 +241,13 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             continue
         out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
         out.append(k.p(title, "Heading2"))
-        rows = [k.header("mode", "description", "f [Hz]", "ζ")]
+        rows = [k.header("mode", "description", "f [Hz]", "ζ (in operation, lowest)")]
         rows += [
             [
                 k.p(m["id"]),
                 k.p(m["description"] + _judged_note(m)),
                 k.p(f"{m['frequency_hz']:.4g}"),
-                k.p(_num(m["damping_ratio"])),
+                k.p(_num(m["damping_ratio"]) + _in_operation(m)),
             ]
             for m in modes
         ]
@@ -299,6 +308,13 @@ def _footer(canvas, doc) -> None:  # type: ignore[no-untyped-def]
     canvas.drawString(doc.leftMargin, 10, f"wtvib {__version__} — vibration audit")
     canvas.drawRightString(doc.pagesize[0] - doc.rightMargin, 10, f"page {doc.page}")
     canvas.restoreState()
+
+
+def _in_operation(m: dict[str, Any]) -> str:
+    op = m.get("damping_in_operation")
+    if not op:
+        return ""
+    return f" ({_num(op['lowest_total_damping_ratio'])} at {op['at_wind_m_s']:.3g} m/s)"
 
 
 def _aspect(png: bytes) -> float:
@@ -367,6 +383,7 @@ def _numbers(c: dict[str, Any]) -> str:
         "speed_rpm",
         "excitation_hz",
         "daf",
+        "damping_ratio",
         "regime",
         "crossings_rpm",
         "exclude_rpm",
@@ -376,6 +393,10 @@ def _numbers(c: dict[str, Any]) -> str:
         "min_total_damping_ratio",
         "at_wind_m_s",
         "at_rpm",
+        "rated_wind_m_s",
+        "tip_speed_ratio",
+        "lowest",
+        "unstable",
     )
     return "; ".join(f"{k} = {c[k]}" for k in keys if c.get(k) not in (None, [], ""))
 
