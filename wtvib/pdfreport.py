@@ -239,6 +239,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         modes = [m for m in r["modes"] if m["subsystem"] == sub]
         if not modes and not any(c["subsystem"] == sub for c in r["checks"]):
             continue
+        if sub == "aerodynamics" and r.get("damping") != "aeroelastic":
+            continue  # a structural audit: said in the identity table and the summary
         out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
         out.append(k.p(title, "Heading2"))
         rows = [k.header("mode", "description", "f [Hz]", "ζ (in operation, lowest)")]
