@@ -201,18 +201,13 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         ],
         ["tower class", r["tower_class"] or "—"],
         [
-            "damping",
-            "aeroelastic: the modes' damping at the steady operating points (aerodynamic + "
-            "structural)"
-            if r.get("damping") == "aeroelastic"
-            else "structural only: no aerodynamics given",
-        ],
-        [
             "margin rule",
             f"{rule['kind']}, m = {rule['margin']:.0%} "
             f"({rule['preset'] or 'custom'}): {rule['source']}",
         ],
     ]
+    if r.get("damping") == "aeroelastic":  # a structural audit says so in its checks
+        ident.append(["damping", "aeroelastic (aerodynamic + structural, at the operating points)"])
     ident += [
         [key.replace("_", " "), t[key]]
         for key in ("manufacturer", "year", "rated_power_kw", "rotor_diameter_m", "hub_height_m")
@@ -243,7 +238,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             continue  # a structural audit: said in the identity table and the summary
         out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
         out.append(k.p(title, "Heading2"))
-        rows = [k.header("mode", "description", "f [Hz]", "ζ (in operation, lowest)")]
+        in_op = any(m.get("damping_in_operation") for m in modes)
+        rows = [k.header("mode", "description", "f [Hz]", "ζ (lowest in op.)" if in_op else "ζ")]
         rows += [
             [
                 k.p(m["id"]),
