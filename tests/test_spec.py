@@ -244,3 +244,31 @@ def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
         )
     with pytest.raises(SpecError, match="not in airfoils"):
         spec.load(write_spec(head + block.group(1).replace("airfoil: [foil,", "airfoil: [other,")))
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "said"),
+    [
+        ("twist_deg: [12,", "twist_deg: [1200,", "twist_deg must lie within ±180"),
+        ("chord_m: [1.6,", "chord_m: [160,", "longer than the rotor radius"),
+        ("cl: [0, -0.9,", "cl: [0, -1.0e9,", "cl must lie within"),
+        ("cd: [0.02, 0.02,", "cd: [0.02, -0.02,", "cd must lie within"),
+        ("cut_out_wind_m_s: 25", "cut_out_wind_m_s: 2", "must be below cut_out_wind_m_s"),
+    ],
+)
+def test_aerodynamics_mistakes_are_one_line(write_spec, old, new, said):
+    """Magnitudes no rotor has (issue 19's class) are refused with the field, not solved."""
+    from tests.conftest import ROOT
+
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    block = re.search(r"```yaml\n(aerodynamics:\n.*?)```", readme, re.S)
+    assert block is not None
+    head = (
+        "wtvib: 1\nturbine: {name: T, rotor_diameter_m: 40, rated_power_kw: 500}\n"
+        "rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {min_rpm: 10, max_rpm: 30}}\n"
+    )
+    text = block.group(1)
+    assert old in text
+    with pytest.raises(SpecError, match=re.escape(said)) as err:
+        spec.load(write_spec(head + text.replace(old, new)))
+    assert err.value.path is not None and err.value.path.startswith("aerodynamics")

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from .modal import ModalError
 from .spec import Spec
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -63,8 +64,10 @@ class Rotor:
     hub_loss: bool
 
     def polar(self, alpha: Array) -> tuple[Array, Array]:
-        """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S)."""
-        x = (np.degrees(alpha) + 180.0) % 360.0 / POLAR_STEP_DEG
+        """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
+        reads the table at 0°: the solution's finiteness check names the failure)."""
+        x = (np.degrees(np.nan_to_num(alpha, posinf=0.0, neginf=0.0)) + 180.0) % 360.0
+        x = x / POLAR_STEP_DEG
         i = np.minimum(x.astype(np.intp), self.cl.shape[1] - 2)
         t = x - i
         s = np.broadcast_to(np.arange(len(self.radius)), x.shape)
@@ -189,6 +192,10 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
     wind = np.asarray(wind, float)
     omega = np.asarray(omega, float)
     pitch = np.asarray(pitch, float)
+    if not (
+        np.all(np.isfinite(wind)) and np.all(np.isfinite(omega)) and np.all(np.isfinite(pitch))
+    ):
+        raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
     shape = (len(wind), len(r.radius))
     theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
     lam = np.maximum(omega[:, None] * r.radius[None, :] / wind[:, None], 1e-9)
@@ -242,6 +249,11 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
     f_t = q * (cl * s - cd * c)
     thrust = np.asarray(r.blades * np.trapezoid(f_n, r.radius, axis=1))
     torque = np.asarray(r.blades * np.trapezoid(f_t * r.radius, r.radius, axis=1))
+    if not (np.all(np.isfinite(thrust)) and np.all(np.isfinite(torque))):
+        raise ModalError(
+            "the blade-element momentum solution is not finite (thrust or torque overflows): "
+            "check the magnitudes of the aerodynamics, rotor speed and wind"
+        )
     return Solution(wind, omega, pitch, phi, phi - theta, a, a_t, w, cl, cd, thrust, torque, found)
 
 

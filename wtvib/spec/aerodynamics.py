@@ -17,6 +17,12 @@ from .blade import MAX_WIND_M_S
 #: BEM solve grows with both).
 MAX_AIRFOILS, MAX_STATIONS, MAX_POLAR_POINTS = 250, 200, 400
 
+#: No aerofoil coefficient is larger (a flat plate's C_D peaks near 2; issue 19's magnitudes).
+MAX_COEFFICIENT = 10.0
+
+#: No rotor is larger: radius and chord [m] (the largest turbines reach ~150 m).
+MAX_RADIUS_M = 1000.0
+
 
 class AirfoilPolar(_Strict):
     """One aerofoil's static polar: lift and drag over the angle of attack (−180 … 180°)."""
@@ -33,8 +39,10 @@ class AirfoilPolar(_Strict):
         _same_length(self, "alpha_deg")
         if self.alpha_deg[0] < -180 or self.alpha_deg[-1] > 180:
             raise ValueError("alpha_deg must lie within -180 … 180")
-        if min(self.cd) < 0:
-            raise ValueError("cd must not be negative")
+        if min(self.cd) < 0 or max(self.cd) > MAX_COEFFICIENT:
+            raise ValueError(f"cd must lie within 0 … {MAX_COEFFICIENT:g}")
+        if max(abs(c) for c in self.cl) > MAX_COEFFICIENT:
+            raise ValueError(f"cl must lie within ±{MAX_COEFFICIENT:g} (a lift coefficient)")
         return self
 
 
@@ -54,9 +62,15 @@ class BladeStations(_Strict):
     @model_validator(mode="after")
     def _consistent(self) -> "BladeStations":
         _increasing("radius_m", self.radius_m)
-        if self.radius_m[0] <= 0:
-            raise ValueError("radius_m must be positive (measured from the rotor axis)")
+        if self.radius_m[0] <= 0 or self.radius_m[-1] > MAX_RADIUS_M:
+            raise ValueError(
+                f"radius_m must lie within 0 … {MAX_RADIUS_M:g} m (measured from the rotor axis)"
+            )
         _same_length(self, "radius_m")
+        if max(self.chord_m) > self.radius_m[-1]:
+            raise ValueError("chord_m longer than the rotor radius: a unit mistake?")
+        if max(abs(t) for t in self.twist_deg) > 180:
+            raise ValueError("twist_deg must lie within ±180 (degrees, not radians × …)")
         return self
 
 
