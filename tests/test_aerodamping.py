@@ -1,0 +1,70 @@
+"""Aerodynamic damping of isolated modes: the formulas as the module states them, wired to
+the audit (the coupled model's validation is in tests/validation/test_aerodynamics.py)."""
+
+import numpy as np
+
+from wtvib import aerodamping, audit
+from wtvib.results import OperatingDamping
+from wtvib.spec import load
+
+SPEC = """\
+wtvib: 1
+turbine: {name: T, rotor_diameter_m: 40, rated_power_kw: 500}
+rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {min_rpm: 15, max_rpm: 30}}
+tower: {mass_kg: 40000, damping_ratio: 0.01, modes: {fa1: 0.8, ss1: 0.8}}
+tower_head: {mass_kg: 30000, cm_downwind_m: 0, cm_above_top_m: 1}
+blade: {mass_kg: 2000, damping_ratio: 0.005, modes: {flap1: 1.5, edge1: 2.5}}
+aerodynamics:
+  stations: {radius_m: [1.5, 5, 10, 15, 19.5], chord_m: [1.6, 1.5, 1.2, 0.9, 0.6],
+             twist_deg: [12, 8, 4, 1, 0], airfoil: [f, f, f, f, f]}
+  airfoils:
+    f: {alpha_deg: [-180, -10, 0, 10, 20, 90, 180], cl: [0, -0.9, 0.3, 1.3, 1.1, 0, 0],
+        cd: [0.02, 0.02, 0.008, 0.015, 0.3, 1.6, 0.02]}
+"""
+
+
+def test_isolated_first_tower_modes_carry_the_rotors_damping(write_spec):
+    """ζ_fa1 = N_b∫C_nn dr / (2ω(M_head + 33/140·M_tower)); side-side the azimuth mean
+    (N_b/2)∫C_tt dr; each on top of the tower's structural ratio."""
+    spec = load(write_spec(SPEC))
+    report = audit.run(spec)
+    modes = {m.id: m for m in report.modes}
+    sec = aerodamping.sections(spec)
+    mass = 30000 + 33 / 140 * 40000
+    w = 2 * np.pi * 0.8
+    fa = 3 * np.trapezoid(sec.c[:, :, 0, 0], sec.radius, axis=1) / (2 * w * mass)
+    ss = 1.5 * np.trapezoid(sec.c[:, :, 1, 1], sec.radius, axis=1) / (2 * w * mass)
+    for mid, expected in (("tower.fa1", fa), ("tower.ss1", ss)):
+        op = modes[mid].operating
+        assert op is not None
+        np.testing.assert_allclose(op.aero, expected, rtol=1e-12)
+        np.testing.assert_allclose(op.total, expected + 0.01, rtol=1e-12)
+    assert min(fa) > 5 * max(abs(ss))  # fore-aft damped by the thrust gradient, side-side not
+
+
+def test_operating_damping_is_the_lowest_at_a_shared_speed():
+    """Several winds at the rated speed: the verdict at that speed takes the lowest ζ."""
+    op = OperatingDamping(
+        (5.0, 8.0, 12.0, 20.0),
+        (1.0, 1.5, 2.0, 2.0),
+        (0, 0, 0, 10),
+        (0.1, 0.2, 0.3, 0.05),
+        (0.11, 0.21, 0.31, 0.06),
+        "test",
+    )
+    assert op.at(2.0) == 0.06
+    assert op.at(1.25) == np.float64(0.16)  # between speeds: linear
+    assert op.at(0.5) == 0.11 and op.at(3.0) == 0.06  # held beyond
+    assert op.lowest == 3
+
+
+def test_heavily_damped_crossings_are_info_and_the_daf_uses_the_damping_there(write_spec):
+    report = audit.run(load(write_spec(SPEC)))
+    flap = [f for f in report.findings if f.mode.id == "blade.flap1" and f.crossings]
+    assert flap
+    for f in flap:
+        assert f.damping_in_operation
+        zeta = [f.mode.damping_at(c, 0.0) for c in f.crossings]
+        np.testing.assert_allclose(f.crossing_daf, [1 / (2 * z) for z in zeta])
+        if f.damping_met >= 0.3:
+            assert f.status in ("pass", "info")
