@@ -28,7 +28,9 @@ def test_structural_campbell_samples_standstill_to_overspeed(write_spec):
 def test_campbell_csv_has_a_row_per_mode_and_sample(write_spec):
     report = audit.run(load(write_spec(extra="blade: {modes: {flap1: 1.2, edge1: 2.0}}\n")))
     csv = report.campbell.to_csv().splitlines()
-    assert csv[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
+    assert (
+        csv[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio"
+    )
     assert len(csv) == 1 + 3 * 30  # tower.fa1, blade.flap1, blade.edge1 × 30 speeds
     assert any(line.startswith("blade.flap1,0.0000,,,") for line in csv)
 

@@ -249,7 +249,10 @@ def test_check_writes_the_campbell_csv_and_never_clobbers(tmp_path):
     result = runner.invoke(app, args)
     assert result.exit_code in (0, 1), result.output
     lines = out.read_text().splitlines()
-    assert lines[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
+    assert (
+        lines[0]
+        == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio"
+    )
     assert len(lines) > 30
     assert runner.invoke(app, args).exit_code in (0, 1)  # ours: replaced
     foreign = tmp_path / "mine.csv"

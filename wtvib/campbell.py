@@ -30,6 +30,7 @@ class Campbell:
     wind: tuple[float, ...] | None
     pitch_deg: tuple[float, ...] | None
     modes: dict[str, tuple[tuple[float, ...], tuple[float, ...]]]  # id → (f [Hz], ζ)
+    aero: dict[str, tuple[float, ...]]  # id → aerodynamic part of ζ (modes in operation)
 
     def to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
@@ -43,6 +44,11 @@ class Campbell:
             mid: {
                 "frequency_hz": [round(v, 6) for v in f],
                 "damping_ratio": [round(v, 6) for v in z],
+                **(
+                    {"aerodynamic_damping_ratio": [round(v, 6) for v in self.aero[mid]]}
+                    if mid in self.aero
+                    else {}
+                ),
             }
             for mid, (f, z) in self.modes.items()
         }
@@ -50,7 +56,8 @@ class Campbell:
 
     def to_csv(self) -> str:
         """One row per mode and sample: mode, rpm, wind_m_s, pitch_deg, frequency_hz,
-        damping_ratio (wind and pitch empty without a schedule)."""
+        damping_ratio, aerodynamic_damping_ratio (wind, pitch and the aerodynamic part empty
+        where there is none)."""
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(CAMPBELL_HEADER.decode().split(","))
@@ -58,7 +65,8 @@ class Campbell:
             for i, n in enumerate(self.rpm):
                 wind = f"{self.wind[i]:.4f}" if self.wind else ""
                 pitch = f"{self.pitch_deg[i]:.4f}" if self.pitch_deg else ""
-                w.writerow([mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}"])
+                aero = f"{self.aero[mid][i]:.6f}" if mid in self.aero else ""
+                w.writerow([mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero])
         return buf.getvalue()
 
 
@@ -76,11 +84,13 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
         wind = pitch = None
     rpm = tuple(float(v) for v in omega * 30 / np.pi)
     out: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {}
+    aero: dict[str, tuple[float, ...]] = {}
     for m in picked:
         f = tuple(float(v) for v in m.frequency_at(omega))
         if m.operating is not None and m.operating.omega == tuple(float(v) for v in omega):
             z = m.operating.total
+            aero[m.id] = m.operating.aero
         else:
             z = tuple(float(m.damping_ratio or 0.0) for _ in omega)
         out[m.id] = (f, z)
-    return Campbell(rpm, wind, pitch, out)
+    return Campbell(rpm, wind, pitch, out, aero)

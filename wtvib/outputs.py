@@ -19,7 +19,9 @@ SOFTWARE_TAG = "wtvib"
 #: First line of the batch summary CSV (recognised as a wtvib output).
 CSV_HEADER = b"file,turbine,tower_class,verdict,worst_check,margin,message"
 #: First line of the Campbell data CSV (``check --campbell-csv``).
-CAMPBELL_HEADER = b"mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio"
+CAMPBELL_HEADER = (
+    b"mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio"
+)
 
 
 def is_ours(path: Path) -> bool:
