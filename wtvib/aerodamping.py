@@ -49,6 +49,7 @@ from numpy.typing import NDArray
 
 from . import bem
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
+from .multiblade import RITZ_DAMPED
 from .results import Check, Mode, OperatingDamping, Rule
 from .spec import Spec
 
@@ -155,7 +156,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     with a rotating multi-blade view); ``reduced``: in the model's Ritz basis of standstill
     modes (``multiblade.RITZ_DAMPED``), else the full model."""
     from . import coupled as coupled_model
-    from .multiblade import RITZ_DAMPED, fixed_frame_damping, matched, perturbed, track
+    from .multiblade import fixed_frame_damping, matched, perturbed, track
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
         return None
@@ -320,35 +321,18 @@ def in_operation(
     for sub, modes in built.items():
         done = []
         for m in modes:
-            aero: Array | None = None
-            source = ""
-            if m.id in index and not m.judged:
-                pass
-            elif m.id in index and cpl is not None:
-                j = index[m.id]
-                aero = cpl.damping_ratio[:, j] - cpl.standstill[j]
-                source = "coupled model, damped eigenvalues at the operating points"
-                f_struct = m.frequency_at(sch.solution.omega)
-                ok = (f_struct > 0) & (aero + (m.damping_ratio or 0.0) < heavy)
-                if np.any(ok):
-                    rel = np.abs(cpl.frequency_hz[ok, j] / f_struct[ok] - 1)
-                    shift = max(shift, float(rel.max()))
-            elif not m.judged and m.subsystem not in ("blade", "tower"):
-                pass
-            elif m.subsystem == "blade":
-                aero = isolated_blade(spec, m, sec)
-                source = "isolated blade mode, section damping on its shape"
-            elif m.subsystem == "tower":
-                aero = isolated_tower(spec, m, sec)
-                source = (
-                    "isolated tower mode: the rotor's damping of the hub's translation on the "
-                    "head + 33/140 of the tower (tilt and blade flexibility left out: low)"
-                )
+            aero, source = _aerodynamic(spec, m, sec, cpl, index)
             if aero is None:
-                if m.judged and m.subsystem in ("blade", "tower", "system"):
+                if m.judged and m.subsystem != "rotor":
                     skipped.append(m.id)
                 done.append(m)
                 continue
+            if m.id in index and cpl is not None:  # how far |λ| departs from the judged curve
+                f_struct = m.frequency_at(sch.solution.omega)
+                ok = (f_struct > 0) & (aero + (m.damping_ratio or 0.0) < heavy)
+                if np.any(ok):
+                    rel = np.abs(cpl.frequency_hz[ok, index[m.id]] / f_struct[ok] - 1)
+                    shift = max(shift, float(rel.max()))
             structural = m.damping_ratio or 0.0
             done.append(replace(m, operating=_operating(sch, aero, structural, source)))
         out[sub] = done
@@ -362,9 +346,11 @@ def in_operation(
     if cpl is not None:
         notes.append(
             "Coupled modes: the damped eigenproblem of the whole-turbine model at each "
-            "operating point (multi-blade coordinates), followed by shape from standstill; "
-            "frequencies are judged on the structural curve, which the aeroelastic |λ| of "
-            f"the modes damped below ζ = {heavy:g} departs from by at most {shift:.1%}."
+            "operating point (multi-blade coordinates, a Ritz basis of "
+            f"{RITZ_DAMPED} standstill modes), each mode matched by shape and energy to the "
+            "structural mode at that rotor speed; frequencies are judged on the structural "
+            f"curve, which the aeroelastic |λ| of the modes damped below ζ = {heavy:g} "
+            f"departs from by at most {shift:.1%}."
         )
     if cpl is not None and cpl.first_order.any():
         named = [
@@ -382,10 +368,34 @@ def in_operation(
         )
     if skipped:
         notes.append(
-            "No aerodynamic damping for " + ", ".join(skipped) + " (no model of it): judged "
-            "with the structural damping."
+            "No aerodynamic damping for " + ", ".join(skipped) + " (no model of it: the "
+            "coupled model has the aerodynamics of every mode it holds): judged with the "
+            "structural damping."
         )
     return out, InOperation(sec, cpl, tuple(notes), shift)
+
+
+def _aerodynamic(
+    spec: Spec, m: Mode, sec: Sections, cpl: Coupled | None, index: Mapping[str, int]
+) -> tuple[Array | None, str]:
+    """A mode's aerodynamic damping ratio at each operating point and the model it came
+    from: the coupled model's where it has the mode (judged), else an isolated estimate for
+    blade and first tower modes (also for isolated modes shown beside a coupled one); None
+    where no model gives one."""
+    if m.id in index and cpl is not None:
+        if not m.judged:
+            return None, ""
+        j = index[m.id]
+        aero = cpl.damping_ratio[:, j] - cpl.standstill[j]
+        return aero, "coupled model, damped eigenvalues at the operating points"
+    if m.subsystem == "blade":
+        return isolated_blade(spec, m, sec), "isolated blade mode, section damping on its shape"
+    if m.subsystem == "tower":
+        return isolated_tower(spec, m, sec), (
+            "isolated tower mode: the rotor's damping of the hub's translation on the head + "
+            "33/140 of the tower (tilt and blade flexibility left out: low)"
+        )
+    return None, ""
 
 
 def _statement(spec: Spec, sch: bem.Schedule) -> str:
