@@ -147,6 +147,14 @@ def test_stall_rotor_edgewise_damping_goes_negative_at_high_wind():
         abs(p["aero_damping_ratio"]) for p in edge_low
     )
     assert flap.status != "fail"
+    # the same story from the BEM operating points (its aerodynamics block): the judged
+    # edgewise mode unstable in the stall range, and the representative planform and polar
+    # make the rotor its rating — a stall-regulated power curve peaking near 1 MW
+    stab = check(r, "aerodynamics.stability")
+    assert stab.status == "fail" and "blade.edge1" in stab.numbers["unstable"]
+    assert all(12 < v < 25 for v in stab.numbers["unstable"]["blade.edge1"])
+    power = [p["power_kw"] for p in check(r, "aerodynamics.operation").numbers["points"]]
+    assert 800 < max(power) < 1200 and power[-1] < 0.8 * max(power)  # stall: power falls
     # divergence and flutter are not the problem of this stiff, short blade
     assert check(r, "blade.flutter").status == "pass"
     assert check(r, "blade.divergence").status == "pass"

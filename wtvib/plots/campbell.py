@@ -336,8 +336,8 @@ def damping_plot(report: Report) -> "Figure | None":
 
     fig = Figure(figsize=(10, 6.5), dpi=150, layout="constrained")
     ax = fig.add_subplot()
-    cmap = colormaps["tab20"]
-    colours = [cmap(i % 20) for i in range(len(modes))]
+    cmap = colormaps["tab10" if len(modes) <= 10 else "tab20"]  # distinct hues while they last
+    colours = [cmap(i % cmap.N) for i in range(len(modes))]
     for mode, colour in zip(modes, colours, strict=True):
         op = mode.operating
         assert op is not None
