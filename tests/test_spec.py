@@ -220,11 +220,8 @@ def test_an_absurd_wind_speed_is_refused(write_spec):
         spec.load(write_spec(text))
 
 
-def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
-    """The README's documented `aerodynamics` block loads as written, and its mistakes are
-    one line with the field (a station beyond the tip, an aerofoil not defined)."""
-    import re
-
+def _readme_aerodynamics() -> tuple[str, str]:
+    """The head of a small spec and the README's documented `aerodynamics` block."""
     from tests.conftest import ROOT
 
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
@@ -234,16 +231,20 @@ def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
         "wtvib: 1\nturbine: {name: T, rotor_diameter_m: 40, rated_power_kw: 500}\n"
         "rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {min_rpm: 10, max_rpm: 30}}\n"
     )
-    loaded = spec.load(write_spec(head + block.group(1)))
+    return head, block.group(1)
+
+
+def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
+    """The README's documented `aerodynamics` block loads as written, and its mistakes are
+    one line with the field (a station beyond the tip, an aerofoil not defined)."""
+
+    head, text = _readme_aerodynamics()
+    loaded = spec.load(write_spec(head + text))
     assert loaded.aerodynamics is not None and loaded.aerodynamics.control.min_pitch is not None
     with pytest.raises(SpecError, match="beyond the rotor radius"):
-        spec.load(
-            write_spec(
-                head.replace("rotor_diameter_m: 40", "rotor_diameter_m: 30") + block.group(1)
-            )
-        )
+        spec.load(write_spec(head.replace("rotor_diameter_m: 40", "rotor_diameter_m: 30") + text))
     with pytest.raises(SpecError, match="not in airfoils"):
-        spec.load(write_spec(head + block.group(1).replace("airfoil: [foil,", "airfoil: [other,")))
+        spec.load(write_spec(head + text.replace("airfoil: [foil,", "airfoil: [other,")))
 
 
 @pytest.mark.parametrize(
@@ -258,16 +259,7 @@ def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
 )
 def test_aerodynamics_mistakes_are_one_line(write_spec, old, new, said):
     """Magnitudes no rotor has (issue 19's class) are refused with the field, not solved."""
-    from tests.conftest import ROOT
-
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    block = re.search(r"```yaml\n(aerodynamics:\n.*?)```", readme, re.S)
-    assert block is not None
-    head = (
-        "wtvib: 1\nturbine: {name: T, rotor_diameter_m: 40, rated_power_kw: 500}\n"
-        "rotor: {blades: 3, orientation: upwind, hub: rigid, speed: {min_rpm: 10, max_rpm: 30}}\n"
-    )
-    text = block.group(1)
+    head, text = _readme_aerodynamics()
     assert old in text
     with pytest.raises(SpecError, match=re.escape(said)) as err:
         spec.load(write_spec(head + text.replace(old, new)))

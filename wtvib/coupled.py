@@ -74,6 +74,7 @@ from .kinematics import (
     UX,
     UY,
     Jet,
+    MatrixJet,
     nacelle_rotation,
     rx,
     skew,
@@ -232,16 +233,9 @@ class Model:
         kb = self.k_blades
         n = _RIGID + kb
         r = self.rotor
-        turn = spin(n, lay.local[0][PHI] >= 0)
-        rot = nacelle_rotation(n)
-        c1 = np.zeros((len(r.radius), 3, n))
-        c1[:, 0, _RIGID:] = r.flap
-        c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
-        c0 = np.zeros((len(r.radius), 3))
-        c0[:, 2] = r.radius
         mm = np.repeat(r.mass, 3)
-        first_order = omega == 0.0  # parked: the mass matrix needs first-order terms only
-        b = turn.apply(Jet(c0, c1, None if first_order else np.zeros((len(r.radius), 3, n, n))))
+        # parked: the mass matrix needs first-order terms only
+        b, rot = self._blade_points(second_order=omega != 0.0)
         g = GENERATORS[0]
         for j in range(self.blades):
             rj = rx(psi + 2 * np.pi * j / self.blades)
@@ -276,23 +270,27 @@ class Model:
         self._scatter(d, c_hub - c_hub.T, 0, rigid_only=True)
         return m, d, k
 
+    def _blade_points(self, second_order: bool) -> tuple[Jet, MatrixJet]:
+        """A blade's points in the hub frame, turned by the drive train (before the blade's
+        azimuth), and the nacelle's rotation to apply after it."""
+        n = _RIGID + self.k_blades
+        r = self.rotor
+        c1 = np.zeros((len(r.radius), 3, n))
+        c1[:, 0, _RIGID:] = r.flap
+        c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
+        c0 = np.zeros((len(r.radius), 3))
+        c0[:, 2] = r.radius
+        c2 = np.zeros((len(r.radius), 3, n, n)) if second_order else None
+        turn = spin(n, self.layout.local[0][PHI] >= 0)
+        return turn.apply(Jet(c0, c1, c2)), nacelle_rotation(n)
+
     @functools.cached_property
     def section_velocity(self) -> Array:
         """(blades, P, 2, n): each blade point's velocity out of the rotor plane (downwind)
         and in it (direction of rotation) per rate of the blade's local coordinates, at
         ψ = 0 — first order, the directions those of the undeflected rotor (the section
         velocities an aerodynamic damping acts on)."""
-        kb = self.k_blades
-        n = _RIGID + kb
-        r = self.rotor
-        turn = spin(n, self.layout.local[0][PHI] >= 0)
-        rot = nacelle_rotation(n)
-        c1 = np.zeros((len(r.radius), 3, n))
-        c1[:, 0, _RIGID:] = r.flap
-        c1[:, 1, _RIGID:] = -r.edge  # in-plane, direction of rotation at ψ = 0 is −y
-        c0 = np.zeros((len(r.radius), 3))
-        c0[:, 2] = r.radius
-        b = turn.apply(Jet(c0, c1, None))
+        b, rot = self._blade_points(second_order=False)
         out = []
         for j in range(self.blades):
             rj = rx(2 * np.pi * j / self.blades)

@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .aerodamping import blade_mass, blade_shape
 from .analysis import Analysis, Context, blade_damping, no_modes
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -117,29 +118,6 @@ def _planform(spec: "Spec", radius: float) -> tuple[Array, Array, Array] | None:
     return None
 
 
-def _mode_shape(mode: "Mode", r: Array, root: float) -> Array:
-    """The mode's deflection at radii r: its computed shape, else the uniform cantilever's."""
-    if mode.shape is not None:
-        x = np.asarray(mode.shape.position_m) + root
-        return np.interp(r, x, np.asarray(mode.shape.deflection))
-    # first bending mode of a uniform cantilever, β₁l = 1.8751 (Blevins Table 8-1)
-    bl = 1.8751040687
-    length = r[-1] - root
-    xi = np.clip((r - root) / length, 0, 1) * bl
-    sigma = (math.cosh(bl) + math.cos(bl)) / (math.sinh(bl) + math.sin(bl))
-    phi = np.cosh(xi) - np.cos(xi) - sigma * (np.sinh(xi) - np.sin(xi))
-    return np.asarray(phi / phi[-1])
-
-
-def _mass(spec: "Spec", r: Array, root: float) -> Array | None:
-    st = spec.blade.structure
-    if st is not None:
-        return np.interp(r - st.hub_radius_m, st.span_m, st.mass_per_length_kg_m)
-    if spec.blade.mass_kg is not None:
-        return np.full_like(r, spec.blade.mass_kg / (r[-1] - root))
-    return None
-
-
 def operating_points(spec: "Spec", radius: float) -> list[tuple[float, float]]:
     """(wind [m/s], rotor speed [rpm]) pairs over min_wind … max_wind in 0.5 m/s steps."""
     ae = spec.blade.aeroelastic
@@ -178,8 +156,8 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
     r = np.linspace(max(r_plan[0], root), radius, 60)
     chord = np.interp(r, r_plan, chord_plan)
     theta = np.interp(r, r_plan, twist_plan) + ae.pitch_deg
-    shape = _mode_shape(mode, np.concatenate([[root], r]), root)[1:]
-    m = _mass(spec, r, root)
+    shape = blade_shape(mode, np.concatenate([[root], r]), root)[1:]
+    m = blade_mass(spec, r, root)
     if m is None:
         return None
     flap = mode.id.startswith("blade.flap")
