@@ -68,3 +68,16 @@ def test_heavily_damped_crossings_are_info_and_the_daf_uses_the_damping_there(wr
         np.testing.assert_allclose(f.crossing_daf, [1 / (2 * z) for z in zeta])
         if f.damping_met >= 0.3:
             assert f.status in ("pass", "info")
+
+
+def test_aerodynamics_without_a_mode_to_damp_is_said(write_spec):
+    """Aerodynamics given but no mass anywhere: no mode can take them; the audit is
+    structural, and says what is missing instead of passing the stability check."""
+    text = SPEC.replace("tower: {mass_kg: 40000, ", "tower: {").replace("mass_kg: 2000, ", "")
+    text = text.replace("tower_head: {mass_kg: 30000, cm_downwind_m: 0, cm_above_top_m: 1}\n", "")
+    report = audit.run(load(write_spec(text)))
+    doc = report.to_dict()
+    assert doc["damping"] == "structural" and doc["aerodynamics"] is True
+    stab = next(c for c in report.checks if c.id == "aerodynamics.stability")
+    assert stab.status == "info" and "blade.mass_kg" in stab.message
+    assert any("No aerodynamic damping for" in a for a in report.assumptions)

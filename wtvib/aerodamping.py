@@ -504,7 +504,15 @@ def stability(modes: Sequence[Mode]) -> Check:
     )
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:
-        return Check(f"{NAME}.stability", NAME, "info", "not analysed: no mode in operation", rule)
+        return Check(
+            f"{NAME}.stability",
+            NAME,
+            "info",
+            "not analysed: no judged mode has a model for its aerodynamic damping (blade modes "
+            "need blade.mass_kg or blade.structure, first tower modes tower.mass_kg or its "
+            "structure and tower_head; the coupled model damps every mode it holds)",
+            rule,
+        )
     unstable = []
     for m in damped:
         op = m.operating

@@ -130,6 +130,7 @@ class Report:
                 "severity": self.settings.severities(),
             },
             "damping": self.damping_model,
+            "aerodynamics": spec.aerodynamics is not None,
             "modes": [m.to_dict() for m in self.modes],
             "campbell": self.campbell.to_dict(),
             "checks": [c.to_dict() for c in self.checks],

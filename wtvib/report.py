@@ -89,14 +89,13 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
             "(quasi-steady, aerodynamic + structural)",
         )
     else:
-        grid.add_row(
-            "Damping",
-            Text(
-                "structural only — no aerodynamics: flapwise resonances judged without "
-                "their aerodynamic damping",
-                style="yellow",
-            ),
+        why = (
+            "aerodynamics given, but no judged mode has a model to take them (blade mass or "
+            "structure; tower mass and tower head)"
+            if data.get("aerodynamics")
+            else "no aerodynamics: flapwise resonances judged without their aerodynamic damping"
         )
+        grid.add_row("Damping", Text(f"structural only — {why}", style="yellow"))
     grid.add_row(
         "Rule",
         f"{data['rule']['kind']} margin {data['rule']['margin']:.0%} "
