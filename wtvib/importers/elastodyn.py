@@ -172,9 +172,15 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
     ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
     ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
+    torsion = _tower_torsion(tower, mass, ei_fa, bool(_yaw(main, servo)))
     if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
         frac = np.array([0.0, 1.0])
         mass, ei_fa, ei_ss = (np.repeat(a, 2) for a in (mass, ei_fa, ei_ss))
+        torsion = (
+            None
+            if torsion is None
+            else (np.repeat(torsion[0], 2), np.repeat(torsion[1], 2), torsion[2])
+        )
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
@@ -235,6 +241,11 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
                 "mass_per_length_kg_m": _list(mass),
                 "ei_fa_nm2": _list(ei_fa),
                 "ei_ss_nm2": _list(ei_ss),
+                **(
+                    {"gj_nm2": _list(torsion[0]), "polar_inertia_kgm": _list(torsion[1])}
+                    if torsion is not None
+                    else {}
+                ),
             },
         },
         "tower_head": {
@@ -304,6 +315,8 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
         ],
         **({"warnings": [operating["warning"]]} if operating.get("warning") else {}),
     }
+    if torsion is not None:
+        data["assumptions"].append(torsion[2])
     if aero is not None:
         data["aerodynamics"] = aero[0]
         rated = aero[0]["control"].get("rated_power_kw")
@@ -315,6 +328,55 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "3 and 25 m/s assumed."
         )
     return data
+
+
+#: A steel tube tower's defaults where the deck set gives no torsion (Jonkman et al. 2009 §6,
+#: the NREL 5-MW tower: E 210 GPa, G 80.8 GPa, effective density 8,500 kg/m³ with paint,
+#: bolts and welds): thin-walled tube J = 2I, so GJ = 2(G/E)·EI and ρJ = 2ρ·EI/E — the
+#: FAST v7 tower file of the NREL 5-MW has exactly these at every station.
+STEEL_E, STEEL_G, STEEL_RHO = 210e9, 80.8e9, 8500.0
+
+
+def _tower_torsion(
+    tower: Deck, mass: np.ndarray, ei_fa: np.ndarray, yaw_spring: bool
+) -> tuple[np.ndarray, np.ndarray, str] | None:
+    """The tower's torsional stiffness and polar inertia per length, and how they were found:
+    FAST v7's TwGJStif (with TwFAIner + TwSSIner, else the thin tube's m·2EI/EA from
+    TwEAStif); without them, and only where the deck set has no yaw spring either (the
+    nacelle would be held in yaw, stiffening the cyclic flap modes: issue 18), the steel
+    tube's defaults. None: no torsion (ElastoDyn has none, a yaw spring carries yaw)."""
+    gj = tower.optional_column("HtFract", "TwGJStif")
+    if gj is not None and np.all(gj > 0):
+        fa = tower.optional_column("HtFract", "TwFAIner")
+        ss = tower.optional_column("HtFract", "TwSSIner")
+        ea = tower.optional_column("HtFract", "TwEAStif")
+        if fa is not None and ss is not None and np.all(fa + ss > 0):
+            return (
+                gj,
+                fa + ss,
+                "Tower torsion from the tower file's TwGJStif and TwFAIner + TwSSIner.",
+            )
+        if ea is not None and np.all(ea > 0):
+            return (
+                gj,
+                mass * 2 * ei_fa / ea,
+                (
+                    "Tower torsion from the tower file's TwGJStif; polar inertia per length "
+                    "m·2EI/EA (thin-walled tube, TwEAStif: the file gives no TwFAIner/TwSSIner)."
+                ),
+            )
+    if yaw_spring:
+        return None
+    return (
+        2 * STEEL_G / STEEL_E * ei_fa,
+        2 * STEEL_RHO * ei_fa / STEEL_E,
+        (
+            "Tower torsion not in the deck set, and no yaw spring: a steel tube's GJ = 2(G/E)·EI "
+            "and ρJ = 2ρ·EI/E (E 210, G 80.8 GPa, ρ 8,500 kg/m³; thin-walled tube, J = 2I) so that "
+            "the nacelle is not held in yaw — an assumption; give tower.distributed.gj_nm2 to "
+            "replace it."
+        ),
+    )
 
 
 def controller(servo: "Deck | None") -> dict[str, tuple[float, int]]:
