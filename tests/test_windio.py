@@ -98,3 +98,20 @@ def test_a_negative_component_mass_is_refused(tmp_path):
     part["elastic_properties"]["mass"] = -1.0
     with pytest.raises(SpecError, match=r"elastic_properties\.mass must be a mass ≥ 0 kg"):
         load_mutated(tmp_path, doc)
+
+
+def test_a_part_given_two_different_masses_is_warned_about():
+    """Issue 18: the windIO 2.1.1 IEA-22 example gives its generator as 508 t (`mass`) and
+    1,269 t (`elastic_properties.mass`); the audit says so with both numbers, in the
+    headline's warnings. The IEA-15 example's two generator masses agree (372 / 369 t)."""
+    from pathlib import Path
+
+    import windIO
+
+    from wtvib.importers import load
+
+    examples = Path(windIO.__file__).parent / "examples/turbine"
+    iea22 = load(examples / "IEA-22-280-RWT.yaml")
+    said = [w for w in iea22.warnings if "components.drivetrain.generator" in w]
+    assert said and "508,040 kg" in said[0] and "1,269,142 kg" in said[0]
+    assert not [w for w in load(examples / "IEA-15-240-RWT.yaml").warnings if "two masses" in w]

@@ -108,6 +108,7 @@ def _to_spec_data(
         notes.append("No blade structural properties in the file: blade modes not computed.")
     head, head_note = reader.head(blades, blade_mass, structure, head_mass)
     notes.append(head_note)
+    mass_warnings = reader.mass_warnings() if head_mass is None else []
     src = {"file": f"{path.name} ({version})"}
     warnings = (
         [
@@ -117,7 +118,7 @@ def _to_spec_data(
         ]
         if floating
         else []
-    )
+    ) + mass_warnings
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -222,6 +223,10 @@ def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
 def _at(field: dict[str, Any], grid: np.ndarray) -> np.ndarray:
     """A windIO ``{grid, values}`` field evaluated on another grid (linear)."""
     return np.interp(grid, np.asarray(field["grid"], float), np.asarray(field["values"], float))
+
+
+#: Two masses of one part differing by more than this factor are reported.
+MASS_DISAGREEMENT = 1.25
 
 
 class _Reader:
@@ -422,6 +427,37 @@ class _Reader:
         return structure, float(np.trapezoid(mass, span)), length
 
     # -- tower head ---------------------------------------------------------------------
+    def mass_warnings(self) -> list[str]:
+        """Masses the file gives twice and differently (issue 18: the IEA-22 2.1.1 example's
+        generator is 508 t as ``mass`` and 1,269 t as ``elastic_properties.mass``, and its
+        nacelle 1,565 t against 821 t in the turbine's OpenFAST deck)."""
+        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        out = []
+        for name in ("generator", "gearbox", "bedplate"):
+            part = dt.get(name) if isinstance(dt, dict) else None
+            if not isinstance(part, dict):
+                continue
+            given = (part.get("mass"), (part.get("elastic_properties") or {}).get("mass"))
+            if not all(isinstance(v, int | float) and math.isfinite(v) and v > 0 for v in given):
+                continue
+            a, b = float(given[0]), float(given[1])  # type: ignore[arg-type]
+            ratio = max(a, b) / min(a, b)
+            if ratio > MASS_DISAGREEMENT:
+                nacelle = (dt.get("elastic_properties") or {}).get("mass")
+                text = (
+                    f"components.drivetrain.{name}: mass {a:,.0f} kg but "
+                    f"elastic_properties.mass {b:,.0f} kg ({ratio:.1f}×) — the file gives two "
+                    "masses for one part"
+                )
+                if isinstance(nacelle, int | float):
+                    text += (
+                        f"; the nacelle's elastic_properties.mass {nacelle:,.0f} kg, which the "
+                        "tower head uses, may carry the larger: check it (--head-mass, or "
+                        "convert and edit tower_head)"
+                    )
+                out.append(text)
+        return out
+
     def head(
         self,
         blades: int,
