@@ -120,6 +120,7 @@ class Report:
                 "variable_speed": speed.fixed_rpm is None,
                 "overspeed_rpm": round(speed.overspeed, 6),
                 "quick_pass_rpm": [list(p) for p in speed.quick_pass_rpm],
+                **({"source": speed.source} if speed.source else {}),
             },
             "rule": {
                 "kind": rule.kind,

@@ -78,7 +78,8 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     grid.add_row("Turbine", _t(t["name"]))
     grid.add_row("File", _t(t["source_file"]))
     grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")
-    grid.add_row("Speed", f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm")
+    source = f" — from {op['source']}" if op.get("source") else ""
+    grid.add_row("Speed", _t(f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm{source}"))
     grid.add_row("Tower class", str(data["tower_class"] or "—"))
     camp = data.get("campbell", {})
     if data.get("damping") == "aeroelastic" and camp.get("wind_m_s"):

@@ -138,6 +138,7 @@ def _with_speed(
             speed = {"fixed_rpm": rated}
         else:
             speed["rated_rpm"] = rated
+    speed["source"] = "the command line (--rpm/--rated)"
     notes = [*data.get("assumptions", []), "Operating speeds set on the command line."]
     # a range given on the command line answers the importer's "speed not found"
     warnings = [w for w in data.get("warnings", []) if "--rpm" not in w]

@@ -89,7 +89,11 @@ def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str
                 line=low[1],
                 source=str(dll),
             )
-        speed = {"min_rpm": low[0] / ratio * rpm_of, "max_rpm": rated[0] / ratio * rpm_of}
+        speed: dict[str, Any] = {
+            "min_rpm": low[0] / ratio * rpm_of,
+            "max_rpm": rated[0] / ratio * rpm_of,
+            "source": f"{dll.name} (VS_MinOMSpd, VS_RefSpd)",
+        }
         return speed, (
             f"Operating range {speed['min_rpm']:.3g}–{speed['max_rpm']:.3g} rpm from "
             f"{dll.name} (VS_MinOMSpd {low[0]:g}, VS_RefSpd {rated[0]:g} rad/s, gearbox "
@@ -107,7 +111,8 @@ def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str
         slip = servo.num("SIG_SlPc", default=0.0) if model == 1 else 0.0
         if 0 < sync < 9999 and 0 <= slip < 50:
             fixed = sync * (1 + slip / 100) / gb
-            return {"fixed_rpm": fixed}, (
+            source = f"the induction generator in {servo.path.name} (synchronous speed + slip)"
+            return {"fixed_rpm": fixed, "source": source}, (
                 f"Fixed operating speed {fixed:.4g} rpm: the induction generator's synchronous "
                 f"speed {sync:g} rpm plus rated slip {slip:g} % over the gearbox ratio {gb:g} "
                 f"({servo.path.name})."
@@ -454,10 +459,13 @@ def _operating(main: Deck, servo: Deck | None) -> dict[str, Any]:
     found = operating_speed(main, servo)
     if found is not None:
         speed, note = found
-        return {"speed": {k: float(f"{v:.6g}") for k, v in speed.items()}, "note": note}
+        out: dict[str, Any] = {
+            k: v if k == "source" else float(f"{v:.6g}") for k, v in speed.items()
+        }
+        return {"speed": out, "note": note}
     rot = main.num("RotSpeed")
     return {
-        "speed": {"fixed_rpm": rot},
+        "speed": {"fixed_rpm": rot, "source": f"the initial RotSpeed of {main.path.name}"},
         "note": f"The deck set gives no operating range: its initial RotSpeed = {rot:g} rpm is "
         "taken as a fixed operating speed.",
         "warning": f"rotor.speed: no operating range in the deck set — audited at the initial "

@@ -99,8 +99,10 @@ def _to_spec_data(
             f"assembly.number_of_blades must be a whole number ≥ 1 (got {blades!r})",
             source=str(path),
         )
-    speed, speed_note = reader.speed()
+    found_speed, speed_note = reader.speed()
     notes.append(speed_note)
+    where = speed_note.split(":")[0].removeprefix("Operating range from ")
+    speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
     tower, tower_notes = reader.tower()
     notes += tower_notes
     structure, blade_mass, blade_len = reader.blade()

@@ -35,6 +35,12 @@ class RotorSpeed(_Strict):
         description="Transient overspeed as a factor on the highest steady speed; default "
         "1.15 when neither this nor overspeed_rpm is given (Hau ch. 7.3.4, Growian). [-]",
     )
+    source: str | None = Field(
+        None,
+        max_length=300,
+        description="Where the operating speeds come from (an importer's or the command "
+        "line's statement, shown beside the speeds in the headline).",
+    )
     quick_pass_rpm: list[tuple[Positive, Positive]] = Field(
         default_factory=list,
         description="Speed bands [low, high] the controller passes through quickly without "
