@@ -44,7 +44,8 @@ check ``system.floquet``). This module builds the model and gives the audit its 
 Assumed and neglected (stated in the report): shaft tilt, precone and prebend; blade
 torsion and section rotary inertia; gravity on the blades; gyroscopic moments of drive-train
 parts other than the hub (generator spinning at i·Ω); structural damping other than the
-drive train's dampers, and aerodynamic damping.
+drive train's dampers. Aerodynamic damping at the operating points is added by
+:mod:`wtvib.aerodamping` where the spec has aerodynamics.
 
 References
 ----------
@@ -684,8 +685,8 @@ def _statements(model: Model) -> tuple[str, ...]:
         f"{model.blades} flexible blades × {model.k_blades} modes "
         f"({', '.join(model.rotor.names)}), nacelle {n.mass:,.0f} kg rigid, hub "
         f"{model.hub_mass:,.0f} kg / {model.hub_polar:,.0f} kg·m², generator {model.condition}",
-        "neglected: shaft tilt, precone, blade torsion, gravity on the blades, damping "
-        "other than the drive train's",
+        "neglected: shaft tilt, precone, blade torsion, gravity on the blades; damping in "
+        "the parked model: the drive train's only",
         *model.assumptions,
     )
 
@@ -722,12 +723,18 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         else None
     )
     found = (check(spec, list(ctx.modes)), periodic)
+    aerodynamic = spec.aerodynamics is not None and spec.rotor.blades >= 3
+    damping = (
+        "the drive train's dampers and the aerodynamics at the operating points"
+        if aerodynamic
+        else "the drive train's dampers only (each mode's structural ratio assumed beside)"
+    )
     statements = (
         (
             "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
             f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
-            "coordinates); shaft tilt, precone, blade torsion, gravity on the blades and "
-            "all damping but the drive train's neglected.",
+            "coordinates); shaft tilt, precone, blade torsion and gravity on the blades "
+            f"neglected; damping in the model: {damping}.",
         )
         if applies(spec)
         else ()
