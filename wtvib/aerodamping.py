@@ -292,25 +292,15 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
 # Every judged mode
 
 
-@dataclass(frozen=True)
-class InOperation:
-    """What the aerodynamics did to the modes: the schedule, the coupled solution and the
-    statements the report makes about them."""
-
-    sections: Sections
-    coupled: Coupled | None
-    assumptions: tuple[str, ...]
-    frequency_shift: float  # the largest |f_aeroelastic/f_structural − 1| of a judged mode
-
-
 def in_operation(
     spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
-) -> tuple[dict[str, list[Mode]], InOperation | None]:
-    """Every judged mode with its damping at the operating points (``Mode.operating``);
-    unchanged without aerodynamics. ``heavy``: the damping ratio above which a mode has no
+) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:
+    """Every judged mode with its damping at the operating points (``Mode.operating``), and
+    the statements the report makes about how; unchanged (and nothing said) without
+    aerodynamics. ``heavy``: the damping ratio above which a mode has no
     resonant peak (its frequency shift by the aerodynamics is not worth stating)."""
     if spec.aerodynamics is None:
-        return dict(built), None
+        return dict(built), ()
     sec = sections(spec)
     sch = sec.schedule
     cpl = coupled(spec, sec)
@@ -353,10 +343,11 @@ def in_operation(
             f"departs from by at most {shift:.1%}."
         )
     if cpl is not None and cpl.first_order.any():
+        present = {m.id for ms in out.values() for m in ms}
         named = [
             f"{n} ({int(cpl.first_order[:, j].sum())})"
             for j, n in enumerate(cpl.names)
-            if cpl.first_order[:, j].any() and n in {m.id for ms in out.values() for m in ms}
+            if cpl.first_order[:, j].any() and n in present
         ]
         notes.append(
             f"At {int(cpl.first_order.sum())} of {cpl.first_order.size} mode-points no "
@@ -372,7 +363,7 @@ def in_operation(
             "coupled model has the aerodynamics of every mode it holds): judged with the "
             "structural damping."
         )
-    return out, InOperation(sec, cpl, tuple(notes), shift)
+    return out, tuple(notes)
 
 
 def _aerodynamic(

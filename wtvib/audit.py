@@ -1,5 +1,6 @@
 """The only orchestrator: collect modes and checks, derive the verdict (DESIGN.md)."""
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
@@ -72,7 +73,7 @@ class Report:
         w = worst([c.status for c in self.checks])
         return "pass" if w == "info" else w
 
-    @property
+    @functools.cached_property
     def campbell(self) -> "campbell.Campbell":
         """The sampled curves of every judged mode (README: the JSON contract's
         ``campbell``)."""
@@ -80,9 +81,9 @@ class Report:
 
     @property
     def damping_model(self) -> str:
-        """How the modes were damped: ``aeroelastic`` (aerodynamics at the operating points)
-        or ``structural`` (given or assumed ratios only)."""
-        return "aeroelastic" if any(m.operating for m in self.modes) else "structural"
+        """How the judged modes were damped: ``aeroelastic`` (some has damping at the
+        operating points) or ``structural`` (given or assumed ratios only)."""
+        return "aeroelastic" if any(m.operating for m in self.modes if m.judged) else "structural"
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON contract: every number finite — one that is not is written as null and
@@ -221,12 +222,12 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
         built[sub.NAME] = sub.build_modes(spec, built)
     built = _one_truth_per_mode(spec, built)
     # the aerodynamics (where given) damp every judged mode at the operating points
-    built, in_operation = aerodamping.in_operation(spec, built, settings.heavy_damping_ratio)
+    built, aero_notes = aerodamping.in_operation(spec, built, settings.heavy_damping_ratio)
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
     results: dict[str, Mapping[str, Any]] = {}
-    assumptions: list[str] = list(in_operation.assumptions) if in_operation else []
+    assumptions: list[str] = list(aero_notes)
     for sub in SUBSYSTEMS:
         found = assess_all(
             built[sub.NAME],

@@ -160,9 +160,9 @@ def assess(
         zeta,
         mode.operating is not None,
         zeta_met,
-        tuple(
-            1 / (2 * z) if z > 0 else float("inf")
-            for z in (mode.damping_at(c, default_damping) for c in crossings)
+        tuple(  # at each crossing η = 1: 1/(2ζ) with the ζ the mode has there
+            float(dynamic_amplification(1.0, max(mode.damping_at(c, default_damping), 0.0)))
+            for c in crossings
         ),
     )
 

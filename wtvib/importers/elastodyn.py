@@ -177,7 +177,8 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
     ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
     ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
-    torsion = _tower_torsion(tower, mass, ei_fa, bool(_yaw(main, servo)))
+    yaw_block = _yaw(main, servo)
+    torsion = _tower_torsion(tower, mass, ei_fa, bool(yaw_block))
     if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
         frac = np.array([0.0, 1.0])
         mass, ei_fa, ei_ss = (np.repeat(a, 2) for a in (mass, ei_fa, ei_ss))
@@ -300,7 +301,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
                 },
             ],
         },
-        **_yaw(main, servo),
+        **yaw_block,
         "coupled": {
             "apex_downwind_m": q(
                 main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
