@@ -63,8 +63,9 @@ LEAD = 8
 #: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
 MATCH = 1.5
 
-#: The tower's equivalent tip mass in its first bending mode: 33/140 of its mass (a
-#: uniform cantilever, Rayleigh; Blevins, Formulas for Natural Frequency, Table 8-8).
+#: The tower's equivalent tip mass in its first bending mode: 33/140 = 0.2357 of its mass (a
+#: uniform cantilever with a tip mass, Rayleigh's cubic shape: the 0.2357·mL of DOMAIN.md
+#: §5's tip-mass closed form; Blevins, Formulas for Natural Frequency, Table 8-8).
 TOWER_EQUIVALENT = 33 / 140
 
 
