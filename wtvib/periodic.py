@@ -75,7 +75,7 @@ def reduction(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> A
     and the blade coordinates of the blade modes up to ``cutoff_hz`` (at least the first)
     on every blade — complete blade sets keep the basis the same at every azimuth."""
     lay = model.layout
-    res = parked(model, count=modes)
+    res = parked(model, count=modes, by_content=False)
     keep = max(4, int(np.count_nonzero(res.frequency_hz <= cutoff_hz)))
     shapes = np.real(res.shapes[:, :keep])
     fixed = np.ones(lay.size, dtype=bool)
