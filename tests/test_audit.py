@@ -68,3 +68,16 @@ def test_a_number_that_is_not_finite_is_null_with_a_reason(write_spec):
     row = next(c for c in doc["checks"] if c["id"] == "x.odd")
     assert row["margin"] is None and row["series"] == [1.0, None]
     assert any("checks[" in w and "margin" in w for w in doc["warnings"])
+
+
+def test_a_slow_tip_speed_for_the_rotor_size_is_a_warning(shared):
+    """Issue 18: the IEA-3.4 ElastoDyn file alone (no ServoDyn, no range) is audited at its
+    initial RotSpeed, 5 rpm: 34 m/s at the tip of a 130 m rotor, well under audit.SLOW_TIP
+    (the turbine runs 3.8–11.75 rpm, 80 m/s at rated). Given the range, no warning."""
+    from wtvib import importers
+
+    path = shared / "reference/IEA3.4/IEA-3.4-130-RWT_ElastoDyn.dat"
+    slow = [w for w in audit.suspicious(importers.load(path), []) if "tip speed" in w]
+    assert len(slow) == 1 and "34 m/s" in slow[0]
+    ranged = importers.load(path, rpm=(3.8, 11.75))
+    assert not [w for w in audit.suspicious(ranged, []) if "tip speed" in w]

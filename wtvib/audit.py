@@ -14,6 +14,7 @@ from . import (
     coupled,
     drivetrain,
     rotor,
+    scaling,
     stall,
     tower,
     yaw,
@@ -318,6 +319,12 @@ def _assert_finite(modes: list[Mode]) -> None:
             )
 
 
+#: A horizontal-axis rotor of 30 m or more whose top steady tip speed is under this [m/s]
+#: is suspicious (wtvib's bound, well below the reference turbines' rated tip speeds: NREL
+#: 5-MW 80 m/s, IEA-3.4 80, IEA-10 90, IEA-15 95, IEA-22 105 — rated rpm × radius).
+SLOW_TIP = 40.0
+
+
 def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
     """Legal but suspicious inputs, each with the reason (issue 9: warn, do not refuse), and
     what an importer had to assume."""
@@ -333,6 +340,13 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
         tip = math.pi * diameter * speed.top_rpm / 60
         if tip > 120:
             out.append(f"rotor.speed: tip speed {tip:.0f} m/s exceeds 120 m/s — unusual")
+        elif tip < SLOW_TIP and diameter >= 30 and spec.rotor.orientation != "vertical-axis":
+            out.append(
+                f"rotor.speed: tip speed {tip:.0f} m/s at the top steady speed "
+                f"({speed.top_rpm:g} rpm, {diameter:g} m rotor) is under {SLOW_TIP:g} m/s — "
+                "slow for a rotor this size (the reference turbines run 80–105 m/s at "
+                "rated); check the speed range and where it came from"
+            )
     if speed.overspeed > 1.5 * speed.top_rpm:
         out.append(
             f"rotor.speed: overspeed {speed.overspeed:g} rpm is more than 150 % of the "
@@ -351,6 +365,9 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                     "under 0.05 Hz is implausible"
                 )
     out += _missing_yaw_inertia(spec, modes)
+    far = scaling.head_warning(spec)
+    if far:
+        out.append(far)
     head, blades = spec.tower_head, spec.blade.mass_kg
     if head and blades and blades * spec.rotor.blades > 0.9 * head.mass_kg:
         out.append(
