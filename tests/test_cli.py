@@ -259,3 +259,18 @@ def test_check_writes_the_campbell_csv_and_never_clobbers(tmp_path):
     foreign.write_text("my data\n")
     result = runner.invoke(app, [*args[:-1], str(foreign)])
     assert result.exit_code == 2 and foreign.read_text() == "my data\n"
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["size", str(TURBINES / "wka-60.yaml")],  # neither --target nor --target-hz
+        ["check", str(TURBINES / "wka-60.yaml"), "--rpm", "abc", "--no-plot"],
+    ],
+)
+def test_a_bad_option_value_is_a_usage_error_not_an_internal_one(args):
+    """typer ≥ 0.16 raises BadParameter from its own vendored click, which the last line of
+    defence took for a bug (exit 3, 'internal error'); it is the user's mistake: exit 2."""
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2, result.output
+    assert "internal error" not in result.output

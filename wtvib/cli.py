@@ -142,6 +142,14 @@ def _run_options(command: F) -> F:
 _state = {"debug": False}
 
 
+#: Usage errors typer reports itself: click's, and those of the click typer vendors (typer
+#: ≥ 0.16 raises ``typer.BadParameter`` from its own copy, which click's class does not catch).
+_USAGE_ERRORS: tuple[type[Exception], ...] = (
+    click.exceptions.ClickException,
+    *((typer.TyperException,) if hasattr(typer, "TyperException") else ()),
+)
+
+
 def _user_errors(command: F) -> F:
     """Turn a wtvib error into one line on stderr and exit code 2, and any other exception
     into one line naming the input and the exception with exit code 3 — never exit 1, the
@@ -159,8 +167,8 @@ def _user_errors(command: F) -> F:
                 raise
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
-        except (typer.Exit, typer.Abort, click.exceptions.ClickException, KeyboardInterrupt):
-            raise
+        except (typer.Exit, typer.Abort, *_USAGE_ERRORS, KeyboardInterrupt):
+            raise  # typer reports a usage error itself (one line, exit 2)
         except Exception as exc:  # the last line of defence
             if debug:
                 raise
