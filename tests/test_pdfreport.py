@@ -35,7 +35,7 @@ def test_pdf_text_names_turbine_verdict_and_every_check(wka60_pdf):
 
 def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
     reader = PdfReader(io.BytesIO(wka60_pdf.read_bytes()))
-    assert 2 <= len(reader.pages) <= 8
+    assert 2 <= len(reader.pages) <= 10  # the WKA-60 inputs table now lists its tower sections
     images = [img for page in reader.pages for img in page.images]
     from wtvib.plots import diagrams
 
