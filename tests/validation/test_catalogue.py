@@ -4,6 +4,7 @@ Expected classes and verdicts come from the book's statements quoted in each tes
 numbers the specs carry are labelled there as published, derived or representative.
 """
 
+import math
 import re
 from pathlib import Path
 
@@ -186,3 +187,27 @@ def test_wka60_concrete_tower_uncertainty_and_the_size_that_clears_2p():
     goal = design.window_goal(design.all_windows(s, r.modes, r.rule), "soft")
     sized = design.scaled(s, design.size(s, goal, "wall").scale, "wall")
     assert check(audit.run(sized), "tower.resonance.2P").status != "fail"
+
+
+def test_euros_blade_gets_its_stability_checks_and_the_closed_form_divergence():
+    """Issue 18 / Hau §7.2.1 ("it should nevertheless be checked in all real cases"): the
+    Euros 44 m blade carries representative section data, so divergence, flutter and the
+    stall checks are analysed, not skipped. Exact: the typical-section divergence dynamic
+    pressure q_D = K_θ/(c·C_Lα·e), K_θ = I_θ·ω_θ² per unit span with the torsion stiffened by
+    the propeller moment (ω_θ² = ω_θ0² + Ω²·cos 2β at overspeed), e the elastic axis behind
+    the quarter chord — with the spec's I_θ = 6 kg·m, f_θ0 = 7 Hz, c = 1.55 m, EA at 0.30 c:
+    V_D = √(2q_D/ρ) = 158.6 m/s."""
+    r = report("euros-44m")
+    s = spec.load(TURBINES / "euros-44m.yaml")
+    ae = s.blade.aeroelastic
+    assert ae is not None
+    for cid in ("blade.divergence", "blade.flutter", "blade.stall.flap1", "blade.stall.edge1"):
+        assert not check(r, cid).message.startswith("not analysed"), cid
+    sec = ae.sections[0]
+    omega = s.rotor.speed.overspeed * math.pi / 30
+    beta = math.radians(sec.chord_angle_deg)
+    w2 = (2 * math.pi * 7.0) ** 2 + omega**2 * math.cos(2 * beta)
+    e = (sec.elastic_axis_chord - 0.25) * sec.chord_m
+    q_d = 6.0 * w2 / (sec.chord_m * ae.lift_slope_per_rad * e)
+    v_d = math.sqrt(2 * q_d / ae.air_density_kg_m3)
+    assert f"V_D = {v_d:.1f} m/s" in check(r, "blade.divergence").message
