@@ -264,3 +264,24 @@ def test_aerodynamics_mistakes_are_one_line(write_spec, old, new, said):
     with pytest.raises(SpecError, match=re.escape(said)) as err:
         spec.load(write_spec(head + text.replace(old, new)))
     assert err.value.path is not None and err.value.path.startswith("aerodynamics")
+
+
+@pytest.mark.parametrize(
+    ("entry", "message"),
+    [
+        ("{frequency_hz: 1.0, speeds: {rpm: [10, 5], frequency_hz: [1.1, 1.2]}}", "increase"),
+        ("{frequency_hz: 1.0, speeds: {rpm: [0, 5], frequency_hz: [1.1]}}", "values"),
+        ("{frequency_hz: 1.0, speeds: {rpm: [0, 5], frequency_hz: [1.5, 1.2]}}", "agree"),
+        (
+            "{frequency_hz: 1.0, southwell: 1.2, speeds: {rpm: [0, 5], frequency_hz: [1, 1.2]}}",
+            "not both",
+        ),
+    ],
+)
+def test_a_speed_table_is_validated(write_spec, entry, message):
+    """A mode's frequency over rotor speed (issue 18: measured Campbell curves) must be a
+    table that increases in rpm, has a frequency per speed, agrees with the standstill value
+    at 0 rpm and does not come with a Southwell coefficient too."""
+    path = write_spec(extra=f"blade:\n  modes:\n    flap1: {entry}\n")
+    with pytest.raises(spec.SpecError, match=message):
+        spec.load(path)

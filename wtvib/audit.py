@@ -23,7 +23,7 @@ from .analysis import Analysis, Context, Subsystem
 from .excitation import excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, assess_all, resonance_checks
-from .results import Check, Mode, Southwell
+from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
 
@@ -433,6 +433,12 @@ def _assumptions(
             "f² = f₀² + K·(Ω/2π)² (Southwell); K = 1.19 flap / 0.19 edge unless given: "
             + ", ".join(stiffened)
             + "."
+        )
+    tabled = [m.id for m in modes if m.origin == "given" and isinstance(m.curve, Sampled)]
+    if tabled:
+        out.append(
+            "Frequencies over rotor speed as tabulated in the spec (speeds: linear between "
+            f"the points, the last value held beyond them): {', '.join(tabled)}."
         )
     out += statements  # how each subsystem's modes came about
     given = sorted({m.subsystem for m in modes if m.origin == "given"})

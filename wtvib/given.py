@@ -1,8 +1,9 @@
 """Modes whose natural frequencies the spec gives directly (before any model computes them)."""
 
+import math
 from collections.abc import Callable, Mapping
 
-from .results import Mode, SpeedCurve
+from .results import Mode, Sampled, SpeedCurve
 from .spec import ModeEntry, ModeSpec
 
 
@@ -23,7 +24,8 @@ def given_modes(
     describe
         Mode name → human description.
     curve
-        Optional: (name, standstill frequency, full entry) → frequency-vs-speed curve.
+        Optional: (name, standstill frequency, full entry) → frequency-vs-speed curve (the
+        subsystem's stiffening law); an entry's own ``speeds`` table replaces it.
     """
     modes = []
     for name, entry in entries.items():
@@ -37,7 +39,18 @@ def given_modes(
                 description=text,
                 frequency_hz=f0,
                 damping_ratio=full.damping_ratio if full else None,
-                curve=curve(name, f0, full) if curve else None,
+                curve=table(full)
+                if full and full.speeds
+                else (curve(name, f0, full) if curve else None),
             )
         )
     return sorted(modes, key=lambda m: m.frequency_hz)
+
+
+def table(entry: ModeSpec) -> Sampled:
+    """A mode's ``speeds`` table as a curve over rotor speed [rad/s], from standstill."""
+    assert entry.speeds is not None
+    rpm, hz = list(entry.speeds.rpm), list(entry.speeds.frequency_hz)
+    if rpm[0] > 0:
+        rpm, hz = [0.0, *rpm], [entry.frequency_hz, *hz]
+    return Sampled(tuple(r * math.pi / 30 for r in rpm), tuple(hz))

@@ -4,7 +4,7 @@ import itertools
 from collections.abc import Mapping
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, model_validator
 
 
 class _Strict(BaseModel):
@@ -49,6 +49,21 @@ class Quantity(_Strict):
     )
 
 
+class SpeedTable(_Strict):
+    """A natural frequency measured or computed at rotor speeds (a Campbell curve)."""
+
+    rpm: list[Annotated[float, Field(ge=0, le=10_000)]] = Field(
+        description="Rotor speeds, increasing. [rpm]"
+    )
+    frequency_hz: list[Positive] = Field(description="The frequency at each speed. [Hz]")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "SpeedTable":
+        _increasing("rpm", self.rpm)
+        _same_length(self, "rpm")
+        return self
+
+
 class ModeSpec(_Strict):
     """A natural frequency given directly, with optional damping and stiffening."""
 
@@ -64,6 +79,25 @@ class ModeSpec(_Strict):
         "Default 1.19 for flap and 0.19 for edge modes (uniform cantilever), 0 for torsion. [-]",
     )
     description: str | None = Field(None, description="Free text shown in the report.")
+    speeds: SpeedTable | None = Field(
+        None,
+        description="The frequency over rotor speed (e.g. a measured Campbell diagram), "
+        "linear between the points and held beyond them; replaces the Southwell stiffening. "
+        "A table without 0 rpm starts from frequency_hz at standstill.",
+    )
+
+    @model_validator(mode="after")
+    def _one_curve(self) -> "ModeSpec":
+        if self.speeds is not None and self.southwell is not None:
+            raise ValueError("give southwell or speeds, not both (speeds is the whole curve)")
+        if self.speeds is not None and self.speeds.rpm[0] == 0:
+            f0 = self.speeds.frequency_hz[0]
+            if abs(f0 - self.frequency_hz) > 0.01 * self.frequency_hz:
+                raise ValueError(
+                    f"speeds starts at 0 rpm with {f0:g} Hz but frequency_hz is "
+                    f"{self.frequency_hz:g} Hz (the standstill value): make them agree"
+                )
+        return self
 
 
 def _mode_tag(value: Any) -> str:
