@@ -142,9 +142,13 @@ def _run_options(command: F) -> F:
 _state = {"debug": False}
 
 
-#: Usage errors typer reports itself: click's, and those of the click typer vendors (typer
-#: ≥ 0.16 raises ``typer.BadParameter`` from its own copy, which click's class does not catch).
-_USAGE_ERRORS: tuple[type[Exception], ...] = (
+#: Exceptions the last line of defence lets through for typer to report: exits, Ctrl-C and
+#: usage errors — click's, and those of the click typer vendors (typer ≥ 0.16 raises
+#: ``typer.BadParameter`` from its own copy, which click's class does not catch).
+_PASS_THROUGH: tuple[type[BaseException], ...] = (
+    typer.Exit,
+    typer.Abort,
+    KeyboardInterrupt,
     click.exceptions.ClickException,
     *((typer.TyperException,) if hasattr(typer, "TyperException") else ()),
 )
@@ -167,7 +171,7 @@ def _user_errors(command: F) -> F:
                 raise
             typer.echo(f"error: {exc}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
-        except (typer.Exit, typer.Abort, *_USAGE_ERRORS, KeyboardInterrupt):
+        except _PASS_THROUGH:
             raise  # typer reports a usage error itself (one line, exit 2)
         except Exception as exc:  # the last line of defence
             if debug:
