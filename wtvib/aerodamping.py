@@ -436,8 +436,11 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     operation fails)."""
     if spec.aerodynamics is None:
         text = (
-            "not analysed: no aerodynamics — a structural audit (modes judged with their "
-            "structural damping only; no aeroelastic instability looked for)"
+            f"not analysed: the modes and their damping are {spec.results.tool}'s "
+            "(system.stability judges that damping)"
+            if spec.results is not None
+            else "not analysed: no aerodynamics — a structural audit (modes judged with "
+            "their structural damping only; no aeroelastic instability looked for)"
         )
         return Analysis(checks=(Check(f"{NAME}.operation", NAME, "info", text, _rule_operation()),))
     sec = sections(spec)

@@ -82,9 +82,13 @@ class Report:
 
     @property
     def damping_model(self) -> str:
-        """How the judged modes were damped: ``aeroelastic`` (some has damping at the
+        """How the judged modes were damped: ``imported`` (another tool's damping at its
+        operating points, ``spec.results``), ``aeroelastic`` (some has damping at the
         operating points) or ``structural`` (given or assumed ratios only)."""
-        return "aeroelastic" if any(m.operating for m in self.modes if m.judged) else "structural"
+        damped = [m for m in self.modes if m.judged and m.operating]
+        if any(m.origin == "imported" for m in damped):
+            return "imported"
+        return "aeroelastic" if damped else "structural"
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON contract: every number finite — one that is not is written as null and
@@ -134,6 +138,11 @@ class Report:
             },
             "damping": self.damping_model,
             "aerodynamics": spec.aerodynamics is not None,
+            **(
+                {"results": {"tool": spec.results.tool, "files": list(spec.results.files)}}
+                if spec.results is not None
+                else {}
+            ),
             "modes": [m.to_dict() for m in self.modes],
             "campbell": self.campbell.to_dict(),
             "checks": [c.to_dict() for c in self.checks],

@@ -43,6 +43,7 @@ class Options:
     rated: float | None = None
     head_mass: float | None = None
     clamped_base: bool = False
+    blades: int | None = None
     margin: float | None = None
     rule: str | None = None
     preset: str | None = None
@@ -57,6 +58,7 @@ class Options:
             rated=self.rated,
             head_mass=self.head_mass,
             clamped_base=self.clamped_base,
+            blades=self.blades,
         )
 
     def settings(self, turbine: Any) -> Any:

@@ -243,7 +243,9 @@ def default_damping(spec: Spec) -> Damping:
 
 
 def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
-    return modes(spec)
+    from . import imported  # another tool's rotating-frame blade modes, where given
+
+    return modes(spec) + imported.modes(spec, "rotating")
 
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:

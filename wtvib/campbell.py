@@ -74,7 +74,12 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
     """The Campbell data of every judged mode (a mode without a speed curve is a constant
     line of the diagram, and is sampled as one)."""
     picked = [m for m in modes if m.judged]
-    scheduled = next((m.operating for m in picked if m.operating is not None), None)
+    # the steady operating points of the aerodynamics (another tool's points carry no
+    # schedule of ours: sampled over speed like a structural audit, its damping interpolated)
+    scheduled = next(
+        (m.operating for m in picked if m.operating is not None and m.origin != "imported"),
+        None,
+    )
     if scheduled is not None:
         omega = np.asarray(scheduled.omega)
         wind: tuple[float, ...] | None = scheduled.wind
@@ -91,6 +96,6 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
             z = m.operating.total
             aero[m.id] = m.operating.aero
         else:
-            z = tuple(float(m.damping_ratio or 0.0) for _ in omega)
+            z = tuple(m.damping_at(float(o), float(m.damping_ratio or 0.0)) for o in omega)
         out[m.id] = (f, z)
     return Campbell(rpm, wind, pitch, out, aero)

@@ -67,6 +67,10 @@ ClampedOption = Annotated[
         "report's headline; platform and moorings are not modelled).",
     ),
 ]
+BladesOption = Annotated[
+    int | None,
+    typer.Option(min=1, max=10, help="Number of blades, for Campbell results that do not say."),
+]
 MarginOption = Annotated[
     float | None, typer.Option(help="Margin m, e.g. 0.05 (overrides the spec).")
 ]
@@ -79,6 +83,7 @@ def _options(
     rated: float | None,
     head_mass: float | None,
     clamped_base: bool,
+    blades: int | None,
     margin: float | None,
     rule: RuleKind | None,
     preset: PresetName | None,
@@ -90,6 +95,7 @@ def _options(
         rated=rated,
         head_mass=head_mass,
         clamped_base=clamped_base,
+        blades=blades,
         margin=margin,
         rule=rule.value if rule is not None else None,
         preset=preset.value if preset is not None else None,
@@ -105,6 +111,7 @@ RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
     ("rated", RatedOption, None),
     ("head_mass", HeadMassOption, None),
     ("clamped_base", ClampedOption, False),
+    ("blades", BladesOption, None),
     ("margin", MarginOption, None),
     ("rule", RuleOption, None),
     ("preset", PresetOption, None),

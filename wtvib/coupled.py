@@ -63,7 +63,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, blade, drivetrain, modal, tower, yaw
+from . import beam, blade, drivetrain, imported, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
 from .kinematics import (
@@ -730,6 +730,8 @@ def default_damping(spec: Spec) -> Damping:
 
 
 def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
+    if spec.results is not None:  # another tool's whole-turbine modes, in the model's place
+        return imported.modes(spec, "fixed")
     return modes(spec, {m.id: m.frequency_hz for ms in built.values() for m in ms})
 
 
@@ -741,6 +743,8 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         if two_bladed
         else None
     )
+    if spec.results is not None:
+        return imported.stability(spec, ctx)
     found = (check(spec, list(ctx.modes)), periodic)
     aerodynamic = spec.aerodynamics is not None and spec.rotor.blades >= 3
     damping = (

@@ -312,7 +312,12 @@ def _in_operation(m: dict[str, Any]) -> str:
     op = m.get("damping_in_operation")
     if not op:
         return ""
-    return f" ({_num(op['lowest_total_damping_ratio'])} at {op['at_wind_m_s']:.3g} m/s)"
+    where = (
+        f"{op['at_wind_m_s']:.3g} m/s"
+        if op["at_wind_m_s"] is not None
+        else f"{op['at_rpm']:.3g} rpm"
+    )
+    return f" ({_num(op['lowest_total_damping_ratio'])} at {where})"
 
 
 def _aspect(png: bytes) -> float:

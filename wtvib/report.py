@@ -89,6 +89,8 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
             f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "
             "(quasi-steady, aerodynamic + structural)",
         )
+    elif data.get("damping") == "imported":
+        grid.add_row("Damping", f"as computed by {data['results']['tool']} at its operating points")
     else:
         why = (
             "aerodynamics given, but no judged mode has a model to take them (blade mass or "
@@ -120,7 +122,9 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     for m in modes:
         zeta = "—" if m["damping_ratio"] is None else f"{m['damping_ratio']:.3g}"
         op = m.get("damping_in_operation")
-        low = f"{op['lowest_total_damping_ratio']:.3g} @ {op['at_wind_m_s']:.3g} m/s" if op else "—"
+        where = f"{op['at_wind_m_s']:.3g} m/s" if op and op["at_wind_m_s"] is not None else ""
+        where = where or (f"{op['at_rpm']:.3g} rpm" if op else "")
+        low = f"{op['lowest_total_damping_ratio']:.3g} @ {where}" if op else "—"
         f = f"{m['frequency_hz']:.4g}" + (" ↗" if m["speed_dependent"] else "")
         text = _t(m["description"])
         if m.get("superseded_by"):  # shown as what it is: the isolated value

@@ -474,7 +474,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
     spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
     if f.heavily_damped and f.regime not in (None, "start-up"):
-        where = " in operation, aerodynamic + structural" if f.damping_in_operation else ""
+        where = f" {_damped_by(f)}" if f.damping_in_operation else ""
         return (
             f"{name} within the margin of {exc} ({f.regime}, {spans}) but heavily damped "
             f"(ζ = {f.damping_met:.2f}{where}): no resonant peak, info"
@@ -483,7 +483,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         text = f"{name} within the margin of {exc} in steady operation at {spans}: "
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
         if f.damping_in_operation:
-            text += f" (ζ = {f.damping:.3f} in operation, aerodynamic + structural)"
+            text += f" (ζ = {f.damping:.3f} {_damped_by(f)})"
         blades = f.excitation.blades
         if f.driven_by and blades and round(f.excitation.order) % blades:
             text += (
@@ -517,3 +517,10 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         f"{name} is crossed by {exc} during start-up/shut-down at {spans} "
         f"(below {_rpm(op.lowest)}): passed quickly, not a steady resonance"
     )
+
+
+def _damped_by(f: Finding) -> str:
+    """Where a finding's damping in operation came from, in words."""
+    if f.mode.origin == "imported" and f.mode.operating is not None:
+        return f"in operation, from {f.mode.operating.source}"
+    return "in operation, aerodynamic + structural"

@@ -1,5 +1,6 @@
 """The few result types every subsystem shares: modes and checks (DESIGN.md)."""
 
+import math
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -182,8 +183,10 @@ class Mode:
         i = op.lowest
         return {
             "lowest_total_damping_ratio": round(op.total[i], 6),
-            "aerodynamic_damping_ratio": round(op.aero[i], 6),
-            "at_wind_m_s": round(op.wind[i], 4),
+            "aerodynamic_damping_ratio": round(op.aero[i], 6)
+            if math.isfinite(op.aero[i])
+            else None,
+            "at_wind_m_s": round(op.wind[i], 4) if math.isfinite(op.wind[i]) else None,
             "at_rpm": round(op.omega[i] * 30 / np.pi, 4),
             "source": op.source,
         }

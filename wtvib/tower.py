@@ -431,6 +431,9 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     the coupled model has it), placed before the tower's resonance checks."""
     statements = _statements(spec)
     first = first_bending(ctx.own(NAME))
+    if first is None:  # another tool's whole-turbine tower mode (spec.results), if any
+        tool = {m.id: m for m in ctx.own("system") if m.origin == "imported"}
+        first = tool.get("system.tower.fa1") or tool.get("system.tower.ss1")
     if first is not None and first.superseded_by is not None:
         first = next(m for m in ctx.modes if m.id == first.superseded_by)
     if first is None or spec.rotor.orientation == "vertical-axis":

@@ -12,13 +12,24 @@ from typing import Any
 from ..errors import SpecError
 from ..spec import Spec, from_data, load_document, read_text
 
-FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x) or an "
-FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst)"
+FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x), an "
+FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst), or Campbell results: OpenFAST "
+FORMATS += "linearisation (.lin, or a folder of them), HAWCStab2 (.cmb) or a table (.csv)"
 
 
 def detect(path: Path, text: str) -> str:
     """``wtvib``, ``windio`` or ``elastodyn`` by content; SpecError for anything else."""
     head = text[:4000]
+    suffix = path.suffix.lower()
+    if path.is_dir() or suffix == ".lin":
+        return "openfast-lin"
+    if suffix == ".cmb":
+        return "hawcstab2"
+    if suffix == ".csv":
+        from .campbell_table import looks_like
+
+        if looks_like(text):
+            return "campbell-table"
     deck_like = path.suffix.lower() in (".dat", ".fst") or "ELASTODYN" in head.upper()
     if deck_like and ("TwrFile" in text or "NumBl" in text or "EDFile" in text):
         return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
@@ -38,6 +49,7 @@ def to_data(
     rated: float | None = None,
     head_mass: float | None = None,
     clamped_base: bool = False,
+    blades: int | None = None,
 ) -> dict[str, Any]:
     """The wtvib-format dictionary of any supported file (for ``wtvib convert``).
 
@@ -45,10 +57,22 @@ def to_data(
     files, which hold no hub or nacelle masses).
     """
     p = Path(path)
-    text = read_text(p)
+    text = "" if p.is_dir() else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
-    if kind == "elastodyn":
+    if kind == "openfast-lin":
+        from . import openfast_lin
+
+        data = openfast_lin.to_spec_data(p, blades)
+    elif kind == "hawcstab2":
+        from . import hawcstab2
+
+        data = hawcstab2.to_spec_data(p, text, blades)
+    elif kind == "campbell-table":
+        from . import campbell_table
+
+        data = campbell_table.to_spec_data(p, text, blades)
+    elif kind == "elastodyn":
         from . import elastodyn
 
         data = elastodyn.to_spec_data(p, text)
@@ -69,17 +93,21 @@ def load(
     rated: float | None = None,
     head_mass: float | None = None,
     clamped_base: bool = False,
+    blades: int | None = None,
 ) -> Spec:
-    """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range."""
+    """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range,
+    ``blades`` the number of blades of Campbell results that do not say."""
     p = Path(path)
-    text = read_text(p)
+    text = "" if p.is_dir() else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
     if kind == "wtvib" and rpm is None and rated is None:
         from ..spec import from_document
 
         return from_document(load_document(p, text))
-    data = to_data(p, rpm=rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base)
+    data = to_data(
+        p, rpm=rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base, blades=blades
+    )
     return from_data(data, source=str(p))
 
 
@@ -146,3 +174,99 @@ def _with_speed(
     if "warnings" in data:
         out["warnings"] = warnings
     return out
+
+
+def results_spec(
+    path: Path,
+    tool: str,
+    modes: dict[str, dict[str, Any]],
+    blades: int | None,
+    files: list[str],
+    name: str,
+    blades_found: int | None = None,
+) -> dict[str, Any]:
+    """The wtvib-format dictionary of another tool's Campbell results: the modes, the
+    operating range their points span, the number of blades (the file's, the option's, or
+    three, said), and what was assumed."""
+    assumptions: list[str] = []
+    warnings: list[str] = []
+    spread = max(merge_speeds(m) for m in modes.values())
+    if spread > 0:
+        assumptions.append(
+            "Operating points that share a rotor speed (the rated speed over several winds) "
+            "are merged per mode: the mean frequency (spread up to "
+            f"{spread:.1%}) and the lowest damping."
+        )
+    if blades is not None and blades_found is not None and blades != blades_found:
+        raise SpecError(
+            f"--blades {blades}, but the results have {blades_found} blades", source=str(path)
+        )
+    n = blades or blades_found
+    if n is None:
+        n = 3
+        warnings.append(
+            f"rotor.blades: {path.name} does not say how many blades the rotor has — 3 "
+            "assumed (give --blades N); the excitation lines depend on it"
+        )
+    speeds = sorted({round(r, 4) for m in modes.values() for r in m["rpm"]})
+    running = [r for r in speeds if r > 0]
+    if not running:
+        raise SpecError(
+            "the results hold standstill points only; give the operating range with --rpm MIN:MAX",
+            source=str(path),
+        )
+    speed = (
+        {"fixed_rpm": running[0]}
+        if len(running) == 1
+        else {"min_rpm": running[0], "max_rpm": running[-1]}
+    )
+    if speeds[0] == 0 and len(running) > 1 and running[0] < 0.5 * running[-1]:
+        warnings.append(
+            f"rotor.speed: the results sweep rotor speed from standstill; their "
+            f"{running[0]:.4g}–{running[-1]:.4g} rpm is audited as the operating range — "
+            "give the turbine's own with --rpm MIN:MAX (and --rated)"
+        )
+    assumptions.append(
+        f"Operating range from the results' operating points: {running[0]:.4g}"
+        + (f"–{running[-1]:.4g}" if len(running) > 1 else "")
+        + " rpm (--rpm to set it); rotor upwind with a rigid hub assumed."
+    )
+    return {
+        "wtvib": 1,
+        "turbine": {"name": name},
+        "rotor": {"blades": n, "orientation": "upwind", "hub": "rigid", "speed": speed},
+        "results": {"tool": tool, "files": files, "modes": modes},
+        "assumptions": assumptions,
+        "warnings": warnings,
+    }
+
+
+def merge_speeds(m: dict[str, Any]) -> float:
+    """Merge a result mode's points that share a rotor speed (a rated speed held over several
+    winds) into one: the mean frequency, the lowest damping (with its wind), the first whirl.
+    Returns the largest relative spread of the merged frequencies (0 if none merged)."""
+    rpm = m["rpm"]
+    order = sorted(range(len(rpm)), key=lambda i: (rpm[i], i))
+    groups: list[list[int]] = []
+    for i in order:
+        if groups and abs(rpm[groups[-1][0]] - rpm[i]) <= 1e-6 * max(1.0, rpm[i]):
+            groups[-1].append(i)
+        else:
+            groups.append([i])
+    spread = 0.0
+    out: dict[str, list[Any]] = {
+        k: [] for k in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s") if k in m
+    }
+    for g in groups:
+        f = [m["frequency_hz"][i] for i in g]
+        spread = max(spread, (max(f) - min(f)) / min(f))
+        low = min(g, key=lambda i: m["damping_ratio"][i]) if "damping_ratio" in m else g[0]
+        out["rpm"].append(rpm[g[0]])
+        out["frequency_hz"].append(sum(f) / len(f))
+        for key in ("damping_ratio", "wind_m_s"):
+            if key in out:
+                out[key].append(m[key][low])
+        if "whirl" in out:
+            out["whirl"].append(m["whirl"][g[0]])
+    m.update(out)
+    return spread

@@ -132,3 +132,15 @@ def _check_aerodynamics(spec: Spec, doc: Document) -> None:
             "turbine.rated_power_kw)",
             "control",
         )
+
+
+def _check_results(spec: Spec, doc: Document) -> None:
+    """Another tool's whole-turbine modes replace the coupled model: not both."""
+    if spec.results is not None and spec.coupled is not None:
+        raise SpecError(
+            "results (another tool's modes) and coupled (wtvib's whole-turbine model) "
+            "cannot both give the system modes: keep one",
+            path="results",
+            line=doc.line_of(("results",)),
+            source=doc.source,
+        )

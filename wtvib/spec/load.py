@@ -10,7 +10,13 @@ from pydantic import ValidationError
 from ..errors import SpecError
 from ..yamlio import Document, Path, format_path, parse
 from .base import Quantity
-from .checks import _check_aerodynamics, _check_coupled, _check_rotor_radius, _check_sources
+from .checks import (
+    _check_aerodynamics,
+    _check_coupled,
+    _check_results,
+    _check_rotor_radius,
+    _check_sources,
+)
 from .messages import _spec_error
 from .turbine import Spec
 
@@ -126,6 +132,7 @@ def from_document(doc: Document) -> Spec:
     _check_rotor_radius(spec, doc)
     _check_coupled(spec, doc)
     _check_aerodynamics(spec, doc)
+    _check_results(spec, doc)
     spec._source_file = doc.source
     spec._provenance = provenance
     return spec

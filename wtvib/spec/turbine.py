@@ -10,6 +10,7 @@ from .aerodynamics import Aerodynamics
 from .base import Quantity, _Strict
 from .blade import Blade
 from .drivetrain import Drivetrain
+from .results import Results
 from .rotor import Rotor, TurbineInfo
 from .tower import Tower, TowerHead
 from .yaw import Yaw
@@ -125,6 +126,11 @@ class Spec(_Strict):
         None,
         description="Blade stations, polars and control: steady operating points and the "
         "aerodynamic damping of the modes; absent: a structural audit (assumed damping).",
+    )
+    results: Results | None = Field(
+        None,
+        description="Modes another tool computed (OpenFAST linearisation, HAWCStab2, a "
+        "table): judged as the turbine's modes, in place of the coupled model's.",
     )
     audit: AuditSettings = Field(default_factory=AuditSettings)
     notes: str | None = Field(None, description="Anything else worth keeping with the spec.")

@@ -1,0 +1,246 @@
+"""HAWCStab2 Campbell results: ``.cmb`` (frequencies and damping per operating point), named by
+the ``.amp`` of the same name (modal amplitudes), placed on rotor speed by the ``.opt`` (or
+``.pwr``) of the same name.
+
+* ``.cmb``: one header line (the operating point's label — ``Wind [m/s]`` or ``Speed
+  [rad/s]`` — then the mode numbers once per block), one row per point: the point, N
+  frequencies [Hz], N damping ratios [% of critical] and, in newer versions, N real parts.
+* ``.amp`` of a turbine analysis: per mode 15 amplitudes with phases — tower x (side-side),
+  y (fore-aft), yaw; shaft x, y, torsion; symmetric, backward and forward whirling edge,
+  flap and torsion of the blades. Of a blade analysis: per mode u_x (edgewise), u_y
+  (flapwise) and θ (torsion) along the radius. A mode is named by its largest amplitude
+  (rotations weighed as the motion 50 m away, like the OpenFAST reader), averaged over the
+  points; ordinals count each kind in frequency order.
+* ``.opt``: one header line, rows of wind speed, pitch, rotor speed [rpm] (…); ``.pwr``: the
+  rotor speed in its column 10.
+
+Only the files of the .cmb's own name are read (none found by globbing), each listed.
+"""
+
+import math
+from collections import defaultdict
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import SpecError
+from ..results import ordinal
+from . import results_spec
+from .openfast_lin import ROTATION_ARM_M
+
+#: The turbine .amp's 15 sensors: (kind of motion, coordinate), in file order.
+TURBINE_SENSORS = (
+    ("tower.ss", "fixed"),
+    ("tower.fa", "fixed"),
+    ("yaw", "fixed"),
+    ("shaft", "fixed"),
+    ("shaft", "fixed"),
+    ("drivetrain", "fixed"),
+    ("blade.edge", "collective"),
+    ("blade.edge", "backward"),
+    ("blade.edge", "forward"),
+    ("blade.flap", "collective"),
+    ("blade.flap", "backward"),
+    ("blade.flap", "forward"),
+    ("blade.tor", "collective"),
+    ("blade.tor", "backward"),
+    ("blade.tor", "forward"),
+)
+_ROTATIONS = {2, 5, 12, 13, 14}  # yaw, shaft torsion, blade torsion [rad]
+_WORDS = {
+    "tower.ss": "tower side-side",
+    "tower.fa": "tower fore-aft",
+    "yaw": "yaw",
+    "shaft": "shaft bending",
+    "drivetrain": "drive-train torsion",
+    "blade.edge": "blade edgewise",
+    "blade.flap": "blade flapwise",
+    "blade.tor": "blade torsion",
+}
+
+
+def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray]:
+    """Header lines ('#' or the first ``skip``) and the numeric rows of a whitespace table."""
+    try:
+        lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
+    except OSError as exc:
+        raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(path)) from None
+    header: list[str] = []
+    rows: list[list[float]] = []
+    for i, ln in enumerate(lines, start=1):
+        if not ln.strip():
+            continue
+        if ln.lstrip().startswith("#") or i <= skip:
+            header.append(ln)
+            continue
+        try:
+            row = [float(t) for t in ln.split()]
+        except ValueError:
+            raise SpecError("a cell that is not a number", line=i, source=str(path)) from None
+        if rows and len(row) != len(rows[0]):
+            raise SpecError(
+                f"{len(row)} numbers, the rows above have {len(rows[0])}", line=i, source=str(path)
+            )
+        if not all(math.isfinite(v) for v in row):
+            raise SpecError("a number that is not finite", line=i, source=str(path))
+        rows.append(row)
+    if not rows:
+        raise SpecError("no rows of numbers", source=str(path))
+    return header, np.array(rows)
+
+
+def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
+    """(point label, points, frequencies [points × modes], damping ratios or NaN)."""
+    header, data = _table(path)
+    if not header:
+        raise SpecError("no header line: not a HAWCStab2 .cmb file", source=str(path))
+    tokens = header[0].lstrip("# ").split()
+    numbers = [int(t) for t in tokens if t.isdigit()]
+    label = " ".join(t for t in tokens if not t.isdigit())
+    n = max(numbers) if numbers else 0
+    cols = data.shape[1] - 1
+    if n == 0 or cols % n or cols // n not in (1, 2, 3):
+        raise SpecError(
+            f"{cols} value columns for {n} modes: expected 1, 2 or 3 blocks (frequency, "
+            "damping, real part) per mode",
+            line=1,
+            source=str(path),
+        )
+    freq = data[:, 1 : 1 + n]
+    damp = data[:, 1 + n : 1 + 2 * n] / 100 if cols // n >= 2 else np.full_like(freq, np.nan)
+    return label, data[:, 0], freq, damp
+
+
+def rotor_speeds(
+    cmb: Path, label: str, points: np.ndarray
+) -> tuple[np.ndarray, np.ndarray | None, list[str]]:
+    """Rotor speed [rpm] (and wind [m/s]) of each point, and the files read for them."""
+    low = label.lower()
+    if "speed" in low and "rad/s" in low:
+        return points * 30 / math.pi, None, []
+    if "speed" in low and "rpm" in low:
+        return points, None, []
+    if "wind" not in low:
+        raise SpecError(
+            f"operating points labelled {label!r}: expected wind or rotor speed",
+            line=1,
+            source=str(cmb),
+        )
+    for suffix, column, skip in ((".opt", 2, 1), (".pwr", 9, 0)):
+        side = cmb.with_suffix(suffix)
+        if side.is_file():
+            _, table = _table(side, skip)
+            if table.shape[1] <= column:
+                raise SpecError(f"no rotor-speed column {column + 1}", source=str(side))
+            order = np.argsort(table[:, 0])
+            rpm = np.interp(points, table[order, 0], table[order, column])
+            outside = (points < table[order[0], 0] - 1e-6) | (points > table[order[-1], 0] + 1e-6)
+            if outside.any():
+                raise SpecError(
+                    f"wind speeds {points[outside].tolist()} of {cmb.name} lie outside its "
+                    "operational data",
+                    source=str(side),
+                )
+            return rpm, points, [str(side)]
+    raise SpecError(
+        f"the points are wind speeds, and neither {cmb.with_suffix('.opt').name} nor "
+        f"{cmb.with_suffix('.pwr').name} gives the rotor speed at them",
+        source=str(cmb),
+    )
+
+
+def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
+    """(kind, coordinate) of each mode and the frame (``fixed`` turbine, ``rotating`` blade)."""
+    header, data = _table(amp)
+    text = " ".join(header)
+    if "TWR" in text:
+        per = 2 * len(TURBINE_SENSORS)
+        if (data.shape[1] - 1) % per or (data.shape[1] - 1) // per < modes:
+            raise SpecError(
+                f"{data.shape[1] - 1} columns do not hold {modes} modes × 15 sensors",
+                source=str(amp),
+            )
+        out = []
+        for j in range(modes):
+            amps = data[:, 1 + j * per : 1 + (j + 1) * per : 2].mean(axis=0)
+            amps = np.array(
+                [a * (ROTATION_ARM_M if i in _ROTATIONS else 1.0) for i, a in enumerate(amps)]
+            )
+            out.append(TURBINE_SENSORS[int(np.argmax(amps))])
+        return out, "fixed"
+    if "u_x" in text or "u_y" in text:
+        per = 6
+        if (data.shape[1] - 2) // per < modes:
+            raise SpecError(
+                f"{data.shape[1] - 2} columns do not hold {modes} modes", source=str(amp)
+            )
+        radius = data[:, 1]
+        arm = 0.05 * float(np.max(radius))  # θ weighed at a twentieth of the radius (a chord)
+        out = []
+        for j in range(modes):
+            ux, uy, th = (data[:, 2 + per * j + 2 * k] for k in range(3))
+            energy = {
+                "blade.edge": np.sum(ux**2),
+                "blade.flap": np.sum(uy**2),
+                "blade.tor": np.sum((arm * th) ** 2),
+            }
+            out.append((max(energy, key=lambda k: energy[k]), "rotating"))
+        return out, "rotating"
+    raise SpecError(
+        "neither a turbine (TWR …) nor a blade (u_x, u_y …) amplitude file", source=str(amp)
+    )
+
+
+def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
+    """The wtvib-format dictionary of a HAWCStab2 .cmb with its .amp and .opt/.pwr."""
+    label, points, freq, damp = read_cmb(path)
+    rpm, wind, side = rotor_speeds(path, label, points)
+    files = [str(path), *side]
+    n = freq.shape[1]
+    amp = path.with_suffix(".amp")
+    warnings = []
+    if amp.is_file():
+        kinds, frame = names_from_amp(amp, n)
+        files.append(str(amp))
+    else:
+        kinds, frame = [("mode", "fixed")] * n, "fixed"
+        warnings.append(
+            f"no {amp.name} beside {path.name}: the modes are not named (mode1, mode2 …) and "
+            "are judged as whole-turbine modes without whirl"
+        )
+    order = np.argsort(freq[0])
+    count: dict[str, int] = defaultdict(int)
+    modes: dict[str, dict[str, Any]] = {}
+    for j in order:
+        kind, coord = kinds[j]
+        key = kind if coord in ("fixed", "rotating") else f"{kind}.{coord}"
+        count[key] += 1
+        k = count[key]
+        if kind == "mode":
+            name, words = f"mode{j + 1}", f"HAWCStab2 mode {j + 1}"
+        elif coord in ("fixed", "rotating"):
+            # a rotating-frame mode becomes blade.<name>: its kind without the prefix
+            stem = kind.removeprefix("blade.") if coord == "rotating" else kind
+            name, words = f"{stem}{k}", f"{ordinal(k)} {_WORDS[kind]}"
+        else:
+            name = f"{kind}{k}.{coord}"
+            how = "symmetric" if coord == "collective" else f"{coord} whirl"
+            words = f"{ordinal(k)} {_WORDS[kind]}, {how}"
+        sort = np.argsort(rpm)
+        m: dict[str, Any] = {
+            "description": f"{words} (mode {j + 1})",
+            "frame": frame,
+            "rpm": [round(float(v), 6) for v in rpm[sort]],
+            "frequency_hz": [float(v) for v in freq[sort, j]],
+        }
+        if np.all(np.isfinite(damp[:, j])):
+            m["damping_ratio"] = [max(-1.0, min(1.0, float(v))) for v in damp[sort, j]]
+        if frame == "fixed" and coord not in ("fixed", "rotating"):
+            m["whirl"] = [coord] * len(rpm)
+        if wind is not None:
+            m["wind_m_s"] = [float(v) for v in wind[sort]]
+        modes[name] = m
+    data = results_spec(path, "HAWCStab2", modes, blades, files, f"HAWCStab2 {path.stem}")
+    data["warnings"] += warnings
+    return data
