@@ -130,9 +130,9 @@ def from_document(doc: Document) -> Spec:
         raise _spec_error(exc, doc) from None
     _check_sources(spec, provenance, doc)
     _check_rotor_radius(spec, doc)
+    _check_results(spec, doc)
     _check_coupled(spec, doc)
     _check_aerodynamics(spec, doc)
-    _check_results(spec, doc)
     spec._source_file = doc.source
     spec._provenance = provenance
     return spec

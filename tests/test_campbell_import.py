@@ -1,0 +1,119 @@
+"""Campbell results of other tools through the CLI: formats, mistakes, judgement (issue 22)."""
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from wtvib import audit, importers, spec
+from wtvib.cli import app
+from wtvib.importers import merge_speeds
+
+runner = CliRunner()
+DATA = Path(__file__).resolve().parent / "data" / "campbell"
+
+TABLE = """mode,rpm,frequency_hz,damping_ratio,whirl
+tower.fa1,6.9,0.324,0.05,fixed
+tower.fa1,12.1,0.325,0.06,fixed
+blade.edge1.forward,6.9,1.20,0.004,forward
+blade.edge1.forward,12.1,1.29,{last},forward
+"""
+
+
+def write(tmp_path: Path, text: str, name: str = "c.csv") -> Path:
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+@pytest.mark.parametrize(
+    ("args", "tool"),
+    [
+        ([str(DATA / "openfast" / "ws03.0.1.lin")], "OpenFAST linearisation (MBC3)"),
+        ([str(DATA / "openfast")], "OpenFAST linearisation (MBC3)"),
+        ([str(DATA / "hawcstab2" / "steady.cmb"), "--blades", "3"], "HAWCStab2"),
+    ],
+)
+def test_each_format_audits_through_the_cli(args, tool):
+    result = runner.invoke(app, ["check", *args, "--no-plot", "-f", "json"])
+    assert result.exit_code in (0, 1), result.output  # a verdict, not an error
+    doc = json.loads(result.stdout)
+    assert doc["results"]["tool"] == tool
+    assert doc["damping"] == "imported"
+    assert any(c["id"] == "system.stability" for c in doc["checks"])
+
+
+def test_a_table_is_judged_with_its_damping_and_negative_damping_fails(tmp_path):
+    """The edge mode's ζ = −0.002 at 12.1 rpm is an instability: system.stability fails
+    with the mode and speed; the tower's DAF at 3P uses the table's ζ there."""
+    r = audit.run(importers.load(write(tmp_path, TABLE.format(last="-0.002")), blades=3))
+    stab = next(c for c in r.checks if c.id == "system.stability")
+    assert stab.status == "fail"
+    assert stab.numbers["unstable"] == [
+        {"mode": "system.blade.edge1.forward", "damping_ratio": -0.002, "rpm": 12.1}
+    ]
+    fa = next(m for m in r.modes if m.id == "system.tower.fa1")
+    assert fa.damping_at(6.9 * 3.14159265 / 30, 0.0) == pytest.approx(0.05, rel=1e-3)
+    ok = audit.run(importers.load(write(tmp_path, TABLE.format(last="0.003"), "d.csv"), blades=3))
+    assert next(c for c in ok.checks if c.id == "system.stability").status == "pass"
+
+
+def test_without_blades_three_are_assumed_and_said(tmp_path):
+    s = importers.load(write(tmp_path, TABLE.format(last="0.003")))
+    assert s.rotor.blades == 3
+    assert any("3 assumed" in w for w in s.warnings)
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "where"),
+    [
+        ("bad.csv", TABLE.format(last="abc"), ":5: column damping_ratio"),
+        ("few.csv", TABLE.format(last="0.1").replace(",forward\n", "\n", 1), ":4: 4 cells"),
+        ("id.csv", TABLE.format(last="0.1").replace("tower.fa1", "Tower FA", 1), ":2: column mode"),
+    ],
+)
+def test_a_broken_table_is_one_line_and_exit_2(tmp_path, name, text, where):
+    result = runner.invoke(app, ["check", str(write(tmp_path, text, name)), "--no-plot"])
+    assert result.exit_code == 2
+    assert where in result.output and "Traceback" not in result.output
+
+
+def test_a_truncated_lin_file_is_one_line_and_exit_2(tmp_path):
+    src = (DATA / "openfast" / "ws03.0.1.lin").read_text()
+    lines = src.splitlines()
+    cut = next(i for i, ln in enumerate(lines) if ln.startswith("A:")) + 5
+    (tmp_path / "op.1.lin").write_text("\n".join(lines[:cut]) + "\n   4.2277500E+\n")
+    result = runner.invoke(app, ["check", str(tmp_path / "op.1.lin"), "--no-plot"])
+    assert result.exit_code == 2
+    assert "op.1.lin:" in result.output and "row 5 of A" in result.output
+
+
+def test_a_cmb_with_a_text_cell_is_one_line_and_exit_2(tmp_path):
+    text = (DATA / "hawcstab2" / "blade.cmb").read_text().replace("0.610872E+00", "abc", 1)
+    result = runner.invoke(app, ["check", str(write(tmp_path, text, "x.cmb")), "--no-plot"])
+    assert result.exit_code == 2 and "x.cmb:3: a cell that is not a number" in result.output
+
+
+def test_results_and_the_coupled_model_cannot_both_give_the_system_modes(write_spec):
+    extra = (
+        "coupled: {apex_downwind_m: -5, apex_above_top_m: 2}\n"
+        "results:\n  tool: t\n  modes:\n    tower.fa1: {description: x, rpm: [10], "
+        "frequency_hz: [0.3]}\n"
+    )
+    with pytest.raises(spec.SpecError, match="cannot both"):
+        spec.load(write_spec(extra=extra))
+
+
+def test_points_at_one_speed_merge_to_the_mean_frequency_and_lowest_damping():
+    m = {
+        "rpm": [6.0, 9.6, 9.6, 9.6],
+        "frequency_hz": [1.0, 2.0, 2.2, 2.1],
+        "damping_ratio": [0.1, 0.05, 0.02, 0.04],
+        "wind_m_s": [5.0, 11.0, 15.0, 20.0],
+    }
+    spread = merge_speeds(m)
+    assert m["rpm"] == [6.0, 9.6]
+    assert m["frequency_hz"] == pytest.approx([1.0, 2.1])
+    assert m["damping_ratio"] == [0.1, 0.02] and m["wind_m_s"] == [5.0, 15.0]
+    assert spread == pytest.approx(0.1)

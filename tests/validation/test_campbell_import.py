@@ -1,0 +1,71 @@
+"""Other tools' Campbell results read, transformed and named against the values their own
+tests state (tests/data/campbell/SOURCES.md)."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wtvib import audit, importers
+from wtvib.importers import openfast_lin
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "campbell"
+
+
+def test_openfast_mbc3_matches_openfast_toolbox():
+    """NREL 5-MW at 3 m/s, three azimuths: MBC3 through wtvib's Coleman transformation gives
+    openfast_toolbox's first three modes (test_mbc3_ED_Azi3: 0.31402747, 0.33140717,
+    0.6263423 Hz; 0.43860177, 6.03443072, 2.48116647 % damping), named tower side-side,
+    tower fore-aft (aerodynamically damped) and drive train (Jonkman et al. 2009 Table 9-1
+    at standstill: 0.312, 0.324, 0.6205 Hz)."""
+    files = openfast_lin.files_of(DATA / "openfast" / "ws03.0.1.lin")["ws03.0"]
+    assert len(files) == 3
+    pm, blades = openfast_lin.operating_point([openfast_lin.read(p) for p in files])
+    assert blades == 3
+    np.testing.assert_allclose(pm.frequency_hz[:3], [0.31402747, 0.33140717, 0.6263423], atol=5e-4)
+    np.testing.assert_allclose(
+        100 * pm.damping_ratio[:3], [0.43860177, 6.03443072, 2.48116647], atol=5e-4
+    )
+    assert pm.names[:3] == ("tower.ss1", "tower.fa1", "drivetrain1")
+
+
+def test_openfast_cyclic_modes_split_into_backward_and_forward_whirl():
+    """Exact for an isotropic rotor: the fixed-frame pair of a cyclic blade mode of
+    rotating-frame frequency f_R sits at f_R ∓ Ω/2π (backward below, forward above); the
+    first edgewise pair is lightly damped, so its mean is f_R and its split 2·Ω/2π to the
+    accuracy of the aerodynamic coupling."""
+    files = openfast_lin.files_of(DATA / "openfast")["ws03.0"]
+    pm, _ = openfast_lin.operating_point([openfast_lin.read(p) for p in files])
+    f = dict(zip(pm.names, pm.frequency_hz, strict=True))
+    rev = pm.rpm / 60
+    assert f["blade.edge1.backward"] < f["blade.edge1.forward"]
+    assert f["blade.flap1.backward"] < f["blade.flap1.forward"]
+    split = f["blade.edge1.forward"] - f["blade.edge1.backward"]
+    assert split == pytest.approx(2 * rev, rel=0.1)
+
+
+def test_hawcstab2_blade_modes_named_as_casetoolbox_names_them():
+    """DTU 10 MW blade, HAWCStab2: the .amp names the .cmb's modes 1F, 1E, 2F, 2E, 3F, 3E, 4F,
+    1T, 5F as CASEToolBox's comparison does; the standstill frequencies are the .cmb's first
+    row (0.610448, 0.930865, 1.73908 Hz)."""
+    s = importers.load(DATA / "hawcstab2" / "blade.cmb", blades=3, rpm=(6.0, 9.6))
+    modes = [m for m in audit.run(s).modes if m.origin == "imported"]
+    names = [m.id for m in modes]
+    expected = ["flap1", "edge1", "flap2", "edge2", "flap3", "edge3", "flap4", "tor1", "flap5"]
+    assert names[:9] == [f"blade.{n}" for n in expected]
+    assert [m.frequency_hz for m in modes[:3]] == pytest.approx([0.610448, 0.930865, 1.73908])
+    assert all(m.subsystem == "blade" for m in modes)  # a blade analysis: rotating frame
+
+
+def test_hawcstab2_rated_points_merge_and_speeds_come_from_the_pwr():
+    """The steady-state .cmb is over wind speed: the .pwr of the same name gives the rotor
+    speed (6–9.6 rpm); the points above rated share 9.6 rpm and merge into one (mean
+    frequency, lowest damping), said in the assumptions."""
+    s = importers.load(DATA / "hawcstab2" / "steady.cmb", blades=3)
+    assert s.rotor.speed.min_rpm == pytest.approx(6.0)
+    assert s.rotor.speed.max_rpm == pytest.approx(9.6)
+    assert s.results is not None
+    assert str(DATA / "hawcstab2" / "steady.pwr") in s.results.files
+    flap = s.results.modes["flap1"]
+    assert len(set(flap.rpm)) == len(flap.rpm)
+    assert any("merged per mode" in a for a in s.assumptions)
