@@ -236,6 +236,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             continue
         if sub == "aerodynamics" and r.get("damping") != "aeroelastic":
             continue  # a structural audit: said in the identity table and the summary
+        if sub == "system" and r.get("results"):  # another tool's modes, not our model
+            title = f"Whole turbine: the modes as {r['results']['tool']} computed them"
         out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
         out.append(k.p(title, "Heading2"))
         in_op = any(m.get("damping_in_operation") for m in modes)

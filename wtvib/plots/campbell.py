@@ -12,6 +12,7 @@ import numpy as np
 
 from ..audit import Report
 from ..excitation import operating_range
+from ..results import Sampled
 from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -109,6 +110,11 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         lo, hi = rule.forbidden_band(1.0)
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
         ax.plot(rpm, f_n, color=colour, lw=2.2, label=label)
+        if mode.origin == "imported" and isinstance(mode.curve, Sampled):
+            # another tool's operating points: the line between and beyond them is drawn
+            # as it is judged (linear between, held beyond); the points are the data
+            pts = np.asarray(mode.curve.omega)
+            ax.plot(pts * 30 / np.pi, mode.curve.hz, "o", color=colour, ms=4, mec="white")
 
     spread = (report.uncertainty or {}).get("modes", {})
     for mode in modes:
@@ -197,6 +203,8 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     verdict = report.verdict.upper()
     cls = f", {report.tower_class} tower" if report.tower_class and "tower" in subsystems else ""
     title = SUBSYSTEM_TITLE[subsystems[0]] if len(subsystems) == 1 else "tower and blades"
+    if spec.results is not None and "system" in subsystems:
+        title = f"whole turbine as {spec.results.tool} computed it"
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
         title = "Darrieus rotor"
     heading = f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}"
@@ -338,12 +346,25 @@ def damping_plot(report: Report) -> "Figure | None":
     ax = fig.add_subplot()
     cmap = colormaps["tab10" if len(modes) <= 10 else "tab20"]  # distinct hues while they last
     colours = [cmap(i % cmap.N) for i in range(len(modes))]
+    # another tool's damping is drawn over rotor speed, at its own points (its winds may be
+    # unknown); wtvib's own over the wind of its operating points
+    tool = report.spec.results.tool if report.spec.results is not None else None
     for mode, colour in zip(modes, colours, strict=True):
         op = mode.operating
         assert op is not None
         zeta = 100 * np.asarray(op.total)
         ls = "-" if zeta.min() < 5 else "--"  # lightly damped modes drawn solid
-        ax.plot(op.wind, zeta, color=colour, lw=2.0 if ls == "-" else 1.2, ls=ls, label=mode.id)
+        x = np.asarray(op.omega) * 30 / np.pi if tool else np.asarray(op.wind)
+        ax.plot(
+            x,
+            zeta,
+            color=colour,
+            lw=2.0 if ls == "-" else 1.2,
+            ls=ls,
+            label=mode.id,
+            marker="o" if tool else None,
+            ms=4,
+        )
     ax.set_yscale("symlog", linthresh=0.1)
     schedule = report.results.get("aerodynamics", {}).get("schedule")
     if schedule is not None and schedule.rated_wind is not None:
@@ -372,12 +393,14 @@ def damping_plot(report: Report) -> "Figure | None":
     )
     low = min(100 * min(m.operating.total) for m in modes)  # type: ignore[union-attr]
     ax.set_ylim(min(-0.2, low * 1.3), 150)
-    ax.set_xlabel("wind speed [m/s]")
-    ax.set_ylabel("damping ratio ζ [% of critical], aerodynamic + structural")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.set_title(
-        f"{report.spec.turbine.name} — damping in operation (quasi-steady, frozen wake)",
-        fontweight="bold",
+    ax.set_xlabel("rotor speed [rpm]" if tool else "wind speed [m/s]")
+    ax.set_ylabel(
+        f"damping ratio ζ [% of critical], as {tool} gives it"
+        if tool
+        else "damping ratio ζ [% of critical], aerodynamic + structural"
     )
+    ax.grid(True, which="both", alpha=0.3)
+    how = f"as computed by {tool}" if tool else "quasi-steady, frozen wake"
+    ax.set_title(f"{report.spec.turbine.name} — damping in operation ({how})", fontweight="bold")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=8, ncol=3, frameon=False)
     return fig
