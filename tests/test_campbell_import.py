@@ -8,7 +8,7 @@ from typer.testing import CliRunner
 
 from wtvib import audit, importers, spec
 from wtvib.cli import app
-from wtvib.importers import merge_speeds
+from wtvib.importers.campbell_results import merge_speeds
 
 runner = CliRunner()
 DATA = Path(__file__).resolve().parent / "data" / "campbell"

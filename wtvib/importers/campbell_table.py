@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SpecError
-from . import results_spec
+from .campbell_results import results_spec
 
 REQUIRED = ("mode", "rpm", "frequency_hz")
 OPTIONAL = ("damping_ratio", "whirl", "frame", "wind_m_s", "description")

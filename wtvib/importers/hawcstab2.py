@@ -26,7 +26,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..results import ordinal
-from . import results_spec
+from .campbell_results import results_spec
 from .openfast_lin import ROTATION_ARM_M
 
 #: The turbine .amp's 15 sensors: (kind of motion, coordinate), in file order.

@@ -26,7 +26,7 @@ from numpy.typing import NDArray
 
 from ..errors import SpecError
 from ..multiblade import coleman
-from . import results_spec
+from .campbell_results import results_spec
 
 Array = NDArray[np.float64]
 

@@ -1,0 +1,103 @@
+"""What the Campbell-result readers share (OpenFAST linearisation, HAWCStab2, tables): the
+wtvib-format dictionary of another tool's modes, and points at one rotor speed merged."""
+
+from pathlib import Path
+from typing import Any
+
+from ..errors import SpecError
+
+
+def results_spec(
+    path: Path,
+    tool: str,
+    modes: dict[str, dict[str, Any]],
+    blades: int | None,
+    files: list[str],
+    name: str,
+    blades_found: int | None = None,
+) -> dict[str, Any]:
+    """The wtvib-format dictionary of another tool's Campbell results: the modes, the
+    operating range their points span, the number of blades (the file's, the option's, or
+    three, said), and what was assumed."""
+    assumptions: list[str] = []
+    warnings: list[str] = []
+    spread = max(merge_speeds(m) for m in modes.values())
+    if spread > 0:
+        assumptions.append(
+            "Operating points that share a rotor speed (the rated speed over several winds) "
+            "are merged per mode: the mean frequency (spread up to "
+            f"{spread:.1%}) and the lowest damping."
+        )
+    if blades is not None and blades_found is not None and blades != blades_found:
+        raise SpecError(
+            f"--blades {blades}, but the results have {blades_found} blades", source=str(path)
+        )
+    n = blades or blades_found
+    if n is None:
+        n = 3
+        warnings.append(
+            f"rotor.blades: {path.name} does not say how many blades the rotor has — 3 "
+            "assumed (give --blades N); the excitation lines depend on it"
+        )
+    speeds = sorted({round(r, 4) for m in modes.values() for r in m["rpm"]})
+    running = [r for r in speeds if r > 0]
+    if not running:
+        raise SpecError(
+            "the results hold standstill points only; give the operating range with --rpm MIN:MAX",
+            source=str(path),
+        )
+    speed = (
+        {"fixed_rpm": running[0]}
+        if len(running) == 1
+        else {"min_rpm": running[0], "max_rpm": running[-1]}
+    )
+    if speeds[0] == 0 and len(running) > 1 and running[0] < 0.5 * running[-1]:
+        warnings.append(
+            f"rotor.speed: the results sweep rotor speed from standstill; their "
+            f"{running[0]:.4g}–{running[-1]:.4g} rpm is audited as the operating range — "
+            "give the turbine's own with --rpm MIN:MAX (and --rated)"
+        )
+    assumptions.append(
+        f"Operating range from the results' operating points: {running[0]:.4g}"
+        + (f"–{running[-1]:.4g}" if len(running) > 1 else "")
+        + " rpm (--rpm to set it); rotor upwind with a rigid hub assumed."
+    )
+    return {
+        "wtvib": 1,
+        "turbine": {"name": name},
+        "rotor": {"blades": n, "orientation": "upwind", "hub": "rigid", "speed": speed},
+        "results": {"tool": tool, "files": files, "modes": modes},
+        "assumptions": assumptions,
+        "warnings": warnings,
+    }
+
+
+def merge_speeds(m: dict[str, Any]) -> float:
+    """Merge a result mode's points that share a rotor speed (a rated speed held over several
+    winds) into one: the mean frequency, the lowest damping (with its wind), the first whirl.
+    Returns the largest relative spread of the merged frequencies (0 if none merged)."""
+    rpm = m["rpm"]
+    order = sorted(range(len(rpm)), key=lambda i: (rpm[i], i))
+    groups: list[list[int]] = []
+    for i in order:
+        if groups and abs(rpm[groups[-1][0]] - rpm[i]) <= 1e-6 * max(1.0, rpm[i]):
+            groups[-1].append(i)
+        else:
+            groups.append([i])
+    spread = 0.0
+    out: dict[str, list[Any]] = {
+        k: [] for k in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s") if k in m
+    }
+    for g in groups:
+        f = [m["frequency_hz"][i] for i in g]
+        spread = max(spread, (max(f) - min(f)) / min(f))
+        low = min(g, key=lambda i: m["damping_ratio"][i]) if "damping_ratio" in m else g[0]
+        out["rpm"].append(rpm[g[0]])
+        out["frequency_hz"].append(sum(f) / len(f))
+        for key in ("damping_ratio", "wind_m_s"):
+            if key in out:
+                out[key].append(m[key][low])
+        if "whirl" in out:
+            out["whirl"].append(m["whirl"][g[0]])
+    m.update(out)
+    return spread
