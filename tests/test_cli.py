@@ -274,3 +274,24 @@ def test_a_bad_option_value_is_a_usage_error_not_an_internal_one(args):
     result = runner.invoke(app, args)
     assert result.exit_code == 2, result.output
     assert "internal error" not in result.output
+
+
+@pytest.mark.parametrize(("given", "expected"), [(None, "1"), ("2", "2")])
+def test_the_cli_pins_blas_to_one_thread_unless_the_user_chose(given, expected):
+    """Issue 20: one BLAS thread by default, set before numpy loads (importing the CLI must
+    not import numpy, or the setting would come too late); a user's own setting stands."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if not k.endswith("_NUM_THREADS")}
+    if given is not None:
+        env["OPENBLAS_NUM_THREADS"] = given
+    code = (
+        "import sys, os, wtvib.cli; "
+        "print(os.environ['OPENBLAS_NUM_THREADS'], 'numpy' in sys.modules)"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+    )
+    assert out.stdout.split() == [expected, "False"]

@@ -9,6 +9,7 @@ import contextlib
 import functools
 import inspect
 import json
+import os
 import sys
 from collections.abc import Callable
 from enum import StrEnum
@@ -17,6 +18,13 @@ from typing import Annotated, Any, TypeVar
 
 import click
 import typer
+
+# One BLAS thread unless the user chose (issue 20): the models solve small dense problems,
+# where OpenBLAS's busy-waiting threads only fight each other and a batch's workers (one
+# process per core). Set before numpy loads — nothing above imports it; bench/bench_threads.py
+# measures the two side by side.
+for _threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_threads, "1")
 
 app = typer.Typer(
     help="Vibration audit of wind turbines: natural frequencies against rotor excitations, "

@@ -69,3 +69,21 @@ def test_hawcstab2_rated_points_merge_and_speeds_come_from_the_pwr():
     flap = s.results.modes["flap1"]
     assert len(set(flap.rpm)) == len(flap.rpm)
     assert any("merged per mode" in a for a in s.assumptions)
+
+
+def test_openfast_modes_are_followed_across_operating_points_by_shape(tmp_path):
+    """Two operating points — the 3 m/s files and the same files at a rotor speed 10 %
+    higher (Ω enters the transformation's Ṫ terms, so the shapes move a little): every mode
+    named at the slower point is followed to the faster one (MAC near 1, no warning), and
+    its frequency moves by far less than the spacing of the modes."""
+    src = DATA / "openfast"
+    for p in sorted(src.glob("ws03.0.*.lin")):
+        (tmp_path / p.name).write_text(p.read_text())
+        text = p.read_text().replace("0.7301 rad/s", "0.8031 rad/s")
+        (tmp_path / p.name.replace("ws03.0", "ws03.5")).write_text(text)
+    s = importers.load(tmp_path)
+    assert s.results is not None and len(s.results.files) == 6
+    assert not [w for w in s.warnings if "MAC" in w]
+    for name, m in s.results.modes.items():
+        assert len(m.rpm) == 2, name
+        assert abs(m.frequency_hz[1] / m.frequency_hz[0] - 1) < 0.05, name

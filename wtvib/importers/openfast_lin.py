@@ -8,7 +8,9 @@ into fixed-frame coordinates, A_NR = T⁻¹(A·T − Ṫ), averaged over the azi
 give the frequencies |λ|/2π and damping ratios −Re λ/|λ|; each mode is named by the state
 group (tower fore-aft / side-side, drive train, yaw, each blade DOF's collective or cyclic
 coordinates) where its displacement sits, and a cyclic blade mode's whirl by the phase of its
-cos and sin coordinates. Modes are followed across operating points by name.
+cos and sin coordinates. Modes are named at the slowest point and followed from point to point
+by shape (MAC of the multi-blade displacements, one optimal assignment per step; a weak
+match is a warning).
 
 Reading: only the files of one root (a named ``.lin`` file's siblings ``root.<k>.lin``) or the
 ``.lin`` files of a named folder, each listed in the report.
@@ -25,6 +27,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
+from ..modal import assign, mac
 from ..multiblade import coleman
 from .campbell_results import results_spec
 
@@ -163,6 +166,7 @@ class PointModes:
     names: tuple[str, ...]
     descriptions: tuple[str, ...]
     whirl: tuple[str, ...]
+    shapes: NDArray[np.complex128]  # weighted displacements, multi-blade coordinates
 
 
 def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
@@ -225,8 +229,9 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
     texts: list[str] = []
     whirls: list[str] = []
     weight = np.array([_weight(s.description) for s in states[:n2]])
+    shapes = vec[:n2, :] * weight[:, None]
     for j in range(len(lam)):
-        x = vec[:n2, j] * weight
+        x = shapes[:, j]
         name, text, whirl = _name(x, labels)
         k = 2
         base = name
@@ -238,7 +243,10 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
     f_hz = np.abs(lam) / (2 * math.pi)
     zeta = -lam.real / np.abs(lam)
     rpm = omega * 30 / math.pi
-    return PointModes(rpm, first.wind, f_hz, zeta, tuple(names), tuple(texts), tuple(whirls)), nb
+    point = PointModes(
+        rpm, first.wind, f_hz, zeta, tuple(names), tuple(texts), tuple(whirls), shapes
+    )
+    return point, nb
 
 
 def _triplets(
@@ -348,6 +356,55 @@ def _name(x: NDArray[np.complex128], labels: list[tuple[str, str, str]]) -> tupl
     return f"{stem}.{turn}", f"{words}, cyclic, {turn} whirl", turn
 
 
+#: A mode followed from one operating point to the next with a MAC under this is flagged.
+TRACK_MAC = 0.5
+
+
+def _followed(
+    points: list[PointModes],
+) -> tuple[dict[str, dict[str, Any]], tuple[float, str, float] | None]:
+    """Each mode of the first (slowest) point followed point by point by shape (MAC of the
+    multi-blade displacements, one optimal assignment per step), with the weakest match."""
+    modes: dict[str, dict[str, Any]] = {}
+    first = points[0]
+    for j, name in enumerate(first.names):
+        modes[name] = {
+            "description": first.descriptions[j],
+            "frame": "fixed",
+            "rpm": [],
+            "frequency_hz": [],
+            "damping_ratio": [],
+            "whirl": [],
+            "wind_m_s": [],
+        }
+    current = {name: j for j, name in enumerate(first.names)}  # name → column at this point
+    prev = first
+    weakest: tuple[float, str, float] | None = None
+    for k, pm in enumerate(points):
+        if k:
+            names = list(current)
+            score = mac(prev.shapes[:, [current[n] for n in names]], pm.shapes)
+            if score.shape[0] <= score.shape[1]:
+                cols = assign(score, optimal=True)
+                pairs = list(zip(range(len(names)), cols, strict=True))
+            else:  # fewer modes here: each of them finds its predecessor
+                rows = assign(score.T, optimal=True)
+                pairs = [(int(r), c) for c, r in enumerate(rows)]
+            current = {names[r]: int(c) for r, c in pairs}
+            for r, c in pairs:
+                if weakest is None or score[r, c] < weakest[0]:
+                    weakest = (float(score[r, c]), names[r], pm.rpm)
+            prev = pm
+        for name, j in current.items():
+            m = modes[name]
+            m["rpm"].append(round(pm.rpm, 6))
+            m["frequency_hz"].append(float(pm.frequency_hz[j]))
+            m["damping_ratio"].append(max(-1.0, min(1.0, float(pm.damping_ratio[j]))))
+            m["whirl"].append(pm.whirl[j])
+            m["wind_m_s"].append(pm.wind)
+    return modes, weakest
+
+
 def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
     """The wtvib-format dictionary of one or more operating points' ``.lin`` files."""
     groups = files_of(path)
@@ -361,26 +418,7 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
         points.append(pm)
         nbs.add(nb)
     points.sort(key=lambda p: p.rpm)
-    modes: dict[str, dict[str, Any]] = {}
-    for pm in points:
-        for j, name in enumerate(pm.names):
-            m = modes.setdefault(
-                name,
-                {
-                    "description": pm.descriptions[j],
-                    "frame": "fixed",
-                    "rpm": [],
-                    "frequency_hz": [],
-                    "damping_ratio": [],
-                    "whirl": [],
-                    "wind_m_s": [],
-                },
-            )
-            m["rpm"].append(round(pm.rpm, 6))
-            m["frequency_hz"].append(float(pm.frequency_hz[j]))
-            m["damping_ratio"].append(max(-1.0, min(1.0, float(pm.damping_ratio[j]))))
-            m["whirl"].append(pm.whirl[j])
-            m["wind_m_s"].append(pm.wind)
+    modes, weakest = _followed(points)
     for m in modes.values():
         if any(w is None for w in m["wind_m_s"]):
             del m["wind_m_s"]
@@ -394,6 +432,11 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
         f"OpenFAST linearisation {path.name}",
         blades_found=found or None,
     )
+    if weakest is not None and weakest[0] < TRACK_MAC:
+        data["warnings"].append(
+            f"{weakest[1]}: followed to {weakest[2]:.4g} rpm with a MAC of only "
+            f"{weakest[0]:.2f} (under {TRACK_MAC}): check that curve"
+        )
     outside = [f for f in read_files if Path(f).parent != (path if path.is_dir() else path.parent)]
     if outside:
         data["warnings"].append(f"files read outside the named folder: {', '.join(outside)}")
