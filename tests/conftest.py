@@ -88,3 +88,12 @@ def shared() -> Path:
     if os.environ.get("WTVIB_REQUIRE_SHARED"):
         pytest.fail(reason + "; WTVIB_REQUIRE_SHARED is set, so this is an error")
     pytest.skip(reason)
+
+
+@pytest.fixture(autouse=True)
+def _outputs_in_a_temporary_folder(
+    tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every test runs in a folder of its own, so that outputs written to the current
+    directory (PNGs by default, issue 21) never land in the clone."""
+    monkeypatch.chdir(tmp_path_factory.mktemp("cwd"))

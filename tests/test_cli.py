@@ -72,19 +72,30 @@ def test_bad_margin_is_a_usage_error(write_spec):
     assert run("check", str(path), "--margin", "1.5").exit_code == 2
 
 
-def test_png_written_next_to_the_spec_and_to_out(write_spec, tmp_path):
+def test_png_written_to_the_current_directory_not_beside_the_spec(
+    write_spec, tmp_path, monkeypatch
+):
+    """Issue 21: a read-only reference folder or a shared catalogue must not collect PNGs:
+    they go to the current directory (or --out), and the run says where."""
     path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
-    assert run("check", str(path)).exit_code == 0
-    png = path.with_name("t.campbell.png")
+    here = tmp_path / "here"
+    here.mkdir()
+    monkeypatch.chdir(here)
+    result = run("check", str(path))
+    assert result.exit_code == 0
+    png = here / "t.campbell.png"
     assert png.read_bytes().startswith(b"\x89PNG")
+    assert not path.with_name("t.campbell.png").exists()
+    assert str(png) in result.stdout
     out = tmp_path / "reports"
     result = run("check", str(path), "--out", str(out))
     assert (out / "t.campbell.png").exists()
     assert "wrote" in result.stdout
 
 
-def test_rerun_replaces_own_png_but_not_a_foreign_file(write_spec):
+def test_rerun_replaces_own_png_but_not_a_foreign_file(write_spec, monkeypatch):
     path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    monkeypatch.chdir(path.parent)
     assert run("check", str(path)).exit_code == 0
     assert run("check", str(path)).exit_code == 0  # our own PNG: replaced atomically
     png = path.with_name("t.campbell.png")
@@ -295,3 +306,29 @@ def test_the_cli_pins_blas_to_one_thread_unless_the_user_chose(given, expected):
         [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
     )
     assert out.stdout.split() == [expected, "False"]
+
+
+def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_spec, tmp_path):
+    """Issue 21: files are written with the mode the umask gives (0644 under 022, not
+    mkstemp's 0600); --version prints the version; the JSON report names wtvib's version and
+    the input with its SHA-256 (of the file as read)."""
+    import hashlib
+    import os
+
+    from wtvib import __version__
+
+    path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+    old = os.umask(0o022)
+    try:
+        assert run("check", str(path), "--out", str(tmp_path / "o")).exit_code == 0
+    finally:
+        os.umask(old)
+    png = tmp_path / "o" / "t.campbell.png"
+    assert png.stat().st_mode & 0o777 == 0o644
+    assert run("--version").stdout.strip() == f"wtvib {__version__}"
+    doc = json.loads(run("check", str(path), "--no-plot", "-f", "json").stdout)
+    assert doc["produced_by"] == {
+        "tool": "wtvib",
+        "version": __version__,
+        "input": {"file": str(path), "sha256": hashlib.sha256(path.read_bytes()).hexdigest()},
+    }

@@ -109,8 +109,15 @@ class Report:
         spec = self.spec
         speed = spec.rotor.speed
         rule = self.rule
+        from . import __version__
+
         return {
             "schema": REPORT_SCHEMA,
+            "produced_by": {
+                "tool": "wtvib",
+                "version": __version__,
+                "input": {"file": spec.source_file, "sha256": spec.source_sha256},
+            },
             "turbine": {
                 "name": spec.turbine.name,
                 "source_file": spec.source_file,

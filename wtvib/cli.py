@@ -203,9 +203,21 @@ def _user_errors(command: F) -> F:
     return wrapper  # type: ignore[return-value]
 
 
+def _version(value: bool) -> None:
+    if value:
+        from . import __version__
+
+        typer.echo(f"wtvib {__version__}")
+        raise typer.Exit(EXIT_PASS)
+
+
 @app.callback()
 def _root(
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    version: Annotated[
+        bool,
+        typer.Option("--version", callback=_version, is_eager=True, help="Print the version."),
+    ] = False,
 ) -> None:
     _state["debug"] = debug
 
@@ -218,7 +230,7 @@ def check(
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
     out: Annotated[
         Path | None,
-        typer.Option("--out", "-o", help="Folder for the PNGs (default: next to the spec)."),
+        typer.Option("--out", "-o", help="Folder for the PNGs (default: the current directory)."),
     ] = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write Campbell PNGs.")] = True,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
@@ -257,7 +269,7 @@ def check(
     if plot:
         from .plots import diagrams, png_bytes
 
-        folder = out if out is not None else spec_file.parent
+        folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
         for suffix, fig in diagrams(report).items():
             path = folder / f"{spec_file.stem}.{suffix}.png"
             written.append(write_atomic(path, png_bytes(fig), force=force))
@@ -458,7 +470,10 @@ class ScaleWhat(StrEnum):
 def window(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec, windIO or ElastoDyn file.")],
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
-    out: Annotated[Path | None, typer.Option("--out", "-o", help="Folder for the PNG.")] = None,
+    out: Annotated[
+        Path | None,
+        typer.Option("--out", "-o", help="Folder for the PNG (default: the current directory)."),
+    ] = None,
     plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write the windows PNG.")] = True,
     force: Annotated[bool, typer.Option(help="Replace a file not written by wtvib.")] = False,
     *,
@@ -486,7 +501,7 @@ def window(
         from .plots.campbell import windows_plot
 
         tower_w = next((w.allowed for w in found if w.subsystem == "tower"), ())
-        folder = out if out is not None else spec_file.parent
+        folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
         path = write_atomic(
             folder / f"{spec_file.stem}.windows.png",
             png_bytes(windows_plot(report, tower_w)),

@@ -56,6 +56,13 @@ def _png_software(data: bytes) -> str:
     return ""
 
 
+def _umask() -> int:
+    """The process's umask (read by setting it and putting it back: there is no getter)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
 def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
     """Write ``data`` to ``path`` atomically.
 
@@ -79,6 +86,8 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
             fh.flush()
+            # mkstemp makes the file 0600; an output gets the mode the umask gives any file
+            os.fchmod(fh.fileno(), 0o666 & ~_umask())
             os.fsync(fh.fileno())
         os.replace(tmp, path)
     except OSError as exc:

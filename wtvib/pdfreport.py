@@ -193,6 +193,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
     )
     ident = [
         ["source file", t["source_file"]],
+        ["input SHA-256", (r.get("produced_by", {}).get("input", {}).get("sha256") or "—")],
         ["rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub"],
         [
             "operation",

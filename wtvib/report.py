@@ -59,8 +59,8 @@ def terminal(
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
         console.print(_t(f"  • {line}"))
-    for path in written:
-        console.print(_t(f"wrote {path}", "dim"))
+    for path in written:  # a path is never wrapped or cut (issue 21)
+        console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 
 
 def _summary(data: dict) -> Panel:  # type: ignore[type-arg]

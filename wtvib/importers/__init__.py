@@ -11,6 +11,7 @@ from typing import Any
 
 from ..errors import SpecError
 from ..spec import Spec, from_data, load_document, read_text
+from ..spec.load import fingerprint
 
 FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x), an "
 FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst), or Campbell results: OpenFAST "
@@ -104,11 +105,15 @@ def load(
     if kind == "wtvib" and rpm is None and rated is None:
         from ..spec import from_document
 
-        return from_document(load_document(p, text))
+        return from_document(load_document(p, text)).fingerprinted(fingerprint(text))
     data = to_data(
         p, rpm=rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base, blades=blades
     )
-    return from_data(data, source=str(p))
+    spec = from_data(data, source=str(p))
+    if p.is_dir():  # a folder of results: the hash of its files' hashes, in order
+        files = spec.results.files if spec.results is not None else []
+        text = "\n".join(fingerprint(read_text(f)) for f in sorted(files))
+    return spec.fingerprinted(fingerprint(text))
 
 
 def _check_options(

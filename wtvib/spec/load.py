@@ -1,5 +1,6 @@
 """Reading a spec: files (bounded, UTF-8), YAML documents, quantities, validation."""
 
+import hashlib
 import os
 import stat
 from pathlib import Path as FsPath
@@ -52,7 +53,12 @@ def load(path: str | FsPath, *, max_bytes: int | None = None) -> Spec:
         Unreadable, oversized, non-UTF-8 or invalid file; the message names field and line.
     """
     text = read_text(path, max_bytes=max_bytes)
-    return from_document(parse(text, source=str(path)))
+    return from_document(parse(text, source=str(path))).fingerprinted(fingerprint(text))
+
+
+def fingerprint(text: str) -> str:
+    """SHA-256 of a file's text as read (UTF-8), for the reports' identity block."""
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
 def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:

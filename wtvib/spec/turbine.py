@@ -145,6 +145,7 @@ class Spec(_Strict):
     )
 
     _source_file: str | None = PrivateAttr(None)
+    _source_sha256: str | None = PrivateAttr(None)  # of the input as read (issue 21)
     _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
     # results derived from this spec that several analyses of one audit reuse (the coupled
     # model's blade modes): they live and die with the spec object, never across specs
@@ -164,6 +165,16 @@ class Spec(_Strict):
     def source_file(self) -> str | None:
         """The file this spec was read from."""
         return self._source_file
+
+    @property
+    def source_sha256(self) -> str | None:
+        """SHA-256 of the input as it was read (the files of a folder: of their hashes)."""
+        return self._source_sha256
+
+    def fingerprinted(self, sha256: str) -> "Spec":
+        """This spec, marked with the hash of the input it came from."""
+        self._source_sha256 = sha256
+        return self
 
     @property
     def provenance(self) -> dict[str, Quantity]:
