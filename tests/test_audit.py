@@ -1,6 +1,7 @@
 """The orchestrator: assumptions stated only when made, warnings for missing inputs that
 change a frequency by a factor, the damping each mode is judged with."""
 
+from tests.conftest import spec_text
 from wtvib import audit, spec
 
 HEAD = """
@@ -81,3 +82,20 @@ def test_a_slow_tip_speed_for_the_rotor_size_is_a_warning(shared):
     assert len(slow) == 1 and "34 m/s" in slow[0]
     ranged = importers.load(path, rpm=(3.8, 11.75))
     assert not [w for w in audit.suspicious(ranged, []) if "tip speed" in w]
+
+
+def test_a_rated_power_implausible_for_the_rotor_is_a_warning(write_spec):
+    """Issue 21: 2 kW on a 90 m rotor (0.31 W/m², a kW/MW slip) warns; 2 MW does not
+    (314 W/m², between the catalogue's 88 and 837 W/m²)."""
+
+    def warned(kw: float) -> list[str]:
+        path = write_spec(
+            text=spec_text(extra="").replace(
+                "turbine: {name: Test turbine}",
+                f"turbine: {{name: Test turbine, rotor_diameter_m: 90, rated_power_kw: {kw}}}",
+            )
+        )
+        return [w for w in audit.run(spec.load(path)).warnings if "W/m²" in w]
+
+    assert len(warned(2)) == 1 and "0.314 W/m²" in warned(2)[0]
+    assert warned(2000) == []

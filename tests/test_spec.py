@@ -285,3 +285,22 @@ def test_a_speed_table_is_validated(write_spec, entry, message):
     path = write_spec(extra=f"blade:\n  modes:\n    flap1: {entry}\n")
     with pytest.raises(spec.SpecError, match=message):
         spec.load(path)
+
+
+def test_a_misspelt_key_names_itself_and_the_field_it_should_be(write_spec):
+    """Issue 21: a key typo used to report only "required field is missing (and 1 more
+    problem)" on the missing field's parent, never naming the unknown key."""
+    extra = (
+        "tower:\n  sections:\n    height_m: [0, 60]\n    outer_diamter_m: [4, 4]\n"
+        "    wall_thickness_m: [0.03, 0.03]\n"
+        "  material: {youngs_modulus_pa: 2.1e11, density_kg_m3: 7850}\n"
+        "tower_head: {mass_kg: 150000}\n"
+    )
+    text = spec_text().replace("tower:\n  modes:\n    fa1: 0.5\n", extra)
+    assert "outer_diamter_m" in text
+    path = write_spec(text)
+    with pytest.raises(SpecError) as exc:
+        spec.load(path)
+    message = str(exc.value)
+    assert "outer_diamter_m: unknown field" in message
+    assert "did you mean 'outer_diameter_m'" in message and "more problem" not in message

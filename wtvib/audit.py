@@ -335,6 +335,11 @@ def _assert_finite(modes: list[Mode]) -> None:
             )
 
 
+#: Rated power per swept area outside this band [W/m²] is suspicious (wtvib's bounds around
+#: the catalogue's 88 (MOD-0) to 837 W/m² (WTS-4) and the reference turbines' 330–400:
+#: NREL 5-MW 401, IEA-15 332, IEA-22 347).
+POWER_DENSITY = (40.0, 1500.0)
+
 #: A horizontal-axis rotor of 30 m or more whose top steady tip speed is under this [m/s]
 #: is suspicious (wtvib's bound, well below the reference turbines' rated tip speeds: NREL
 #: 5-MW 80 m/s, IEA-3.4 80, IEA-10 90, IEA-15 95, IEA-22 105 — rated rpm × radius).
@@ -384,6 +389,15 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
     far = scaling.head_warning(spec)
     if far:
         out.append(far)
+    power = scaling.rated_power_kw(spec)
+    if diameter and power and spec.rotor.orientation != "vertical-axis":
+        density = power * 1e3 / (math.pi * diameter**2 / 4)
+        if not POWER_DENSITY[0] <= density <= POWER_DENSITY[1]:
+            out.append(
+                f"turbine.rated_power_kw: {power:,.4g} kW on a {diameter:g} m rotor is "
+                f"{density:,.3g} W/m² of swept area, outside {POWER_DENSITY[0]:g}–"
+                f"{POWER_DENSITY[1]:g} W/m² — check the unit (kW) and the diameter"
+            )
     head, blades = spec.tower_head, spec.blade.mass_kg
     if head and blades and blades * spec.rotor.blades > 0.9 * head.mass_kg:
         out.append(

@@ -41,6 +41,12 @@ def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecE
         return e["type"] in _SCALAR_TYPES and isinstance(e.get("input"), list | dict)
 
     err = min(errors, key=lambda e: (mismatch(e), errors.index(e)))
+    # a misspelt key is two problems — the unknown key and the field it should have been:
+    # report the unknown one (its line is where the mistake is) and name the other
+    typo = _misspelt(errors)
+    if typo is not None:
+        err, missing = typo
+        err = {**err, "missing_sibling": missing}
     loc: list[str | int] = []
     for part in err["loc"]:
         if part in ("number", "full", "[key]", "int", "float", "str") or (
@@ -50,7 +56,7 @@ def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecE
         loc.append(part)
     path: Path = (*prefix, *loc)
     message = _message(err)
-    extra = len({tuple(e["loc"][: len(loc)]) for e in errors}) - 1
+    extra = len({tuple(e["loc"][: len(loc)]) for e in errors}) - 1 - (typo is not None)
     more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra > 0 else ""
     return SpecError(
         message + more,
@@ -66,6 +72,9 @@ def _message(err: Any) -> str:
     if kind == "missing":
         return "required field is missing"
     if kind == "extra_forbidden":
+        missing = err.get("missing_sibling")
+        if missing is not None:
+            return f"unknown field — did you mean {missing!r}? (a required field, missing)"
         return "unknown field (not part of the wtvib spec; check the spelling)"
     if kind == "string_pattern_mismatch":
         pattern = err.get("ctx", {}).get("pattern", "")
@@ -85,3 +94,24 @@ def _message(err: Any) -> str:
     if kind == "literal_error":
         return f"{text} (got {got!r})"
     return text
+
+
+def _misspelt(errors: list[Any]) -> tuple[Any, str] | None:
+    """An unknown key and a missing required sibling of a similar name, if the errors hold
+    such a pair (``outer_diamter_m`` for ``outer_diameter_m``)."""
+    import difflib
+
+    missing = [e for e in errors if e["type"] == "missing"]
+    for e in errors:
+        if e["type"] != "extra_forbidden" or not isinstance(e["loc"][-1], str):
+            continue
+        parent = e["loc"][:-1]
+        names = [
+            m["loc"][-1]
+            for m in missing
+            if m["loc"][:-1] == parent and isinstance(m["loc"][-1], str)
+        ]
+        close = difflib.get_close_matches(e["loc"][-1], names, n=1, cutoff=0.6)
+        if close:
+            return e, close[0]
+    return None
