@@ -495,7 +495,7 @@ def stability(modes: Sequence[Mode]) -> Check:
     rule = Rule(
         "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
         "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; quasi-steady section damping "
-        "(DOMAIN.md §3), frozen wake",
+        "(M. H. Hansen, Wind Energy 10 (2007) 551–577), frozen wake",
     )
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:

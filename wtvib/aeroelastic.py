@@ -559,7 +559,8 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
         return [], []
     div_rule = Rule(
         f"divergence speed ≥ (1 + {ae.speed_margin:g})·highest section speed",
-        "Hau ch. 7.2.2 (Fig. 7.6); typical section and strip-theory cantilever, DOMAIN.md §3",
+        "Hau ch. 7.2.2 (Fig. 7.6); typical section and strip-theory cantilever (Hodges & "
+        "Pierce, Introduction to Structural Dynamics and Aeroelasticity, 2011, ch. 3 and 5)",
     )
     flut_rule = Rule(
         f"flutter speed ≥ (1 + {ae.speed_margin:g})·highest section speed",

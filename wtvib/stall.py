@@ -230,8 +230,8 @@ def judge(
     rule = Rule(
         "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
         "is negative",
-        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), DOMAIN.md §3; "
-        + inflow,
+        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), M. H. Hansen, "
+        "Wind Energy 10 (2007) 551–577; " + inflow,
     )
     out = []
     curves: dict[str, list[Point]] = {}
