@@ -58,3 +58,28 @@ def test_report_of_a_bad_spec_is_one_line(tmp_path):
     bad.write_text("wtvib: 1\n")
     result = runner.invoke(app, ["report", str(bad), "-o", str(tmp_path / "x.pdf")])
     assert result.exit_code == 2 and result.stderr.count("\n") == 1
+
+
+def test_pdf_numbers_are_for_people():
+    """Issue 21: a check's numbers are one readable line with units (not `key = value`
+    reprs), and inputs are written as engineers write them."""
+    from wtvib.pdfreport import _for_people, _numbers
+
+    c = {
+        "mode": "tower.fa1",
+        "frequency_hz": 0.767036,
+        "margin": 0.000481522,
+        "required_margin": 0.1,
+        "speed_rpm": 23.0,
+        "daf": 4.0019,
+        "crossings_rpm": [23.0111],
+    }
+    line = _numbers(c)
+    assert line == (
+        "mode tower.fa1; f 0.767 Hz; margin 0 %; needs 10.0 %; at 23 rpm; "
+        "DAF 4.00; crossings 23 rpm"
+    )
+    assert "=" not in line and "0.000481522" not in line
+    assert _for_people(2.275e6) == "2,275,000"
+    assert _for_people(2.1e11) == "2.1×10<super>11</super>"
+    assert _for_people(0.125) == "0.125"

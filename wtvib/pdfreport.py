@@ -286,14 +286,14 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         rows = [k.header("field", "value", "provenance", "source and note")]
         rows += [
             [
-                k.p(path),
-                k.p(f"{q['value']:g}"),
+                k.p(_breakable(path)),
+                k.raw(_for_people(q["value"])),
                 k.p(q["provenance"]),
                 k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
             ]
             for path, q in r["inputs"].items()
         ]
-        out.append(k.table(rows, [0.26, 0.1, 0.12, 0.52]))
+        out.append(k.table(rows, [0.33, 0.13, 0.15, 0.39]))
     else:
         out.append(
             k.p("No provenance was recorded in the spec: all values are as given.", "BodyText")
@@ -378,33 +378,110 @@ def _worst(checks: list[dict[str, Any]]) -> Mapping[str, Any] | None:
     return worst_check(checks)
 
 
+#: A check's numbers as people read them: (key, label, how to format the value).
+_READABLE: tuple[tuple[str, str, str], ...] = (
+    ("mode", "mode", "text"),
+    ("frequency_hz", "f", "Hz"),
+    ("margin", "margin", "%"),
+    ("required_margin", "needs", "%"),
+    ("speed_rpm", "at", "rpm"),
+    ("excitation_hz", "line at", "Hz"),
+    ("daf", "DAF", "daf"),
+    ("damping_ratio", "ζ", "ratio"),
+    ("regime", "regime", "text"),
+    ("crossings_rpm", "crossings", "rpm-list"),
+    ("exclude_rpm", "exclude", "rpm-bands"),
+    ("tower_class", "class", "text"),
+    ("startup_crossings", "start-up crossings", "list"),
+    ("speed_ratio", "speed ratio", "num"),
+    ("max_multiplier_in_operation", "largest Floquet multiplier", "num"),
+    ("unstable_rpm", "unstable at", "rpm-bands"),
+    ("min_total_damping_ratio", "lowest ζ", "ratio"),
+    ("at_wind_m_s", "at", "m/s"),
+    ("at_rpm", "at", "rpm"),
+    ("rated_wind_m_s", "rated wind", "m/s"),
+    ("tip_speed_ratio", "TSR", "num"),
+)
+
+
 def _numbers(c: dict[str, Any]) -> str:
-    keys = (
-        "max_multiplier_in_operation",
-        "unstable_rpm",
-        "mode",
-        "frequency_hz",
-        "margin",
-        "required_margin",
-        "speed_rpm",
-        "excitation_hz",
-        "daf",
-        "damping_ratio",
-        "regime",
-        "crossings_rpm",
-        "exclude_rpm",
-        "tower_class",
-        "startup_crossings",
-        "speed_ratio",
-        "min_total_damping_ratio",
-        "at_wind_m_s",
-        "at_rpm",
-        "rated_wind_m_s",
-        "tip_speed_ratio",
-        "lowest",
-        "unstable",
-    )
-    return "; ".join(f"{k} = {c[k]}" for k in keys if c.get(k) not in (None, [], ""))
+    """One readable line of a check's numbers, with units (the JSON keeps full precision)."""
+    parts = [
+        f"{label} {_readable(c[key], how)}"
+        for key, label, how in _READABLE
+        if c.get(key) not in (None, [], "")
+    ]
+    low = c.get("lowest")
+    if isinstance(low, dict) and "mode" in low:  # the stability checks' lowest damping
+        z = low.get("damping_ratio", low.get("total_damping_ratio"))
+        where = [
+            _readable(low[k], u)
+            for k, u in (("rpm", "rpm"), ("at_wind_m_s", "m/s"))
+            if low.get(k) is not None
+        ]
+        parts.append(
+            f"lowest ζ {_readable(z, 'ratio')} ({low['mode']}"
+            + (f", at {', '.join(where)}" if where else "")
+            + ")"
+        )
+    unstable = c.get("unstable")
+    if isinstance(unstable, dict) and unstable:  # mode → winds [m/s]
+        parts += [
+            f"unstable: {m} at {', '.join(f'{w:.3g}' for w in winds)} m/s"
+            for m, winds in unstable.items()
+        ]
+    elif isinstance(unstable, list) and unstable:  # imported results: rows of mode, ζ, rpm
+        parts += [
+            f"unstable: {u['mode']} ζ {u['damping_ratio']:.3g} at {u['rpm']:.4g} rpm"
+            for u in unstable[:4]
+        ]
+    return "; ".join(parts)
+
+
+def _readable(value: Any, how: str) -> str:
+    if how == "text":
+        return str(value)
+    if how == "list":
+        return ", ".join(map(str, value)) if isinstance(value, list) else str(value)
+    if how == "rpm-list":
+        return ", ".join(f"{v:.3g}" for v in value) + " rpm"
+    if how == "rpm-bands":
+        return ", ".join(f"{a:.3g}–{b:.3g}" for a, b in value) + " rpm"
+    if not isinstance(value, int | float):
+        return str(value)
+    if how == "%":
+        return "0 %" if abs(value) < 5e-4 else f"{100 * value:.1f} %"
+    if how == "daf":
+        return f"{value:.2f}"
+    if how == "ratio":
+        return f"{value:.3g}"
+    if how == "num":
+        return f"{value:.3g}"
+    return f"{value:.4g} {how}"
+
+
+def _for_people(value: Any) -> str:
+    """A number as an engineer writes it, as reportlab markup: 2,275,000 or 2.1×10<super>11
+    </super> (the PDF's fonts have no superscript digits), never '2.275e+06'."""
+    if not isinstance(value, int | float) or isinstance(value, bool):
+        return _esc(str(value))
+    v = float(value)
+    if v == 0:
+        return "0"
+    if v.is_integer() and abs(v) < 1e9:
+        return f"{int(v):,}"
+    if 1e-3 <= abs(v) < 1e6:
+        return f"{v:,.6g}"
+    mantissa, exponent = f"{v:.4e}".split("e")
+    mantissa = mantissa.rstrip("0").rstrip(".")
+    return f"{mantissa}×10<super>{int(exponent)}</super>"
+
+
+def _breakable(path: str, width: int = 40) -> str:
+    """A dotted field path that wraps after a dot, not mid-word: a path longer than the
+    column gets a space after its dots (the PDF's fonts have no zero-width space; the JSON
+    keeps the exact path)."""
+    return path if len(path) <= width else path.replace(".", ". ")
 
 
 def _pct(x: float | None) -> str:

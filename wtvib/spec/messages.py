@@ -44,9 +44,10 @@ def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecE
     # a misspelt key is two problems — the unknown key and the field it should have been:
     # report the unknown one (its line is where the mistake is) and name the other
     typo = _misspelt(errors)
+    chosen: Any = err
     if typo is not None:
-        err, missing = typo
-        err = {**err, "missing_sibling": missing}
+        chosen = {**typo[0], "missing_sibling": typo[1]}
+    err = chosen
     loc: list[str | int] = []
     for part in err["loc"]:
         if part in ("number", "full", "[key]", "int", "float", "str") or (
