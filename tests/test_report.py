@@ -8,7 +8,7 @@ from rich.console import Console
 
 from tests.conftest import TURBINES
 from wtvib import audit, spec
-from wtvib.report import terminal, to_json
+from wtvib.report import _shown, terminal, to_json
 
 
 def strict(text: str) -> object:
@@ -32,5 +32,25 @@ def test_terminal_leads_with_the_verdict_and_warnings(write_spec):
     r = audit.run(spec.load(write_spec(text, name="w.yaml")))
     out = io.StringIO()
     terminal(r, Console(file=out, width=100), written=[])
-    head = out.getvalue().split("Natural frequencies")[0]
+    head = out.getvalue().split("Findings")[0]
     assert "Verdict" in head and "Warning" in head and "inertia_yaw_kgm2" in head
+
+
+def test_terminal_leads_with_a_summary_and_never_cuts_an_id():
+    """Issue 21: at 80 columns the default report is the headline, each failing or warning
+    check with its numbers, the info checks by id, and the assumptions; --detail adds the
+    tables, whose id columns are as wide as the longest id (no "drivetrain.resonance.me…")."""
+    r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
+    short, long = io.StringIO(), io.StringIO()
+    terminal(r, Console(file=short, width=80))
+    terminal(r, Console(file=long, width=80), detail=True)
+    text = short.getvalue()
+    assert "Natural frequencies (standstill)" not in text and "--detail" in text
+    failing = [c for c in r.checks if c.status in ("fail", "warn")]
+    assert failing and all(c.id in text for c in failing)
+    table = long.getvalue()
+    assert "Natural frequencies (standstill)" in table
+    for c in r.to_dict()["checks"]:
+        if _shown(c, False):  # (passing low-energy checks need --all)
+            assert c["id"] in table, c["id"]  # whole, on one line
+    assert "…" not in table

@@ -238,6 +238,9 @@ def check(
         bool, typer.Option(help="Replace existing output files not written by wtvib.")
     ] = False,
     show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
+    detail: Annotated[
+        bool, typer.Option("--detail", help="Print the tables of modes and checks too.")
+    ] = False,
     uncertainty: Annotated[
         bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
     ] = False,
@@ -287,7 +290,7 @@ def check(
 
         from .report import terminal
 
-        terminal(report, Console(), written=written, show_all=show_all)
+        terminal(report, Console(), written=written, show_all=show_all, detail=detail or show_all)
     for warning in report.warnings:
         typer.echo(f"warning: {warning}", err=True)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")

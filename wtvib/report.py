@@ -40,20 +40,30 @@ def terminal(
     *,
     written: Sequence[Path] = (),
     show_all: bool = False,
+    detail: bool = False,
 ) -> None:
-    """Print the report: summary panel, modes, checks, assumptions."""
+    """Print the report: the summary panel, every failing, warning and info check in one
+    line with its number, then (``detail``) the tables of modes and checks, and the
+    assumptions. Ids are never cut."""
     data = report.to_dict()
     console.print(_summary(data))
-    console.print(_modes(data["modes"]))
-    console.print(_checks(data["checks"], show_all))
-    hidden = sum(1 for c in data["checks"] if not _shown(c, show_all))
-    if hidden:
+    console.print(_findings(data["checks"]))
+    if detail:
+        console.print(_modes(data["modes"]))
+        console.print(_checks(data["checks"], show_all))
+        hidden = sum(1 for c in data["checks"] if not _shown(c, show_all))
+        if hidden:
+            console.print(
+                f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
+            )
+        for table in (_blade_stability(data["checks"]), _coupling(data["checks"])):
+            if table is not None:
+                console.print(table)
+    else:
         console.print(
-            f"[dim]{hidden} more checks pass on low-energy harmonics (--all shows them).[/dim]"
+            f"[dim]{len(data['modes'])} modes, {len(data['checks'])} checks: --detail prints "
+            "their tables.[/dim]"
         )
-    for table in (_blade_stability(data["checks"]), _coupling(data["checks"])):
-        if table is not None:
-            console.print(table)
     if data.get("uncertainty"):
         console.print(_uncertainty(data["uncertainty"]))
     console.print(Text("Assumptions", style="bold"))
@@ -112,7 +122,7 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
 
 def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     table = Table(title="Natural frequencies (standstill)", title_justify="left")
-    table.add_column("mode")
+    table.add_column("mode", no_wrap=True, min_width=max((len(m["id"]) for m in modes), default=4))
     table.add_column("description")
     table.add_column("f [Hz]", justify="right")
     table.add_column("ζ", justify="right")
@@ -135,6 +145,32 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     return table
 
 
+def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
+    """Every failing and warning check, worst first, one entry each: status, id (whole), its
+    margin and DAF where it has them, the finding; then the info checks by id, and how many
+    pass."""
+    order = {"fail": 0, "warn": 1}
+    shown = sorted((c for c in checks if c["status"] in order), key=lambda c: order[c["status"]])
+    lines: list[Text] = [Text("Findings", style="bold")]
+    for c in shown:
+        line = Text("  ")
+        line.append(f"{c['status'].upper():4}", style=STYLE[c["status"]])
+        line.append(f"  {c['id']}", style="bold")
+        numbers = [f"margin {c['margin']:.1%}"] if c.get("margin") is not None else []
+        if c.get("daf") is not None:
+            numbers.append(f"DAF {c['daf']:.2g}")
+        if numbers:
+            line.append(f"  ({', '.join(numbers)})")
+        line.append(f" — {c['message']}")
+        lines.append(line)
+    infos = [c["id"] for c in checks if c["status"] not in order and c["status"] != "pass"]
+    if infos:
+        lines.append(Text(f"  info: {', '.join(infos)}", style=STYLE["info"]))
+    passed = sum(1 for c in checks if c["status"] == "pass")
+    lines.append(Text(f"  {passed} checks pass.", style="green" if passed else "dim"))
+    return Group(*lines)
+
+
 def _shown(check: dict, show_all: bool) -> bool:  # type: ignore[type-arg]
     return show_all or check["status"] != "pass" or check.get("energy") != "minor"
 
@@ -142,7 +178,9 @@ def _shown(check: dict, show_all: bool) -> bool:  # type: ignore[type-arg]
 def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-arg]
     table = Table(title="Checks", title_justify="left", show_lines=False)
     table.add_column("status")
-    table.add_column("check")
+    table.add_column(
+        "check", no_wrap=True, min_width=max((len(c["id"]) for c in checks), default=5)
+    )
     table.add_column("margin", justify="right")
     table.add_column("DAF", justify="right")
     table.add_column("finding", ratio=1)
