@@ -100,7 +100,7 @@ def test_batch_outputs_are_byte_identical_across_runs(folder, tmp_path):
 def test_batch_json_is_one_document(folder):
     result = runner.invoke(app, ["batch", str(folder), "--format", "json", "--no-plots"])
     doc = json.loads(result.stdout)
-    assert doc["schema"] == "wtvib-batch/1"
+    assert doc["schema"] == "wtvib-batch-results/1"
     assert [r["outcome"] for r in doc["results"]] == ["input-error", "pass", "pass", "fail", "warn"]
 
 

@@ -22,7 +22,9 @@ from typing import Any
 from .errors import WtvibError
 from .rules import STATUS_ORDER, worst_check
 
-BATCH_SCHEMA = "wtvib-batch/1"
+#: Two documents, two shapes, two ids (wtvib.contract): the summary and the full results.
+SUMMARY_SCHEMA = "wtvib-batch-summary/1"
+RESULTS_SCHEMA = "wtvib-batch-results/1"
 SPEC_SUFFIXES = (".yaml", ".yml", ".dat", ".fst")
 
 #: Outcome order for sorting and exit codes: errors are worst, internal ones last.
@@ -337,7 +339,7 @@ def summary(items: Sequence[Item]) -> dict[str, Any]:
     for it in items:
         counts[it.outcome] += 1
     return {
-        "schema": BATCH_SCHEMA,
+        "schema": SUMMARY_SCHEMA,
         "counts": counts,
         "turbines": [it.row() for it in items],
     }
@@ -357,7 +359,7 @@ def summary_csv(items: Sequence[Item]) -> str:
 def results_json(items: Sequence[Item]) -> str:
     """One JSON document with every result (``--format json``)."""
     doc = {
-        "schema": BATCH_SCHEMA,
+        "schema": RESULTS_SCHEMA,
         "results": [
             {"file": it.path, "outcome": it.outcome, "report": it.report, "error": it.error}
             for it in items

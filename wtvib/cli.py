@@ -605,11 +605,21 @@ def convert(
 
 @app.command()
 @_user_errors
-def schema() -> None:
-    """Print the JSON Schema of the turbine spec (for editors and validators)."""
-    from .spec import json_schema
+def schema(
+    report: Annotated[
+        bool, typer.Option("--report", help="The report's schema (wtvib-report/1) instead.")
+    ] = False,
+) -> None:
+    """Print the JSON Schema of the turbine spec, or of the JSON report (--report)."""
+    if report:
+        from .contract import report_schema
 
-    sys.stdout.write(json.dumps(json_schema(), indent=2, ensure_ascii=False) + "\n")
+        doc = report_schema()
+    else:
+        from .spec import json_schema
+
+        doc = json_schema()
+    sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
 
 
 def main() -> None:

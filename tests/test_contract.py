@@ -1,0 +1,54 @@
+"""The JSON contract (issue 21): every report validates against the published schema
+(`wtvib schema --report`), strict JSON, every key described."""
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from tests.conftest import TURBINES
+from wtvib import audit, importers, spec
+from wtvib.cli import app
+from wtvib.contract import CHECK_NUMBERS, report_schema
+
+jsonschema = pytest.importorskip("jsonschema", reason="jsonschema (dev extra) validates")
+DATA = Path(__file__).resolve().parent / "data" / "campbell"
+
+
+def validate(doc: object) -> None:
+    jsonschema.Draft202012Validator(report_schema()).validate(doc)
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in TURBINES.glob("*.yaml")))
+def test_every_catalogue_report_validates(name):
+    validate(json.loads(json.dumps(audit.run(spec.load(TURBINES / name)).to_dict())))
+
+
+@pytest.mark.parametrize(
+    "source",
+    [DATA / "openfast", DATA / "hawcstab2" / "steady.cmb", DATA / "hawcstab2" / "blade.cmb"],
+)
+def test_imported_results_reports_validate(source):
+    validate(audit.run(importers.load(source, blades=3)).to_dict())
+
+
+def test_a_deck_with_aerodynamics_and_an_uncertainty_run_validate(shared):
+    validate(audit.run(importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")).to_dict())
+    validate(audit.run(spec.load(TURBINES / "wka-60.yaml"), samples=200).to_dict())
+
+
+def test_every_check_number_the_catalogue_writes_is_described():
+    """A key a check writes and the schema does not describe is an undocumented key."""
+    described = set(CHECK_NUMBERS) | {"id", "subsystem", "status", "message", "rule"}
+    seen: set[str] = set()
+    for p in TURBINES.glob("*.yaml"):
+        for c in audit.run(spec.load(p)).to_dict()["checks"]:
+            seen |= set(c)
+    assert seen - described == set()
+
+
+def test_the_schema_command_prints_the_report_schema():
+    result = CliRunner().invoke(app, ["schema", "--report"])
+    assert result.exit_code == 0
+    assert json.loads(result.stdout)["properties"]["schema"]["const"] == "wtvib-report/1"
