@@ -77,14 +77,15 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     t = data["turbine"]
     op = data["operation"]
     verdict = data["verdict"]
+    # numbers for people: four significant digits (the JSON keeps them all)
     speeds = (
-        f"{op['steady_rpm'][0][0]:g}–{op['steady_rpm'][-1][1]:g} rpm (variable)"
+        f"{op['steady_rpm'][0][0]:.4g}–{op['steady_rpm'][-1][1]:.4g} rpm (variable)"
         if op["variable_speed"]
-        else ", ".join(f"{a:g}" for a, _ in op["steady_rpm"]) + " rpm (fixed)"
+        else ", ".join(f"{a:.4g}" for a, _ in op["steady_rpm"]) + " rpm (fixed)"
     )
     grid = Table.grid(padding=(0, 2))
     grid.add_column(style="bold")
-    grid.add_column()
+    grid.add_column(overflow="fold")  # a long path wraps, never ends in "…"
     grid.add_row("Turbine", _t(t["name"]))
     grid.add_row("File", _t(t["source_file"]))
     grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")

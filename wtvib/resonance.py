@@ -443,8 +443,9 @@ def _merge(intervals: Sequence[Interval]) -> list[Interval]:
 
 
 def _r(x: float) -> float:
-    """Round for the report: 6 significant digits keep JSON stable and readable."""
-    return float(f"{x:.6g}")
+    """Round for the report: 6 significant digits keep JSON stable and readable, and a
+    value zero within the solvers' rounding (|x| < 1e-9: a margin of 9.9e-14) is 0."""
+    return 0.0 if abs(x) < 1e-9 else float(f"{x:.6g}")
 
 
 def _rpm(omega: float) -> str:
