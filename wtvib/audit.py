@@ -81,6 +81,16 @@ class Report:
         return campbell.build(self.modes, operating_range(self.spec.rotor.speed))
 
     @property
+    def identity(self) -> str:
+        """Which wtvib made the report from which input: one line for files that carry no
+        JSON (the Campbell CSV)."""
+        from . import __version__
+
+        spec = self.spec
+        digest = f", SHA-256 {spec.source_sha256}" if spec.source_sha256 else ""
+        return f"produced by wtvib {__version__} from {spec.source_file or 'a spec'}{digest}"
+
+    @property
     def damping_model(self) -> str:
         """How the judged modes were damped: ``imported`` (another tool's damping at its
         operating points, ``spec.results``), ``aeroelastic`` (some has damping at the

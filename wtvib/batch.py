@@ -203,7 +203,7 @@ def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
         report=report.to_dict(),
         pngs=pngs,
         timings={"load": t1 - t0, "solve": t2 - t1, "plot": t3 - t2},
-        campbell_csv=report.campbell.to_csv(),
+        campbell_csv=report.campbell.to_csv(report.identity),
     )
 
 

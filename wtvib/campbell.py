@@ -54,11 +54,13 @@ class Campbell:
         }
         return out
 
-    def to_csv(self) -> str:
+    def to_csv(self, identity: str | None = None) -> str:
         """One row per mode and sample: mode, rpm, wind_m_s, pitch_deg, frequency_hz,
         damping_ratio, aerodynamic_damping_ratio (wind, pitch and the aerodynamic part empty
-        where there is none)."""
+        where there is none); ``identity`` (a comment line first: which wtvib, which input)."""
         buf = io.StringIO()
+        if identity:
+            buf.write(f"# {identity}\n")
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(CAMPBELL_HEADER.decode().split(","))
         for mid, (f, z) in self.modes.items():

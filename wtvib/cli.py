@@ -277,7 +277,7 @@ def check(
             path = folder / f"{spec_file.stem}.{suffix}.png"
             written.append(write_atomic(path, png_bytes(fig), force=force))
     if campbell_csv is not None:
-        data = report.campbell.to_csv().encode()
+        data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
     if format is Format.json:
         from .report import to_json

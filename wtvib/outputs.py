@@ -24,6 +24,10 @@ CAMPBELL_HEADER = (
 )
 
 
+#: First line of a CSV that says which wtvib made it from which input (audit.Report.identity).
+IDENTITY = b"# produced by wtvib "
+
+
 def is_ours(path: Path) -> bool:
     """True if ``path`` is a file wtvib wrote earlier (only regular files are opened: a FIFO
     would block the read)."""
@@ -39,7 +43,7 @@ def is_ours(path: Path) -> bool:
         return False
     if head.startswith(b"\x89PNG\r\n\x1a\n"):
         return _png_software(head).startswith(SOFTWARE_TAG)
-    return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER, CAMPBELL_HEADER))
+    return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER, CAMPBELL_HEADER, IDENTITY))
 
 
 def _png_software(data: bytes) -> str:
