@@ -187,7 +187,13 @@ def stall_damping_plot(report: Report) -> "Figure | None":
         ax.plot(wind, total, color=colours[check.status], lw=2, label="total (aero + structural)")
         ax.plot(wind, aero, color="#616161", lw=1.2, ls="--", label="aerodynamic")
         ax.set_ylabel(f"{name}: ζ [%]")
-        ax.set_title(f"{name}: {check.status.upper()} — {check.message}", fontsize=8, loc="left")
+        low = int(np.argmin(total))  # the title in the axis' unit (%), as the curves
+        ax.set_title(
+            f"{name}: {check.status.upper()} — lowest total ζ {total[low]:.2f} % at "
+            f"{wind[low]:.3g} m/s (aerodynamic {aero[low]:+.2f} %)",
+            fontsize=8,
+            loc="left",
+        )
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="best")
     axes[-1].set_xlabel("wind speed [m/s]")

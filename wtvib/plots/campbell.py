@@ -94,6 +94,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         _label_line(ax, exc.id, rpm, f_line, f_top, style["color"])  # type: ignore[arg-type]
 
     colours = _palette(len(modes))
+    drawn: list[np.ndarray] = []
     for mode, colour in zip(modes, colours, strict=True):
         f_n = mode.frequency_at(omega)
         label = f"{mode.id}  {mode.frequency_hz:.3g} Hz"
@@ -109,7 +110,11 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             continue
         lo, hi = rule.forbidden_band(1.0)
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
-        ax.plot(rpm, f_n, color=colour, lw=2.2, label=label)
+        # a mode on top of one drawn before (fa1 and ss1 of a round tower) is dashed, so
+        # that both stay visible
+        under = any(np.allclose(f_n, g, rtol=5e-3) for g in drawn)
+        ax.plot(rpm, f_n, color=colour, lw=2.2, label=label, ls=(0, (4, 3)) if under else "-")
+        drawn.append(f_n)
         if mode.origin == "imported" and isinstance(mode.curve, Sampled):
             # another tool's operating points: the line between and beyond them is drawn
             # as it is judged (linear between, held beyond); the points are the data
@@ -293,6 +298,7 @@ def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # ty
         (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["fail"]), "crossing: fail"),
         (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["warn"]), "crossing: warn"),
         (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["info"]), "crossing: info"),
+        (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["pass"]), "crossing: pass"),
     ]
     for h, label in extra:
         handles.append(h)
@@ -319,14 +325,17 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
         if low >= top:
             continue
         ax.axhspan(low, high, color="#43a047", alpha=0.10, lw=0)
+        # at the window's top edge, clear of the mode lines that sit inside it
         ax.annotate(
             f"{w.name} window",
-            (0.01, 0.5 * (low + high)),  # type: ignore[attr-defined]
+            (0.01, high),  # type: ignore[attr-defined]
             xycoords=("axes fraction", "data"),
+            xytext=(0, -3),
+            textcoords="offset points",
             fontsize=9,
             color="#2e7d32",
             fontweight="bold",
-            va="center",
+            va="top",
         )
     ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10)
     return fig
