@@ -99,3 +99,17 @@ def test_a_rated_power_implausible_for_the_rotor_is_a_warning(write_spec):
 
     assert len(warned(2)) == 1 and "0.314 W/m²" in warned(2)[0]
     assert warned(2000) == []
+
+
+def test_a_lowest_speed_far_below_the_highest_is_a_warning(write_spec):
+    """Issue 21: min_rpm 0.94 on a 90 m rotor running up to 16 rpm (rad/s typed as rpm?)
+    warns; 5 rpm does not."""
+
+    def warned(low: float) -> list[str]:
+        text = spec_text(speed=f"min_rpm: {low}\nmax_rpm: 16").replace(
+            "turbine: {name: Test turbine}", "turbine: {name: Test turbine, rotor_diameter_m: 90}"
+        )
+        return [w for w in audit.run(spec.load(write_spec(text))).warnings if "rad/s typed" in w]
+
+    assert len(warned(0.94)) == 1
+    assert warned(5.0) == []

@@ -345,6 +345,11 @@ def _assert_finite(modes: list[Mode]) -> None:
             )
 
 
+#: A lowest steady speed under this fraction of the highest is suspicious (wtvib's bound;
+#: the reference turbines' ranges: NREL 5-MW 6.9/12.1, IEA-15 5/7.56, IEA-3.4 3.8/11.75 —
+#: and the NREL deck's DISCON minimum 3.41/12.1 = 0.28).
+SLOW_RANGE = 0.15
+
 #: Rated power per swept area outside this band [W/m²] is suspicious (wtvib's bounds around
 #: the catalogue's 88 (MOD-0) to 837 W/m² (WTS-4) and the reference turbines' 330–400:
 #: NREL 5-MW 401, IEA-15 332, IEA-22 347).
@@ -378,6 +383,13 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                 "slow for a rotor this size (the reference turbines run 80–105 m/s at "
                 "rated); check the speed range and where it came from"
             )
+    low = speed.steady_rpm[0][0]
+    if diameter and diameter > 20 and 0 < low < SLOW_RANGE * speed.top_rpm:
+        out.append(
+            f"rotor.speed: the lowest steady speed {low:g} rpm is under {SLOW_RANGE:.0%} of "
+            f"the highest ({speed.top_rpm:g} rpm) — rad/s typed as rpm? (variable-speed "
+            "rotors run down to 30–70 % of rated)"
+        )
     if speed.overspeed > 1.5 * speed.top_rpm:
         out.append(
             f"rotor.speed: overspeed {speed.overspeed:g} rpm is more than 150 % of the "

@@ -226,10 +226,11 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
         "wtvib": 1,
         "turbine": {
             "name": path.stem.replace("_ElastoDyn", ""),
-            "rotor_diameter_m": q(2 * tip, "2 × TipRad"),
+            "rotor_diameter_m": q(2 * tip, "2 × TipRad", "derived"),
             "hub_height_m": q(
                 main.num("TowerHt") + head["hub_above_top"],
                 "TowerHt + Twr2Shft + OverHang·sin(ShftTilt)",
+                "derived",
             ),
         },
         "sources": {"deck": source},
@@ -240,7 +241,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "speed": operating["speed"],
         },
         "tower": {
-            "height_m": q(tower_height, "TowerHt − TowerBsHt"),
+            "height_m": q(tower_height, "TowerHt − TowerBsHt", "derived"),
             "damping_ratio": main_damping(tower, "TwrFADmp(1)"),
             "distributed": {
                 "height_m": _list(frac * tower_height),
@@ -255,7 +256,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             },
         },
         "tower_head": {
-            "mass_kg": q(head["mass"], "NacMass + HubMass + blades + YawBrMass"),
+            "mass_kg": q(head["mass"], "NacMass + HubMass + blades + YawBrMass", "derived"),
             "cm_downwind_m": q(head["x"], "mass-weighted over the parts", "derived"),
             "cm_above_top_m": q(head["z"], "mass-weighted over the parts", "derived"),
             "inertia_pitch_kgm2": q(
@@ -274,7 +275,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             ),
         },
         "blade": {
-            "length_m": q(length, "TipRad − HubRad"),
+            "length_m": q(length, "TipRad − HubRad", "derived"),
             "mass_kg": q(float(np.trapezoid(bmass, span)), "∫ BMassDen·AdjBlMs", "derived"),
             "damping_ratio": main_damping(blade, "BldFlDmp(1)"),
             "structure": structure,
@@ -306,8 +307,11 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "apex_downwind_m": q(
                 main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
                 "OverHang·cos(ShftTilt)",
+                "derived",
             ),
-            "apex_above_top_m": q(head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)"),
+            "apex_above_top_m": q(
+                head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)", "derived"
+            ),
             "hub_mass_kg": q(main.num("HubMass"), "HubMass"),
         },
         "assumptions": [
@@ -512,8 +516,11 @@ def _list(a: np.ndarray) -> list[float]:
 
 def _quantity(source_key_text: str):  # type: ignore[no-untyped-def]
     def q(value: float, note: str, provenance: str = "published") -> dict[str, Any]:
+        # a value computed from the deck's numbers (derived) keeps the deck's precision,
+        # six digits: TowerHt + Twr2Shft + OverHang·sin(ShftTilt) is 90.0, not 90.00000339
+        digits = 6 if provenance == "derived" else 10
         return {
-            "value": float(f"{value:.10g}"),
+            "value": float(f"{value:.{digits}g}"),
             "provenance": provenance,
             "source": "deck",
             "note": note,
