@@ -293,12 +293,13 @@ def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, l
     """Mark the isolated modes a coupled mode stands for (``replaces``: shown, not judged;
     the first coupled mode of each wins) and give every mode without its own damping its
     subsystem's default, saying where it came from."""
-    present = {m.id for ms in built.values() for m in ms}
+    present = {m.id: m for ms in built.values() for m in ms}
     replaced: dict[str, str] = {}
     for ms in built.values():
         for m in ms:
             if m.replaces in present and m.replaces not in replaced:
                 replaced[m.replaces] = m.id
+    stands_for = {v: present[k] for k, v in replaced.items()}
     out = {}
     for sub in SUBSYSTEMS:
         damping = sub.default_damping(spec)
@@ -308,10 +309,20 @@ def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, l
                 superseded_by=replaced.get(m.id),
                 damping_ratio=damping.ratio if m.damping_ratio is None else m.damping_ratio,
                 damping_source=damping.source if m.damping_ratio is None else None,
+                band_hz=m.band_hz or _band_of(m, stands_for.get(m.id)),
             )
             for m in built[sub.NAME]
         ]
     return out
+
+
+def _band_of(mode: Mode, isolated: Mode | None) -> tuple[float, float] | None:
+    """A coupled mode's soil band: its isolated counterpart's, as factors (the coupled
+    model is solved with the nominal soil only; stated where it is used)."""
+    factors = isolated.band_factors() if isolated is not None else None
+    if factors is None:
+        return None
+    return mode.frequency_hz * factors[0], mode.frequency_hz * factors[1]
 
 
 def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:

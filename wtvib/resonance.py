@@ -82,8 +82,18 @@ def assess(
 ) -> Finding:
     """Judge one mode against one excitation line over 0 → overspeed."""
 
+    band = mode.band_factors()
+
     def sep(omega: NDArray[np.float64]) -> NDArray[np.float64]:
-        return rule.separation(exc.frequency_hz(omega), mode.frequency_at(omega))
+        f_e, f_n = exc.frequency_hz(omega), mode.frequency_at(omega)
+        s = rule.separation(f_e, f_n)
+        if band is None:
+            return s
+        # a frequency band (lower/upper-bound soil): the line's separation from the band —
+        # none where the line lies in it, else from its nearer end
+        lo, hi = band[0] * f_n, band[1] * f_n
+        ends = np.minimum(rule.separation(f_e, lo), rule.separation(f_e, hi))
+        return np.where((f_e - lo) * (f_e - hi) <= 0, 0.0, np.minimum(s, ends))
 
     def gap(omega: float) -> float:
         return float(sep(np.array([omega]))[0] - rule.margin * (1.0 - 1e-9))
@@ -460,6 +470,9 @@ def _span(iv: Interval) -> str:
 def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
     whirl = f.whirl if f.whirl not in (None, "fixed") else None
     name = f"{f.mode.id} ({f.natural_hz:.3g} Hz{', ' + whirl if whirl else ''})"
+    if f.mode.band_hz is not None:
+        lo, hi = f.mode.band_hz
+        name += f" [soil band {lo:.3g}–{hi:.3g} Hz at standstill]"
     need = f"needs {rule.margin:.0%}"
     exc = f.excitation.id
     if f.driven_by and f.driven_by != exc:

@@ -137,6 +137,15 @@ class Mode:
     origin: str = "given"  # given (in the spec), computed (a subsystem model) or coupled
     replaces: str | None = None  # the isolated mode a coupled mode stands for (if it exists)
     operating: OperatingDamping | None = field(default=None, compare=False)  # in operation
+    #: The standstill frequency's band [Hz] with lower- and upper-bound inputs (a monopile's
+    #: soil): judged as a band — a line anywhere in it, or within the margin of its ends.
+    band_hz: tuple[float, float] | None = None
+
+    def band_factors(self) -> tuple[float, float] | None:
+        """The band as factors on the frequency (applied along the curve)."""
+        if self.band_hz is None or self.frequency_hz <= 0:
+            return None
+        return self.band_hz[0] / self.frequency_hz, self.band_hz[1] / self.frequency_hz
 
     def damping_at(self, omega: float, default: float) -> float:
         """The damping ratio judged at rotor speed Ω [rad/s]: in operation where known (the
@@ -165,6 +174,11 @@ class Mode:
             **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
             **({"damping_source": self.damping_source} if self.damping_source else {}),
             **({"damping_in_operation": self._operating()} if self.operating else {}),
+            **(
+                {"band_hz": [round(self.band_hz[0], 6), round(self.band_hz[1], 6)]}
+                if self.band_hz is not None
+                else {}
+            ),
             **(
                 {
                     "whirl": {

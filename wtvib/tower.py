@@ -7,13 +7,13 @@ Hau, *Wind Turbines*, ch. 7.5.1 (tower stiffness, Figs. 7.19 and 7.20) and 7.5.2
 
 import functools
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, modal
+from . import beam, modal, soil
 from . import spec as spec_mod
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
@@ -270,10 +270,13 @@ def bending_modes(
     direction: Literal["fa", "ss"],
     gravity: bool = True,
     count: int = 2,
+    soil_factor: float = 1.0,
 ) -> modal.Modes:
     """Bending modes of the tower with its head, fore-aft or side-side (see
     :func:`bending_system`)."""
-    k, m = bending_system(b, head, point_masses, foundation, direction, gravity)
+    k, m = bending_system(
+        b, head, point_masses, foundation, direction, gravity, soil_factor=soil_factor
+    )
     return modal.solve(k, m, count)
 
 
@@ -300,8 +303,10 @@ def bending_system(
     direction: Literal["fa", "ss"],
     gravity: bool = True,
     head_inertia: bool = True,
+    soil_factor: float = 1.0,
 ) -> tuple[Array, Array]:
-    """K and M of the tower with its head in one bending plane, base condition applied.
+    """K and M of the tower with its head in one bending plane, base condition applied
+    (a monopile in soil: its mudline stiffness, every soil spring times ``soil_factor``).
 
     ``head_inertia=False`` leaves the head's inertia out of M (its weight still loads the
     tower): the coupled model (``wtvib.coupled``) adds the head's parts itself.
@@ -341,6 +346,10 @@ def bending_system(
         k[1, 1] += foundation.rocking_nm_rad or 0.0
         # no lateral spring given: the base is held laterally
         return _keep(k, m, slice(0 if foundation.lateral_n_m else 1, None))
+    if foundation.kind == "soil":
+        assert foundation.pile is not None
+        k[:2, :2] += soil.head_stiffness(foundation.pile, foundation.soil, soil_factor).matrix()
+        return k, m
     return _keep(k, m, slice(2, None))
 
 
@@ -385,13 +394,38 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
             direction,  # type: ignore[arg-type]
             t.gravity,
         )
+        bands = _soil_bands(spec, b, direction)
         for k, f in enumerate(res.frequency_hz, start=1):
             shape = res.shapes[0::2, k - 1]
-            out.append(_computed(spec, f"{direction}{k}", float(f), b.nodes, shape))
+            mode = _computed(spec, f"{direction}{k}", float(f), b.nodes, shape)
+            if bands is not None:
+                mode = replace(mode, band_hz=(float(bands[0][k - 1]), float(bands[1][k - 1])))
+            out.append(mode)
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
         out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
     return sorted(out, key=lambda m: m.frequency_hz)
+
+
+def _soil_bands(spec: Spec, b: Beam, direction: str) -> tuple[Array, Array] | None:
+    """The bending frequencies with lower- and upper-bound soil (a monopile in soil)."""
+    t = spec.tower
+    if t.foundation.kind != "soil":
+        return None
+    bounds = t.foundation.bounds
+    out = []
+    for factor in (bounds.lower, bounds.upper):
+        res = bending_modes(
+            b,
+            spec.tower_head,
+            t.point_masses,
+            t.foundation,
+            direction,  # type: ignore[arg-type]
+            t.gravity,
+            soil_factor=factor,
+        )
+        out.append(res.frequency_hz)
+    return out[0], out[1]
 
 
 def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
@@ -457,12 +491,31 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         if head
         else "no tower head given (bare tower)"
     )
-    base = (
-        "clamped base"
-        if t.foundation.kind == "clamped"
-        else f"base on springs (lateral {t.foundation.lateral_n_m or '—'} N/m, rocking "
-        f"{t.foundation.rocking_nm_rad or '—'} N·m/rad)"
-    )
+    f = t.foundation
+    if f.kind == "clamped":
+        base = "clamped base"
+    elif f.kind == "springs":
+        base = (
+            f"base on springs (lateral {f.lateral_n_m or '—'} N/m, rocking "
+            f"{f.rocking_nm_rad or '—'} N·m/rad)"
+        )
+    else:
+        assert f.pile is not None
+        k = soil.head_stiffness(f.pile, f.soil)
+        layers = ", ".join(
+            f"{x.kind} to {x.bottom_m:g} m"
+            + (f" (φ′ {x.friction_angle_deg:g}°)" if x.friction_angle_deg is not None else "")
+            for x in f.soil
+        )
+        base = (
+            f"a monopile in soil at the mudline (tower base): {f.pile.diameter_m:g} m × "
+            f"{f.pile.wall_thickness_m:g} m, {f.pile.embedded_length_m:g} m embedded, on "
+            f"initial p-y springs ({layers}; wtvib.soil) — K_L {k.lateral:.3g} N/m, K_LR "
+            f"{k.coupling:.3g} N, K_R {k.rocking:.3g} N·m/rad; lower- and upper-bound soil "
+            f"(×{f.bounds.lower:g}, ×{f.bounds.upper:g} on every spring) give each bending "
+            "mode a band, judged as a band (coupled tower modes take their isolated "
+            "counterpart's band as factors); torsion clamped at the mudline"
+        )
     table = t.sections.height_m if t.sections is not None else t.distributed.height_m  # type: ignore[union-attr]
     mesh = (
         f"a uniform mesh of {beam.MAX_STATION_NODES} elements sampling the table's "

@@ -1,7 +1,7 @@
 """The tower: given modes or its structure (tube sections or distributed properties),
 head and foundation."""
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -73,18 +73,90 @@ class PointMass(_Strict):
     mass_kg: Positive = Field(description="Mass. [kg]")
 
 
-class Foundation(_Strict):
-    """How the tower base is held: clamped, or on springs."""
+class Pile(_Strict):
+    """The embedded part of a monopile, below the mudline (the tower's base)."""
 
-    kind: Literal["clamped", "springs"] = Field("clamped", description="Base condition.")
+    embedded_length_m: Annotated[float, Field(gt=0, le=200)] = Field(
+        description="Pile length below the mudline. [m]"
+    )
+    diameter_m: Annotated[float, Field(gt=0, le=30)] = Field(description="Outer diameter. [m]")
+    wall_thickness_m: Positive = Field(description="Wall thickness. [m]")
+    youngs_modulus_pa: Positive = Field(2.1e11, description="Young's modulus (steel). [Pa]")
+
+    @model_validator(mode="after")
+    def _wall(self) -> "Pile":
+        if 2 * self.wall_thickness_m >= self.diameter_m:
+            raise ValueError("wall_thickness_m must be less than half the diameter")
+        return self
+
+
+class SoilLayer(_Strict):
+    """A soil layer down to ``bottom_m`` below the mudline, as an initial lateral (p-y)
+    stiffness per unit pile length E_py [N/m²]: sand from its friction angle (E_py = k·z,
+    k the initial modulus of subgrade reaction), or E_py given (clay or a site's own value:
+    at the layer's top plus a gradient with depth)."""
+
+    bottom_m: Annotated[float, Field(gt=0, le=500)] = Field(
+        description="Depth of the layer's bottom below the mudline. [m]"
+    )
+    kind: Literal["sand", "modulus"] = Field(description="sand (friction angle) or modulus.")
+    friction_angle_deg: Annotated[float, Field(ge=25, le=45)] | None = Field(
+        None, description="Sand: effective friction angle φ′. [deg]"
+    )
+    modulus_pa: Annotated[float, Field(ge=0, le=1e11)] | None = Field(
+        None, description="E_py at the layer's top. [N/m²]"
+    )
+    gradient_pa_m: Annotated[float, Field(ge=0, le=1e10)] = Field(
+        0.0, description="Increase of E_py with depth in the layer. [N/m³]"
+    )
+
+    @model_validator(mode="after")
+    def _given(self) -> "SoilLayer":
+        if self.kind == "sand" and self.friction_angle_deg is None:
+            raise ValueError("a sand layer needs friction_angle_deg")
+        if self.kind == "modulus" and self.modulus_pa is None:
+            raise ValueError("a modulus layer needs modulus_pa")
+        return self
+
+
+class SoilBounds(_Strict):
+    """Lower- and upper-bound soil: factors on every layer's stiffness."""
+
+    lower: Annotated[float, Field(gt=0, le=1)] = Field(
+        0.5, description="Factor of the lower-bound soil (default 0.5: half as stiff). [-]"
+    )
+    upper: Annotated[float, Field(ge=1, le=10)] = Field(
+        2.0, description="Factor of the upper-bound soil (default 2: twice as stiff). [-]"
+    )
+
+
+class Foundation(_Strict):
+    """How the tower base is held: clamped, on springs, or a monopile in soil (the tower's
+    base is then the mudline)."""
+
+    kind: Literal["clamped", "springs", "soil"] = Field("clamped", description="Base condition.")
     lateral_n_m: Positive | None = Field(None, description="Lateral spring. [N/m]")
     rocking_nm_rad: Positive | None = Field(None, description="Rocking spring. [N·m/rad]")
     torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
+    pile: Pile | None = Field(None, description="The embedded pile (kind soil).")
+    soil: list[SoilLayer] = Field(
+        default_factory=list, max_length=50, description="Soil layers, top down (kind soil)."
+    )
+    bounds: SoilBounds = Field(default_factory=SoilBounds)
 
     @model_validator(mode="after")
     def _springs(self) -> "Foundation":
         if self.kind == "springs" and self.lateral_n_m is None and self.rocking_nm_rad is None:
             raise ValueError("a 'springs' foundation needs lateral_n_m and/or rocking_nm_rad")
+        if self.kind == "soil":
+            if self.pile is None or not self.soil:
+                raise ValueError("a 'soil' foundation needs pile and soil")
+            _increasing("bottom_m of the soil layers", [x.bottom_m for x in self.soil] + [1e9])
+            if self.soil[-1].bottom_m < self.pile.embedded_length_m:
+                raise ValueError(
+                    f"the soil layers end at {self.soil[-1].bottom_m:g} m, above the pile tip "
+                    f"at {self.pile.embedded_length_m:g} m"
+                )
         return self
 
 

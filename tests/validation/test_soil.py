@@ -1,0 +1,123 @@
+"""Monopile foundations (wtvib.soil) against closed forms (issue 23).
+
+Exact: a beam on a Winkler foundation of constant modulus k [N/m²] (Hetényi, Beams on
+Elastic Foundation, 1946, ch. 2: semi-infinite beam loaded at its end), head stiffness in
+the tower's convention (z up): K_L = 4EIβ³, K_LR = −2EIβ², K_R = 2EIβ, β = (k/4EI)^¼ — for
+a pile many times longer than 1/β; a pile much stiffer than its soil moves as a rigid body:
+K_L = kL, K_LR = −kL²/2, K_R = kL³/3 (the springs' energy ½∫k(u₀ + θ₀z)² dz).
+"""
+
+import math
+
+import pytest
+
+from wtvib import audit, soil, spec
+from wtvib.spec.tower import Pile, SoilLayer
+
+E = 2.1e11
+
+
+def pile(length: float, d: float = 6.0, t: float = 0.06) -> Pile:
+    return Pile(embedded_length_m=length, diameter_m=d, wall_thickness_m=t, youngs_modulus_pa=E)
+
+
+def uniform(k: float, bottom: float) -> list[SoilLayer]:
+    return [SoilLayer(bottom_m=bottom, kind="modulus", modulus_pa=k)]
+
+
+def test_a_long_pile_gives_hetenyis_semi_infinite_beam():
+    p, k = pile(80.0, d=2.0, t=0.02), 2.0e7
+    ei = E * math.pi / 64 * (2.0**4 - 1.96**4)
+    beta = (k / (4 * ei)) ** 0.25
+    assert 80.0 * beta > 8  # long: the far end does not matter
+    h = soil.head_stiffness(p, uniform(k, 80.0), elements=120)
+    assert h.lateral == pytest.approx(4 * ei * beta**3, rel=2e-3)
+    assert h.coupling == pytest.approx(-2 * ei * beta**2, rel=2e-3)
+    assert h.rocking == pytest.approx(2 * ei * beta, rel=2e-3)
+
+
+def test_a_stiff_short_pile_moves_as_a_rigid_body():
+    p, k, length = pile(5.0, d=8.0, t=0.3), 1.0e6, 5.0
+    h = soil.head_stiffness(p, uniform(k, length))
+    assert h.lateral == pytest.approx(k * length, rel=1e-4)
+    assert h.coupling == pytest.approx(-k * length**2 / 2, rel=1e-4)
+    assert h.rocking == pytest.approx(k * length**3 / 3, rel=1e-4)
+
+
+def test_sand_modulus_grows_linearly_with_depth_at_the_api_rate():
+    """Sand: E_py = k(φ′)·z; the fit of the API/DNV curve gives 21 MN/m³ at φ′ = 35°."""
+    assert soil.sand_subgrade_n_m3(35.0) == pytest.approx(21.0e6, rel=2e-3)
+    layers = [SoilLayer(bottom_m=40.0, kind="sand", friction_angle_deg=35.0)]
+    import numpy as np
+
+    z = np.array([1.0, 10.0, 30.0])
+    assert soil.modulus(layers, z) == pytest.approx(21.0e6 * z, rel=2e-3)
+
+
+def monopile_turbine(kind: str = "soil") -> spec.Spec:
+    foundation = (
+        {
+            "kind": "soil",
+            "pile": {"embedded_length_m": 45, "diameter_m": 10, "wall_thickness_m": 0.09},
+            "soil": [{"bottom_m": 60, "kind": "sand", "friction_angle_deg": 35}],
+        }
+        if kind == "soil"
+        else {"kind": "clamped"}
+    )
+    return spec.from_data(
+        {
+            "wtvib": 1,
+            "turbine": {"name": "monopile", "rotor_diameter_m": 240},
+            "rotor": {
+                "blades": 3,
+                "orientation": "upwind",
+                "hub": "rigid",
+                "speed": {"min_rpm": 5.0, "max_rpm": 7.56},
+            },
+            "tower": {
+                "sections": {
+                    "height_m": [0, 30, 145],
+                    "outer_diameter_m": [10, 10, 6.5],
+                    "wall_thickness_m": [0.06, 0.05, 0.025],
+                },
+                "material": {"youngs_modulus_pa": 2.0e11, "density_kg_m3": 7800},
+                "foundation": foundation,
+            },
+            "tower_head": {"mass_kg": 1.017e6, "cm_above_top_m": 4.0},
+        }
+    )
+
+
+def test_soil_lowers_the_tower_and_its_bounds_bracket_it():
+    """The same tower clamped (an upper bound, what wtvib did before) and on sand: the soil
+    lowers the first bending; lower-bound soil lowers it more, upper-bound less, and the
+    clamped value stays above the upper bound."""
+    clamped = {m.id: m for m in audit.run(monopile_turbine("clamped")).modes}["tower.fa1"]
+    r = audit.run(monopile_turbine())
+    fa1 = {m.id: m for m in r.modes}["tower.fa1"]
+    assert fa1.band_hz is not None
+    lo, hi = fa1.band_hz
+    assert lo < fa1.frequency_hz < hi < clamped.frequency_hz
+    assert any("monopile in soil" in a for a in r.assumptions)
+
+
+def test_the_band_is_judged_not_only_its_middle():
+    """A lowest speed whose 3P sits 10.7 % above the nominal first bending (clear of the 10 %
+    margin) but 9.3 % above the upper-bound soil's: judged on the band it fails; with the
+    bounds collapsed onto the nominal soil (×1, ×1) it does not."""
+    base = monopile_turbine()
+    fa1 = {m.id: m for m in audit.run(base).modes}["tower.fa1"]
+    assert fa1.band_hz is not None
+    x = 0.5 * (fa1.frequency_hz / 0.9 + fa1.band_hz[1] / 0.9)  # between the two limits
+    assert (x - fa1.frequency_hz) / x > 0.10 > (x - fa1.band_hz[1]) / x
+    rpm = 60 * x / 3
+
+    def judged(lower: float, upper: float) -> str:
+        d = base.model_dump()
+        d["rotor"]["speed"] = {"min_rpm": rpm, "max_rpm": 7.56}
+        d["tower"]["foundation"]["bounds"] = {"lower": lower, "upper": upper}
+        r = audit.run(spec.Spec.model_validate(d))
+        return next(c for c in r.checks if c.id == "tower.resonance.3P").status
+
+    assert judged(0.5, 2.0) == "fail"
+    assert judged(1.0, 1.0) != "fail"  # (info: 3P crosses it at start-up, below the range)
