@@ -45,6 +45,7 @@ class Options:
     rated: float | None = None
     head_mass: float | None = None
     clamped_base: bool = False
+    soil: Path | None = None
     blades: int | None = None
     margin: float | None = None
     rule: str | None = None
@@ -61,6 +62,7 @@ class Options:
             head_mass=self.head_mass,
             clamped_base=self.clamped_base,
             blades=self.blades,
+            soil=self.soil,
         )
 
     def settings(self, turbine: Any) -> Any:

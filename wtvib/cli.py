@@ -75,6 +75,10 @@ ClampedOption = Annotated[
         "report's headline; platform and moorings are not modelled).",
     ),
 ]
+SoilOption = Annotated[
+    Path | None,
+    typer.Option(help="Soil profile (YAML: soil layers, bounds) for a windIO monopile."),
+]
 BladesOption = Annotated[
     int | None,
     typer.Option(min=1, max=10, help="Number of blades, for Campbell results that do not say."),
@@ -91,6 +95,7 @@ def _options(
     rated: float | None,
     head_mass: float | None,
     clamped_base: bool,
+    soil: Path | None,
     blades: int | None,
     margin: float | None,
     rule: RuleKind | None,
@@ -103,6 +108,7 @@ def _options(
         rated=rated,
         head_mass=head_mass,
         clamped_base=clamped_base,
+        soil=soil,
         blades=blades,
         margin=margin,
         rule=rule.value if rule is not None else None,
@@ -119,6 +125,7 @@ RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
     ("rated", RatedOption, None),
     ("head_mass", HeadMassOption, None),
     ("clamped_base", ClampedOption, False),
+    ("soil", SoilOption, None),
     ("blades", BladesOption, None),
     ("margin", MarginOption, None),
     ("rule", RuleOption, None),

@@ -121,3 +121,41 @@ def test_the_band_is_judged_not_only_its_middle():
 
     assert judged(0.5, 2.0) == "fail"
     assert judged(1.0, 1.0) != "fail"  # (info: 3P crosses it at start-up, below the range)
+
+
+def test_iea15_monopile_on_soft_sand_against_clamped(tmp_path):
+    """IEA-15-240-RWT (windIO 2.x example): clamped at the mudline (what wtvib did before)
+    and on a soft sand profile given with --soil. The file's monopile reaches 45 m below the
+    30 m mudline (Gaertner et al. 2020: 30 m water, 45 m embedded); the soil lowers the
+    first bending (0.17 → 0.15 Hz here), the band brackets it, and the soft soil brings it
+    near 1P at overspeed (1P = 0.151 Hz at 9.07 rpm)."""
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    from wtvib import importers
+
+    path = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    profile = tmp_path / "soft.yaml"
+    profile.write_text(
+        "soil:\n  - {bottom_m: 10, kind: sand, friction_angle_deg: 30}\n"
+        "  - {bottom_m: 80, kind: sand, friction_angle_deg: 33}\n"
+    )
+    clamped = importers.load(path)
+    soft = importers.load(path, soil=profile)
+    pile = soft.tower.foundation.pile
+    assert pile is not None and pile.embedded_length_m == pytest.approx(45.0)
+    f = {m.id: m for m in audit.run(clamped).modes}["tower.fa1"].frequency_hz
+    fa1 = {m.id: m for m in audit.run(soft).modes}["tower.fa1"]
+    assert fa1.band_hz is not None
+    assert fa1.band_hz[0] < fa1.frequency_hz < fa1.band_hz[1] < f
+    assert 0.8 * f < fa1.frequency_hz < 0.95 * f
+
+
+def test_soil_is_refused_where_it_cannot_apply(tmp_path, shared):
+    from wtvib import importers
+
+    profile = tmp_path / "s.yaml"
+    profile.write_text("soil:\n  - {bottom_m: 50, kind: sand, friction_angle_deg: 35}\n")
+    deck = shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    with pytest.raises(spec.SpecError, match="--soil applies to windIO files"):
+        importers.load(deck, soil=profile)

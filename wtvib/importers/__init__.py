@@ -51,6 +51,7 @@ def to_data(
     head_mass: float | None = None,
     clamped_base: bool = False,
     blades: int | None = None,
+    soil: Path | None = None,
 ) -> dict[str, Any]:
     """The wtvib-format dictionary of any supported file (for ``wtvib convert``).
 
@@ -61,6 +62,12 @@ def to_data(
     text = "" if p.is_dir() else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
+    if soil is not None and kind != "windio":
+        raise SpecError(
+            "--soil applies to windIO files (their monopile); a wtvib spec gives its soil in "
+            "tower.foundation",
+            source=str(p),
+        )
     if kind == "openfast-lin":
         from . import openfast_lin
 
@@ -80,7 +87,7 @@ def to_data(
     elif kind == "windio":
         from . import windio
 
-        data = windio.to_spec_data(p, text, head_mass, clamped_base)
+        data = windio.to_spec_data(p, text, head_mass, clamped_base, _soil_profile(soil))
     else:
         doc = load_document(p, text)
         data = doc.data
@@ -95,19 +102,27 @@ def load(
     head_mass: float | None = None,
     clamped_base: bool = False,
     blades: int | None = None,
+    soil: Path | None = None,
 ) -> Spec:
     """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range,
-    ``blades`` the number of blades of Campbell results that do not say."""
+    ``blades`` the number of blades of Campbell results that do not say, ``soil`` a soil
+    profile (YAML: ``soil`` layers and optional ``bounds``) for a windIO monopile."""
     p = Path(path)
     text = "" if p.is_dir() else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
-    if kind == "wtvib" and rpm is None and rated is None:
+    if kind == "wtvib" and rpm is None and rated is None and soil is None:
         from ..spec import from_document
 
         return from_document(load_document(p, text)).fingerprinted(fingerprint(text))
     data = to_data(
-        p, rpm=rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base, blades=blades
+        p,
+        rpm=rpm,
+        rated=rated,
+        head_mass=head_mass,
+        clamped_base=clamped_base,
+        blades=blades,
+        soil=soil,
     )
     spec = from_data(data, source=str(p))
     if p.is_dir():  # a folder of results: the hash of its files' hashes, in order
@@ -179,3 +194,18 @@ def _with_speed(
     if "warnings" in data:
         out["warnings"] = warnings
     return out
+
+
+def _soil_profile(path: Path | None) -> dict[str, Any] | None:
+    """A soil profile file: YAML with ``soil`` (layers) and optional ``bounds``, the fields
+    of a spec's ``tower.foundation`` (validated there, with the file named)."""
+    if path is None:
+        return None
+    doc = load_document(Path(path), read_text(Path(path)))
+    data = doc.data
+    if not isinstance(data, dict) or "soil" not in data or set(data) - {"soil", "bounds"}:
+        raise SpecError(
+            "a soil profile holds 'soil' (layers) and optionally 'bounds', nothing else",
+            source=str(path),
+        )
+    return data

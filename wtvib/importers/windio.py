@@ -36,7 +36,11 @@ FLOATING = ("floating_platform", "mooring")
 
 
 def to_spec_data(
-    path: Path, text: str, head_mass: float | None = None, clamped_base: bool = False
+    path: Path,
+    text: str,
+    head_mass: float | None = None,
+    clamped_base: bool = False,
+    soil: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file (see :func:`_to_spec_data`).
 
@@ -45,7 +49,7 @@ def to_spec_data(
     length) is one line naming the file and what failed — never a traceback.
     """
     try:
-        return _to_spec_data(path, text, head_mass, clamped_base)
+        return _to_spec_data(path, text, head_mass, clamped_base, soil)
     except SpecError:
         raise
     except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
@@ -58,7 +62,11 @@ def to_spec_data(
 
 
 def _to_spec_data(
-    path: Path, text: str, head_mass: float | None = None, clamped_base: bool = False
+    path: Path,
+    text: str,
+    head_mass: float | None = None,
+    clamped_base: bool = False,
+    soil: dict[str, Any] | None = None,
 ) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file.
 
@@ -104,6 +112,24 @@ def _to_spec_data(
     where = speed_note.split(":")[0].removeprefix("Operating range from ")
     speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
     tower, tower_notes = reader.tower()
+    if soil is not None:  # a soil profile beside the file (--soil): the pile stands on it
+        pile = reader.embedded
+        if pile is None:
+            raise SpecError(
+                "--soil needs a monopile with an embedded part below the mudline; the file "
+                "has none",
+                source=str(path),
+            )
+        tower["foundation"] = {"kind": "soil", "pile": pile, **soil}
+        tower_notes = [
+            n.replace(
+                "the foundation is clamped at the mudline (rigid soil, the default soil "
+                "treatment: no soil springs are in the file), so frequencies are an upper "
+                "bound",
+                "the embedded pile stands on the soil profile given with --soil",
+            )
+            for n in tower_notes
+        ]
     notes += tower_notes
     structure, blade_mass, blade_len = reader.blade()
     if structure is None:
@@ -240,6 +266,7 @@ class _Reader:
         # head() when it assembles the head from its parts
         self.apex: dict[str, float] = {}
         self.hub: dict[str, float] = {}
+        self.embedded: dict[str, float] | None = None  # the monopile below the mudline
 
     def fail(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path))
@@ -313,6 +340,20 @@ class _Reader:
         if "monopile" in self.c:
             mz, mdia, mt, mmat, mfactor = self.member("monopile")
             mudline, how = self.mudline(mz)
+            # the part below the mudline: the pile a soil model (--soil) stands on
+            below = mz <= mudline + 1e-9
+            self.embedded = (
+                {
+                    "embedded_length_m": float(mudline - mz[0]),
+                    "diameter_m": float(np.interp(mudline, mz, mdia)),
+                    "wall_thickness_m": float(np.mean(mt[below])),
+                    "youngs_modulus_pa": float(
+                        mmat["E"] if not isinstance(mmat["E"], list) else mmat["E"][0]
+                    ),
+                }
+                if mudline - mz[0] > 1e-6
+                else None
+            )
             keep = mz >= mudline - 1e-9
             if mudline not in mz:
                 cut = np.interp(mudline, mz, np.arange(len(mz)))
