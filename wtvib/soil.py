@@ -15,6 +15,13 @@ degrees of freedom: K = [[K_L, K_LR], [K_LR, K_R]] at the mudline. Closed forms 
 reproduces (tests/validation/test_soil.py): a long pile in uniform springs (Hetényi 1946:
 K_L = 4EIβ³, K_LR = −2EIβ², K_R = 2EIβ, β = (E_py/4EI)^¼) and a rigid one (K_L = E_py·L,
 K_LR = −E_py·L²/2, K_R = E_py·L³/3).
+
+Cross-checks for quick estimates: the continuum closed forms of Shadlou & Bhattacharya
+(2016, Soil Dyn. Earthq. Eng. 88, 15–32) for a pile in homogeneous, parabolic or linear
+soil (:func:`shadlou`, coefficients as tabulated in Yu & Amdahl 2023, Marine Structures 92,
+103482, Table 1), and the pile clamped at an effective fixity depth (:func:`fixity_depth`,
+Davisson & Robinson 1965: 1.4·(EI/k)^¼ for a constant modulus, 1.8·(EI/n_h)^⅕ for one
+growing linearly with depth).
 """
 
 from dataclasses import dataclass
@@ -85,3 +92,48 @@ def head_stiffness(
     )
     # the pile's rotation is du/d(depth) = −du/dz of the tower: the coupling changes sign
     return HeadStiffness(float(condensed[0, 0]), -float(condensed[0, 1]), float(condensed[1, 1]))
+
+
+#: Shadlou & Bhattacharya (2016) via Yu & Amdahl (2023) Table 1: (a, b) of
+#: K = f(ν)·E_so·r^n·a·x^b, x = E_pe/E_so (flexible) or L/D (rigid), n = 1, 2, 3 for K_L,
+#: K_LR (negative), K_R.
+SHADLOU = {
+    "flexible": {
+        "homogeneous": ((2.9, 0.186), (1.2, 0.5), (1.5, 0.73)),
+        "parabolic": ((2.03, 0.27), (1.17, 0.52), (1.42, 0.76)),
+        "linear": ((1.58, 0.34), (1.07, 0.567), (1.38, 0.78)),
+    },
+    "rigid": {
+        "homogeneous": ((6.4, 0.62), (7.1, 1.56), (13.2, 2.5)),
+        "parabolic": ((5.33, 1.07), (7.2, 2.0), (13.0, 3.0)),
+        "linear": ((4.7, 1.53), (7.1, 2.5), (12.7, 3.45)),
+    },
+}
+
+
+def shadlou(
+    pile: "Pile", soil_modulus_pa: float, profile: str, behaviour: str, poisson: float = 0.3
+) -> HeadStiffness:
+    """The closed-form mudline stiffness of Shadlou & Bhattacharya (2016) for a pile in
+    soil of Young's modulus E_so (at one diameter's depth for parabolic and linear
+    profiles), tower convention."""
+    d = pile.diameter_m
+    r = d / 2
+    i = np.pi / 64 * (d**4 - (d - 2 * pile.wall_thickness_m) ** 4)
+    e_pe = pile.youngs_modulus_pa * i / (np.pi * d**4 / 64)  # an equivalent solid pile
+    x = e_pe / soil_modulus_pa if behaviour == "flexible" else pile.embedded_length_m / d
+    f_nu = 1.0 + 0.6 * abs(poisson - 0.25)
+    (a1, b1), (a2, b2), (a3, b3) = SHADLOU[behaviour][profile]
+    e = f_nu * soil_modulus_pa
+    return HeadStiffness(e * r * a1 * x**b1, -e * r**2 * a2 * x**b2, e * r**3 * a3 * x**b3)
+
+
+def fixity_depth(pile: "Pile", modulus_pa: float = 0.0, gradient_pa_m: float = 0.0) -> float:
+    """Depth below the mudline at which a pile clamped there has the soil-supported pile's
+    lateral flexibility (Davisson & Robinson 1965): 1.4·R, R = (EI/k)^¼ for a constant
+    E_py = k, or 1.8·T, T = (EI/n_h)^⅕ for E_py = n_h·z [m]."""
+    d, t = pile.diameter_m, pile.wall_thickness_m
+    ei = pile.youngs_modulus_pa * np.pi / 64 * (d**4 - (d - 2 * t) ** 4)
+    if gradient_pa_m > 0:
+        return float(1.8 * (ei / gradient_pa_m) ** 0.2)
+    return float(1.4 * (ei / modulus_pa) ** 0.25)

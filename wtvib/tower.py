@@ -344,6 +344,8 @@ def bending_system(
     if foundation.kind == "springs":
         k[0, 0] += foundation.lateral_n_m or 0.0
         k[1, 1] += foundation.rocking_nm_rad or 0.0
+        k[0, 1] += foundation.coupling_n or 0.0
+        k[1, 0] += foundation.coupling_n or 0.0
         # no lateral spring given: the base is held laterally
         return _keep(k, m, slice(0 if foundation.lateral_n_m else 1, None))
     if foundation.kind == "soil":

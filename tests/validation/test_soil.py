@@ -159,3 +159,62 @@ def test_soil_is_refused_where_it_cannot_apply(tmp_path, shared):
     deck = shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
     with pytest.raises(spec.SpecError, match="--soil applies to windIO files"):
         importers.load(deck, soil=profile)
+
+
+@pytest.mark.parametrize(
+    ("behaviour", "published"),
+    [
+        ("flexible", (1.31e9, -18.7e9, 469e9)),
+        ("rigid", (2.25e9, -47.7e9, 1700e9)),
+    ],
+)
+def test_shadlou_closed_form_reproduces_yu_and_amdahl_table_9(behaviour, published):
+    """Yu & Amdahl (2023), Marine Structures 92, 103482, Table 9: the DTU 10 MW monopile
+    (D 9 m, wall 0.11 m, 42 m embedded, E 210 GPa) in homogeneous soil of E_so = 30 MPa,
+    ν 0.3, by Shadlou & Bhattacharya's formulas — K_L, K_LR, K_R to 5 % (the table rounds)."""
+    p = Pile(embedded_length_m=42, diameter_m=9, wall_thickness_m=0.11, youngs_modulus_pa=2.1e11)
+    h = soil.shadlou(p, 30e6, "homogeneous", behaviour)
+    assert (h.lateral, h.coupling, h.rocking) == pytest.approx(published, rel=0.05)
+
+
+def test_winkler_closed_form_and_fixity_depth_agree_on_the_tower_frequency():
+    """Three ways to put the same tower on the same soil (a constant E_py = 50 MN/m²): the
+    Winkler pile (wtvib.soil), Shadlou & Bhattacharya's closed form with E_so = E_py as
+    mudline springs, and the pile clamped at Davisson & Robinson's fixity depth 1.4·R —
+    within 6 % of each other, all 15 % or more below the tower clamped at the mudline."""
+    base = monopile_turbine()
+    p = Pile(embedded_length_m=45, diameter_m=10, wall_thickness_m=0.09)
+    k = 5e7
+
+    def first(foundation: dict, extend: float = 0.0) -> float:
+        d = base.model_dump()
+        d["tower"]["foundation"] = foundation
+        if extend:  # the pile above the fixity depth, as a tower section
+            sec = d["tower"]["sections"]
+            sec["height_m"] = [0.0] + [h + extend for h in sec["height_m"]]
+            sec["outer_diameter_m"] = [10.0, *sec["outer_diameter_m"]]
+            sec["wall_thickness_m"] = [0.09, *sec["wall_thickness_m"]]
+        r = audit.run(spec.Spec.model_validate(d))
+        return next(m.frequency_hz for m in r.modes if m.id == "tower.fa1")
+
+    winkler = first(
+        {
+            "kind": "soil",
+            "pile": p.model_dump(),
+            "soil": [{"bottom_m": 60, "kind": "modulus", "modulus_pa": k}],
+        }
+    )
+    h = soil.shadlou(p, k, "homogeneous", "flexible")
+    closed = first(
+        {
+            "kind": "springs",
+            "lateral_n_m": h.lateral,
+            "rocking_nm_rad": h.rocking,
+            "coupling_n": h.coupling,
+        }
+    )
+    fixity = first({"kind": "clamped"}, soil.fixity_depth(p, modulus_pa=k))
+    clamped = first({"kind": "clamped"})
+    for f in (closed, fixity):
+        assert f == pytest.approx(winkler, rel=0.06)
+    assert max(winkler, closed, fixity) < 0.9 * clamped

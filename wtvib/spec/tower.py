@@ -137,6 +137,13 @@ class Foundation(_Strict):
     kind: Literal["clamped", "springs", "soil"] = Field("clamped", description="Base condition.")
     lateral_n_m: Positive | None = Field(None, description="Lateral spring. [N/m]")
     rocking_nm_rad: Positive | None = Field(None, description="Rocking spring. [N·m/rad]")
+    coupling_n: float | None = Field(
+        None,
+        ge=-1e15,
+        le=1e15,
+        description="Lateral-rocking coupling K_LR of the springs (a pile head's: negative, "
+        "e.g. wtvib.soil.shadlou). [N]",
+    )
     torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
     pile: Pile | None = Field(None, description="The embedded pile (kind soil).")
     soil: list[SoilLayer] = Field(
@@ -148,6 +155,13 @@ class Foundation(_Strict):
     def _springs(self) -> "Foundation":
         if self.kind == "springs" and self.lateral_n_m is None and self.rocking_nm_rad is None:
             raise ValueError("a 'springs' foundation needs lateral_n_m and/or rocking_nm_rad")
+        if self.coupling_n is not None:
+            kl, kr = self.lateral_n_m, self.rocking_nm_rad
+            if kl is None or kr is None or self.coupling_n**2 >= kl * kr:
+                raise ValueError(
+                    "coupling_n needs lateral_n_m and rocking_nm_rad with K_LR² < K_L·K_R "
+                    "(a stable spring)"
+                )
         if self.kind == "soil":
             if self.pile is None or not self.soil:
                 raise ValueError("a 'soil' foundation needs pile and soil")
