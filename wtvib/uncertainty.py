@@ -14,6 +14,7 @@ E. B. Wilson, "Probable inference, the law of succession, and statistical infere
 J. Am. Stat. Assoc. 22, 1927 (confidence interval of a probability).
 """
 
+import copy
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -29,6 +30,9 @@ from .rules import MarginRule
 from .spec import Quantity, Spec, from_data
 
 Array = NDArray[np.float64]
+
+#: Soil and pile inputs (a monopile in soil): sampled one by one, not linear in the tower.
+SOIL = "tower.foundation."
 
 #: Tower and head inputs the fast (linear) tower path accepts, by path prefix.
 LINEAR_TOWER = (
@@ -130,7 +134,11 @@ def sample_chunk(
     skipped = []
     nominal = nominal if nominal is not None else nominal_of(spec)
     tower_paths = [p for p in factors if p.startswith(LINEAR_TOWER)]
-    if tower_paths and spec.tower.has_structure:
+    soil_paths = [p for p in factors if p.startswith(SOIL)]
+    if soil_paths and spec.tower.has_structure:  # not linear: every sample solved anew
+        tower_paths += soil_paths
+        out.update(_tower_samples_direct(spec, {p: factors[p] for p in tower_paths}))
+    elif tower_paths and spec.tower.has_structure:
         out.update(_tower_samples(spec, {p: factors[p] for p in tower_paths}))
     for p, f in factors.items():
         mode = _path_of_mode(p)
@@ -139,6 +147,42 @@ def sample_chunk(
         elif mode is None and p not in tower_paths:
             skipped.append(p)
     return Samples(out, tuple(skipped))
+
+
+def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
+    """fa1 and ss1 for every sample, each solved with its own inputs (soil parameters enter
+    the mudline stiffness non-linearly)."""
+    n = len(next(iter(factors.values())))
+    data = spec.model_dump()
+    out: dict[str, list[float]] = {"tower.fa1": [], "tower.ss1": []}
+    for i in range(n):
+        d = copy.deepcopy(data)
+        for path, f in factors.items():
+            _scale(d, path, float(f[i]))
+        s = from_data(d)
+        b = tower.discretise(s.tower)
+        for name, direction in (("tower.fa1", "fa"), ("tower.ss1", "ss")):
+            stiff, mass = tower.bending_system(
+                b,
+                s.tower_head,
+                s.tower.point_masses,
+                s.tower.foundation,
+                direction,  # type: ignore[arg-type]
+                s.tower.gravity,
+            )
+            out[name].append(float(modal.solve(stiff, mass, 1).frequency_hz[0]))
+    return {k: np.asarray(v) for k, v in out.items()}
+
+
+def _scale(data: Any, path: str, factor: float) -> None:
+    """Multiply the number at a dotted path (``tower.foundation.soil[0].modulus_pa``)."""
+    keys: list[Any] = [
+        int(k) if k.isdigit() else k for k in path.replace("]", "").replace("[", ".").split(".")
+    ]
+    node = data
+    for k in keys[:-1]:
+        node = node[k]
+    node[keys[-1]] = node[keys[-1]] * factor
 
 
 def _tower_samples(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
@@ -277,9 +321,10 @@ def sensitivities(
         if mode is not None:
             out[p] = {mode: 1.0}
             continue
-        if not (p.startswith(LINEAR_TOWER) and spec.tower.has_structure):
+        if not (p.startswith((*LINEAR_TOWER, SOIL)) and spec.tower.has_structure):
             continue  # not propagated (listed in not_propagated)
-        found = _tower_samples(spec, {p: np.array([1 + step, 1 - step])})
+        solve = _tower_samples_direct if p.startswith(SOIL) else _tower_samples
+        found = solve(spec, {p: np.array([1 + step, 1 - step])})
         out[p] = {
             k: round(float(f[0] - f[1]) / (2 * step * base[k]), 4)
             for k, f in found.items()
