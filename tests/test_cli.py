@@ -334,3 +334,18 @@ def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_
         "version": __version__,
         "input": {"file": str(path), "sha256": hashlib.sha256(path.read_bytes()).hexdigest()},
     }
+
+
+def test_check_draws_the_main_figures_and_the_detail_on_request(tmp_path):
+    """Issue 20: check writes the diagrams a reader looks at first (Campbell, damping);
+    the detail figures (flutter, stability chart, stall) with --figures all."""
+    spec_file = TURBINES / "stall-rotor-1mw.yaml"
+    main, every = tmp_path / "main", tmp_path / "all"
+    assert runner.invoke(app, ["check", str(spec_file), "-o", str(main)]).exit_code in (0, 1)
+    args = ["check", str(spec_file), "-o", str(every), "--figures", "all"]
+    assert runner.invoke(app, args).exit_code in (0, 1)
+    names = {p.name.split(".", 1)[1] for p in main.iterdir()}
+    assert names == {"campbell.png", "damping.png"}
+    assert {"blade-flutter.png", "blade-stall.png"} <= {
+        p.name.split(".", 1)[1] for p in every.iterdir()
+    }

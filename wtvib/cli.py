@@ -42,6 +42,11 @@ class Format(StrEnum):
     json = "json"
 
 
+class Figures(StrEnum):
+    main = "main"
+    all = "all"
+
+
 class RuleKind(StrEnum):
     band = "band"
     ratio = "ratio"
@@ -248,6 +253,10 @@ def check(
     detail: Annotated[
         bool, typer.Option("--detail", help="Print the tables of modes and checks too.")
     ] = False,
+    figures: Annotated[
+        Figures,
+        typer.Option(help="main: the Campbell diagrams and damping; all: the detail figures too."),
+    ] = Figures.main,
     uncertainty: Annotated[
         bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
     ] = False,
@@ -280,7 +289,7 @@ def check(
         from .plots import diagrams, png_bytes
 
         folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
-        for suffix, fig in diagrams(report).items():
+        for suffix, fig in diagrams(report, detail=figures is Figures.all).items():
             path = folder / f"{spec_file.stem}.{suffix}.png"
             written.append(write_atomic(path, png_bytes(fig), force=force))
     if campbell_csv is not None:

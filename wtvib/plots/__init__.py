@@ -26,9 +26,16 @@ def png_bytes(fig: "Figure") -> bytes:
     return buf.getvalue()
 
 
-def diagrams(report: "Report") -> dict[str, "Figure"]:
+#: The figures a reader looks at first: the Campbell diagrams and the damping in operation.
+#: The others (mode shapes, power sweep, Floquet and stability charts, V–g, energy shares)
+#: are detail: ``check --figures all``, and always in ``report`` and ``batch``.
+MAIN = ("campbell", "damping")
+
+
+def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:
     """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
-    shapes), keyed by file stem suffix."""
+    shapes …), keyed by file stem suffix; without ``detail`` only the main ones (MAIN), the
+    detail figures not even drawn."""
     from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
     from .campbell import DIAGRAMS, campbell_plot, damping_plot
     from .drivetrain import drivetrain_shapes_plot, power_curve_plot
@@ -43,16 +50,20 @@ def diagrams(report: "Report") -> dict[str, "Figure"]:
         for name, subs in DIAGRAMS.items()
         if present.intersection(subs)
     }
-    for name, fig in (
-        ("damping", damping_plot(report)),
-        ("drivetrain-modes", drivetrain_shapes_plot(report)),
-        ("drivetrain-power", power_curve_plot(report)),
-        ("floquet", floquet_plot(report)),
-        ("blade-flutter", flutter_plot(report)),
-        ("blade-stability", stability_chart_plot(report)),
-        ("blade-stall", stall_damping_plot(report)),
-        ("system-energy", coupled_energy_plot(report)),
-    ):
+    makers = {
+        "damping": damping_plot,
+        "drivetrain-modes": drivetrain_shapes_plot,
+        "drivetrain-power": power_curve_plot,
+        "floquet": floquet_plot,
+        "blade-flutter": flutter_plot,
+        "blade-stability": stability_chart_plot,
+        "blade-stall": stall_damping_plot,
+        "system-energy": coupled_energy_plot,
+    }
+    for name, make in makers.items():
+        if not detail and name not in MAIN:
+            continue
+        fig = make(report)
         if fig is not None:
             out[name] = fig
     return out
