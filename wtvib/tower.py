@@ -388,14 +388,7 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     b = discretise(t, elements)
     out: list[Mode] = []
     for direction in ("fa", "ss"):
-        res = bending_modes(
-            b,
-            spec.tower_head,
-            t.point_masses,
-            t.foundation,
-            direction,  # type: ignore[arg-type]
-            t.gravity,
-        )
+        res = _spec_bending(spec, b, direction)
         bands = _soil_bands(spec, b, direction)
         for k, f in enumerate(res.frequency_hz, start=1):
             shape = res.shapes[0::2, k - 1]
@@ -415,19 +408,22 @@ def _soil_bands(spec: Spec, b: Beam, direction: str) -> tuple[Array, Array] | No
     if t.foundation.kind != "soil":
         return None
     bounds = t.foundation.bounds
-    out = []
-    for factor in (bounds.lower, bounds.upper):
-        res = bending_modes(
-            b,
-            spec.tower_head,
-            t.point_masses,
-            t.foundation,
-            direction,  # type: ignore[arg-type]
-            t.gravity,
-            soil_factor=factor,
-        )
-        out.append(res.frequency_hz)
-    return out[0], out[1]
+    low, high = (_spec_bending(spec, b, direction, f) for f in (bounds.lower, bounds.upper))
+    return low.frequency_hz, high.frequency_hz
+
+
+def _spec_bending(spec: Spec, b: Beam, direction: str, soil_factor: float = 1.0) -> modal.Modes:
+    """The spec's tower bending modes in one plane (soil springs times ``soil_factor``)."""
+    t = spec.tower
+    return bending_modes(
+        b,
+        spec.tower_head,
+        t.point_masses,
+        t.foundation,
+        direction,  # type: ignore[arg-type]
+        t.gravity,
+        soil_factor=soil_factor,
+    )
 
 
 def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
