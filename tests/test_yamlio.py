@@ -68,3 +68,27 @@ def test_legal_yaml_stays_legal_and_a_recursive_alias_is_one_line():
         yamlio.parse("notes: &a [*a]\n", "t.yaml")
     with pytest.raises(SpecError, match="duplicate key 'x'"):
         yamlio.parse("a: {x: 1, x: 2}\n", "t.yaml")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "x: 8e-05",
+        "x: 1e5",
+        "x: 1.6e7",
+        "x: 1:30",
+        "x: on",
+        "x: 010",
+        "x: 0_5",
+        'x: "1e5"',
+        "x: [a, 0x1f, .inf, ~, 2.5, -3]",
+        "a: &b {c: 1}\nd:\n  <<: *b\n  e: 2",
+    ],
+)
+def test_the_fast_windio_reader_reads_plain_scalars_as_the_spec_reader_does(text):
+    """Issue 19: the fast reader of machine-written files (windIO) used PyYAML's YAML 1.1
+    resolvers: 8e-05 and 1e5 stayed text (an airfoil coordinate of the IEA-22 example file
+    failed the windIO schema), 1:30 was 90 and on was true. Both readers are YAML 1.2 now."""
+    from wtvib.yamlio import parse, parse_plain
+
+    assert parse_plain(text).data == parse(text).data

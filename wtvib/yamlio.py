@@ -82,6 +82,49 @@ class _Loader(yaml.SafeLoader):
         return super().compose_node(parent, index)
 
 
+class _TooLongError(ValueError):
+    """An integer of more digits than any value needs (converting one is costly)."""
+
+
+def core_plain(text: str) -> Any:
+    """A plain scalar's value by the YAML 1.2 core schema (null, bool, int, float, or the
+    text itself: 1:30, 0_5, on and 1e5-as-text surprises of YAML 1.1 do not happen)."""
+    if text in _CORE_NULL:
+        return None
+    if text in _CORE_BOOL:
+        return _CORE_BOOL[text]
+    if _CORE_INT.fullmatch(text):
+        if len(text) > MAX_DIGITS:
+            raise _TooLongError(f"a number of {len(text)} digits is not a spec value")
+        return int(text, 0) if text[:2] in ("0o", "0x") else int(text)
+    if _CORE_FLOAT.fullmatch(text):
+        low = text.lower()
+        return float(low.replace(".", "") if low.lstrip("+-") in (".inf", ".nan") else text)
+    return text
+
+
+_CORE_TAG = "tag:wtvib,2026:core"
+_FastLoader: Any = None
+
+
+def _fast_loader() -> Any:
+    """libyaml's safe loader resolving plain scalars by the YAML 1.2 core schema (PyYAML's
+    own resolvers are YAML 1.1: 1e5 and 8e-05 stay text, 1:30 is 90, on is true)."""
+    global _FastLoader
+    base = getattr(yaml, "CSafeLoader", None)
+    if _FastLoader is None and base is not None:
+
+        class Loader(base):  # type: ignore[misc, valid-type]
+            pass
+
+        Loader.yaml_implicit_resolvers = {}
+        Loader.add_implicit_resolver("tag:yaml.org,2002:merge", re.compile(r"^(?:<<)$"), ["<"])
+        Loader.add_implicit_resolver(_CORE_TAG, re.compile(r".*", re.S), None)
+        Loader.add_constructor(_CORE_TAG, lambda loader, node: core_plain(node.value))
+        _FastLoader = Loader
+    return _FastLoader
+
+
 def parse_plain(text: str, source: str | None = None) -> Document:
     """Parse a large machine-written document (windIO) without line tracking.
 
@@ -91,13 +134,13 @@ def parse_plain(text: str, source: str | None = None) -> Document:
     errors still name a line.
     """
     _guard_depth(text, source)
-    fast = getattr(yaml, "CSafeLoader", None)
+    fast = _fast_loader()
     if fast is None:
         return parse(text, source)
     try:
         data = yaml.load(text, Loader=fast)
-    except yaml.YAMLError:
-        return parse(text, source)
+    except (yaml.YAMLError, _TooLongError):
+        return parse(text, source)  # the careful path names the line
     if data is None:
         raise SpecError("the file is empty (no YAML document in it)", source=source)
     return Document(data, {}, source)
@@ -228,21 +271,12 @@ class _Walker:
     def _plain(self, node: yaml.ScalarNode, path: Path) -> Any:
         """A plain (unquoted) scalar by the YAML 1.2 core schema: 1.6e7 is a number, 1:30,
         0_5 and on are text (which the spec then refuses where a number or flag goes)."""
-        text = node.value
         if node.tag not in _IMPLICIT:
             raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
-        if text in _CORE_NULL:
-            return None
-        if text in _CORE_BOOL:
-            return _CORE_BOOL[text]
-        if _CORE_INT.fullmatch(text):
-            if len(text) > MAX_DIGITS:
-                raise self.fail(f"a number of {len(text)} digits is not a spec value", path, node)
-            return int(text, 0) if text[:2] in ("0o", "0x") else int(text)
-        if _CORE_FLOAT.fullmatch(text):
-            low = text.lower()
-            return float(low.replace(".", "") if low.lstrip("+-") in (".inf", ".nan") else text)
-        return text
+        try:
+            return core_plain(node.value)
+        except _TooLongError as exc:
+            raise self.fail(str(exc), path, node) from None
 
     def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[Hashable, Any]:
         if node.tag != _MAP_TAG:
