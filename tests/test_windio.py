@@ -73,16 +73,28 @@ def load_mutated(tmp_path, doc):  # type: ignore[no-untyped-def]
         ),
     ],
 )
-def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message):
+@pytest.mark.parametrize("schema", [False, True], ids=["own checks", "windIO schema"])
+def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message, schema, monkeypatch):
     """Issue 19: two thirds of ~750 single-key mutations of the IEA-15 2.x example ended in a
-    KeyError, TypeError or IndexError; blades: true was one blade."""
+    KeyError, TypeError or IndexError; blades: true was one blade. wtvib's own checks name
+    the field where the windIO schema is not at hand; with it (the windio package), the
+    schema refuses the file first, with field and line."""
+    from wtvib.importers import windio_schema
+
+    if not schema:
+        monkeypatch.setattr(windio_schema, "available", lambda: False)
+    elif not windio_schema.available():
+        pytest.skip("the windio package (its schema) is not installed")
     doc = iea15()
     mutate(doc)
-    with pytest.raises(SpecError, match=message):
+    with pytest.raises(SpecError, match="windIO 2.x schema refuses" if schema else message):
         load_mutated(tmp_path, doc)
 
 
-def test_a_negative_component_mass_is_refused(tmp_path):
+def test_a_negative_component_mass_is_refused(tmp_path, monkeypatch):
+    from wtvib.importers import windio_schema
+
+    monkeypatch.setattr(windio_schema, "available", lambda: False)  # wtvib's own check
     doc = iea15()
     comps = doc["components"]
     part = next(
@@ -115,3 +127,41 @@ def test_a_part_given_two_different_masses_is_warned_about():
     said = [w for w in iea22.warnings if "components.drivetrain.generator" in w]
     assert said and "508,040 kg" in said[0] and "1,269,142 kg" in said[0]
     assert not [w for w in load(examples / "IEA-15-240-RWT.yaml").warnings if "two masses" in w]
+
+
+@pytest.mark.parametrize(
+    ("edit", "where", "message"),
+    [
+        (
+            lambda d: d["assembly"].update(number_of_blades=True),
+            "assembly.number_of_blades",
+            "not of type 'integer'",
+        ),
+        (
+            lambda d: d["components"]["drivetrain"]["generator"].update(mass=-1.0),
+            "components.drivetrain.generator.mass",
+            "less than the minimum of 0",
+        ),
+    ],
+)
+def test_a_windio_file_is_checked_against_the_windio_schema_first(tmp_path, edit, where, message):
+    """Issue 19: `number_of_blades: true` was one blade and a −1 kg generator was taken
+    silently; the windIO 2.x schema (the windio package's, checked without importing windIO)
+    refuses both, one line with file, line and field, exit 2."""
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    import yaml
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    src = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    d = yaml.load(src.read_text(), Loader=yaml.CSafeLoader)
+    edit(d)
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(yaml.safe_dump(d, sort_keys=False))
+    result = CliRunner().invoke(app, ["check", str(bad), "--no-plot"])
+    assert result.exit_code == 2
+    line = result.output.strip().splitlines()[-1]
+    assert "bad.yaml:" in line and where in line and message in line and "schema" in line

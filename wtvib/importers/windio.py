@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..yamlio import parse_plain
+from ..yamlio import format_path, parse, parse_plain
 
 #: Index of the mass and polar inertia in a row-major upper triangle of the 6×6 mass matrix.
 _UT = {"mass": 0, "i_plr": 20}
@@ -92,6 +92,30 @@ def _to_spec_data(
     v2 = "outer_shape" in d["components"].get("tower", {})
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
     notes = [f"Imported from the {version} file {path.name}."]
+    if v2:  # the windIO schema first, then what wtvib needs (issue 19)
+        from . import windio_schema
+
+        if windio_schema.available():
+            found = windio_schema.problems(d)
+            if found:
+                bad, message = found[0]
+                more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
+                try:  # the line, from the careful reader (only on this error path)
+                    line = parse(text, str(path)).line_of(bad)
+                except SpecError:
+                    line = None
+                raise SpecError(
+                    f"the windIO 2.x schema refuses the file: {message}{more}",
+                    path=format_path(bad) or None,
+                    line=line,
+                    source=str(path),
+                )
+            notes.append("Checked against the windIO 2.x turbine schema (the windio package's).")
+        else:
+            notes.append(
+                "Not checked against the windIO schema (the windio package is not installed: "
+                "pip install 'wtvib[windio]'); wtvib's own checks apply."
+            )
     if doc.redefined_anchors:
         notes.append(
             "The file defines the YAML anchor(s) "
