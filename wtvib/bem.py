@@ -144,9 +144,9 @@ def _losses(r: Rotor, phi: Array) -> Array:
     s = np.maximum(np.abs(np.sin(phi)), 1e-9)
     f = np.ones_like(phi)
     if r.tip_loss:
-        x = r.blades / 2 * (r.tip_radius - r.radius) / (r.radius * s)
+        x = r.blades / 2 * (r.tip_radius - r.radius) / (np.maximum(r.radius, 1e-12) * s)
         f = f * (2 / np.pi) * np.arccos(np.clip(np.exp(-x), 0.0, 1.0))
-    if r.hub_loss:
+    if r.hub_loss and r.hub_radius > 0:  # no hub, no hub loss (and no 1/0)
         x = r.blades / 2 * (r.radius - r.hub_radius) / (r.hub_radius * s)
         f = f * (2 / np.pi) * np.arccos(np.clip(np.exp(-x), 0.0, 1.0))
     return np.maximum(f, 1e-6)

@@ -83,6 +83,11 @@ class Deck:
     def column(self, table: str, *names: str) -> np.ndarray:
         """A table column by any of its names; SpecError naming the file if it is absent."""
         found = self.optional_column(table, *names)
+        if found is None and table not in self.tables:
+            raise SpecError(
+                f"no {table} table (a table headed {table}); is the file cut short?",
+                source=str(self.path),
+            )
         if found is None:
             raise SpecError(f"the {table} table has no {names[0]} column", source=str(self.path))
         return found

@@ -296,9 +296,33 @@ class _Reader:
         return SpecError(message, source=str(self.path))
 
     def material(self, name: str) -> dict[str, Any]:
-        for m in self.d.get("materials", []):
-            if m.get("name") == name:
-                return dict(m)
+        """The named material, its E, G (where given) and ρ checked positive numbers; a
+        list-valued modulus (windIO's orthotropic [E1, E2, E3]) gives its first, axial,
+        component."""
+        for i, m in enumerate(self.d.get("materials", [])):
+            if not (isinstance(m, dict) and m.get("name") == name):
+                continue
+            out = dict(m)
+            for key, what in (("E", "Young's modulus"), ("G", "shear modulus"), ("rho", "density")):
+                if key not in m:
+                    if key == "G":
+                        continue
+                    raise self.fail(f"materials[{i}].{key} is missing (wtvib reads its {what})")
+                value = m[key]
+                if isinstance(value, list) and value:
+                    value = value[0]
+                if not (
+                    isinstance(value, (int, float))
+                    and not isinstance(value, bool)
+                    and math.isfinite(value)
+                    and value > 0
+                ):
+                    raise self.fail(
+                        f"materials[{i}].{key} ({name}): the {what} must be a positive number "
+                        f"(got {m[key]!r})"
+                    )
+                out[key] = float(value)
+            return out
         raise self.fail(f"material {name!r} is not in the file's materials")
 
     # -- rotor speed ------------------------------------------------------------------
@@ -344,8 +368,13 @@ class _Reader:
         axis = comp["reference_axis"] if self.v2 else shape["reference_axis"]
         grid = np.asarray(axis["z"]["grid"], float)
         z = np.asarray(axis["z"]["values"], float)
+        where = f"components.{name}.reference_axis.z.values"
+        if not np.all(np.isfinite(z)) or np.any(np.diff(z) < -1e-9):
+            raise self.fail(f"{where} must be finite and increase from the base up")
         keep = np.concatenate([[True], np.diff(z) > 0.01])  # drop 1 mm "step" duplicates
         grid, z = grid[keep], z[keep]
+        if len(z) < 2:
+            raise self.fail(f"{where}: the {name} has no length (all its stations at one height)")
         diameter = _at(shape["outer_diameter"], grid)
         layers = struct["layers"]
         thickness = sum(_at(layer["thickness"], grid) for layer in layers)
@@ -364,6 +393,18 @@ class _Reader:
         if "monopile" in self.c:
             mz, mdia, mt, mmat, mfactor = self.member("monopile")
             mudline, how = self.mudline(mz)
+            if not mz[0] - 1e-6 <= mudline < mz[-1]:
+                raise self.fail(
+                    f"{how} puts the mudline at z = {mudline:g} m, outside the monopile "
+                    f"(z = {mz[0]:g} … {mz[-1]:g} m)"
+                )
+            gap = z[0] - mz[-1]
+            if abs(gap) > max(0.5, 0.01 * (z[-1] - z[0])):
+                raise self.fail(
+                    f"the tower starts at z = {z[0]:g} m but the monopile ends at z = "
+                    f"{mz[-1]:g} m ({'a gap' if gap > 0 else 'an overlap'} of {abs(gap):g} m); "
+                    "components.tower and components.monopile reference_axis.z must meet"
+                )
             # the part below the mudline: the pile a soil model (--soil) stands on
             below = mz <= mudline + 1e-9
             self.embedded = (
@@ -371,9 +412,7 @@ class _Reader:
                     "embedded_length_m": float(mudline - mz[0]),
                     "diameter_m": float(np.interp(mudline, mz, mdia)),
                     "wall_thickness_m": float(np.mean(mt[below])),
-                    "youngs_modulus_pa": float(
-                        mmat["E"] if not isinstance(mmat["E"], list) else mmat["E"][0]
-                    ),
+                    "youngs_modulus_pa": mmat["E"],
                 }
                 if mudline - mz[0] > 1e-6
                 else None
@@ -414,19 +453,9 @@ class _Reader:
                 "wall_thickness_m": _list(t),
             },
             "material": {
-                "youngs_modulus_pa": float(mat["E"])
-                if not isinstance(mat["E"], list)
-                else float(mat["E"][0]),
-                **(
-                    {
-                        "shear_modulus_pa": float(
-                            mat["G"] if not isinstance(mat["G"], list) else mat["G"][0]
-                        )
-                    }
-                    if mat.get("G")
-                    else {}
-                ),
-                "density_kg_m3": float(mat["rho"]),
+                "youngs_modulus_pa": mat["E"],
+                **({"shear_modulus_pa": mat["G"]} if "G" in mat else {}),
+                "density_kg_m3": mat["rho"],
                 "mass_factor": factor,
             },
             "point_masses": masses,
