@@ -46,6 +46,7 @@ class _Kit:
         from reportlab import rl_config
 
         rl_config.invariant = 1  # reproducible files: no dates, fixed document id
+        rl_config.useA85 = 0  # binary streams: ASCII85 is pure Python (slow) and 25 % larger
         from reportlab.lib import colors
         from reportlab.lib.pagesizes import A4
         from reportlab.lib.styles import getSampleStyleSheet
