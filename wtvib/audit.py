@@ -218,6 +218,7 @@ def run(
     *,
     samples: int | None = None,
     seed: int = 0,
+    client: Any = None,
 ) -> Report:
     """Audit a turbine: every subsystem's modes against every excitation, plus the class.
 
@@ -231,16 +232,20 @@ def run(
         Monte Carlo samples of the spec's tolerances (``check --uncertainty``); none: skip.
     seed
         Seed of the Monte Carlo sampling (reproducible results).
+    client
+        A ``distributed.Client``: the samples drawn on its cluster (the same samples).
     """
     try:
-        return _run(spec, settings or spec.audit, samples, seed)
+        return _run(spec, settings or spec.audit, samples, seed, client)
     except (OverflowError, FloatingPointError) as exc:
         raise ModalError(
             f"a number in the spec is too large for the models ({exc}); check the magnitudes"
         ) from None
 
 
-def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) -> Report:
+def _run(
+    spec: Spec, settings: AuditSettings, samples: int | None, seed: int, client: Any
+) -> Report:
     rule = settings.margin_rule()
     op = operating_range(spec.rotor.speed)
     lines = excitations(spec)
@@ -284,7 +289,9 @@ def _run(spec: Spec, settings: AuditSettings, samples: int | None, seed: int) ->
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions)),
         warnings=tuple(suspicious(spec, all_modes) + _no_tolerance(spec, samples)),
-        uncertainty=_uncertainty(spec, samples, seed, all_modes, rule) if samples else None,
+        uncertainty=(
+            _uncertainty(spec, samples, seed, all_modes, rule, client) if samples else None
+        ),
         results=results,
     )
 
@@ -332,14 +339,18 @@ def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
 
 
 def _uncertainty(
-    spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule
+    spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule, client: Any = None
 ) -> dict[str, Any] | None:
     from . import uncertainty
 
     if not uncertainty.uncertain(spec):
         return None  # said in the warnings
     nominal = uncertainty.nominal_of(spec, modes)
-    drawn = uncertainty.sample(spec, samples, seed, nominal=nominal)
+    drawn = (
+        uncertainty.sample(spec, samples, seed, nominal=nominal)
+        if client is None
+        else uncertainty.sample_distributed(spec, samples, seed, client, nominal=nominal)
+    )
     out = uncertainty.summary(spec, drawn, modes, rule)
     out["seed"] = seed
     out["sensitivities"] = uncertainty.sensitivities(spec, nominal)

@@ -14,7 +14,7 @@ import json
 import os
 import time
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures import Executor, Future, ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -216,15 +216,17 @@ def run(
     plots: bool = True,
     on_done: Callable[[Item], None] | None = None,
     options: Options | None = None,
+    executor: Executor | None = None,
 ) -> list[Item]:
-    """Audit every input, in parallel on ``jobs`` processes; results in input order.
+    """Audit every input, in parallel on ``jobs`` processes (or on ``executor``: a Dask
+    cluster's, :mod:`wtvib.cluster`); results in input order.
 
     ``on_done`` is called in the parent process as each item completes (progress, writes).
     ``KeyboardInterrupt`` propagates after cancelling what has not started.
     """
     keys = output_keys(paths)
     jobs = jobs or os.cpu_count() or 1
-    if jobs == 1 or len(paths) < 2:
+    if executor is None and (jobs == 1 or len(paths) < 2):
         items = []
         for p, k in zip(paths, keys, strict=True):
             item = audit_one(str(p), k, plots, options)
@@ -233,7 +235,9 @@ def run(
             items.append(item)
         return items
     results: dict[int, Item] = {}
-    with ProcessPoolExecutor(max_workers=min(jobs, len(paths))) as pool:
+    own = executor is None
+    pool = executor or ProcessPoolExecutor(max_workers=min(jobs, len(paths)))
+    with pool if own else contextlib.nullcontext(pool):
         futures: dict[Future[Item], int] = {
             pool.submit(audit_one, str(p), k, plots, options): i
             for i, (p, k) in enumerate(zip(paths, keys, strict=True))
@@ -258,10 +262,13 @@ def run(
         except BaseException:
             # stop now: pending work is cancelled and running workers are ended (their
             # results would be thrown away), so Ctrl-C or SIGTERM returns at once
-            workers = list((getattr(pool, "_processes", None) or {}).values())
-            pool.shutdown(wait=False, cancel_futures=True)
-            for process in workers:
-                process.terminate()
+            for fut in futures:
+                fut.cancel()
+            if own:
+                workers = list((getattr(pool, "_processes", None) or {}).values())
+                pool.shutdown(wait=False, cancel_futures=True)
+                for process in workers:
+                    process.terminate()
             raise
     return [results[i] for i in range(len(paths))]
 

@@ -11,7 +11,7 @@ import inspect
 import json
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from enum import StrEnum
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
@@ -262,6 +262,10 @@ def check(
     ] = False,
     samples: Annotated[int, typer.Option(min=10, help="Monte Carlo samples.")] = 2000,
     seed: Annotated[int, typer.Option(help="Seed of the sampling (reproducible).")] = 0,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(help="Sample on a Dask scheduler (tcp://host:8786); needs --uncertainty."),
+    ] = None,
     campbell_csv: Annotated[
         Path | None,
         typer.Option(
@@ -281,9 +285,14 @@ def check(
     from . import audit
     from .outputs import write_atomic
 
+    if scheduler is not None and not uncertainty:
+        raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
-    report = audit.run(turbine, settings, samples=samples if uncertainty else None, seed=seed)
+    with _cluster(scheduler) as client:
+        report = audit.run(
+            turbine, settings, samples=samples if uncertainty else None, seed=seed, client=client
+        )
     written: list[Path] = []
     if plot:
         from .plots import diagrams, png_bytes
@@ -357,6 +366,10 @@ def batch_command(
     plots: Annotated[
         bool, typer.Option("--plots/--no-plots", help="Campbell PNGs and the PDF report.")
     ] = True,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(help="Audit on a Dask scheduler's workers (tcp://host:8786), not locally."),
+    ] = None,
     sort: Annotated[SortBy, typer.Option(help="Order of the summary table.")] = SortBy.file,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
     force: Annotated[
@@ -383,7 +396,12 @@ def batch_command(
     lock = batch.FolderLock(out) if out is not None else None
     writer = _BatchWriter(out, force) if out is not None else None
     done: list[batch.Item] = []
-    with lock or contextlib.nullcontext(), batch.terminate_as_interrupt() as stopped:
+    with (
+        lock or contextlib.nullcontext(),
+        _cluster(scheduler) as client,
+        batch.terminate_as_interrupt() as stopped,
+    ):
+        executor = client.get_executor() if client is not None else None
         with batch_progress(err, len(paths)) as advance:
 
             def on_done(item: batch.Item) -> None:
@@ -393,7 +411,14 @@ def batch_command(
                 advance(item)
 
             try:
-                items = batch.run(paths, jobs=jobs, plots=plots, on_done=on_done, options=options)
+                items = batch.run(
+                    paths,
+                    jobs=jobs,
+                    plots=plots,
+                    on_done=on_done,
+                    options=options,
+                    executor=executor,
+                )
             except KeyboardInterrupt:
                 if writer is not None:  # the summaries of what was completed
                     writer.finish(done, plots=False, interrupted=True)
@@ -411,6 +436,21 @@ def batch_command(
             Console(), batch.sort_items(items, sort.value), writer.written if writer else []
         )
     raise typer.Exit(batch.exit_code(items, strict))
+
+
+@contextlib.contextmanager
+def _cluster(address: str | None) -> Iterator[Any]:
+    """A Dask client on ``address`` for the command's duration (None: run locally)."""
+    if address is None:
+        yield None
+        return
+    from .cluster import connect
+
+    client = connect(address)
+    try:
+        yield client
+    finally:
+        client.close()
 
 
 class _BatchWriter:
