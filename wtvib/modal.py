@@ -54,6 +54,27 @@ def solve(k: Array, m: Array, count: int | None = None) -> Modes:
 
 def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     """:func:`solve` for a stack of same-sized problems, shape (p, n, n), in one call."""
+    a, inv_t = _standard_form(k, m)
+    w2, y = np.linalg.eigh(a)
+    _check_stable(w2)
+    top = w2.shape[-1] if count is None else min(count, w2.shape[-1])
+    hz = np.sqrt(np.clip(w2[:, :top], 0.0, None)) / (2.0 * np.pi)
+    shapes = inv_t @ y[:, :, :top]
+    return [Modes(hz[i], shapes[i]) for i in range(len(w2))]
+
+
+def frequencies_stacked(k: Array, m: Array, count: int) -> Array:
+    """The lowest ``count`` natural frequencies [Hz] of each problem of a stack, shape
+    (p, count): :func:`solve_stacked` without the mode shapes (eigenvalues only, half the
+    work — the Monte Carlo samples' path)."""
+    a, _ = _standard_form(k, m)
+    w2 = np.linalg.eigvalsh(a)
+    _check_stable(w2)
+    return np.sqrt(np.clip(w2[:, :count], 0.0, None)) / (2.0 * np.pi)
+
+
+def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
+    """L⁻¹ K L⁻ᵀ (symmetrised) and L⁻ᵀ for a stack, M = L Lᵀ."""
     if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m))):
         raise ModalError("the structural matrices hold NaN or infinite values")
     try:
@@ -65,20 +86,18 @@ def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     inv = np.linalg.inv(lower)
     inv_t = np.swapaxes(inv, -1, -2)
     a = inv @ k @ inv_t
-    w2, y = np.linalg.eigh(0.5 * (a + np.swapaxes(a, -1, -2)))
-    top = w2.shape[-1] if count is None else min(count, w2.shape[-1])
-    out = []
-    for i in range(len(w2)):
-        w = w2[i, :top]
-        scale = max(float(np.abs(w2[i]).max(initial=0.0)), 1.0)
-        if w[0] < -1e-8 * scale:
-            raise ModalError(
-                f"the structure is unstable (negative stiffness eigenvalue {w[0]:.3g}): "
-                "check stiffnesses and masses"
-            )
-        shapes = inv_t[i] @ y[i, :, :top]
-        out.append(Modes(np.sqrt(np.clip(w, 0.0, None)) / (2.0 * np.pi), shapes))
-    return out
+    return 0.5 * (a + np.swapaxes(a, -1, -2)), inv_t
+
+
+def _check_stable(w2: Array) -> None:
+    """ModalError where a problem's lowest eigenvalue is clearly negative (it buckles)."""
+    scale = np.maximum(np.abs(w2).max(axis=-1, initial=0.0), 1.0)
+    unstable = np.flatnonzero(w2[:, 0] < -1e-8 * scale)
+    if unstable.size:
+        raise ModalError(
+            f"the structure is unstable (negative stiffness eigenvalue "
+            f"{w2[unstable[0], 0]:.3g}): check stiffnesses and masses"
+        )
 
 
 def mac(a: NDArray[Any], b: NDArray[Any]) -> Array:

@@ -185,6 +185,19 @@ def _scale(data: Any, path: str, factor: float) -> None:
     node[keys[-1]] = node[keys[-1]] * factor
 
 
+#: nominal modes in the Ritz basis of the tower samples (with one mode per uncertain input)
+RITZ_TOWER = 3
+
+
+def _ritz_basis(k0: Array, m0: Array, perturbed: list[tuple[Array, Array]]) -> Array:
+    """An orthonormal basis of the nominal's lowest modes and the perturbed systems' first
+    (columns that add nothing dropped)."""
+    vectors = [modal.solve(k0, m0, RITZ_TOWER).shapes]
+    vectors += [modal.solve(k, m, 1).shapes for k, m in perturbed]
+    u, sv, _ = np.linalg.svd(np.concatenate(vectors, axis=1), full_matrices=False)
+    return np.asarray(u[:, sv > 1e-10 * sv[0]])
+
+
 def _tower_samples(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
     """fa1 and ss1 for every sample from the linearly decomposed tower matrices."""
     n = len(next(iter(factors.values())))
@@ -205,11 +218,18 @@ def _tower_samples(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
         k0, m0 = base[i]
         dk = np.stack([deltas[p][i][0] - k0 for p in factors])
         dm = np.stack([deltas[p][i][1] - m0 for p in factors])
+        # Rayleigh–Ritz on the nominal's lowest modes and the first mode of each input
+        # doubled: K and M are linear in the inputs, so every sample's reduced problem is
+        # an r × r sum of projected matrices (r ≤ 3 + inputs instead of the mesh's degrees of
+        # freedom); within 1e-9 of the full problem over ±50 % (tests)
+        q = _ritz_basis(k0, m0, [deltas[p][i] for p in factors])
+        k0r, m0r = q.T @ k0 @ q, q.T @ m0 @ q
+        dkr = np.einsum("ai,jab,bk->jik", q, dk, q)
+        dmr = np.einsum("ai,jab,bk->jik", q, dm, q)
         s = np.stack([factors[p] for p in factors], axis=1) - 1.0
-        k = k0 + np.einsum("nj,jab->nab", s, dk)
-        m = m0 + np.einsum("nj,jab->nab", s, dm)
-        f = np.array([r.frequency_hz[0] for r in modal.solve_stacked(k, m, 1)])
-        out[name] = f
+        k = k0r + np.einsum("nj,jab->nab", s, dkr)
+        m = m0r + np.einsum("nj,jab->nab", s, dmr)
+        out[name] = modal.frequencies_stacked(k, m, 1)[:, 0]
     assert all(len(v) == n for v in out.values())
     return out
 
