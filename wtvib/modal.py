@@ -68,7 +68,7 @@ def frequencies_stacked(k: Array, m: Array, count: int) -> Array:
     (p, count): :func:`solve_stacked` without the mode shapes (eigenvalues only, half the
     work — the Monte Carlo samples' path)."""
     a, _ = _standard_form(k, m)
-    w2 = np.linalg.eigvalsh(a)
+    w2 = np.asarray(np.linalg.eigvalsh(a), dtype=float)
     _check_stable(w2)
     return np.sqrt(np.clip(w2[:, :count], 0.0, None)) / (2.0 * np.pi)
 
