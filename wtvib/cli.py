@@ -289,7 +289,8 @@ def check(
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
-    with _cluster(scheduler) as client:
+    doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
+    with _cluster(scheduler) as client, _working(doing):
         report = audit.run(
             turbine, settings, samples=samples if uncertainty else None, seed=seed, client=client
         )
@@ -298,9 +299,10 @@ def check(
         from .plots import diagrams, png_bytes
 
         folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
-        for suffix, fig in diagrams(report, detail=figures is Figures.all).items():
-            path = folder / f"{spec_file.stem}.{suffix}.png"
-            written.append(write_atomic(path, png_bytes(fig), force=force))
+        with _working("drawing the figures"):
+            for suffix, fig in diagrams(report, detail=figures is Figures.all).items():
+                path = folder / f"{spec_file.stem}.{suffix}.png"
+                written.append(write_atomic(path, png_bytes(fig), force=force))
     if campbell_csv is not None:
         data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
@@ -339,14 +341,17 @@ def report(
     from . import batch, pdfreport
     from .outputs import write_atomic
 
-    if debug or _state["debug"]:
-        item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
-    else:
-        item = batch.audit_one(str(spec_file), spec_file.stem, plots=True, options=options)
+    with _working("auditing and drawing the figures"):
+        if debug or _state["debug"]:
+            item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
+        else:
+            item = batch.audit_one(str(spec_file), spec_file.stem, plots=True, options=options)
     if item.report is None:
         typer.echo(f"error: {item.error}", err=True)
         raise typer.Exit(EXIT_INTERNAL if item.internal else EXIT_INPUT)
-    write_atomic(output, pdfreport.build([(item.report, item.pngs)]), force=force)
+    with _working(f"writing {output.name}"):
+        pdf = pdfreport.build([(item.report, item.pngs)])
+    write_atomic(output, pdf, force=force)
     typer.echo(f"wrote {output} (verdict {item.report['verdict']})")
     raise typer.Exit(EXIT_FAIL if item.report["verdict"] == "fail" else EXIT_PASS)
 
@@ -439,6 +444,19 @@ def batch_command(
 
 
 @contextlib.contextmanager
+def _working(what: str) -> Iterator[None]:
+    """A spinner saying ``what`` on stderr while a step runs — on a terminal only (rich is
+    not imported otherwise), and gone after."""
+    if not sys.stderr.isatty():
+        yield
+        return
+    from rich.console import Console
+
+    with Console(stderr=True).status(what, spinner="line"):
+        yield
+
+
+@contextlib.contextmanager
 def _cluster(address: str | None) -> Iterator[Any]:
     """A Dask client on ``address`` for the command's duration (None: run locally)."""
     if address is None:
@@ -497,7 +515,8 @@ class _BatchWriter:
             entries = [(it.report, it.pngs) for it in items if it.report is not None]
             errors = [(it.path, str(it.error), it.outcome) for it in items if it.report is None]
             t0 = time.perf_counter()
-            pdf = pdfreport.build(entries, errors=errors)
+            with _working(f"writing audit.pdf ({len(entries)} turbines)"):
+                pdf = pdfreport.build(entries, errors=errors)
             self.timings["audit"] = {"build": time.perf_counter() - t0}
             self._write("audit.pdf", pdf)
         meta = {
