@@ -18,7 +18,6 @@ start-up only      info for dominant/secondary lines: the "encounter" of soft
 =================  ==============================================================
 """
 
-import itertools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -95,17 +94,19 @@ def assess(
         ends = np.minimum(rule.separation(f_e, lo), rule.separation(f_e, hi))
         return np.where((f_e - lo) * (f_e - hi) <= 0, 0.0, np.minimum(s, ends))
 
-    def gap(omega: float) -> float:
-        return float(sep(np.array([omega]))[0] - rule.margin * (1.0 - 1e-9))
+    def gaps(omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        return sep(omega) - rule.margin * (1.0 - 1e-9)
 
-    def diff(omega: float) -> float:
-        w = np.array([omega])
-        return float(exc.frequency_hz(w)[0] - mode.frequency_at(w)[0])
+    def gap(omega: float) -> float:
+        return float(gaps(np.array([omega]))[0])
+
+    def diff(omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        return exc.frequency_hz(omega) - mode.frequency_at(omega)
 
     grid = _grid(op)
-    crossings = tuple(_roots(diff, grid, exc.frequency_hz(grid) - mode.frequency_at(grid)))
+    crossings = tuple(_roots(diff, grid, diff(grid)))
     grid = np.union1d(grid, np.array(crossings, dtype=float))
-    forbidden = tuple(_runs(gap, grid, rule.violates(sep(grid))))
+    forbidden = tuple(_runs(gaps, grid, rule.violates(sep(grid))))
 
     violations = split_by_regime(forbidden, op, lambda w: gap(w) < 0)
     if mode.regimes is not None:  # a condition that exists only in some regimes
@@ -197,61 +198,72 @@ def _grid(op: OperatingRange) -> NDArray[np.float64]:
     )
 
 
-ScalarFn = Callable[[float], float]
+ArrayFn = Callable[[NDArray[np.float64]], NDArray[np.float64]]
 
 
-def bisect(f: ScalarFn, a: float, b: float, xtol: float = 1e-12, rtol: float = 1e-12) -> float:
-    """Root of ``f`` in [a, b] (a sign change) by bisection to ``xtol + rtol·|x|``.
+def bisect(
+    f: ArrayFn,
+    a: NDArray[np.float64],
+    b: NDArray[np.float64],
+    xtol: float = 1e-12,
+    rtol: float = 1e-12,
+) -> NDArray[np.float64]:
+    """Roots of ``f`` in the brackets [a, b] (sign changes), all brackets at once, each by
+    bisection to ``xtol + rtol·|x|``: ``f`` is evaluated on the vector of midpoints, so
+    the work is some 40 array calls whatever the number of roots.
 
     Plain bisection keeps scipy.optimize (0.2 s to import) off the check's start-up path;
     the brackets are fine grid cells, so some 40 halvings reach 1e-12.
     """
+    a, b = np.array(a, dtype=float), np.array(b, dtype=float)
     fa = f(a)
-    if fa == 0.0:
-        return a
+    root = np.where(fa == 0.0, a, np.nan)
+    open_ = fa != 0.0
     for _ in range(200):
+        if not open_.any():
+            break
         mid = 0.5 * (a + b)
-        if b - a <= xtol + rtol * abs(mid):
-            return mid
+        close = open_ & (b - a <= xtol + rtol * np.abs(mid))
+        root[close], open_ = mid[close], open_ & ~close
         fm = f(mid)
-        if fm == 0.0:
-            return mid
-        if (fm < 0) == (fa < 0):
-            a, fa = mid, fm
-        else:
-            b = mid
-    return 0.5 * (a + b)
+        hit = open_ & (fm == 0.0)
+        root[hit], open_ = mid[hit], open_ & ~hit
+        left = open_ & ((fm < 0) == (fa < 0))
+        a, fa = np.where(left, mid, a), np.where(left, fm, fa)
+        b = np.where(open_ & ~left, mid, b)
+    return np.where(open_, 0.5 * (a + b), root)
 
 
-ArrayFn = Callable[[NDArray[np.float64]], NDArray[np.float64]]
-
-
-def _roots(f: ScalarFn, grid: NDArray[np.float64], values: NDArray[np.float64]) -> list[float]:
+def _roots(f: ArrayFn, grid: NDArray[np.float64], values: NDArray[np.float64]) -> list[float]:
     """Zeros of ``f`` located by sign changes of ``values`` on ``grid``."""
-    out: list[float] = []
-    for i in np.nonzero(values == 0.0)[0]:
-        out.append(float(grid[i]))
+    exact = grid[values == 0.0]
     change = np.nonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)[0]
-    for i in change:
-        out.append(float(bisect(f, grid[i], grid[i + 1], xtol=1e-12, rtol=1e-12)))
-    return sorted(out)
+    found = bisect(f, grid[change], grid[change + 1]) if change.size else np.array([])
+    return sorted(float(x) for x in np.concatenate([exact, found]))
 
 
-def _runs(gap: ScalarFn, grid: NDArray[np.float64], bad: NDArray[np.bool_]) -> list[Interval]:
+def _runs(gap: ArrayFn, grid: NDArray[np.float64], bad: NDArray[np.bool_]) -> list[Interval]:
     """Maximal speed intervals where ``bad`` holds, edges refined to the zeros of ``gap``."""
-    out: list[Interval] = []
     idx = np.nonzero(bad)[0]
     if idx.size == 0:
-        return out
-    breaks = [(a, b) for a, b in itertools.pairwise(idx) if b != a + 1]
-    starts = [idx[0], *(b for _, b in breaks)]
-    ends = [*(a for a, _ in breaks), idx[-1]]
-    for i, j in zip(starts, ends, strict=True):
-        lo = grid[i] if i == 0 else bisect(gap, grid[i - 1], grid[i], xtol=1e-12, rtol=1e-12)
-        last = len(grid) - 1
-        hi = grid[j] if j == last else bisect(gap, grid[j], grid[j + 1], xtol=1e-12, rtol=1e-12)
-        out.append((float(lo), float(hi)))
-    return out
+        return []
+    breaks = np.nonzero(np.diff(idx) != 1)[0]
+    starts = np.concatenate([[idx[0]], idx[breaks + 1]])
+    ends = np.concatenate([idx[breaks], [idx[-1]]])
+    last = len(grid) - 1
+    # every run's edges refined in one bisection: its start (unless at the grid's first
+    # point) in the cell before, its end (unless at the last) in the cell after
+    lo_cells, hi_cells = starts[starts > 0], ends[ends < last]
+    edges = bisect(
+        gap,
+        np.concatenate([grid[lo_cells - 1], grid[hi_cells]]),
+        np.concatenate([grid[lo_cells], grid[hi_cells + 1]]),
+    )
+    lo = grid[starts].copy()
+    hi = grid[ends].copy()
+    lo[starts > 0] = edges[: lo_cells.size]
+    hi[ends < last] = edges[lo_cells.size :]
+    return [(float(x), float(y)) for x, y in zip(lo, hi, strict=True)]
 
 
 def _overlap(a: Interval, b: Interval) -> Interval | None:
