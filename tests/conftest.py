@@ -21,7 +21,7 @@ settings.register_profile(
 settings.register_profile(
     "fuzz",
     max_examples=int(os.environ.get("WTVIB_FUZZ_EXAMPLES", "40000")),  # a shorter campaign
-    deadline=None,
+    deadline=30_000,  # ms: the time bound of the invariant (no input may take longer)
     suppress_health_check=[HealthCheck.too_slow],
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
