@@ -6,6 +6,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+import numpy as np
+
 from . import (
     aerodamping,
     aeroelastic,
@@ -237,9 +239,10 @@ def run(
     """
     try:
         return _run(spec, settings or spec.audit, samples, seed, client)
-    except (OverflowError, FloatingPointError) as exc:
+    except (OverflowError, FloatingPointError, np.linalg.LinAlgError) as exc:
         raise ModalError(
-            f"a number in the spec is too large for the models ({exc}); check the magnitudes"
+            f"a number in the spec is too large or too small for the models ({exc}); check "
+            "the magnitudes"
         ) from None
 
 
@@ -251,7 +254,10 @@ def _run(
     lines = excitations(spec)
     built: dict[str, list[Mode]] = {}
     for sub in SUBSYSTEMS:
-        built[sub.NAME] = sub.build_modes(spec, built)
+        try:
+            built[sub.NAME] = sub.build_modes(spec, built)
+        except ModalError as exc:  # say which model could not be solved
+            raise ModalError(f"{sub.NAME} model: {exc}") from None
     built = _one_truth_per_mode(spec, built)
     # the aerodynamics (where given) damp every judged mode at the operating points
     built, aero_notes = aerodamping.in_operation(spec, built, settings.heavy_damping_ratio)

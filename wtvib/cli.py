@@ -196,7 +196,13 @@ def _user_errors(command: F) -> F:
         except WtvibError as exc:
             if debug:
                 raise
-            typer.echo(f"error: {exc}", err=True)
+            from .modal import ModalError
+
+            text = str(exc)
+            source = kwargs.get("spec_file")
+            if source is not None and isinstance(exc, ModalError):
+                text = f"{source}: {text}"  # a model that cannot be solved: which input
+            typer.echo(f"error: {text}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
         except _PASS_THROUGH:
             raise  # typer reports a usage error itself (one line, exit 2)

@@ -52,6 +52,13 @@ def solve(k: Array, m: Array, count: int | None = None) -> Modes:
     return solve_stacked(k[None], m[None], count)[0]
 
 
+#: the message where a model's matrices leave the range of floating point
+OUT_OF_RANGE = (
+    "the model's numbers leave the range of floating point (a mass or inertia far too small "
+    "for its stiffness, or a stiffness far too large): check the magnitudes in the input"
+)
+
+
 def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     """:func:`solve` for a stack of same-sized problems, shape (p, n, n), in one call."""
     a, inv_t = _standard_form(k, m)
@@ -85,7 +92,10 @@ def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
         ) from None
     inv = np.linalg.inv(lower)
     inv_t = np.swapaxes(inv, -1, -2)
-    a = inv @ k @ inv_t
+    with np.errstate(over="ignore", invalid="ignore"):
+        a = inv @ k @ inv_t
+    if not np.all(np.isfinite(a)):
+        raise ModalError(OUT_OF_RANGE)
     return 0.5 * (a + np.swapaxes(a, -1, -2)), inv_t
 
 
@@ -210,8 +220,11 @@ def state_matrix(k: Array, m: Array, d: Array) -> Array:
     shape = np.broadcast_shapes(k.shape, m.shape, d.shape)[:-2]
     out = np.zeros((*shape, 2 * n, 2 * n))
     out[..., :n, n:] = np.eye(n)
-    out[..., n:, :n] = -(minv @ k)
-    out[..., n:, n:] = -(minv @ d)
+    with np.errstate(over="ignore", invalid="ignore"):
+        out[..., n:, :n] = -(minv @ k)
+        out[..., n:, n:] = -(minv @ d)
+    if not np.all(np.isfinite(out)):
+        raise ModalError(OUT_OF_RANGE)
     return out
 
 

@@ -137,6 +137,8 @@ def _airfoil_files(deck: Deck) -> list[Path]:
     """AFNames: the first on its key's line, the rest on the lines after it."""
     n = _count(deck, "NumAFfiles", MAX_AIRFOILS)
     lines = read_text(deck.path).splitlines()
+    if "AFNames" not in deck.values:
+        raise SpecError("AFNames (the aerofoil files) is missing", source=str(deck.path))
     line = deck.values["AFNames"][1]
     names = [deck.values["AFNames"][0]]
     i = line

@@ -17,6 +17,46 @@ from ..spec import read_text
 _NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$")
 
 
+#: The largest magnitude an OpenFAST scalar input of each name may take here (and its
+#: unit): far beyond any wind turbine, short of what overflows a model (a 1e300 m overhang
+#: squares to infinity in the head inertia). Lengths as the spec bounds head offsets.
+LIMITS: dict[str, tuple[float, str]] = {
+    **{
+        key: (1e3, "m")
+        for key in (
+            "TipRad",
+            "HubRad",
+            "HubCM",
+            "UndSling",
+            "OverHang",
+            "ShftGagL",
+            "NacCMxn",
+            "NacCMyn",
+            "NacCMzn",
+            "Twr2Shft",
+            "TowerHt",
+            "TowerBsHt",
+            "YawBrMass_zn",
+        )
+    },
+    **{
+        key: (1e10, "kg")
+        for key in (
+            "HubMass",
+            "NacMass",
+            "YawBrMass",
+            "TipMass(1)",
+            "TipMass(2)",
+            "TipMass(3)",
+            "TipMass1",
+            "TipMass2",
+            "TipMass3",
+        )
+    },
+    **{key: (1e15, "kg·m²") for key in ("HubIner", "GenIner", "NacYIner")},
+}
+
+
 @dataclass(frozen=True)
 class Deck:
     """Scalar inputs (key → raw text, line) and tables (first column name → rows)."""
@@ -45,6 +85,14 @@ class Deck:
                 if not math.isfinite(value):
                     raise SpecError(
                         f"{key} must be a finite number (got {raw!r})",
+                        line=line,
+                        source=str(self.path),
+                    )
+                limit, unit = LIMITS.get(key, (math.inf, ""))
+                if abs(value) > limit:
+                    raise SpecError(
+                        f"{key} = {raw} is out of range for a wind turbine (|{key}| ≤ "
+                        f"{limit:g} {unit})",
                         line=line,
                         source=str(self.path),
                     )
