@@ -46,3 +46,19 @@ def test_the_synchronous_power_curve_is_a_result_the_figure_draws():
     # Hau Fig. 7.14: the magnetic stiffness falls with power, and so does the frequency
     assert curve.frequency_hz[0] > curve.frequency_hz[-1]
     assert [label for label, _ in curve.lines] == ["1P at 40 rpm", "2P at 40 rpm"]
+
+
+def test_a_pull_out_power_below_rated_is_refused_with_the_field(tmp_path):
+    """Issue 19: a pull-out power of 1e-15 kW ended in an internal ValueError inside the
+    magnetic-spring formula; the spec now refuses P_max ≤ P_rated with field and line."""
+    from tests.conftest import TURBINES
+    from wtvib import spec
+    from wtvib.errors import SpecError
+
+    text = (TURBINES / "mod-0-fluid-coupling.yaml").read_text()
+    text = text.replace("pull_out_power_kw: {value: 130,", "pull_out_power_kw: {value: 1.0e-15,")
+    path = tmp_path / "p.yaml"
+    path.write_text(text)
+    with pytest.raises(SpecError, match=r"pull_out_power_kw .* must exceed rated_power_kw") as err:
+        spec.load(path)
+    assert err.value.path == "drivetrain.generator_model" and err.value.line is not None

@@ -38,7 +38,7 @@ from numpy.typing import NDArray
 from . import modal
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .excitation import operating_range
-from .floquet import MIN_STEPS, StateMatrix, monodromy_batch, steps_for
+from .floquet import MAX_STEPS, MIN_STEPS, StateMatrix, monodromy_batch, steps_for
 from .resonance import split_by_regime
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -127,7 +127,8 @@ def stability_map(model: "HeadModel", speeds_rad_s: Array) -> Array:
     NaN where the multipliers do not come out finite: not analysed).
 
     Each speed gets :func:`steps_for` its fastest mode (from A at ψ = 0); speeds needing the
-    same power-of-two multiple of :data:`MIN_STEPS` are integrated together.
+    same power-of-two multiple of :data:`MIN_STEPS` are integrated together; a speed needing
+    more than :data:`MAX_STEPS` is not analysed (NaN).
     """
     w = np.asarray(speeds_rad_s, dtype=float)
     with np.errstate(all="ignore"):
@@ -137,8 +138,8 @@ def stability_map(model: "HeadModel", speeds_rad_s: Array) -> Array:
         )
         bucket = MIN_STEPS * 2 ** np.ceil(np.log2(need / MIN_STEPS)).astype(int)
         largest = np.full(w.shape, np.nan)
-        for steps in np.unique(bucket):
-            sel = bucket == steps
+        for steps in np.unique(bucket[need <= MAX_STEPS]):  # beyond: not analysed (NaN)
+            sel = (bucket == steps) & (need <= MAX_STEPS)
 
             def a_of_psi(psi: float, sel: NDArray[np.bool_] = sel) -> Array:
                 return model.state_matrices(w[sel], psi)
@@ -317,10 +318,17 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
     )
     in_operation = stability_map(model, rpm_to_rad_s(steady_rpm))
     skipped = [float(x) for x in smap.speeds_rpm[np.isnan(smap.largest)]]
-    if skipped:
+    why = (
+        f"multipliers not finite, or a mode so much faster than the rotor that one "
+        f"revolution would need over {MAX_STEPS:,} integration steps"
+    )
+    if np.isnan(in_operation).all():  # nothing known in operation: say that, nothing else
+        status = "warn"
+        text = f"{hub} two-bladed rotor: not analysed at any operating speed ({why})"
+    elif skipped:
         text += (
             f"; not analysed at {len(skipped)} speeds between {min(skipped):.3g} and "
-            f"{max(skipped):.3g} rpm (multipliers not finite)"
+            f"{max(skipped):.3g} rpm ({why})"
         )
         if status == "pass" and np.isnan(in_operation).any():
             status = "warn"  # part of the operating range is unknown: not a pass

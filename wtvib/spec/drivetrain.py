@@ -80,6 +80,16 @@ class GeneratorModel(_Strict):
         0.0, ge=0, description="Converter: damping the speed controller adds. [N·m·s/rad]"
     )
 
+    @model_validator(mode="after")
+    def _pull_out_above_rated(self) -> "GeneratorModel":
+        # the magnetic spring c_m ∝ cos(asin(P/P_max)) exists only below the pull-out power
+        if self.pull_out_power_kw is not None and self.pull_out_power_kw <= self.rated_power_kw:
+            raise ValueError(
+                f"pull_out_power_kw ({self.pull_out_power_kw:g}) must exceed rated_power_kw "
+                f"({self.rated_power_kw:g}): at or above it the generator falls out of step"
+            )
+        return self
+
 
 class Drivetrain(_Strict):
     """The drive train: generator, gearbox and natural frequencies per operating condition."""
