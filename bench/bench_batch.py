@@ -63,7 +63,7 @@ def main() -> None:
 
         many = Path(tmp) / "many"
         many.mkdir()
-        copies = 20
+        copies = -(-1000 // n)  # at least 1,000 specs (issue 20)
         for i in range(copies):
             for spec in (ROOT / "turbines").glob("*.yaml"):
                 shutil.copy(spec, many / f"{spec.stem}-{i:02d}.yaml")
@@ -74,6 +74,53 @@ def main() -> None:
             f"results-only batch ({count} specs, --no-plots): median {med:.2f} s "
             f"= {count / med:.0f} turbines/s"
         )
+        dask_throughput(many, count)
+
+
+def dask_throughput(folder: Path, count: int) -> None:
+    """The same specs through ``batch --scheduler`` on a local Dask cluster (one worker
+    process per core, one thread each, started as a user would: ``dask scheduler`` and
+    ``dask worker``), against the local process pool above."""
+    import os
+
+    dask = str(Path(sys.executable).with_name("dask"))
+    if not Path(dask).exists():
+        print("dask: not installed (pip install 'wtvib[distributed]'); skipped")
+        return
+    port = 8799
+    address = f"tcp://127.0.0.1:{port}"
+    quiet = {"stdout": subprocess.DEVNULL, "stderr": subprocess.DEVNULL}
+    scheduler = subprocess.Popen(
+        [dask, "scheduler", "--port", str(port), "--no-dashboard"], **quiet
+    )
+    worker = subprocess.Popen(
+        [
+            dask,
+            "worker",
+            address,
+            "--nworkers",
+            str(os.cpu_count() or 1),
+            "--nthreads",
+            "1",
+            "--no-dashboard",
+        ],
+        **quiet,
+    )
+    try:
+        time.sleep(6)  # the scheduler and its workers start
+        cmd = [WTVIB, "batch", str(folder), "--no-plots", "-f", "json", "--scheduler", address]
+        timed(cmd, 1)  # workers import wtvib once
+        runs = timed(cmd, 3)
+        med = statistics.median(runs)
+        print(
+            f"results-only batch on a local Dask cluster ({count} specs, {os.cpu_count()} "
+            f"worker processes): median {med:.2f} s = {count / med:.0f} turbines/s"
+        )
+    finally:
+        worker.terminate()
+        scheduler.terminate()
+        worker.wait(timeout=30)
+        scheduler.wait(timeout=30)
 
 
 if __name__ == "__main__":
