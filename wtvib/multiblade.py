@@ -238,22 +238,24 @@ def _groups(model: "Model") -> dict[str, Index]:
 
 
 def shares(
-    model: "Model",
-    m: Array,
-    x: NDArray[np.complex128],
-    groups: dict[str, Index] | None = None,
-) -> tuple[dict[str, float], dict[str, float]]:
-    """A mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed, normalised),
-    and the same with each cyclic cos/sin pair merged into one ``cyclic`` group."""
-    groups = _groups(model) if groups is None else groups
-    energy = np.abs(np.real(np.conj(x) * (m @ x)))
-    total = float(energy.sum()) or 1.0
-    share = {g: float(energy[i].sum()) / total for g, i in groups.items() if len(i)}
-    merged: dict[str, float] = {}
-    for g, v in share.items():
-        key = g.replace("cos", "cyclic").replace("sin", "cyclic")
-        merged[key] = merged.get(key, 0.0) + v
-    return share, merged
+    m: Array, shapes: NDArray[np.complex128], groups: dict[str, Index]
+) -> list[tuple[dict[str, float], dict[str, float]]]:
+    """Each mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed,
+    normalised), and the same with each cyclic cos/sin pair merged into one ``cyclic``
+    group — all modes (the columns of ``shapes``) in one product."""
+    energy = np.abs(np.real(np.conj(shapes) * (m @ shapes)))
+    total = energy.sum(axis=0)
+    total[total == 0.0] = 1.0
+    table = {g: energy[i].sum(axis=0) / total for g, i in groups.items() if len(i)}
+    merge = {g: g.replace("cos", "cyclic").replace("sin", "cyclic") for g in table}
+    out = []
+    for j in range(shapes.shape[1]):
+        share = {g: float(v[j]) for g, v in table.items()}
+        merged: dict[str, float] = {}
+        for g, v in share.items():
+            merged[merge[g]] = merged.get(merge[g], 0.0) + v
+        out.append((share, merged))
+    return out
 
 
 def _name(
@@ -267,9 +269,8 @@ def _name(
     energy: list[dict[str, float]] = []
     whirls: list[str | None] = []
     counters: dict[str, int] = {}
-    for j in range(shapes.shape[1]):
+    for j, (share, merged) in enumerate(shares(m, shapes, groups)):
         x = shapes[:, j]
-        share, merged = shares(model, m, x, groups)
         top = max(merged, key=lambda g: merged[g])
         name, text, whirl = _mode_name(top, share, x, groups, counters)
         mixed = [
