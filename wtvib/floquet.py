@@ -79,7 +79,9 @@ def expm(x: Array) -> Array:
     return np.asarray(e, dtype=np.float64)
 
 
-def propagate(a: Callable[[float], Array], period: float, steps: int) -> Array:
+def propagate(
+    a: Callable[[float], Array], period: float, steps: int, vectorised: bool = False
+) -> Array:
     """Φ(T) of Φ̇ = A(t)Φ, Φ(0) = I: the one periodic integrator of wtvib.
 
     ``a(t)`` returns one state matrix (n, n) or a stack of them (..., n, n) — many rotor
@@ -96,15 +98,23 @@ def propagate(a: Callable[[float], Array], period: float, steps: int) -> Array:
     propagated, never amplified: classical RK4 diverges once ω·h > 2.8, and overflowed on
     the catalogue's two-bladed rotors below a few rpm. The error is O(h⁴) in the variation
     of A over a step — for a rotor its azimuth harmonics, not the modes' frequencies. All
-    step exponentials are taken in one batched call.
+    step exponentials are taken in one batched call; ``vectorised``: ``a`` takes the array of
+    all Gauss times at once (leading axis), so that the state matrices are built in one go.
     """
     h = period / steps
     root3 = math.sqrt(3.0)
-    exps = []
-    for i in range(steps):
-        a1, a2 = a((i + _GAUSS[0]) * h), a((i + _GAUSS[1]) * h)
-        exps.append(0.5 * h * (a1 + a2) + root3 / 12 * h * h * (a2 @ a1 - a1 @ a2))
-    factors = expm(np.stack(exps))
+    if vectorised:
+        times = (np.arange(steps)[:, None] + np.asarray(_GAUSS)[None, :]).ravel() * h
+        both = a(times)  # type: ignore[arg-type]
+        a1, a2 = both[0::2], both[1::2]
+        stacked = 0.5 * h * (a1 + a2) + root3 / 12 * h * h * (a2 @ a1 - a1 @ a2)
+    else:
+        exps = []
+        for i in range(steps):
+            b1, b2 = a((i + _GAUSS[0]) * h), a((i + _GAUSS[1]) * h)
+            exps.append(0.5 * h * (b1 + b2) + root3 / 12 * h * h * (b2 @ b1 - b1 @ b2))
+        stacked = np.stack(exps)
+    factors = expm(stacked)
     phi = factors[0]
     for f in factors[1:]:
         phi = f @ phi
@@ -143,15 +153,21 @@ def stability(a: StateMatrix, period: float, steps: int = 400) -> Floquet:
 
 
 def monodromy_batch(
-    a_of_psi: Callable[[float], Array], omegas: Array, steps: int = MIN_STEPS
+    a_of_psi: Callable[[float], Array],
+    omegas: Array,
+    steps: int = MIN_STEPS,
+    every_azimuth: bool = False,
 ) -> Array:
     """Monodromy matrices for many rotor speeds at once, integrating over the azimuth.
 
     With ψ = Ωt as the variable, dΦ/dψ = A(ψ)/Ω·Φ over ψ ∈ [0, 2π]; ``a_of_psi(ψ)`` returns
-    the state matrices of all speeds, shape (speeds, n, n).
+    the state matrices of all speeds, shape (speeds, n, n) — or, ``every_azimuth``, for an
+    array of azimuths at once, shape (azimuths, speeds, n, n).
     """
     scale = (1.0 / np.asarray(omegas, dtype=float))[:, None, None]
-    return propagate(lambda psi: a_of_psi(psi) * scale, 2 * math.pi, steps)
+    return propagate(
+        lambda psi: a_of_psi(psi) * scale, 2 * math.pi, steps, vectorised=every_azimuth
+    )
 
 
 #: Floquet multipliers above 1 + this count as growth (rounding stays far below it).

@@ -66,54 +66,51 @@ class HeadModel:
     teeter_stiffness: float = 0.0
     teeter_damping: float = 0.0
 
-    def parts(self, psi: float) -> tuple[Array, Array, Array, Array, Array]:
-        """M(ψ), G₀(ψ), G₁(ψ), K₀(ψ), K₂ with G = G₀ + Ω·G₁ and K = K₀ + Ω²·K₂."""
+    def parts(self, psi: float | Array) -> tuple[Array, Array, Array, Array, Array]:
+        """M(ψ), G₀(ψ), G₁(ψ), K₀(ψ), K₂ with G = G₀ + Ω·G₁ and K = K₀ + Ω²·K₂; for an
+        array of azimuths each has that leading shape (all azimuths of a sweep at once)."""
         jp = self.polar
+        psi_a = np.asarray(psi, dtype=float)
+        lead = psi_a.shape
+        s, c = np.sin(psi_a), np.cos(psi_a)
+
+        def full(n: int) -> Array:
+            return np.zeros((*lead, n, n))
+
         if self.blades >= 3:
-            m = np.diag([self.tilt_inertia + jp / 2, self.yaw_inertia + jp / 2])
-            g0 = np.diag([self.tilt_damping, self.yaw_damping])
-            g1 = np.array([[0.0, jp], [-jp, 0.0]])
-            k0 = np.diag([self.tilt_stiffness, self.yaw_stiffness])
-            return m, g0, g1, k0, np.zeros((2, 2))
-        s, c = math.sin(psi), math.cos(psi)
+            m, g0, g1, k0 = full(2), full(2), full(2), full(2)
+            m[..., 0, 0], m[..., 1, 1] = self.tilt_inertia + jp / 2, self.yaw_inertia + jp / 2
+            g0[..., 0, 0], g0[..., 1, 1] = self.tilt_damping, self.yaw_damping
+            g1[..., 0, 1], g1[..., 1, 0] = jp, -jp
+            k0[..., 0, 0], k0[..., 1, 1] = self.tilt_stiffness, self.yaw_stiffness
+            return m, g0, g1, k0, full(2)
         if self.hub == "teetered":
             kb, cb = self.teeter_stiffness, self.teeter_damping
-            m = np.array(
-                [[self.tilt_inertia, 0.0, 0.0], [0.0, self.yaw_inertia, 0.0], [jp * c, jp * s, jp]]
-            )
-            g0 = np.array(
-                [
-                    [self.tilt_damping, 0.0, -cb * c],
-                    [0.0, self.yaw_damping, -cb * s],
-                    [0.0, 0.0, cb],
-                ]
-            )
-            g1 = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-2 * jp * s, 2 * jp * c, 0.0]])
-            k0 = np.array(
-                [
-                    [self.tilt_stiffness, 0.0, -kb * c],
-                    [0.0, self.yaw_stiffness, -kb * s],
-                    [0.0, 0.0, kb],
-                ]
-            )
-            k2 = np.zeros((3, 3))
-            k2[2, 2] = jp
+            m, g0, g1, k0, k2 = full(3), full(3), full(3), full(3), full(3)
+            m[..., 0, 0], m[..., 1, 1] = self.tilt_inertia, self.yaw_inertia
+            m[..., 2, 0], m[..., 2, 1], m[..., 2, 2] = jp * c, jp * s, jp
+            g0[..., 0, 0], g0[..., 1, 1], g0[..., 2, 2] = self.tilt_damping, self.yaw_damping, cb
+            g0[..., 0, 2], g0[..., 1, 2] = -cb * c, -cb * s
+            g1[..., 2, 0], g1[..., 2, 1] = -2 * jp * s, 2 * jp * c
+            k0[..., 0, 0], k0[..., 1, 1] = self.tilt_stiffness, self.yaw_stiffness
+            k0[..., 2, 2] = kb
+            k0[..., 0, 2], k0[..., 1, 2] = -kb * c, -kb * s
+            k2[..., 2, 2] = jp
             return m, g0, g1, k0, k2
-        s2, c2 = math.sin(2 * psi), math.cos(2 * psi)
-        m = np.array(
-            [
-                [self.tilt_inertia + jp * c * c, jp * s * c],
-                [jp * s * c, self.yaw_inertia + jp * s * s],
-            ]
-        )
-        g0 = np.diag([self.tilt_damping, self.yaw_damping])
-        g1 = np.array([[-jp * s2, jp * (1 + c2)], [-jp * (1 - c2), jp * s2]])
-        k0 = np.diag([self.tilt_stiffness, self.yaw_stiffness])
-        return m, g0, g1, k0, np.zeros((2, 2))
+        s2, c2 = np.sin(2 * psi_a), np.cos(2 * psi_a)
+        m, g0, g1, k0 = full(2), full(2), full(2), full(2)
+        m[..., 0, 0], m[..., 1, 1] = self.tilt_inertia + jp * c * c, self.yaw_inertia + jp * s * s
+        m[..., 0, 1] = m[..., 1, 0] = jp * s * c
+        g0[..., 0, 0], g0[..., 1, 1] = self.tilt_damping, self.yaw_damping
+        g1[..., 0, 0], g1[..., 0, 1] = -jp * s2, jp * (1 + c2)
+        g1[..., 1, 0], g1[..., 1, 1] = -jp * (1 - c2), jp * s2
+        k0[..., 0, 0], k0[..., 1, 1] = self.tilt_stiffness, self.yaw_stiffness
+        return m, g0, g1, k0, full(2)
 
-    def state_matrices(self, omegas: Array, psi: float) -> Array:
-        """A at azimuth ψ for many rotor speeds Ω [rad/s], shape (speeds, 2n, 2n)."""
-        m, g0, g1, k0, k2 = self.parts(psi)
+    def state_matrices(self, omegas: Array, psi: float | Array) -> Array:
+        """A at azimuth ψ for many rotor speeds Ω [rad/s], shape (speeds, 2n, 2n); for an
+        array of azimuths (azimuths, speeds, 2n, 2n)."""
+        m, g0, g1, k0, k2 = (x[..., None, :, :] for x in self.parts(psi))
         w = np.asarray(omegas, dtype=float)[:, None, None]
         return modal.state_matrix(k0 + w**2 * k2, m, g0 + w * g1)
 
@@ -141,10 +138,10 @@ def stability_map(model: "HeadModel", speeds_rad_s: Array) -> Array:
         for steps in np.unique(bucket[need <= MAX_STEPS]):  # beyond: not analysed (NaN)
             sel = (bucket == steps) & (need <= MAX_STEPS)
 
-            def a_of_psi(psi: float, sel: NDArray[np.bool_] = sel) -> Array:
+            def a_of_psi(psi: float | Array, sel: NDArray[np.bool_] = sel) -> Array:
                 return model.state_matrices(w[sel], psi)
 
-            phi = monodromy_batch(a_of_psi, w[sel], int(steps))
+            phi = monodromy_batch(a_of_psi, w[sel], int(steps), every_azimuth=True)
             finite = np.all(np.isfinite(phi), axis=(1, 2))
             phi[~finite] = 0.0
             found = np.max(np.abs(np.linalg.eigvals(phi)), axis=1)
