@@ -159,3 +159,18 @@ def test_fixed_frame_lines_take_the_class_of_the_blade_harmonic_behind_them():
     assert lines["1P"].energy_for("forward") is None  # blades' 0P: a steady load
     assert lines["2P"].energy_for(None) == "secondary" == lines["2P"].energy
     assert lines["6P"].energy_for("forward") == "minor"  # blades' 5P
+
+
+def test_two_modes_crossed_alike_are_governed_by_the_less_damped():
+    """Two modes both met by 3P in a variable-speed range have margin 0 up to rounding of
+    their crossing speeds; which one governs the check must not hang on that rounding
+    (the NREL 5-MW's 2P check flipped between tower fa1 and ss1 with the root finder):
+    the larger amplification — the less damped mode — governs."""
+    rng = op([(15, 25)], 28)
+    damped = Mode("tower.fa1", "tower", "damped", 1.0, 0.08)
+    lively = Mode("tower.ss1", "tower", "lively", 1.05, 0.005)
+    for order in ((damped, lively), (lively, damped)):
+        findings = [assess(m, harmonic(3), rng, BAND, SEVERITY, 0.01) for m in order]
+        assert all(f.margin == pytest.approx(0.0, abs=1e-9) for f in findings)
+        (check,) = resonance_checks(findings, rng, BAND)
+        assert check.message.startswith("tower.ss1") and "also: tower.fa1" in check.message
