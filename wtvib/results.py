@@ -1,5 +1,6 @@
 """The few result types every subsystem shares: modes and checks (DESIGN.md)."""
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -101,12 +102,15 @@ class OperatingDamping:
     def at(self, omega: float) -> float:
         """The lowest total damping of the operating points at rotor speed Ω [rad/s]
         (several winds share the rated speed), linear between speeds, held beyond them."""
-        om = np.round(np.asarray(self.omega), 9)
-        speeds = np.unique(om)
-        low = np.array(
-            [min(t for t, o in zip(self.total, om, strict=True) if o == s) for s in speeds]
-        )
+        speeds, low = self._lowest_by_speed
         return float(np.interp(omega, speeds, low))
+
+    @functools.cached_property
+    def _lowest_by_speed(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        speeds, which = np.unique(np.round(np.asarray(self.omega), 9), return_inverse=True)
+        low = np.full(len(speeds), np.inf)
+        np.minimum.at(low, which, np.asarray(self.total, dtype=float))
+        return speeds, low
 
     @property
     def lowest(self) -> int:
