@@ -62,3 +62,18 @@ def test_a_pull_out_power_below_rated_is_refused_with_the_field(tmp_path):
     with pytest.raises(SpecError, match=r"pull_out_power_kw .* must exceed rated_power_kw") as err:
         spec.load(path)
     assert err.value.path == "drivetrain.generator_model" and err.value.line is not None
+
+
+def test_a_drive_train_damped_past_critical_is_one_line(tmp_path):
+    """Issue 19 (the extreme-value campaign): a 1e9 N·m·s/rad shaft damper left the
+    grid-coupled power sweep no oscillatory mode and an IndexError; now a ModalError
+    saying what happened (exit 2 in the CLI)."""
+    from tests.conftest import TURBINES
+    from wtvib import audit, spec
+    from wtvib.modal import ModalError
+    from wtvib.yamlio import parse_plain
+
+    data = parse_plain((TURBINES / "mod-0-fluid-coupling.yaml").read_text()).data
+    data["drivetrain"]["shafts"][2]["damping_nms_rad"] = 1.0e9
+    with pytest.raises(ModalError, match=r"no oscillatory mode at .* power"):
+        audit.run(spec.from_data(data))

@@ -49,3 +49,19 @@ def test_a_head_without_any_yaw_inertia_is_one_line_with_the_field(write_spec):
     with pytest.raises(SpecError) as err:
         audit.run(spec.load(write_spec(text, name="z.yaml")))
     assert err.value.path == "tower_head.inertia_yaw_kgm2"
+
+
+def test_a_head_yaw_inertia_below_half_the_rotors_polar_is_refused():
+    """Issue 19 (the extreme-value campaign): on the two-bladed Aeroman a yaw inertia
+    below J_p/2 made the lowest instantaneous inertia negative and a math domain error;
+    the head's mean yaw inertia includes the rotor's J_p/2, so it is the input's error."""
+    from tests.conftest import TURBINES
+    from wtvib.errors import SpecError
+    from wtvib.yamlio import parse_plain
+
+    data = parse_plain((TURBINES / "aeroman.yaml").read_text()).data
+    data["yaw"]["rotor_polar_inertia_kgm2"]["value"] = 1.0e9
+    s = spec.from_data(data)
+    with pytest.raises(SpecError, match="must exceed half the rotor's polar inertia") as err:
+        audit.run(s)
+    assert err.value.path == "yaw.inertia_kgm2"

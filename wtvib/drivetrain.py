@@ -339,6 +339,11 @@ def power_curve(spec: Spec) -> PowerCurve | None:
     for p in fractions:
         m, k, d = system(chain, spec, "grid", float(p))
         res = modal.damped(k, m, d)
+        if not len(res.frequency_hz):
+            raise modal.ModalError(
+                f"the grid-coupled drive train has no oscillatory mode at {p:.0%} power (every "
+                "mode damped past critical): check the shafts' damping_nms_rad and the inertias"
+            )
         curve.append(float(res.frequency_hz[0]))
         zetas.append(float(res.damping_ratio[0]))
     lines = tuple(

@@ -130,8 +130,13 @@ def stability_map(model: "HeadModel", speeds_rad_s: Array) -> Array:
     w = np.asarray(speeds_rad_s, dtype=float)
     with np.errstate(all="ignore"):
         fastest = np.abs(np.linalg.eigvals(model.state_matrices(w, 0.0))).max(axis=1)
-        need = np.array(
-            [steps_for(f / (2 * math.pi), 2 * math.pi / x) for f, x in zip(fastest, w, strict=True)]
+        need = np.array(  # capped past MAX_STEPS: those speeds are not analysed anyway
+            [
+                min(steps_for(f / (2 * math.pi), 2 * math.pi / x), MAX_STEPS + 1)
+                if math.isfinite(f / x)
+                else MAX_STEPS + 1
+                for f, x in zip(fastest, w, strict=True)
+            ]
         )
         bucket = MIN_STEPS * 2 ** np.ceil(np.log2(need / MIN_STEPS)).astype(int)
         largest = np.full(w.shape, np.nan)

@@ -146,6 +146,15 @@ def model(spec: Spec) -> YawModel:
             "the tower axis it is zero",
             path="tower_head.inertia_yaw_kgm2",
         )
+    if variation >= j:  # a two-bladed rotor's own yaw inertia swings 0 … J_p about J_p/2
+        raise SpecError(
+            f"the tower head's yaw inertia ({j:.4g} kg·m²) must exceed half the rotor's polar "
+            f"inertia ({variation:.4g} kg·m²): a two-bladed rotor's own yaw inertia swings "
+            "between 0 and J_p about its mean J_p/2, which the head's inertia includes",
+            path=(
+                "yaw.inertia_kgm2" if y.inertia_kgm2 is not None else "tower_head.inertia_yaw_kgm2"
+            ),
+        )
     play = y.play
     half_gap = math.radians(play.half_gap_deg) if play else None
     k_drive = y.drives * y.drive_stiffness_nm_rad

@@ -9,7 +9,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from .base import Positive, _increasing, _same_length, _Strict
+from .base import Chord, Positive, _increasing, _same_length, _Strict
 from .blade import MAX_WIND_M_S
 
 #: The most aerofoils and stations a spec may name (the OpenFAST decks hold 8 aerofoils and
@@ -52,7 +52,7 @@ class BladeStations(_Strict):
     radius_m: list[float] = Field(
         min_length=3, max_length=MAX_STATIONS, description="Distance from the rotor axis. [m]"
     )
-    chord_m: list[Positive] = Field(description="Chord. [m]")
+    chord_m: list[Chord] = Field(description="Chord. [m]")
     twist_deg: list[float] = Field(
         description="Aerodynamic twist: angle of the chord to the rotor plane at zero pitch "
         "(positive towards feather). [deg]"

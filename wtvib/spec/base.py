@@ -19,6 +19,16 @@ class _Strict(BaseModel):
 
 Positive = Annotated[float, Field(gt=0)]
 
+# Physical ranges far beyond any wind turbine, short of what breaks a model (issue 19: a
+# 1e-300 rpm rotor asked the Floquet sweep for an integer too large for an array, a
+# 1e-300 m rotor divided the swept area by zero, a 1e300 m chord overflowed the blade).
+#: A rotor speed. [rpm]
+Rpm = Annotated[float, Field(ge=1e-3, le=1e4)]
+#: A rotor diameter. [m]
+RotorDiameter = Annotated[float, Field(ge=0.1, le=1e3)]
+#: A blade chord. [m]
+Chord = Annotated[float, Field(ge=1e-3, le=1e3)]
+
 
 Ratio = Annotated[float, Field(ge=0, lt=1)]
 

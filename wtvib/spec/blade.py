@@ -4,7 +4,16 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import BladeModeName, ModeEntry, Positive, Ratio, _increasing, _same_length, _Strict
+from .base import (
+    BladeModeName,
+    Chord,
+    ModeEntry,
+    Positive,
+    Ratio,
+    _increasing,
+    _same_length,
+    _Strict,
+)
 
 #: No operating wind is faster (the work of the stall sweep grows with it: 1e9 m/s
 #: allocated 24 GB, issue 19). [m/s]
@@ -47,7 +56,7 @@ class AeroSection(_Strict):
     radius_fraction: float = Field(
         0.75, gt=0, le=1, description="Position r/R of the section on the rotor radius. [-]"
     )
-    chord_m: Positive = Field(description="Chord c. [m]")
+    chord_m: Chord = Field(description="Chord c. [m]")
     elastic_axis_chord: Ratio = Field(
         description="Elastic (shear-centre) axis behind the leading edge, fraction of c. [-]"
     )
@@ -111,7 +120,7 @@ class Planform(_Strict):
     """Chord and twist along the blade, for the stall-induced vibration check."""
 
     radius_fraction: list[float] = Field(min_length=2, description="Position r/R. [-]")
-    chord_m: list[Positive] = Field(description="Chord. [m]")
+    chord_m: list[Chord] = Field(description="Chord. [m]")
     twist_deg: list[float] = Field(
         description="Angle of the chord to the rotor plane at zero pitch. [deg]"
     )

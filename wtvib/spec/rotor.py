@@ -4,7 +4,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import Positive, _Strict
+from .base import Positive, RotorDiameter, Rpm, _Strict
 
 
 class TurbineInfo(_Strict):
@@ -14,7 +14,7 @@ class TurbineInfo(_Strict):
     manufacturer: str | None = None
     year: int | None = Field(None, ge=1800, le=2200, description="Year of commissioning.")
     rated_power_kw: Positive | None = Field(None, description="Rated power. [kW]")
-    rotor_diameter_m: Positive | None = Field(None, description="Rotor diameter. [m]")
+    rotor_diameter_m: RotorDiameter | None = Field(None, description="Rotor diameter. [m]")
     hub_height_m: Positive | None = Field(None, description="Hub height. [m]")
     description: str | None = None
 
@@ -22,13 +22,13 @@ class TurbineInfo(_Strict):
 class RotorSpeed(_Strict):
     """Rotor speed: a fixed speed (or several, for pole-changing generators) or a range."""
 
-    fixed_rpm: Positive | Annotated[list[Positive], Field(min_length=1)] | None = Field(
+    fixed_rpm: Rpm | Annotated[list[Rpm], Field(min_length=1)] | None = Field(
         None, description="Fixed operating speed(s). [rpm]"
     )
-    min_rpm: Positive | None = Field(None, description="Lowest steady speed (variable). [rpm]")
-    rated_rpm: Positive | None = Field(None, description="Rated speed (variable). [rpm]")
-    max_rpm: Positive | None = Field(None, description="Highest steady speed (variable). [rpm]")
-    overspeed_rpm: Positive | None = Field(None, description="Transient overspeed limit. [rpm]")
+    min_rpm: Rpm | None = Field(None, description="Lowest steady speed (variable). [rpm]")
+    rated_rpm: Rpm | None = Field(None, description="Rated speed (variable). [rpm]")
+    max_rpm: Rpm | None = Field(None, description="Highest steady speed (variable). [rpm]")
+    overspeed_rpm: Rpm | None = Field(None, description="Transient overspeed limit. [rpm]")
     overspeed_factor: float | None = Field(
         None,
         gt=1,
@@ -41,7 +41,7 @@ class RotorSpeed(_Strict):
         description="Where the operating speeds come from (an importer's or the command "
         "line's statement, shown beside the speeds in the headline).",
     )
-    quick_pass_rpm: list[tuple[Positive, Positive]] = Field(
+    quick_pass_rpm: list[tuple[Rpm, Rpm]] = Field(
         default_factory=list,
         description="Speed bands [low, high] the controller passes through quickly without "
         "steady operation (variable speed). [rpm]",
