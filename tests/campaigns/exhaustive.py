@@ -1,0 +1,232 @@
+"""Exhaustive mutation campaigns (issue 19), complementing the hypothesis properties: every
+place of a reference input mutated in turn, not a random sample of them.
+
+    .venv/bin/python tests/campaigns/exhaustive.py deck      # NREL 5-MW OpenFAST deck set
+    .venv/bin/python tests/campaigns/exhaustive.py windio    # IEA-15 windIO 2.x example
+    .venv/bin/python tests/campaigns/exhaustive.py extremes  # catalogue specs' numbers
+    ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
+
+deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
+blade, ROSCO, an aerofoil) deleted, cut in half, its first and last token replaced by
+abc, nan, -1, 0, 1e300, 1e-300, 2.7. windio: each key path (list items: the first two)
+deleted, emptied, made text, negated, true, null. extremes: each numeric leaf of every
+turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. The invariant, as the CLI's: a typed wtvib
+error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
+line per crash or slow case. tests/FUZZ.md records the campaigns run.
+"""
+
+import argparse
+import copy
+import hashlib
+import json
+import os
+import shutil
+import signal
+import sys
+import tempfile
+import time
+import traceback
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+import yaml
+
+from wtvib import audit, importers, spec
+from wtvib.errors import WtvibError
+from wtvib.yamlio import parse, parse_plain
+
+ROOT = Path(__file__).resolve().parents[2]
+NREL = ROOT.parent / "shared" / "reference" / "NREL5MW"
+DECK_FILES = [
+    "NREL-5MW.fst",
+    "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
+    "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
+    "NRELOffshrBsline5MW_Blade.dat",
+    "NRELOffshrBsline5MW_Onshore_ServoDyn.dat",
+    "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
+    "NRELOffshrBsline5MW_AeroDyn_blade.dat",
+    "DISCON.IN",
+    "Airfoils/NACA64_A17.dat",
+]
+TOKENS = ["abc", "nan", "-1", "0", "1e300", "1e-300", "2.7"]
+EXTREMES = [1e-300, 1e-15, 1e9, 1e300]
+LIMIT_S = 20
+
+
+class TooSlowError(Exception):
+    """An example that ran past LIMIT_S."""
+
+
+def _alarm(*_: object) -> None:
+    raise TooSlowError
+
+
+Case = tuple[str, Callable[[], dict[str, Any]]]  # label, the spec data it imports to
+
+
+def deck_cases(work: Path) -> Iterator[Case]:
+    for name in DECK_FILES:
+        lines = (NREL / name).read_text(encoding="latin-1").splitlines(keepends=True)
+        for i, line in enumerate(lines):
+            edits = [("delete", [*lines[:i], *lines[i + 1 :]])]
+            edits.append(("cut", [*lines[:i], line[: len(line) // 2]]))
+            tokens = line.split()
+            for j in sorted({0, len(tokens) - 1}) if tokens else []:
+                for junk in TOKENS:
+                    changed = " ".join([*tokens[:j], junk, *tokens[j + 1 :]]) + "\n"
+                    edits.append((f"token{j}={junk}", [*lines[:i], changed, *lines[i + 1 :]]))
+            for label, text in edits:
+                yield f"{name}:{i + 1} {label}", _deck_import(work, name, "".join(text))
+
+
+def _deck_import(work: Path, name: str, text: str) -> Callable[[], dict[str, Any]]:
+    def run() -> dict[str, Any]:
+        try:
+            (work / name).write_text(text, encoding="latin-1")
+            return importers.to_data(work / "NREL-5MW.fst")
+        finally:
+            shutil.copyfile(NREL / name, work / name)
+
+    return run
+
+
+def windio_cases(work: Path) -> Iterator[Case]:
+    import windIO
+
+    source = Path(windIO.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    base = parse_plain(source.read_text()).data
+    for path in _paths(base):
+        for kind in ("delete", "empty", "text", "negate", "true", "null"):
+            doc = copy.deepcopy(base)
+            parent = doc
+            for key in path[:-1]:
+                parent = parent[key]
+            value = parent[path[-1]]
+            if kind == "delete":
+                if isinstance(parent, list):
+                    continue
+                del parent[path[-1]]
+            elif kind == "negate":
+                if not isinstance(value, int | float) or isinstance(value, bool):
+                    continue
+                parent[path[-1]] = -abs(value) - 1
+            else:
+                parent[path[-1]] = {"empty": [], "text": "abc", "true": True, "null": None}[kind]
+            label = f"{'.'.join(map(str, path))} {kind}"
+            yield label, _windio_import(work / "m.yaml", yaml.safe_dump(doc, sort_keys=False))
+
+
+def _windio_import(target: Path, text: str) -> Callable[[], dict[str, Any]]:
+    def run() -> dict[str, Any]:
+        target.write_text(text)
+        return importers.to_data(target)
+
+    return run
+
+
+def _paths(node: Any, path: tuple[Any, ...] = (), depth: int = 0) -> Iterator[tuple[Any, ...]]:
+    if depth > 6:
+        return
+    if isinstance(node, dict):
+        items = list(node.items())
+    elif isinstance(node, list) and node and not isinstance(node[0], int | float):
+        items = list(enumerate(node[:2]))
+    else:
+        return
+    for key, value in items:
+        yield (*path, key)
+        yield from _paths(value, (*path, key), depth + 1)
+
+
+def extreme_cases() -> Iterator[Case]:
+    for file in sorted((ROOT / "turbines").glob("*.yaml")):
+        base = parse_plain(file.read_text()).data
+        for path in _numbers(base):
+            for value in EXTREMES:
+                doc = copy.deepcopy(base)
+                parent = doc
+                for key in path[:-1]:
+                    parent = parent[key]
+                parent[path[-1]] = value
+                text = yaml.safe_dump(doc, sort_keys=False)
+                yield f"{file.name} {'.'.join(map(str, path))}={value:g}", _from_text(text)
+
+
+def _from_text(text: str) -> Callable[[], dict[str, Any]]:
+    return lambda: parse(text).data
+
+
+def _numbers(node: Any, path: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]:
+    if isinstance(node, dict):
+        for key, value in node.items():
+            yield from _numbers(value, (*path, key))
+    elif isinstance(node, list):
+        for i, value in enumerate(node[:3]):
+            yield from _numbers(value, (*path, i))
+    elif isinstance(node, int | float) and not isinstance(node, bool):
+        yield path
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("campaign", choices=["deck", "windio", "extremes"])
+    ap.add_argument("--part", type=int, default=0)
+    ap.add_argument("--parts", type=int, default=1)
+    args = ap.parse_args()
+    work = Path(tempfile.mkdtemp(prefix="wtvib-campaign-")) / "deck"
+    if args.campaign == "deck":
+        shutil.copytree(NREL, work)
+        cases = deck_cases(work)
+    elif args.campaign == "windio":
+        work.mkdir(parents=True)
+        cases = windio_cases(work)
+    else:
+        cases = extreme_cases()
+    signal.signal(signal.SIGALRM, _alarm)
+    counts = {"ok": 0, "input": 0, "crash": 0, "slow": 0, "audits": 0}
+    findings: list[str] = []
+    outcome: dict[str, str] = {}  # each distinct spec audited once (a pure function of it)
+    for n, (label, load) in enumerate(cases):
+        if n % args.parts != args.part:
+            continue
+        signal.alarm(LIMIT_S)
+        start = time.perf_counter()
+        try:
+            data = load()
+            text = json.dumps(data, sort_keys=True, default=str).encode()
+            key = hashlib.sha1(text).hexdigest()
+            if key not in outcome:
+                counts["audits"] += 1
+                try:
+                    report = audit.run(spec.from_data(data, source=label))
+                    json.dumps(report.to_dict(), allow_nan=False)
+                    outcome[key] = "ok"
+                except WtvibError:
+                    outcome[key] = "input"
+            counts[outcome[key]] += 1
+        except WtvibError:
+            counts["input"] += 1
+        except TooSlowError:
+            counts["slow"] += 1
+            findings.append(f"SLOW >{LIMIT_S} s {label}")
+        except Exception as exc:
+            counts["crash"] += 1
+            where = traceback.extract_tb(exc.__traceback__)[-1]
+            findings.append(
+                f"{label}: {type(exc).__name__}: {str(exc)[:120]} "
+                f"@ {Path(where.filename).name}:{where.lineno}"
+            )
+        finally:
+            signal.alarm(0)
+        if time.perf_counter() - start > LIMIT_S:
+            findings.append(f"SLOW {time.perf_counter() - start:.0f} s {label}")
+    print(json.dumps(counts))
+    print("\n".join(findings))
+    sys.exit(1 if counts["crash"] or counts["slow"] else 0)
+
+
+if __name__ == "__main__":
+    main()
