@@ -30,6 +30,20 @@ ROOT = Path(__file__).resolve().parents[1]
 TURBINES = ROOT / "turbines"
 SHARED = ROOT.parent / "shared"
 
+#: The files of the NREL 5-MW deck set (../shared/reference/NREL5MW) the importer reads from
+#: NREL-5MW.fst: the ones the importer fuzzing mutates.
+NREL_DECK_FILES = (
+    "NREL-5MW.fst",
+    "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
+    "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
+    "NRELOffshrBsline5MW_Blade.dat",
+    "NRELOffshrBsline5MW_Onshore_ServoDyn.dat",
+    "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
+    "NRELOffshrBsline5MW_AeroDyn_blade.dat",
+    "DISCON.IN",
+    "Airfoils/NACA64_A17.dat",
+)
+
 #: A minimal valid spec; tests format it with their own speed and tower blocks.
 BASE = """\
 wtvib: 1

@@ -27,7 +27,7 @@ from wtvib import audit, importers, spec
 from wtvib.errors import WtvibError
 from wtvib.yamlio import parse_plain
 
-from .conftest import SHARED
+from .conftest import NREL_DECK_FILES, SHARED
 
 #: Examples per property: few in CI (each costs up to a second), the campaign's in make
 #: fuzz (WTVIB_FUZZ_IMPORTER_EXAMPLES; the spec properties' 40,000 would take hours here).
@@ -170,18 +170,6 @@ def test_mutated_windio_files_fail_cleanly(case: tuple[str, dict[str, Any], dict
 
 # --- OpenFAST deck set ---------------------------------------------------------------------
 
-#: the files of the NREL 5-MW deck set that the importer reads (AeroDyn through the deck)
-DECK_FILES = [
-    "NREL-5MW.fst",
-    "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
-    "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
-    "NRELOffshrBsline5MW_Blade.dat",
-    "NRELOffshrBsline5MW_Onshore_ServoDyn.dat",
-    "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
-    "NRELOffshrBsline5MW_AeroDyn_blade.dat",
-    "DISCON.IN",
-    "Airfoils/NACA64_A17.dat",
-]
 token_junk = st.sampled_from(
     [
         "abc",
@@ -217,7 +205,7 @@ def _deck() -> Path:
 
 @st.composite
 def deck_mutation(draw: Any) -> tuple[str, str]:
-    name = draw(st.sampled_from(DECK_FILES))
+    name = draw(st.sampled_from(NREL_DECK_FILES))
     lines = (NREL / name).read_text(encoding="latin-1").splitlines(keepends=True)
     for _ in range(draw(st.integers(1, 2))):
         i = draw(st.integers(0, len(lines) - 1))

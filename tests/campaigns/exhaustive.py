@@ -39,18 +39,10 @@ from wtvib.errors import WtvibError
 from wtvib.yamlio import parse, parse_plain
 
 ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT))  # run as a script: the tests package beside wtvib
+from tests.conftest import NREL_DECK_FILES as DECK_FILES  # noqa: E402
+
 NREL = ROOT.parent / "shared" / "reference" / "NREL5MW"
-DECK_FILES = [
-    "NREL-5MW.fst",
-    "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
-    "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat",
-    "NRELOffshrBsline5MW_Blade.dat",
-    "NRELOffshrBsline5MW_Onshore_ServoDyn.dat",
-    "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
-    "NRELOffshrBsline5MW_AeroDyn_blade.dat",
-    "DISCON.IN",
-    "Airfoils/NACA64_A17.dat",
-]
 TOKENS = ["abc", "nan", "-1", "0", "1e300", "1e-300", "2.7"]
 EXTREMES = [1e-300, 1e-15, 1e9, 1e300]
 LIMIT_S = 20
