@@ -6,8 +6,16 @@ p = E_py(z)·y, E_py the initial (small-strain) slope of the p-y curves — the 
 sets natural frequencies. Sand: E_py = k·z with k the initial modulus of subgrade reaction
 for the friction angle φ′ (API RP 2GEO 2011 and DNV-RP-C212, which tabulate k against φ′;
 the fit k = max(197.8·φ′² − 10,232·φ′ + 136,820, 5,400) kN/m³ of openpile's documentation,
-TchilDill/openpile `docs/source/PYmodels.rst`, submerged sand). Other soils: E_py given
-(a site's own value, or clay's from its report), constant or growing with depth.
+TchilDill/openpile `docs/source/PYmodels.rst`, submerged sand). Stiff clay: E_py = k·z with
+k for its undrained shear strength s_u from Reese, Cox & Koop (1975, OTC 2312; stiff clay
+with free water, the initial straight line p = (k·z)·y; as given in Reese & Van Impe 2011
+and OpenBrIM's technical background "Stiff Clay with Free Water"): k = 135, 270 and
+540 MN/m³ static for s_u of 50–100, 100–200 and 200–400 kPa, interpolated linearly between
+the bands' centres (75, 150, 300 kPa) and held at the end values beyond them; the static
+values, since the small vibrations of a natural mode are what they describe (the cyclic
+ones, 55/110/540, are within the default lower bound ×0.5 for the two softer bands). Soft
+clay (Matlock 1970) has no finite initial slope: give its E_py. Other soils: E_py given
+(a site's own value), constant or growing with depth.
 
 The pile is an Euler–Bernoulli tube (wtvib.beam) with the springs' consistent stiffness
 ∫NᵀE_py N dz assembled like a mass matrix, condensed to the head's lateral and rocking
@@ -46,6 +54,16 @@ def sand_subgrade_n_m3(phi_deg: float) -> float:
     return 1e3 * max(197.8 * phi_deg**2 - 10232.0 * phi_deg + 136820.0, 5400.0)
 
 
+#: Reese et al. (1975) stiff clay: s_u at the bands' centres [Pa] and k static [N/m³].
+CLAY_SU_PA = (75e3, 150e3, 300e3)
+CLAY_K_N_M3 = (135e6, 270e6, 540e6)
+
+
+def clay_subgrade_n_m3(su_pa: float) -> float:
+    """Initial modulus of subgrade reaction k of stiff clay [N/m³] (module docstring)."""
+    return float(np.interp(su_pa, CLAY_SU_PA, CLAY_K_N_M3))
+
+
 def modulus(layers: "list[SoilLayer]", z: Array) -> Array:
     """E_py [N/m²] at depths ``z`` below the mudline."""
     out = np.zeros_like(z)
@@ -55,6 +73,9 @@ def modulus(layers: "list[SoilLayer]", z: Array) -> Array:
         if layer.kind == "sand":
             assert layer.friction_angle_deg is not None
             out[inside] = sand_subgrade_n_m3(layer.friction_angle_deg) * z[inside]
+        elif layer.kind == "clay":
+            assert layer.undrained_shear_strength_pa is not None
+            out[inside] = clay_subgrade_n_m3(layer.undrained_shear_strength_pa) * z[inside]
         else:
             assert layer.modulus_pa is not None
             out[inside] = layer.modulus_pa + layer.gradient_pa_m * (z[inside] - top)

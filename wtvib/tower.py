@@ -503,6 +503,11 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         layers = ", ".join(
             f"{x.kind} to {x.bottom_m:g} m"
             + (f" (φ′ {x.friction_angle_deg:g}°)" if x.friction_angle_deg is not None else "")
+            + (
+                f" (s_u {x.undrained_shear_strength_pa / 1e3:g} kPa)"
+                if x.undrained_shear_strength_pa is not None
+                else ""
+            )
             for x in f.soil
         )
         base = (

@@ -254,3 +254,50 @@ def test_soil_parameters_are_uncertain_inputs():
     assert 0.05 < sens < 0.5  # stiffer sand, stiffer tower, far less than proportionally
     fa1 = u["modes"]["tower.fa1"]
     assert fa1["std_hz"] / fa1["mean_hz"] == pytest.approx(sens * 0.05, rel=0.2)
+
+
+def test_stiff_clay_takes_reeses_initial_slope_from_its_strength():
+    """Stiff clay: E_py = k·z with k of Reese, Cox & Koop (1975, OTC 2312; as given in
+    Reese & Van Impe 2011): 135, 270, 540 MN/m³ (static) for s_u of 50–100, 100–200,
+    200–400 kPa — each band's value at its centre and its outer edges."""
+    import numpy as np
+
+    for su, k in [(75e3, 135e6), (150e3, 270e6), (300e3, 540e6), (50e3, 135e6), (400e3, 540e6)]:
+        assert soil.clay_subgrade_n_m3(su) == pytest.approx(k, rel=1e-12)
+    layers = [
+        SoilLayer(bottom_m=10.0, kind="sand", friction_angle_deg=35.0),
+        SoilLayer(bottom_m=40.0, kind="clay", undrained_shear_strength_pa=150e3),
+    ]
+    z = np.array([5.0, 20.0, 35.0])
+    expected = [21.0e6 * 5.0, 270e6 * 20.0, 270e6 * 35.0]  # k·z, z below the mudline
+    assert soil.modulus(layers, z) == pytest.approx(expected, rel=2e-3)
+
+
+def test_a_clay_profile_audits_and_a_stiffer_clay_stiffens_the_tower():
+    def fa1(su: float) -> float:
+        d = monopile_turbine().model_dump()
+        d["tower"]["foundation"]["soil"] = [
+            {"bottom_m": 60, "kind": "clay", "undrained_shear_strength_pa": su}
+        ]
+        r = audit.run(spec.Spec.model_validate(d))
+        assert any("clay to 60 m (s_u" in a for a in r.assumptions)
+        return {m.id: m for m in r.modes}["tower.fa1"].frequency_hz
+
+    assert fa1(60e3) < fa1(350e3)
+
+
+@pytest.mark.parametrize(
+    ("layer", "message"),
+    [
+        ({"kind": "clay"}, "a clay layer needs undrained_shear_strength_pa"),
+        ({"kind": "clay", "undrained_shear_strength_pa": 20e3}, "greater than or equal to 50000"),
+        (
+            {"kind": "clay", "undrained_shear_strength_pa": 1e5, "friction_angle_deg": 30},
+            "friction_angle_deg is not used by a clay layer",
+        ),
+        ({"kind": "sand", "friction_angle_deg": 30, "modulus_pa": 1e8}, "not used by a sand"),
+    ],
+)
+def test_a_soil_layer_says_what_it_lacks_or_does_not_use(layer, message):
+    with pytest.raises(ValueError, match=message):
+        SoilLayer(bottom_m=20.0, **layer)

@@ -92,16 +92,25 @@ class Pile(_Strict):
 
 class SoilLayer(_Strict):
     """A soil layer down to ``bottom_m`` below the mudline, as an initial lateral (p-y)
-    stiffness per unit pile length E_py [N/m²]: sand from its friction angle (E_py = k·z,
-    k the initial modulus of subgrade reaction), or E_py given (clay or a site's own value:
-    at the layer's top plus a gradient with depth)."""
+    stiffness per unit pile length E_py [N/m²]: sand from its friction angle, stiff clay
+    from its undrained shear strength (E_py = k·z, k the initial modulus of subgrade
+    reaction; wtvib.soil), or E_py given (soft clay or a site's own value: at the layer's
+    top plus a gradient with depth)."""
 
     bottom_m: Annotated[float, Field(gt=0, le=500)] = Field(
         description="Depth of the layer's bottom below the mudline. [m]"
     )
-    kind: Literal["sand", "modulus"] = Field(description="sand (friction angle) or modulus.")
+    kind: Literal["sand", "clay", "modulus"] = Field(
+        description="sand (friction angle), clay (undrained shear strength) or modulus."
+    )
     friction_angle_deg: Annotated[float, Field(ge=25, le=45)] | None = Field(
         None, description="Sand: effective friction angle φ′. [deg]"
+    )
+    undrained_shear_strength_pa: Annotated[float, Field(ge=50e3, le=400e3)] | None = Field(
+        None,
+        description="Stiff clay: undrained shear strength s_u, 50-400 kPa (the stiff clay of "
+        "Reese et al. 1975, whose initial p-y slope wtvib uses; softer or harder clay: kind "
+        "modulus with its E_py). [Pa]",
     )
     modulus_pa: Annotated[float, Field(ge=0, le=1e11)] | None = Field(
         None, description="E_py at the layer's top. [N/m²]"
@@ -114,8 +123,22 @@ class SoilLayer(_Strict):
     def _given(self) -> "SoilLayer":
         if self.kind == "sand" and self.friction_angle_deg is None:
             raise ValueError("a sand layer needs friction_angle_deg")
+        if self.kind == "clay" and self.undrained_shear_strength_pa is None:
+            raise ValueError("a clay layer needs undrained_shear_strength_pa")
         if self.kind == "modulus" and self.modulus_pa is None:
             raise ValueError("a modulus layer needs modulus_pa")
+        uses = {
+            "sand": {"friction_angle_deg"},
+            "clay": {"undrained_shear_strength_pa"},
+            "modulus": {"modulus_pa", "gradient_pa_m"},
+        }[self.kind]
+        unused = [
+            name
+            for name, field in type(self).model_fields.items()
+            if name not in uses | {"bottom_m", "kind"} and getattr(self, name) != field.default
+        ]
+        if unused:
+            raise ValueError(f"{', '.join(unused)} is not used by a {self.kind} layer")
         return self
 
 
