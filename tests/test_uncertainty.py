@@ -47,3 +47,61 @@ def test_the_reduced_tower_samples_equal_each_sample_solved_anew():
     full = uncertainty._tower_samples_direct(s, factors)
     for mode in ("tower.fa1", "tower.ss1"):
         assert np.allclose(reduced[mode], full[mode], rtol=1e-9, atol=0)
+
+
+def test_the_schema_gives_each_sampled_field_its_range():
+    from wtvib.spec.ranges import valid_range
+
+    assert valid_range("tower.foundation.soil[0].friction_angle_deg") == (25, 45, False, False)
+    assert valid_range("tower.material.youngs_modulus_pa")[:3] == (0, np.inf, True)
+    assert valid_range("tower.modes.fa1")[:3] == (0, np.inf, True)  # a given frequency
+    assert valid_range("blade.modes.flap1.damping_ratio") == (0, 1, False, True)
+    assert valid_range("drivetrain.modes.grid[0].frequency_hz")[0] == 0
+    assert valid_range("tower_head.cm_downwind_m") == (-1000, 1000, False, False)
+
+
+def test_draws_outside_the_valid_range_are_drawn_again_and_counted():
+    """A friction angle of 44° ± 5 % (normal) reaches past the 45° the spec accepts in
+    ≈ 33 % of draws (P(z > 1/2.2) of a standard normal, 0.325); those are drawn again."""
+    q = spec.Quantity(value=44.0, provenance="representative", tolerance=0.05)
+    f, outside = uncertainty.draw_valid(
+        "tower.foundation.soil[0].friction_angle_deg", q, 20_000, np.random.default_rng(1)
+    )
+    assert np.all(44.0 * f <= 45.0) and np.all(44.0 * f >= 25.0)
+    assert outside / 20_000 == pytest.approx(0.325, abs=0.015)
+
+
+def test_a_wide_tolerance_is_a_truncated_distribution_and_buckling_a_share():
+    """WKA-60's concrete E at ±60 % (normal): 4.8 % of draws are ≤ 0 (P(z < −1/0.6)) and
+    are drawn again; the softest samples buckle under the 80 t head — both reported, as
+    warnings and in the JSON, where a crash ("the structure is unstable") stood before."""
+    from tests.conftest import TURBINES
+    from wtvib import audit
+
+    d = spec.load(TURBINES / "wka-60.yaml")
+    wide = spec.from_data(
+        {
+            **{k: v for k, v in d.model_dump().items() if v is not None},
+            "tower": {
+                **d.tower.model_dump(),
+                "material": {
+                    **d.tower.material.model_dump(),  # type: ignore[union-attr]
+                    "youngs_modulus_pa": {
+                        "value": 3.5e10,
+                        "provenance": "representative",
+                        "tolerance": 0.6,
+                    },
+                },
+            },
+        }
+    )
+    r = audit.run(wide, samples=4000, seed=2)
+    u = r.uncertainty
+    assert u is not None
+    t = u["truncated"]["tower.material.youngs_modulus_pa"]
+    assert t["redrawn"] / 4000 == pytest.approx(0.048, abs=0.012)
+    buckles = u["modes"]["tower.fa1"]["unstable"]["probability"]
+    assert 0 < buckles < 0.02
+    assert np.isfinite(u["modes"]["tower.fa1"]["p5_hz"])
+    assert any("drawn again" in w for w in r.warnings)
+    assert any("tower.fa1 buckles" in w for w in r.warnings)

@@ -287,6 +287,7 @@ def _run(
             results[sub.NAME] = analysis.results
         assumptions += analysis.assumptions
     _assert_finite(all_modes)
+    spread = _uncertainty(spec, samples, seed, all_modes, rule, client) if samples else None
     return Report(
         spec=spec,
         settings=settings,
@@ -294,10 +295,12 @@ def _run(
         checks=tuple(checks),
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions)),
-        warnings=tuple(suspicious(spec, all_modes) + _no_tolerance(spec, samples)),
-        uncertainty=(
-            _uncertainty(spec, samples, seed, all_modes, rule, client) if samples else None
+        warnings=tuple(
+            suspicious(spec, all_modes)
+            + _no_tolerance(spec, samples)
+            + _uncertainty_warnings(spread)
         ),
+        uncertainty=spread,
         results=results,
     )
 
@@ -342,6 +345,12 @@ def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
     from . import uncertainty
 
     return [uncertainty.NO_TOLERANCE] if samples and not uncertainty.uncertain(spec) else []
+
+
+def _uncertainty_warnings(spread: dict[str, Any] | None) -> list[str]:
+    from . import uncertainty
+
+    return uncertainty.warnings_of(spread) if spread else []
 
 
 def _uncertainty(

@@ -229,7 +229,9 @@ def report_schema() -> dict[str, Any]:
             ),
             "uncertainty": _d(
                 "Monte Carlo results (--uncertainty): samples, per-mode percentiles and "
-                "margin-band probabilities, sensitivities.",
+                "margin-band probabilities (and the share of samples that buckle, "
+                "`unstable`), sensitivities, inputs not propagated, and draws outside an "
+                "input's valid range drawn again (`truncated`).",
                 {"type": "object"},
             ),
             "inputs": _d(

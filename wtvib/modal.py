@@ -70,14 +70,18 @@ def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     return [Modes(hz[i], shapes[i]) for i in range(len(w2))]
 
 
-def frequencies_stacked(k: Array, m: Array, count: int) -> Array:
+def frequencies_stacked(k: Array, m: Array, count: int, *, unstable_as_nan: bool = False) -> Array:
     """The lowest ``count`` natural frequencies [Hz] of each problem of a stack, shape
     (p, count): :func:`solve_stacked` without the mode shapes (eigenvalues only, half the
-    work — the Monte Carlo samples' path)."""
+    work — the Monte Carlo samples' path). A problem that buckles raises, or with
+    ``unstable_as_nan`` comes back as NaN (a sample among many may buckle)."""
     a, _ = _standard_form(k, m)
     w2 = np.asarray(np.linalg.eigvalsh(a), dtype=float)
-    _check_stable(w2)
-    return np.sqrt(np.clip(w2[:, :count], 0.0, None)) / (2.0 * np.pi)
+    if not unstable_as_nan:
+        _check_stable(w2)
+    hz = np.sqrt(np.clip(w2[:, :count], 0.0, None)) / (2.0 * np.pi)
+    hz[_unstable(w2)] = np.nan
+    return hz
 
 
 def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
@@ -99,10 +103,15 @@ def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
     return 0.5 * (a + np.swapaxes(a, -1, -2)), inv_t
 
 
+def _unstable(w2: Array) -> NDArray[np.bool_]:
+    """Which problems of a stack have a clearly negative lowest eigenvalue (they buckle)."""
+    scale = np.maximum(np.abs(w2).max(axis=-1, initial=0.0), 1.0)
+    return np.asarray(w2[:, 0] < -1e-8 * scale)
+
+
 def _check_stable(w2: Array) -> None:
     """ModalError where a problem's lowest eigenvalue is clearly negative (it buckles)."""
-    scale = np.maximum(np.abs(w2).max(axis=-1, initial=0.0), 1.0)
-    unstable = np.flatnonzero(w2[:, 0] < -1e-8 * scale)
+    unstable = np.flatnonzero(_unstable(w2))
     if unstable.size:
         raise ModalError(
             f"the structure is unstable (negative stiffness eigenvalue "

@@ -356,15 +356,20 @@ def _uncertainty(u: dict[str, Any]) -> Table:
     )
     for col in ("mode", "p5 [Hz]", "p50 [Hz]", "p95 [Hz]", "P(in a margin band)"):
         table.add_column(col, justify="left" if col in ("mode", "P(in a margin band)") else "right")
+
+    def share(k: str, v: dict[str, Any]) -> str:
+        return f"{k} {v['probability']:.1%} [{v['ci95'][0]:.1%}–{v['ci95'][1]:.1%}]"
+
     for mode, s in u["modes"].items():
-        risky = sorted(s["in_margin_band"].items(), key=lambda kv: -kv[1]["probability"])
-        text = (
-            ", ".join(
-                f"{k} {v['probability']:.1%} [{v['ci95'][0]:.1%}–{v['ci95'][1]:.1%}]"
-                for k, v in risky
-                if v["probability"] > 0
-            )
-            or "none"
+        risky = sorted(s.get("in_margin_band", {}).items(), key=lambda kv: -kv[1]["probability"])
+        text = ", ".join(
+            ([share("buckles", s["unstable"])] if "unstable" in s else [])
+            + [share(k, v) for k, v in risky if v["probability"] > 0]
         )
-        table.add_row(mode, f"{s['p5_hz']:.4g}", f"{s['p50_hz']:.4g}", f"{s['p95_hz']:.4g}", text)
+        if "p5_hz" not in s:
+            table.add_row(mode, "—", "—", "—", text)
+            continue
+        table.add_row(
+            mode, f"{s['p5_hz']:.4g}", f"{s['p50_hz']:.4g}", f"{s['p95_hz']:.4g}", text or "none"
+        )
     return table

@@ -17,17 +17,19 @@ J. Am. Stat. Assoc. 22, 1927 (confidence interval of a probability).
 import copy
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from . import modal, tower
+from .errors import SpecError
 from .excitation import excitations, operating_range
 from .results import Mode, Southwell
 from .rules import MarginRule
 from .spec import Quantity, Spec, from_data
+from .spec.ranges import valid_range
 
 Array = NDArray[np.float64]
 
@@ -57,6 +59,38 @@ def draw(q: Quantity, n: int, rng: np.random.Generator) -> Array:
     return rng.normal(1.0, t, n)
 
 
+#: Rounds of redrawing before a distribution is declared to lie outside its field's range.
+REDRAWS = 200
+
+
+def draw_valid(path: str, q: Quantity, n: int, rng: np.random.Generator) -> tuple[Array, int]:
+    """:func:`draw` truncated to what the spec accepts: a factor is positive (a tolerance
+    scatters a value, it never flips or zeroes it) and the value stays within the field's
+    schema range (a friction angle in 25–45°); draws outside are drawn again. Returns the
+    factors and how many of the first ``n`` draws fell outside (reported as truncation)."""
+    low, high, low_open, high_open = valid_range(path)
+    value = float(q.value)
+
+    def outside(f: Array) -> NDArray[np.bool_]:
+        v = value * f
+        below = (v <= low) if low_open else (v < low)
+        above = (v >= high) if high_open else (v > high)
+        return np.asarray((f <= 0) | below | above)
+
+    f = draw(q, n, rng)
+    bad = outside(f)
+    first = int(np.count_nonzero(bad))
+    for _ in range(REDRAWS):
+        if not bad.any():
+            return f, first
+        f[bad] = draw(q, int(np.count_nonzero(bad)), rng)
+        bad = outside(f)
+    raise SpecError(
+        f"{path}: its tolerance puts almost every sample outside the range the spec accepts "
+        f"({low:g} to {high:g}, nominal {value:g}): narrow the tolerance"
+    )
+
+
 def uncertain(spec: Spec) -> dict[str, Quantity]:
     return {p: q for p, q in spec.provenance.items() if q.tolerance}
 
@@ -82,10 +116,12 @@ def _with_scaled(spec: Spec, path: str, factor: float) -> Spec:
 
 @dataclass(frozen=True)
 class Samples:
-    """Sampled frequencies [Hz] per mode id, (n,) each; inputs not propagated."""
+    """Sampled frequencies [Hz] per mode id, (n,) each; inputs not propagated; per input,
+    how many draws fell outside its valid range and were drawn again."""
 
     frequencies: dict[str, Array]
     skipped: tuple[str, ...]
+    truncated: dict[str, int] = field(default_factory=dict)
 
 
 Nominal = Mapping[str, float]
@@ -118,8 +154,14 @@ def sample(
 
 def combine(parts: Sequence[Samples]) -> Samples:
     keys = parts[0].frequencies.keys()
+    truncated: dict[str, int] = {}
+    for p in parts:
+        for k, v in p.truncated.items():
+            truncated[k] = truncated.get(k, 0) + v
     return Samples(
-        {k: np.concatenate([p.frequencies[k] for p in parts]) for k in keys}, parts[0].skipped
+        {k: np.concatenate([p.frequencies[k] for p in parts]) for k in keys},
+        parts[0].skipped,
+        truncated,
     )
 
 
@@ -129,7 +171,9 @@ def sample_chunk(
     """One chunk of samples: the unit of work for local or distributed runs."""
     rng = np.random.default_rng(seq)
     inputs = uncertain(spec)
-    factors = {p: draw(q, n, rng) for p, q in sorted(inputs.items())}
+    drawn = {p: draw_valid(p, q, n, rng) for p, q in sorted(inputs.items())}
+    factors = {p: f for p, (f, _) in drawn.items()}
+    truncated = {p: k for p, (_, k) in drawn.items() if k}
     out: dict[str, Array] = {}
     skipped = []
     nominal = nominal if nominal is not None else nominal_of(spec)
@@ -146,7 +190,7 @@ def sample_chunk(
             out[mode] = nominal[mode] * f
         elif mode is None and p not in tower_paths:
             skipped.append(p)
-    return Samples(out, tuple(skipped))
+    return Samples(out, tuple(skipped), truncated)
 
 
 def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
@@ -159,7 +203,13 @@ def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Ar
         d = copy.deepcopy(data)
         for path, f in factors.items():
             _scale(d, path, float(f[i]))
-        s = from_data(d)
+        try:
+            s = from_data(d)
+        except SpecError as e:
+            raise SpecError(
+                f"--uncertainty: sample {i + 1} of the tolerances is not a valid spec ({e}): "
+                "narrow the tolerances"
+            ) from None
         b = tower.discretise(s.tower)
         for name, direction in (("tower.fa1", "fa"), ("tower.ss1", "ss")):
             stiff, mass = tower.bending_system(
@@ -170,7 +220,8 @@ def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Ar
                 direction,  # type: ignore[arg-type]
                 s.tower.gravity,
             )
-            out[name].append(float(modal.solve(stiff, mass, 1).frequency_hz[0]))
+            f = modal.frequencies_stacked(stiff[None], mass[None], 1, unstable_as_nan=True)
+            out[name].append(float(f[0, 0]))
     return {k: np.asarray(v) for k, v in out.items()}
 
 
@@ -229,7 +280,7 @@ def _tower_samples(spec: Spec, factors: dict[str, Array]) -> dict[str, Array]:
         s = np.stack([factors[p] for p in factors], axis=1) - 1.0
         k = k0r + np.einsum("nj,jab->nab", s, dkr)
         m = m0r + np.einsum("nj,jab->nab", s, dmr)
-        out[name] = modal.frequencies_stacked(k, m, 1)[:, 0]
+        out[name] = modal.frequencies_stacked(k, m, 1, unstable_as_nan=True)[:, 0]
     assert all(len(v) == n for v in out.values())
     return out
 
@@ -283,34 +334,34 @@ def summary(
     lines = [e for e in excitations(spec) if e.energy != "minor"]
     by_id = {m.id: m for m in modes or ()}
     omega = np.concatenate([np.linspace(a, b, SPEEDS_PER_RANGE) for a, b in op.steady])
-    out = {}
+    out: dict[str, dict[str, Any]] = {}
     for mode_id, f in sorted(samples.frequencies.items()):
         mode = by_id.get(mode_id)
-        p5, p50, p95 = np.percentile(f, [5, 50, 95])
+        stable = np.isfinite(f)
+        if not stable.any():
+            out[mode_id] = {"unstable": _share(len(f), len(f))}
+            continue
+        p5, p50, p95 = np.percentile(f[stable], [5, 50, 95])
         probs = {}
         exists = (
             mode is not None and mode.judged and (mode.regimes is None or "steady" in mode.regimes)
         )
         if exists:
             assert mode is not None
-            curves = sampled_curves(mode, f / mode.frequency_hz, omega)
+            curves = sampled_curves(mode, f[stable] / mode.frequency_hz, omega)
             for e in lines:
                 if not e.acts_on(mode.subsystem):
                     continue
                 bad = rule.violates(rule.separation(e.frequency_hz(omega)[None, :], curves))
-                hits = int(np.sum(np.any(bad, axis=1)))
-                lo, hi = wilson(hits, len(f))
-                probs[e.id] = {
-                    "probability": round(hits / len(f), 6),
-                    "ci95": [round(lo, 6), round(hi, 6)],
-                }
+                probs[e.id] = _share(int(np.sum(np.any(bad, axis=1))), len(f))
         out[mode_id] = {
-            "mean_hz": round(float(np.mean(f)), 6),
-            "std_hz": round(float(np.std(f)), 6),
+            "mean_hz": round(float(np.mean(f[stable])), 6),
+            "std_hz": round(float(np.std(f[stable])), 6),
             "p5_hz": round(float(p5), 6),
             "p50_hz": round(float(p50), 6),
             "p95_hz": round(float(p95), 6),
             "in_margin_band": probs,
+            **({"unstable": _share(int(np.sum(~stable)), len(f))} if not stable.all() else {}),
         }
     return {
         "samples": len(next(iter(samples.frequencies.values()), [])),
@@ -318,7 +369,51 @@ def summary(
         "judged_over": "every steady speed where the mode exists, along its curve",
         "modes": out,
         "not_propagated": list(samples.skipped),
+        "truncated": {
+            p: {"redrawn": k, "range": _range_text(p)} for p, k in sorted(samples.truncated.items())
+        },
     }
+
+
+def _share(hits: int, n: int) -> dict[str, Any]:
+    """A probability from ``hits`` of ``n`` samples, with its Wilson 95 % interval."""
+    lo, hi = wilson(hits, n)
+    return {"probability": round(hits / n, 6), "ci95": [round(lo, 6), round(hi, 6)]}
+
+
+def warnings_of(summary: Mapping[str, Any]) -> list[str]:
+    """What the sampling changed or found that a reader must not miss."""
+    out = []
+    n = summary["samples"]
+    for path, t in summary.get("truncated", {}).items():
+        out.append(
+            f"--uncertainty: {t['redrawn']} of {n} draws of {path} fell outside what the spec "
+            f"accepts ({t['range']}) and were drawn again: its distribution is truncated there"
+        )
+    for mode_id, m in summary["modes"].items():
+        if "unstable" in m:
+            p = m["unstable"]
+            out.append(
+                f"--uncertainty: {mode_id} buckles (a negative stiffness: the weight on top "
+                f"exceeds what the sampled structure carries) in {p['probability']:.2%} of "
+                f"the samples [{p['ci95'][0]:.2%}–{p['ci95'][1]:.2%}]; its statistics are "
+                "over the others"
+            )
+    if summary.get("not_propagated"):
+        out.append(
+            "--uncertainty: not propagated (no model of them is sampled): "
+            + ", ".join(summary["not_propagated"])
+        )
+    return out
+
+
+def _range_text(path: str) -> str:
+    low, high, low_open, high_open = valid_range(path)
+    parts = [f"{'>' if low_open else '≥'} {low:g}"] if math.isfinite(low) else []
+    parts += [f"{'<' if high_open else '≤'} {high:g}"] if math.isfinite(high) else []
+    if not low >= 0:
+        parts.append("its sign kept")
+    return ", ".join(parts)
 
 
 NO_TOLERANCE = (

@@ -123,7 +123,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
 
     spread = (report.uncertainty or {}).get("modes", {})
     for mode in modes:
-        if mode.id in spread:  # the 5–95 % band of the sampled frequency
+        if "p5_hz" in spread.get(mode.id, {}):  # the 5–95 % band of the sampled frequency
             band = spread[mode.id]
             ax.axhspan(
                 band["p5_hz"],
