@@ -188,6 +188,34 @@ def test_an_unexpected_exception_is_one_line_and_exit_3_never_a_fail(monkeypatch
     assert "mod-2.yaml" in lines[0] and "Traceback" not in result.output
 
 
+def test_numpy_overflow_notes_stay_off_the_one_error_line():
+    """A hostile number can overflow inside numpy before the model's own check names it
+    (issue 19): the user sees the one line, not numpy's RuntimeWarning and its source line.
+    A separate process: pytest records warnings itself, so only a real run shows them."""
+    import subprocess
+    import sys
+
+    script = (
+        "import sys, numpy as np\n"
+        "from wtvib import audit, cli\n"
+        "from wtvib.modal import ModalError\n"
+        "def overflowing(*a, **k):\n"
+        "    np.array([1e300]) ** 2\n"
+        "    raise ModalError('the structural matrices hold NaN or infinite values')\n"
+        "audit.run = overflowing\n"
+        "sys.argv = ['wtvib', 'check', sys.argv[1], '--no-plot']\n"
+        "cli.main()\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", script, str(TURBINES / "mod-2.yaml")],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 2
+    assert done.stderr.count("\n") == 1 and "RuntimeWarning" not in done.stderr, done.stderr
+
+
 @pytest.mark.parametrize(
     ("args", "message"),
     [

@@ -11,6 +11,7 @@ import inspect
 import json
 import os
 import sys
+import warnings
 from collections.abc import Callable, Iterator
 from enum import StrEnum
 from pathlib import Path
@@ -192,7 +193,11 @@ def _user_errors(command: F) -> F:
 
         debug = _state["debug"] or kwargs.get("debug")
         try:
-            command(*args, **kwargs)
+            with warnings.catch_warnings():
+                if not debug:  # numpy's overflow notes on hostile numbers: the error or
+                    # warning line the model raises says it, without the source lines
+                    warnings.simplefilter("ignore", RuntimeWarning)
+                command(*args, **kwargs)
         except WtvibError as exc:
             if debug:
                 raise

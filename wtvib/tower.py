@@ -382,6 +382,12 @@ def _keep(k: Array, m: Array, dofs: slice) -> tuple[Array, Array]:
     return k[dofs, dofs], m[dofs, dofs]
 
 
+#: A computed tower mode below this [Hz] (a period over 15 minutes) is a mechanism, not a
+#: structure: a pile or spring that carries nothing (issue 19: a 1e-300 m pile wall gave
+#: 0 Hz and the 1P-4P checks "passed" it).
+NOT_HELD_HZ = 1e-3
+
+
 def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]:
     """Tower modes computed from the spec's structure: fa1, fa2, ss1, ss2 and tor1."""
     t = spec.tower
@@ -399,6 +405,13 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
         out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
+    lowest = min(out, key=lambda m: m.frequency_hz)
+    if lowest.frequency_hz < NOT_HELD_HZ:
+        raise modal.ModalError(
+            f"{lowest.id} comes out at {lowest.frequency_hz:.3g} Hz — the tower "
+            "is not held (its base, springs or pile carry next to no load): check "
+            "tower.foundation and the tower's stiffness"
+        )
     return sorted(out, key=lambda m: m.frequency_hz)
 
 

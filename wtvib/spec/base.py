@@ -28,6 +28,11 @@ Rpm = Annotated[float, Field(ge=1e-3, le=1e4)]
 RotorDiameter = Annotated[float, Field(ge=0.1, le=1e3)]
 #: A blade chord. [m]
 Chord = Annotated[float, Field(ge=1e-3, le=1e3)]
+#: A tower's or pile's diameter or wall (a 1e300 m diameter overflowed the section's
+#: second moment into NaN matrices; a 1e-300 m wall left a pile with no stiffness). [m]
+TowerSize = Annotated[float, Field(ge=1e-4, le=1e3)]
+#: A height above the tower base. [m]
+Height = Annotated[float, Field(ge=-1e3, le=1e4)]
 
 
 Ratio = Annotated[float, Field(ge=0, lt=1)]

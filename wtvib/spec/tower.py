@@ -5,7 +5,17 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import ModeEntry, Positive, Ratio, TowerModeName, _increasing, _same_length, _Strict
+from .base import (
+    Height,
+    ModeEntry,
+    Positive,
+    Ratio,
+    TowerModeName,
+    TowerSize,
+    _increasing,
+    _same_length,
+    _Strict,
+)
 
 
 class Material(_Strict):
@@ -29,9 +39,9 @@ class Material(_Strict):
 class TubularSections(_Strict):
     """A tapered tube: outer diameter and wall thickness at stations, linear in between."""
 
-    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
-    outer_diameter_m: list[Positive] = Field(description="Outer diameter. [m]")
-    wall_thickness_m: list[Positive] = Field(description="Wall thickness. [m]")
+    height_m: list[Height] = Field(description="Station heights above the tower base. [m]")
+    outer_diameter_m: list[TowerSize] = Field(description="Outer diameter. [m]")
+    wall_thickness_m: list[TowerSize] = Field(description="Wall thickness. [m]")
 
     @model_validator(mode="after")
     def _consistent(self) -> "TubularSections":
@@ -48,7 +58,7 @@ class TubularSections(_Strict):
 class DistributedTower(_Strict):
     """A tower as a table of distributed properties (as in ElastoDyn tower files)."""
 
-    height_m: list[float] = Field(description="Station heights above the tower base. [m]")
+    height_m: list[Height] = Field(description="Station heights above the tower base. [m]")
     mass_per_length_kg_m: list[Positive] = Field(description="Mass per length. [kg/m]")
     ei_fa_nm2: list[Positive] = Field(description="Fore-aft bending stiffness. [N·m²]")
     ei_ss_nm2: list[Positive] = Field(description="Side-side bending stiffness. [N·m²]")
@@ -69,18 +79,18 @@ class DistributedTower(_Strict):
 class PointMass(_Strict):
     """A concentrated mass on the tower (flange, platform, transition piece)."""
 
-    height_m: float = Field(description="Height above the tower base. [m]")
+    height_m: Height = Field(description="Height above the tower base. [m]")
     mass_kg: Positive = Field(description="Mass. [kg]")
 
 
 class Pile(_Strict):
     """The embedded part of a monopile, below the mudline (the tower's base)."""
 
-    embedded_length_m: Annotated[float, Field(gt=0, le=200)] = Field(
+    embedded_length_m: Annotated[float, Field(ge=0.1, le=200)] = Field(
         description="Pile length below the mudline. [m]"
     )
     diameter_m: Annotated[float, Field(gt=0, le=30)] = Field(description="Outer diameter. [m]")
-    wall_thickness_m: Positive = Field(description="Wall thickness. [m]")
+    wall_thickness_m: TowerSize = Field(description="Wall thickness. [m]")
     youngs_modulus_pa: Positive = Field(2.1e11, description="Young's modulus (steel). [Pa]")
 
     @model_validator(mode="after")
