@@ -113,3 +113,17 @@ def test_a_lowest_speed_far_below_the_highest_is_a_warning(write_spec):
 
     assert len(warned(0.94)) == 1
     assert warned(5.0) == []
+
+
+def test_a_natural_frequency_under_a_hundredth_of_a_hertz_is_a_warning():
+    """Issue 19 (found setting every catalogue number to 1e-15): MOD-2 with a yaw mode of
+    1e-15 Hz passed without a word; any mode under 0.01 Hz (a period over 100 s, below the
+    slowest of the catalogue and the reference turbines, 0.126 Hz) now warns."""
+    from tests.conftest import TURBINES
+
+    base = spec.load(TURBINES / "mod-2.yaml")
+    assert not [w for w in audit.run(base).warnings if "under 0.01 Hz" in w]
+    d = base.model_dump()
+    d["yaw"]["modes"]["1"] = 1e-15
+    warned = [w for w in audit.run(spec.Spec.model_validate(d)).warnings if "under 0.01 Hz" in w]
+    assert len(warned) == 1 and warned[0].startswith("yaw.1: 1e-15 Hz")

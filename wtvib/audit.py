@@ -387,6 +387,11 @@ def _assert_finite(modes: list[Mode]) -> None:
 #: and the NREL deck's DISCON minimum 3.41/12.1 = 0.28).
 SLOW_RANGE = 0.15
 
+#: Any other mode below this [Hz] is suspicious: the slowest modes of the catalogue and the
+#: reference turbines are the IEA-22 windIO example's coupled tower (0.126 Hz) and, outside
+#: the tower, Growian's drive train with the rotor locked (0.188 Hz).
+SLOWEST_MODE_HZ = 0.01
+
 #: Rated power per swept area outside this band [W/m²] is suspicious (wtvib's bounds around
 #: the catalogue's 88 (MOD-0) to 837 W/m² (WTS-4) and the reference turbines' 330–400:
 #: NREL 5-MW 401, IEA-15 332, IEA-22 347).
@@ -444,6 +449,12 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                     f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
                     "under 0.05 Hz is implausible"
                 )
+        elif m.frequency_hz < SLOWEST_MODE_HZ:
+            out.append(
+                f"{m.id}: {m.frequency_hz:.3g} Hz — a natural frequency under "
+                f"{SLOWEST_MODE_HZ:g} Hz (a period over {1 / SLOWEST_MODE_HZ:.0f} s) is "
+                "implausible for a wind turbine's structure (units? a typing slip?)"
+            )
     out += _missing_yaw_inertia(spec, modes)
     far = scaling.head_warning(spec)
     if far:
