@@ -61,3 +61,68 @@ def test_no_damping_diagram_without_aerodynamics(write_spec):
     from wtvib.spec import load
 
     assert "damping" not in diagrams(audit.run(load(write_spec())))
+
+
+# --- drawing beside the audit (wtvib.plots.render, issue 20) -----------------------------
+
+
+def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkeypatch):
+    """The forked drawing process (and its own forks, one per core) returns exactly the PNG
+    bytes of in-process drawing, in the registry's order — here with every detail figure
+    of MOD-0 (Floquet, drive train, power sweep), split over three processes."""
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    monkeypatch.setattr(render, "cores", lambda: 3)
+    inline = render.inline(reports["mod-0"], detail=True)
+    assert len(inline) >= 4
+    with render.Drawer() as drawer:
+        assert drawer._child is not None  # it did fork
+        forked = drawer.pngs(reports["mod-0"], detail=True)
+    assert list(forked) == list(inline) and forked == inline
+
+
+def test_a_failed_drawing_process_costs_time_not_figures(reports, monkeypatch):
+    """A drawing process that fails (here: its import step raises) reports it, and the
+    figures are drawn in-process instead — the same bytes."""
+    from wtvib.plots import render
+
+    def broken() -> None:
+        raise MemoryError("no room for matplotlib")
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    monkeypatch.setattr(render, "_warm", broken)
+    with render.Drawer() as drawer:
+        got = drawer.pngs(reports["wka-60"], detail=False)
+    assert got == render.inline(reports["wka-60"], detail=False)
+
+
+def test_an_audit_that_fails_ends_the_drawing_process(monkeypatch):
+    """Leaving the Drawer without asking for figures (a spec error, Ctrl-C) ends and reaps
+    the drawing process: no orphan, no zombie."""
+    import os
+
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    with pytest.raises(ValueError), render.Drawer() as drawer:
+        assert drawer._child is not None
+        pid = drawer._child[0]
+        raise ValueError("the audit failed")
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)  # reaped already
+
+
+def test_a_hung_drawing_process_is_killed_and_the_figures_drawn_in_process(reports, monkeypatch):
+    import time
+
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    monkeypatch.setattr(render, "_warm", lambda: time.sleep(60))
+    monkeypatch.setattr(render, "TIMEOUT_S", 0.5)
+    start = time.monotonic()
+    with render.Drawer() as drawer:
+        got = drawer.pngs(reports["wka-60"], detail=False)
+    assert time.monotonic() - start < 30
+    assert got == render.inline(reports["wka-60"], detail=False)

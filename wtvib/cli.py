@@ -298,22 +298,28 @@ def check(
 
     if scheduler is not None and not uncertainty:
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
-    turbine = options.load(spec_file)
-    settings = options.settings(turbine)
-    doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
-    with _cluster(scheduler) as client, _working(doing):
-        report = audit.run(
-            turbine, settings, samples=samples if uncertainty else None, seed=seed, client=client
-        )
-    written: list[Path] = []
-    if plot:
-        from .plots import diagrams, png_bytes
+    from .plots.render import Drawer
 
-        folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
-        with _working("drawing the figures"):
-            for suffix, fig in diagrams(report, detail=figures is Figures.all).items():
+    written: list[Path] = []
+    with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
+        turbine = options.load(spec_file)
+        settings = options.settings(turbine)
+        doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
+        with _cluster(scheduler) as client, _working(doing):
+            report = audit.run(
+                turbine,
+                settings,
+                samples=samples if uncertainty else None,
+                seed=seed,
+                client=client,
+            )
+        if plot:
+            folder = out if out is not None else Path.cwd()  # never beside the input (#21)
+            with _working("drawing the figures"):
+                pngs = drawer.pngs(report, detail=figures is Figures.all)
+            for suffix, png in pngs.items():
                 path = folder / f"{spec_file.stem}.{suffix}.png"
-                written.append(write_atomic(path, png_bytes(fig), force=force))
+                written.append(write_atomic(path, png, force=force))
     if campbell_csv is not None:
         data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))

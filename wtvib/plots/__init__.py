@@ -4,11 +4,13 @@ Every figure draws what the audit computed — :class:`~wtvib.audit.Report`'s mo
 findings, checks and typed ``results`` — and computes nothing. One module per subject:
 :mod:`.campbell` (Campbell diagrams, the design windows), :mod:`.drivetrain`,
 :mod:`.rotor`, :mod:`.blade`, :mod:`.system`; :func:`diagrams` is the list of what
-``check`` writes. matplotlib is imported lazily, with the Agg backend, so ``wtvib --help``
-stays fast.
+``check`` writes, :mod:`.render` draws it beside the audit on the cores there are.
+matplotlib is imported lazily, with the Agg backend, so ``wtvib --help`` stays fast.
 """
 
+import functools
 import io
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .. import __version__
@@ -32,10 +34,9 @@ def png_bytes(fig: "Figure") -> bytes:
 MAIN = ("campbell", "damping")
 
 
-def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:
-    """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
-    shapes …), keyed by file stem suffix; without ``detail`` only the main ones (MAIN), the
-    detail figures not even drawn."""
+def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Figure | None"]]:
+    """What :func:`diagrams` draws, not yet drawn: each figure's maker by file stem suffix
+    (a maker may find nothing to draw and return None)."""
     from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
     from .campbell import DIAGRAMS, campbell_plot, damping_plot
     from .drivetrain import drivetrain_shapes_plot, power_curve_plot
@@ -45,8 +46,8 @@ def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:
     # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
     # diagram of its own: the system diagram shows them where they are judged
     present = {m.subsystem for m in report.modes if m.judged}
-    out = {
-        name: campbell_plot(report, subs)
+    out: dict[str, Callable[[], Figure | None]] = {
+        name: functools.partial(campbell_plot, report, subs)
         for name, subs in DIAGRAMS.items()
         if present.intersection(subs)
     }
@@ -61,9 +62,14 @@ def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:
         "system-energy": coupled_energy_plot,
     }
     for name, make in makers.items():
-        if not detail and name not in MAIN:
-            continue
-        fig = make(report)
-        if fig is not None:
-            out[name] = fig
+        if detail or name in MAIN:
+            out[name] = functools.partial(make, report)
     return out
+
+
+def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:
+    """Every diagram the report has judged modes for (Campbell diagrams, drive-train mode
+    shapes …), keyed by file stem suffix; without ``detail`` only the main ones (MAIN), the
+    detail figures not even drawn."""
+    drawn = {name: make() for name, make in drawers(report, detail).items()}
+    return {name: fig for name, fig in drawn.items() if fig is not None}
