@@ -23,9 +23,13 @@ DECK = ROOT.parent / "shared" / "reference" / "NREL5MW"
 ENV = {**os.environ, "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
 
 
-def wall(cmd: list[str], cwd: Path) -> float:
+#: the same, figures drawn in the one process (the comparison for plots.render)
+INLINE = {**ENV, "WTVIB_DRAW": "inline"}
+
+
+def wall(cmd: list[str], cwd: Path, env: dict[str, str] = ENV) -> float:
     t0 = time.perf_counter()
-    subprocess.run(cmd, cwd=cwd, env=ENV, capture_output=True, check=False)
+    subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, check=False)
     return time.perf_counter() - t0
 
 
@@ -58,6 +62,12 @@ def main() -> None:
             ),
             "wtvib check NREL-5MW.fst (all models, its PNGs)": lambda: wall(
                 [wtvib, "check", str(DECK / "NREL-5MW.fst"), "--force"], work
+            ),
+            "  the same, figures drawn in-process (WTVIB_DRAW=inline)": lambda: wall(
+                [wtvib, "check", str(DECK / "NREL-5MW.fst"), "--force"], work, INLINE
+            ),
+            "  check turbines/mod-2.yaml, figures in-process": lambda: wall(
+                [wtvib, "check", str(ROOT / "turbines" / "mod-2.yaml"), "--force"], work, INLINE
             ),
         }
         if pybmodes:
