@@ -22,9 +22,22 @@ if TYPE_CHECKING:
 
 
 def png_bytes(fig: "Figure") -> bytes:
-    """The figure as PNG bytes, tagged as written by wtvib (see :mod:`wtvib.outputs`)."""
+    """The figure as an RGB PNG, tagged as written by wtvib (see :mod:`wtvib.outputs`).
+
+    The pixels ``savefig`` gives, without its alpha channel: wtvib's figures are opaque,
+    and RGB is a tenth smaller, encodes faster, and spares the PDF report a soft mask
+    per image (reportlab decodes, hashes and compresses one for every RGBA image)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image, PngImagePlugin
+
+    canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
+    canvas.draw()
+    size = canvas.get_width_height(physical=True)
+    rgba = Image.frombuffer("RGBA", size, canvas.buffer_rgba(), "raw", "RGBA", 0, 1)
+    info = PngImagePlugin.PngInfo()
+    info.add_text("Software", f"wtvib {__version__}")
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", metadata={"Software": f"wtvib {__version__}"})
+    rgba.convert("RGB").save(buf, format="png", pnginfo=info, dpi=(fig.dpi, fig.dpi))
     return buf.getvalue()
 
 
