@@ -126,3 +126,19 @@ def test_a_hung_drawing_process_is_killed_and_the_figures_drawn_in_process(repor
         got = drawer.pngs(reports["wka-60"], detail=False)
     assert time.monotonic() - start < 30
     assert got == render.inline(reports["wka-60"], detail=False)
+
+
+def test_no_process_to_fork_means_drawing_in_process(reports, monkeypatch):
+    import os
+
+    from wtvib.plots import render
+
+    def refused() -> int:
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    monkeypatch.setattr(os, "fork", refused)
+    with render.Drawer() as drawer:
+        assert drawer._child is None
+        got = drawer.pngs(reports["wka-60"], detail=False)
+    assert got == render.inline(reports["wka-60"], detail=False)

@@ -98,7 +98,12 @@ def _write(fd: int, data: bytes) -> None:
 def _fork(work: Callable[[], object]) -> tuple[int, int]:
     """``work()`` in a forked child; (its pid, the pipe to read its pickled result from)."""
     read, write = os.pipe()
-    pid = os.fork()
+    try:
+        pid = os.fork()
+    except OSError:
+        os.close(read)
+        os.close(write)
+        raise
     if pid == 0:  # the child: never returns
         os.close(read)
         code = 0
@@ -174,8 +179,13 @@ class Drawer:
             report, detail = pickle.loads(data)
             return _render(report, detail, cores())
 
-        self._child = _fork(work)
-        os.close(read)
+        try:
+            self._child = _fork(work)
+        except OSError:  # no process to spare (a process limit): draw in-process
+            os.close(write)
+            return
+        finally:
+            os.close(read)
         self._inbox = write
 
     def pngs(self, report: "Report", detail: bool) -> dict[str, bytes]:
