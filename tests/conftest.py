@@ -4,6 +4,7 @@ import os
 import textwrap
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import HealthCheck, settings
@@ -111,3 +112,17 @@ def _outputs_in_a_temporary_folder(
     """Every test runs in a folder of its own, so that outputs written to the current
     directory (PNGs by default, issue 21) never land in the clone."""
     monkeypatch.chdir(tmp_path_factory.mktemp("cwd"))
+
+
+def with_tolerance(s: Any, path: str, tolerance: float) -> Any:
+    """A copy of spec ``s`` whose number at the dotted ``path`` (``tower.material.
+    youngs_modulus_pa``; list items as ``soil.0``) carries a normal ``tolerance``."""
+    from wtvib.spec import from_data
+
+    data = {k: v for k, v in s.model_dump().items() if v is not None}
+    *parents, last = path.split(".")
+    node = data
+    for key in parents:
+        node = node[int(key)] if isinstance(node, list) else node[key]
+    node[last] = {"value": node[last], "provenance": "representative", "tolerance": tolerance}
+    return from_data(data)

@@ -75,26 +75,11 @@ def test_a_wide_tolerance_is_a_truncated_distribution_and_buckling_a_share():
     """WKA-60's concrete E at ±60 % (normal): 4.8 % of draws are ≤ 0 (P(z < −1/0.6)) and
     are drawn again; the softest samples buckle under the 80 t head — both reported, as
     warnings and in the JSON, where a crash ("the structure is unstable") stood before."""
-    from tests.conftest import TURBINES
+    from tests.conftest import TURBINES, with_tolerance
     from wtvib import audit
 
-    d = spec.load(TURBINES / "wka-60.yaml")
-    wide = spec.from_data(
-        {
-            **{k: v for k, v in d.model_dump().items() if v is not None},
-            "tower": {
-                **d.tower.model_dump(),
-                "material": {
-                    **d.tower.material.model_dump(),  # type: ignore[union-attr]
-                    "youngs_modulus_pa": {
-                        "value": 3.5e10,
-                        "provenance": "representative",
-                        "tolerance": 0.6,
-                    },
-                },
-            },
-        }
-    )
+    d = spec.load(TURBINES / "wka-60.yaml")  # model_dump drops the file's own tolerances
+    wide = with_tolerance(d, "tower.material.youngs_modulus_pa", 0.6)
     r = audit.run(wide, samples=4000, seed=2)
     u = r.uncertainty
     assert u is not None

@@ -224,28 +224,10 @@ def test_soil_parameters_are_uncertain_inputs():
     """Issue 23: --uncertainty takes soil parameters too (sampled one by one: they enter the
     mudline stiffness non-linearly). First order (delta method): σ_f/f = S·σ_φ with the
     normalised sensitivity S the run reports; the samples agree within 20 %."""
-    d = monopile_turbine().model_dump()
-    uncertain_sand = spec.from_data(
-        {
-            **{k: v for k, v in d.items() if v is not None},
-            "tower": {
-                **d["tower"],
-                "foundation": {
-                    **d["tower"]["foundation"],
-                    "soil": [
-                        {
-                            "bottom_m": 60,
-                            "kind": "sand",
-                            "friction_angle_deg": {
-                                "value": 35,
-                                "provenance": "representative",
-                                "tolerance": 0.05,
-                            },
-                        }
-                    ],
-                },
-            },
-        }
+    from tests.conftest import with_tolerance
+
+    uncertain_sand = with_tolerance(
+        monopile_turbine(), "tower.foundation.soil.0.friction_angle_deg", 0.05
     )
     r = audit.run(uncertain_sand, samples=400, seed=3)
     u = r.uncertainty
