@@ -283,3 +283,30 @@ def test_a_clay_profile_audits_and_a_stiffer_clay_stiffens_the_tower():
 def test_a_soil_layer_says_what_it_lacks_or_does_not_use(layer, message):
     with pytest.raises(ValueError, match=message):
         SoilLayer(bottom_m=20.0, **layer)
+
+
+def test_a_mistake_in_a_soil_file_names_that_file_and_its_line(tmp_path):
+    """`check windio.yaml --soil FILE`: an error in FILE named the windIO file, with no line
+    (the profile was validated only inside the imported spec)."""
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    from wtvib import importers
+
+    path = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    profile = tmp_path / "soft.yaml"
+    profile.write_text(
+        "soil:\n  - {bottom_m: 10, kind: sand, friction_angle_deg: 30}\n"
+        "  - {bottom_m: 80, kind: clay, undrained_shear_strength_pa: abc}\n"
+    )
+    with pytest.raises(spec.SpecError) as err:
+        importers.load(path, soil=profile)
+    text = str(err.value)
+    assert text.startswith(f"{profile}:3: soil[1].undrained_shear_strength_pa")
+    tolerant = tmp_path / "tolerant.yaml"  # quantities with tolerances still pass through
+    tolerant.write_text(
+        "soil:\n  - {bottom_m: 80, kind: sand, friction_angle_deg: "
+        "{value: 33, provenance: representative, tolerance: 0.05}}\n"
+    )
+    s = importers.load(path, soil=tolerant)
+    assert "tower.foundation.soil[0].friction_angle_deg" in s.provenance

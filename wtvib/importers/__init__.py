@@ -201,6 +201,12 @@ def _soil_profile(path: Path | None) -> dict[str, Any] | None:
     of a spec's ``tower.foundation`` (validated there, with the file named)."""
     if path is None:
         return None
+    from pydantic import ValidationError
+
+    from ..spec.load import _extract_quantities
+    from ..spec.messages import _spec_error
+    from ..spec.tower import SoilProfile
+
     doc = load_document(Path(path), read_text(Path(path)))
     data = doc.data
     if not isinstance(data, dict) or "soil" not in data or set(data) - {"soil", "bounds"}:
@@ -208,4 +214,8 @@ def _soil_profile(path: Path | None) -> dict[str, Any] | None:
             "a soil profile holds 'soil' (layers) and optionally 'bounds', nothing else",
             source=str(path),
         )
+    try:  # here, so that a mistake names this file and its line, not the turbine's
+        SoilProfile.model_validate(_extract_quantities(doc, data, (), {}))
+    except ValidationError as exc:
+        raise _spec_error(exc, doc) from None
     return data

@@ -163,6 +163,15 @@ class SoilBounds(_Strict):
     )
 
 
+class SoilProfile(_Strict):
+    """A soil profile file for an imported monopile (``check --soil FILE``): the ``soil``
+    layers and optional ``bounds`` of a spec's foundation, validated on their own so that a
+    mistake names that file and its line."""
+
+    soil: list[SoilLayer] = Field(min_length=1, max_length=50, description="Layers, top down.")
+    bounds: SoilBounds | None = Field(None, description="Lower- and upper-bound soil.")
+
+
 class Foundation(_Strict):
     """How the tower base is held: clamped, on springs, or a monopile in soil (the tower's
     base is then the mudline)."""
