@@ -8,6 +8,7 @@ K_L = kL, K_LR = −kL²/2, K_R = kL³/3 (the springs' energy ½∫k(u₀ + θ�
 """
 
 import math
+from typing import Any
 
 import pytest
 
@@ -52,6 +53,14 @@ def test_sand_modulus_grows_linearly_with_depth_at_the_api_rate():
 
     z = np.array([1.0, 10.0, 30.0])
     assert soil.modulus(layers, z) == pytest.approx(21.0e6 * z, rel=2e-3)
+
+
+def iea15_windio() -> Any:
+    """The IEA-15-240-RWT windIO 2.x example of the windio package (skips without it)."""
+    from pathlib import Path
+
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    return Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
 
 
 def monopile_turbine(kind: str = "soil") -> spec.Spec:
@@ -129,12 +138,9 @@ def test_iea15_monopile_on_soft_sand_against_clamped(tmp_path):
     30 m mudline (Gaertner et al. 2020: 30 m water, 45 m embedded); the soil lowers the
     first bending (0.17 → 0.15 Hz here), the band brackets it, and the soft soil brings it
     near 1P at overspeed (1P = 0.151 Hz at 9.07 rpm)."""
-    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
-    from pathlib import Path
-
     from wtvib import importers
 
-    path = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    path = iea15_windio()
     profile = tmp_path / "soft.yaml"
     profile.write_text(
         "soil:\n  - {bottom_m: 10, kind: sand, friction_angle_deg: 30}\n"
@@ -288,12 +294,9 @@ def test_a_soil_layer_says_what_it_lacks_or_does_not_use(layer, message):
 def test_a_mistake_in_a_soil_file_names_that_file_and_its_line(tmp_path):
     """`check windio.yaml --soil FILE`: an error in FILE named the windIO file, with no line
     (the profile was validated only inside the imported spec)."""
-    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
-    from pathlib import Path
-
     from wtvib import importers
 
-    path = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    path = iea15_windio()
     profile = tmp_path / "soft.yaml"
     profile.write_text(
         "soil:\n  - {bottom_m: 10, kind: sand, friction_angle_deg: 30}\n"
