@@ -405,14 +405,14 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
         out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
-    lowest = min(out, key=lambda m: m.frequency_hz)
-    if lowest.frequency_hz < NOT_HELD_HZ:
+    out.sort(key=lambda m: m.frequency_hz)
+    if out[0].frequency_hz < NOT_HELD_HZ:
         raise modal.ModalError(
-            f"{lowest.id} comes out at {lowest.frequency_hz:.3g} Hz — the tower "
+            f"{out[0].id} comes out at {out[0].frequency_hz:.3g} Hz — the tower "
             "is not held (its base, springs or pile carry next to no load): check "
             "tower.foundation and the tower's stiffness"
         )
-    return sorted(out, key=lambda m: m.frequency_hz)
+    return out
 
 
 def _soil_bands(spec: Spec, b: Beam, direction: str) -> tuple[Array, Array] | None:

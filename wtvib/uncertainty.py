@@ -29,6 +29,7 @@ from .excitation import excitations, operating_range
 from .results import Mode, Southwell
 from .rules import MarginRule
 from .spec import Quantity, Spec, from_data
+from .spec.messages import _split
 from .spec.ranges import valid_range
 
 Array = NDArray[np.float64]
@@ -106,11 +107,7 @@ def _path_of_mode(path: str) -> str | None:
 def _with_scaled(spec: Spec, path: str, factor: float) -> Spec:
     """A copy of the spec with the number at ``path`` multiplied by ``factor``."""
     data = spec.model_dump()
-    keys = path.split(".")
-    node = data
-    for k in keys[:-1]:
-        node = node[k]
-    node[keys[-1]] = node[keys[-1]] * factor
+    _scale(data, path, factor)
     return from_data(data)
 
 
@@ -227,13 +224,11 @@ def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Ar
 
 def _scale(data: Any, path: str, factor: float) -> None:
     """Multiply the number at a dotted path (``tower.foundation.soil[0].modulus_pa``)."""
-    keys: list[Any] = [
-        int(k) if k.isdigit() else k for k in path.replace("]", "").replace("[", ".").split(".")
-    ]
+    *parents, last = _split(path)
     node = data
-    for k in keys[:-1]:
+    for k in parents:
         node = node[k]
-    node[keys[-1]] = node[keys[-1]] * factor
+    node[last] = node[last] * factor
 
 
 #: nominal modes in the Ritz basis of the tower samples (with one mode per uncertain input)

@@ -198,7 +198,9 @@ def _with_speed(
 
 def _soil_profile(path: Path | None) -> dict[str, Any] | None:
     """A soil profile file: YAML with ``soil`` (layers) and optional ``bounds``, the fields
-    of a spec's ``tower.foundation`` (validated there, with the file named)."""
+    of a spec's ``tower.foundation``, validated here on its own (a mistake names this file
+    and its line) and again with the turbine's foundation (the layers must reach the pile's
+    tip)."""
     if path is None:
         return None
     from pydantic import ValidationError

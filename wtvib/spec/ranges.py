@@ -3,7 +3,6 @@ for code that makes new values of a validated spec (the Monte Carlo sampling) an
 them inside what the spec accepts."""
 
 import math
-import re
 import types
 import typing
 from typing import Any
@@ -12,9 +11,8 @@ import annotated_types
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 
+from .messages import _split
 from .turbine import Spec
-
-_TOKEN = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
 
 
 def _arms(annotation: Any) -> list[Any]:
@@ -37,7 +35,7 @@ def _strip(annotation: Any, metadata: list[Any]) -> Any:
 def valid_range(path: str) -> tuple[float, float, bool, bool]:
     """``(low, high, low_open, high_open)`` of the number at a dotted path such as
     ``tower.foundation.soil[0].friction_angle_deg`` (±inf where the schema sets no bound)."""
-    tokens = [m.group(1) or int(m.group(2)) for m in _TOKEN.finditer(path)]
+    tokens = _split(path)
     model: type[BaseModel] | None = Spec
     metadata: list[Any] = []
     annotation: Any = None
@@ -47,12 +45,11 @@ def valid_range(path: str) -> tuple[float, float, bool, bool]:
             metadata = list(info.metadata)
             annotation = [_strip(a, metadata) for a in _arms(info.annotation)]
         else:  # a list item or a mapping's value: the container's element type
-            containers = (list, dict) if isinstance(token, str) else (list,)
             element = next(
                 (
                     typing.get_args(a)[-1]
                     for a in annotation or ()
-                    if typing.get_origin(a) in containers and typing.get_args(a)
+                    if typing.get_origin(a) in (list, dict) and typing.get_args(a)
                 ),
                 None,
             )
