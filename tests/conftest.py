@@ -115,14 +115,16 @@ def _outputs_in_a_temporary_folder(
 
 
 def with_tolerance(s: Any, path: str, tolerance: float) -> Any:
-    """A copy of spec ``s`` whose number at the dotted ``path`` (``tower.material.
-    youngs_modulus_pa``; list items as ``soil.0``) carries a normal ``tolerance``."""
+    """A copy of spec ``s`` whose number at the spec ``path`` (``tower.material.
+    youngs_modulus_pa``, ``tower.foundation.soil[0].friction_angle_deg``) carries a normal
+    ``tolerance``."""
     from wtvib.spec import from_data
+    from wtvib.spec.messages import _split
 
     data = {k: v for k, v in s.model_dump().items() if v is not None}
-    *parents, last = path.split(".")
+    *parents, last = _split(path)
     node = data
     for key in parents:
-        node = node[int(key)] if isinstance(node, list) else node[key]
+        node = node[key]
     node[last] = {"value": node[last], "provenance": "representative", "tolerance": tolerance}
     return from_data(data)

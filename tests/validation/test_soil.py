@@ -233,7 +233,7 @@ def test_soil_parameters_are_uncertain_inputs():
     from tests.conftest import with_tolerance
 
     uncertain_sand = with_tolerance(
-        monopile_turbine(), "tower.foundation.soil.0.friction_angle_deg", 0.05
+        monopile_turbine(), "tower.foundation.soil[0].friction_angle_deg", 0.05
     )
     r = audit.run(uncertain_sand, samples=400, seed=3)
     u = r.uncertainty
