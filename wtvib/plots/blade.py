@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
+from .layout import fixed_layout
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -20,8 +21,9 @@ def flutter_plot(report: Report) -> "Figure | None":
     if check is None or "worst" not in found:
         return None
     worst, required = found["worst"], found["required_speed_m_s"]
-    fig = Figure(figsize=(9, 6.4), dpi=150, layout="constrained")
+    fig = Figure(figsize=(9, 6.4), dpi=150)
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
+    fixed_layout(fig, left=1.0, top=0.6, gap=0.15)  # two title lines, two ylabel lines
     colours = ("#1f77b4", "#d62728")
     names = ("bending branch", "torsion branch")
     for branch, colour, label in zip(worst.flutter.branches, colours, names, strict=False):
@@ -87,8 +89,9 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     chart, speed, worst = found["chart"], found["required_speed_m_s"], found["worst"]
     x = 100 * chart.offset_chord
     kilo = 1e-3
-    fig = Figure(figsize=(9, 5.6), dpi=150, layout="constrained")
+    fig = Figure(figsize=(9, 5.6), dpi=150)
     ax = fig.add_subplot()
+    fixed_layout(fig, left=0.85, top=0.6)  # two title lines, log tick labels
     flutter_k = chart.flutter_k_theta * kilo
     top = 3 * max(
         np.nanmax(flutter_k, initial=0.0),
@@ -165,8 +168,9 @@ def stall_damping_plot(report: Report) -> "Figure | None":
     curves = {name: by_id[f"blade.stall.{name}"] for name in found}
     if not curves:
         return None
-    fig = Figure(figsize=(9, 5.2), dpi=150, layout="constrained")
+    fig = Figure(figsize=(9, 5.2), dpi=150)
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
+    fixed_layout(fig, top=0.8, gap=0.3)  # a two-line suptitle, each panel's own title
     colours = {"pass": "#2e7d32", "warn": "#ef6c00", "fail": "#c62828", "info": "#1565c0"}
     for ax, (name, check) in zip(axes, curves.items(), strict=True):
         pts = found[name]

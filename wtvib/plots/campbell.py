@@ -15,6 +15,7 @@ from ..excitation import operating_range
 from ..results import Sampled
 from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
+from .layout import TITLE_LINE_IN, legend_below
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -64,7 +65,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     hidden = [m for m in modes if m.frequency_hz > f_top]
     modes = [m for m in modes if m.frequency_hz <= f_top]
 
-    fig = Figure(figsize=(10, 7), dpi=150, layout="constrained")
+    fig = Figure(figsize=(10, 7), dpi=150)
     ax = fig.add_subplot()
     for a, b in spec.rotor.speed.steady_rpm:
         if b > a:
@@ -234,6 +235,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         rule.label,
         {e.energy for e in excitations.values()},
         bool(spec.rotor.speed.quick_pass_rpm),
+        title_lines=heading.count("\n") + 1,
     )
     return fig
 
@@ -270,7 +272,7 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None: 
     )
 
 
-def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # type: ignore[no-untyped-def]
+def _legend(ax, rule_label: str, energies: set[str], quick: bool, title_lines: int) -> None:  # type: ignore[no-untyped-def]
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -304,15 +306,8 @@ def _legend(ax, rule_label: str, energies: set[str], quick: bool) -> None:  # ty
         handles.append(h)
         labels.append(label)
     ncol = 2 if max(len(t) for t in labels) > 40 else 4
-    ax.legend(
-        handles,
-        labels,
-        loc="upper center",
-        bbox_to_anchor=(0.5, -0.1),
-        fontsize=8,
-        ncol=ncol,
-        frameon=False,
-    )
+    top = 0.25 + TITLE_LINE_IN * title_lines
+    legend_below(ax.figure, ax, handles, labels, columns=ncol, fontsize=8, top=top)
 
 
 def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
@@ -351,7 +346,7 @@ def damping_plot(report: Report) -> "Figure | None":
         return None
     from matplotlib import colormaps
 
-    fig = Figure(figsize=(10, 6.5), dpi=150, layout="constrained")
+    fig = Figure(figsize=(10, 6.5), dpi=150)
     ax = fig.add_subplot()
     cmap = colormaps["tab10" if len(modes) <= 10 else "tab20"]  # distinct hues while they last
     colours = [cmap(i % cmap.N) for i in range(len(modes))]
@@ -411,5 +406,6 @@ def damping_plot(report: Report) -> "Figure | None":
     ax.grid(True, which="both", alpha=0.3)
     how = f"as computed by {tool}" if tool else "quasi-steady, frozen wake"
     ax.set_title(f"{report.spec.turbine.name} — damping in operation ({how})", fontweight="bold")
-    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=8, ncol=3, frameon=False)
+    handles, labels = ax.get_legend_handles_labels()
+    legend_below(fig, ax, handles, labels, columns=3, fontsize=8, top=0.25 + TITLE_LINE_IN)
     return fig

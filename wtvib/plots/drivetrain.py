@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
+from .layout import fixed_layout
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -19,8 +20,10 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     if not modes:
         return None
     conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
-    fig = Figure(figsize=(10, 2.6 * len(conditions) + 0.8), dpi=150, layout="constrained")
+    fig = Figure(figsize=(10, 2.6 * len(conditions) + 0.8), dpi=150)
     axes = fig.subplots(len(conditions), 1, squeeze=False)[:, 0]
+    # the suptitle and each panel's title above it; the mass names under each panel
+    fixed_layout(fig, top=0.7, bottom=0.4, gap=0.6)
     for ax, condition in zip(axes, conditions, strict=True):
         for m in (m for m in modes if m.id.split(".")[1] == condition):
             assert m.shape is not None
@@ -56,8 +59,9 @@ def power_curve_plot(report: Report) -> "Figure | None":
     if check is None or curve is None:
         return None
     power = 100 * np.asarray(curve.power_fraction)
-    fig = Figure(figsize=(8, 4.5), dpi=150, layout="constrained")
+    fig = Figure(figsize=(8, 4.5), dpi=150)
     ax = fig.add_subplot()
+    fixed_layout(fig)
     ax.plot(power, curve.frequency_hz, lw=2.2, color="#1f77b4", label="1st grid mode")
     lo, hi = report.rule.natural_band(1.0)
     for label, f_e in curve.lines:

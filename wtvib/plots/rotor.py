@@ -5,6 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
+from .layout import fixed_layout
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -20,8 +21,9 @@ def floquet_plot(report: Report) -> "Figure | None":
         return None
     rpm, rho = smap.speeds_rpm, smap.largest
     speed = report.spec.rotor.speed
-    fig = Figure(figsize=(9, 4.8), dpi=150, layout="constrained")
+    fig = Figure(figsize=(9, 4.8), dpi=150)
     ax = fig.add_subplot()
+    fixed_layout(fig, top=0.4)
     for a, b in speed.steady_rpm:
         if b > a:
             ax.axvspan(a, b, color="#c8e6c9", alpha=0.6, lw=0, label="steady operation")

@@ -5,6 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
+from .layout import legend_below
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -34,18 +35,22 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     groups = list(dict.fromkeys(g for r in rows for g in r["energy"]))
     blade_groups = [g for g in groups if g.startswith("blade.")]
     colour = {**_GROUP_COLOUR, **dict(zip(blade_groups, _BLADE_COLOURS * 3, strict=False))}
-    fig = Figure(figsize=(10, 0.32 * len(rows) + 1.8), dpi=150, layout="constrained")
+    fig = Figure(figsize=(10, 0.32 * len(rows) + 1.8), dpi=150)
     ax = fig.subplots()
     y = np.arange(len(rows))[::-1]
     for g in groups:
         left = [sum(r["energy"].get(h, 0.0) for h in groups[: groups.index(g)]) for r in rows]
         width = [r["energy"].get(g, 0.0) for r in rows]
         ax.barh(y, width, left=left, color=colour.get(g, "#cccccc"), label=g, height=0.7)
-    ax.set_yticks(y, [f"{r['id'].removeprefix('system.')}  {r['coupled_hz']:.3g} Hz" for r in rows])
+    names = [f"{r['id'].removeprefix('system.')}  {r['coupled_hz']:.3g} Hz" for r in rows]
+    ax.set_yticks(y, names)
     ax.tick_params(axis="y", labelsize=7)
     ax.set_xlim(0, 1)
     ax.set_xlabel("share of the mode's kinetic energy")
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=4, frameon=False)
+    handles, labels = ax.get_legend_handles_labels()
+    # the tick labels' width: 7 pt characters average about half their size
+    margin = 0.25 + max(len(t) for t in names) * 7 * 0.52 / 72
+    legend_below(fig, ax, handles, labels, columns=4, fontsize=7, top=0.45, left=margin)
     ax.set_title(
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
         "where the energy is",
