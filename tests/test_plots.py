@@ -35,6 +35,24 @@ def test_the_registry_names_every_figure_and_tags_the_png(reports):
     assert data.startswith(b"\x89PNG") and SOFTWARE_TAG.encode() in data[:4096]
 
 
+def test_the_png_holds_the_pixels_agg_drew(reports):
+    """wtvib writes its PNGs itself (plots.png_bytes): a PNG reader gets Agg's pixels, RGB,
+    at the figure's resolution."""
+    import io
+
+    import numpy as np
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from PIL import Image
+
+    fig = campbell.campbell_plot(reports["wka-60"])
+    image = Image.open(io.BytesIO(png_bytes(fig)))
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    assert image.mode == "RGB" and image.size == canvas.get_width_height(physical=True)
+    assert np.array_equal(np.asarray(image), np.asarray(canvas.buffer_rgba())[:, :, :3])
+    assert round(image.info["dpi"][0]) == 150
+
+
 def test_damping_diagram_and_crossing_dafs(shared, tmp_path):
     """With aerodynamics: a damping-versus-wind diagram beside the Campbell diagrams, and
     the Campbell crossings labelled with their DAF (the numbers the findings hold)."""

@@ -71,6 +71,7 @@ def flutter_plot(report: Report) -> "Figure | None":
         f"Theodorsen p-k ({check.status.upper()})",
         fontweight="bold",
         fontsize=10,
+        y=1.0,
     )
     return fig
 
@@ -153,6 +154,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
         f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
         fontweight="bold",
         fontsize=10,
+        y=1.0,
     )
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="lower right")
@@ -197,6 +199,7 @@ def stall_damping_plot(report: Report) -> "Figure | None":
             f"{wind[low]:.3g} m/s (aerodynamic {aero[low]:+.2f} %)",
             fontsize=8,
             loc="left",
+            y=1.0,
         )
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="best")

@@ -216,7 +216,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     heading = f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}"
     if len(heading) > 90:  # a long turbine name on a line of its own, not cut off
         heading = f"{spec.turbine.name}\nCampbell diagram, {title} — verdict {verdict}{cls}"
-    ax.set_title(heading, color=STATUS_COLOUR[report.verdict], fontweight="bold")
+    ax.set_title(heading, color=STATUS_COLOUR[report.verdict], fontweight="bold", y=1.0)
     if hidden:
         ax.text(
             0.99,
@@ -332,7 +332,7 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
             fontweight="bold",
             va="top",
         )
-    ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10)
+    ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10, y=1.0)
     return fig
 
 
@@ -405,7 +405,9 @@ def damping_plot(report: Report) -> "Figure | None":
     )
     ax.grid(True, which="both", alpha=0.3)
     how = f"as computed by {tool}" if tool else "quasi-steady, frozen wake"
-    ax.set_title(f"{report.spec.turbine.name} — damping in operation ({how})", fontweight="bold")
+    ax.set_title(
+        f"{report.spec.turbine.name} — damping in operation ({how})", fontweight="bold", y=1.0
+    )
     handles, labels = ax.get_legend_handles_labels()
     legend_below(fig, ax, handles, labels, columns=3, fontsize=8, top=0.25 + TITLE_LINE_IN)
     return fig

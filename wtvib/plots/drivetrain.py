@@ -39,7 +39,7 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
             ax.set_xticks(x, m.shape.labels or [str(i) for i in x])
         ax.axhline(0, color="#9e9e9e", lw=0.8)
         ax.set_ylabel("twist amplitude")
-        ax.set_title(f"condition: {condition}", loc="left", fontsize=10)
+        ax.set_title(f"condition: {condition}", loc="left", fontsize=10, y=1.0)
         ax.legend(fontsize=7, loc="best")
         ax.grid(True, alpha=0.3)
     fig.suptitle(
@@ -81,6 +81,7 @@ def power_curve_plot(report: Report) -> "Figure | None":
         f"{report.spec.turbine.name} — drive train on the grid: frequency vs power "
         f"({check.status.upper()})",
         fontweight="bold",
+        y=1.0,
     )
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)

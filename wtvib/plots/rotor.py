@@ -47,6 +47,7 @@ def floquet_plot(report: Report) -> "Figure | None":
         f"tower head: stability map ({check.status.upper()})",
         fontweight="bold",
         fontsize=10,
+        y=1.0,
     )
     ax.grid(True, alpha=0.3)
     handles, labels = ax.get_legend_handles_labels()

@@ -49,12 +49,13 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("share of the mode's kinetic energy")
     handles, labels = ax.get_legend_handles_labels()
     # the tick labels' width: 7 pt characters average about half their size
-    margin = 0.25 + max(len(t) for t in names) * 7 * 0.52 / 72
+    margin = 0.3 + max(len(t) for t in names) * 7 * 0.55 / 72
     legend_below(fig, ax, handles, labels, columns=4, fontsize=7, top=0.45, left=margin)
     ax.set_title(
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
         "where the energy is",
         fontweight="bold",
         fontsize=10,
+        y=1.0,
     )
     return fig
