@@ -5,9 +5,9 @@ A ``check`` spends about as long importing matplotlib (≈ 0.5 s) and drawing it
 (Linux), :class:`Drawer` forks a drawing process once the models are imported and before
 the audit starts: it imports matplotlib while the audit runs, receives the report
 (pickled: 20 kB for MOD-2, 1.2 MB for the NREL 5-MW deck, a few ms), and draws the figures
-split over the cores (forked again, matplotlib already loaded). It returns PNG bytes; the
-caller writes the files (its own atomic, no-silent-overwrite rule). The bytes are those
-drawing in-process gives (a test). If the drawing process fails in any way — killed, out of
+in processes forked again (matplotlib loaded), up to two per core. (Forking before the
+models are imported gains nothing: the drawing process needs them to unpickle the report.) It returns PNG bytes; the caller writes the files (its own atomic, no-silent-overwrite
+rule). The bytes are those drawing in-process gives (a test). If the drawing process fails in any way — killed, out of
 memory, a drawing bug — the figures are drawn in-process instead, where a drawing bug then
 raises as it always did: a fault there costs time, never a figure. ``WTVIB_DRAW=inline``
 draws in-process always.
@@ -177,7 +177,9 @@ class Drawer:
             if not data:  # the audit failed: nothing to draw
                 return None
             report, detail = pickle.loads(data)
-            return _render(report, detail, cores())
+            # more processes than cores: figures differ in cost, and the system then shares
+            # the cores between them (three figures on two: not the longest two in a row)
+            return _render(report, detail, 2 * cores())
 
         try:
             self._child = _fork(work)
