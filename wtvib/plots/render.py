@@ -1,16 +1,17 @@
 """PNG bytes of a report's figures, drawn beside the audit (issue 20).
 
 A ``check`` spends about as long importing matplotlib (≈ 0.5 s) and drawing its figures
-(0.2–0.4 s each) as it spends auditing. Where there is more than one core and ``os.fork``
+(0.15–0.4 s each) as it spends auditing. Where there is more than one core and ``os.fork``
 (Linux), :class:`Drawer` forks a drawing process once the models are imported and before
 the audit starts: it imports matplotlib while the audit runs, receives the report
 (pickled: 20 kB for MOD-2, 1.2 MB for the NREL 5-MW deck, a few ms), and draws the figures
 in processes forked again (matplotlib loaded), up to two per core. (Forking before the
-models are imported gains nothing: the drawing process needs them to unpickle the report.) It returns PNG bytes; the caller writes the files (its own atomic, no-silent-overwrite
-rule). The bytes are those drawing in-process gives (a test). If the drawing process fails in any way — killed, out of
-memory, a drawing bug — the figures are drawn in-process instead, where a drawing bug then
-raises as it always did: a fault there costs time, never a figure. ``WTVIB_DRAW=inline``
-draws in-process always.
+models are imported gains nothing: the drawing process needs them to unpickle the
+report.) It returns PNG bytes; the caller writes the files (its own atomic,
+no-silent-overwrite rule). The bytes are those drawing in-process gives (a test). If the
+drawing process fails in any way — killed, out of memory, a drawing bug — the figures are
+drawn in-process instead, where a drawing bug then raises as it always did: a fault there
+costs time, never a figure. ``WTVIB_DRAW=inline`` draws in-process always.
 """
 
 import contextlib
