@@ -40,8 +40,9 @@ def main() -> None:
         pngs = [png_bytes(fig) for fig in (make() for make in makers) if fig is not None]
         times.append(time.perf_counter() - t0)
         count, size = len(pngs), sum(map(len, pngs))
+    median = 1000 * statistics.median(times)
     print(
-        f"{count} figures of {len(reports)} turbines: median {1000 * statistics.median(times):.0f} ms"
+        f"{count} figures of {len(reports)} turbines: median {median:.0f} ms"
         f" ({', '.join(f'{1000 * t:.0f}' for t in times)}), {size / 1024:.0f} kB of PNG"
     )
 

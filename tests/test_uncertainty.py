@@ -43,7 +43,9 @@ def test_the_reduced_tower_samples_equal_each_sample_solved_anew():
     assert len(inputs) == 3
     rng = np.random.default_rng(5)
     factors = {p: rng.uniform(0.5, 1.5, 40) for p in inputs}
-    reduced = uncertainty._tower_samples(s, factors)
+    ritz = uncertainty.tower_ritz(s)
+    assert ritz is not None and ritz.paths == tuple(inputs)
+    reduced = ritz.frequencies(np.stack([factors[p] for p in inputs], axis=1))
     full = uncertainty._tower_samples_direct(s, factors)
     for mode in ("tower.fa1", "tower.ss1"):
         assert np.allclose(reduced[mode], full[mode], rtol=1e-9, atol=0)
