@@ -160,3 +160,22 @@ def test_no_process_to_fork_means_drawing_in_process(reports, monkeypatch):
         assert drawer._child is None
         got = drawer.pngs(reports["wka-60"], detail=False)
     assert got == render.inline(reports["wka-60"], detail=False)
+
+
+def test_a_legend_of_many_rows_makes_the_figure_taller_not_the_axes_vanish():
+    """Fixed margins (plots.layout) with a legend under the axes: 90 entries (a results
+    import with many modes) need more height than the figure has; it grows, the axes keep
+    MIN_AXES_IN, and drawing does not fail (subplots_adjust refuses bottom ≥ top)."""
+    from matplotlib.figure import Figure
+
+    from wtvib.plots.layout import MIN_AXES_IN, legend_below
+
+    fig = Figure(figsize=(10, 7), dpi=150)
+    ax = fig.add_subplot()
+    for i in range(90):
+        ax.plot([0, 1], [i, i + 1], label=f"mode {i}")
+    handles, labels = ax.get_legend_handles_labels()
+    legend_below(fig, ax, handles, labels, columns=2, fontsize=8, top=0.5)
+    assert fig.get_size_inches()[1] > 7
+    assert ax.get_position().height * fig.get_size_inches()[1] >= MIN_AXES_IN - 1e-9
+    assert png_bytes(fig).startswith(b"\x89PNG")

@@ -14,6 +14,9 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
+#: The least height [in] an axes keeps; margins that would leave less make the figure taller.
+MIN_AXES_IN = 2.0
+
 #: Inches per line of an axes title (12 pt, matplotlib's "large", line spacing 1.2).
 TITLE_LINE_IN = 0.22
 
@@ -33,6 +36,10 @@ def fixed_layout(
     width, height = fig.get_size_inches()
     specs = [ax.get_subplotspec() for ax in fig.axes]
     rows = max((s.get_gridspec().nrows for s in specs if s is not None), default=1)
+    need = top + bottom + rows * MIN_AXES_IN + (rows - 1) * gap
+    if height < need:  # a legend of many rows: the figure grows, the axes keep their room
+        height = need
+        fig.set_size_inches(width, height)
     span = height - top - bottom
     axes_height = (span - (rows - 1) * gap) / rows
     fig.subplots_adjust(
