@@ -168,7 +168,7 @@ def test_a_legend_of_many_rows_makes_the_figure_taller_not_the_axes_vanish():
     MIN_AXES_IN, and drawing does not fail (subplots_adjust refuses bottom ≥ top)."""
     from matplotlib.figure import Figure
 
-    from wtvib.plots.layout import MIN_AXES_IN, legend_below
+    from wtvib.plots.layout import MIN_AXES_IN, fixed_layout, legend_below
 
     fig = Figure(figsize=(10, 7), dpi=150)
     ax = fig.add_subplot()
@@ -179,3 +179,7 @@ def test_a_legend_of_many_rows_makes_the_figure_taller_not_the_axes_vanish():
     assert fig.get_size_inches()[1] > 7
     assert ax.get_position().height * fig.get_size_inches()[1] >= MIN_AXES_IN - 1e-9
     assert png_bytes(fig).startswith(b"\x89PNG")
+    narrow = Figure(figsize=(4, 3))
+    box = narrow.add_subplot()
+    fixed_layout(narrow, left=9.0)  # tick labels wider than the figure: cut, not an error
+    assert box.get_position().width > 0.2

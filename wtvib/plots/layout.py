@@ -40,6 +40,8 @@ def fixed_layout(
     if height < need:  # a legend of many rows: the figure grows, the axes keep their room
         height = need
         fig.set_size_inches(width, height)
+    if left + right > 0.7 * width:  # labels wider than the figure: cut, the axes stay
+        left, right = (m * 0.7 * width / (left + right) for m in (left, right))
     span = height - top - bottom
     axes_height = (span - (rows - 1) * gap) / rows
     fig.subplots_adjust(
