@@ -304,3 +304,20 @@ def test_a_misspelt_key_names_itself_and_the_field_it_should_be(write_spec):
     message = str(exc.value)
     assert "outer_diamter_m: unknown field" in message
     assert "did you mean 'outer_diameter_m'" in message and "more problem" not in message
+
+
+def test_a_spec_with_full_mode_entries_serialises_without_warnings():
+    """A mode given as a mapping (frequency, damping, speeds) is a ModeSpec after
+    validation; model_dump (the Monte Carlo rebuilds specs from it) must take it as one:
+    the discriminator once tagged it "number" and pydantic warned on every dump."""
+    import warnings
+
+    from tests.conftest import TURBINES
+    from wtvib.spec import from_data
+
+    s = spec.load(TURBINES / "darrieus.yaml")  # its modes carry measured speed tables
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        data = s.model_dump()
+    assert isinstance(data["blade"]["modes"]["flap1"], dict)
+    assert from_data(data).model_dump() == data

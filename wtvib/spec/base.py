@@ -116,7 +116,8 @@ class ModeSpec(_Strict):
 
 
 def _mode_tag(value: Any) -> str:
-    return "full" if isinstance(value, Mapping) else "number"
+    # a mapping when validating, a ModeSpec when serialising (model_dump): both are "full"
+    return "full" if isinstance(value, Mapping | ModeSpec) else "number"
 
 
 ModeEntry = Annotated[
