@@ -17,10 +17,13 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import Executor, Future, ProcessPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .errors import WtvibError
 from .rules import STATUS_ORDER, worst_check
+
+if TYPE_CHECKING:
+    from .audit import Report
 
 #: Two documents, two shapes, two ids (wtvib.contract): the summary and the full results.
 SUMMARY_SCHEMA = "wtvib-batch-summary/1"
@@ -165,11 +168,18 @@ def output_keys(paths: Sequence[Path]) -> list[str]:
     return keys
 
 
-def audit_one(path: str, key: str, plots: bool, options: Options | None = None) -> Item:
-    """Load, audit and (optionally) plot one input. Never raises (but for Ctrl-C): a user's
-    mistake is an input error, any other exception an internal error naming it."""
+#: Draws a report's figures: PNG bytes by file stem suffix (``plots.render.Drawer.pngs``).
+Draw = Callable[["Report"], dict[str, bytes]]
+
+
+def audit_one(
+    path: str, key: str, plots: bool, options: Options | None = None, draw: Draw | None = None
+) -> Item:
+    """Load, audit and (optionally) plot one input — every figure, drawn in this process
+    unless ``draw`` is given. Never raises (but for Ctrl-C): a user's mistake is an input
+    error, any other exception an internal error naming it."""
     try:
-        return _audit_one(path, key, plots, options or Options())
+        return _audit_one(path, key, plots, options or Options(), draw)
     except WtvibError as exc:
         return Item(path, key, error=str(exc))
     except Exception as exc:  # the last line of defence: one turbine, not the batch
@@ -185,7 +195,9 @@ def internal_message(path: str, exc: BaseException) -> str:
     )
 
 
-def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
+def _audit_one(
+    path: str, key: str, plots: bool, options: Options, draw: Draw | None = None
+) -> Item:
     from . import audit
 
     t0 = time.perf_counter()
@@ -194,7 +206,9 @@ def _audit_one(path: str, key: str, plots: bool, options: Options) -> Item:
     report = audit.run(turbine, options.settings(turbine))
     t2 = time.perf_counter()
     pngs: dict[str, bytes] = {}
-    if plots:
+    if plots and draw is not None:
+        pngs = draw(report)
+    elif plots:
         from .plots import diagrams, png_bytes
 
         pngs = {suffix: png_bytes(fig) for suffix, fig in diagrams(report).items()}

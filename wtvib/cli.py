@@ -355,14 +355,20 @@ def report(
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
     """Write the PDF audit report of one turbine."""
-    from . import batch, pdfreport
+    from . import audit, batch, pdfreport  # audit: the models imported before the fork
     from .outputs import write_atomic
+    from .plots.render import Drawer
 
-    with _working("auditing and drawing the figures"):
+    # every figure, drawn beside the audit as check draws its own (plots.render)
+    with _working("auditing and drawing the figures"), Drawer() as drawer:
+
+        def draw(report: "audit.Report") -> dict[str, bytes]:
+            return drawer.pngs(report, detail=True)
+
         if debug or _state["debug"]:
-            item = batch._audit_one(str(spec_file), spec_file.stem, True, options)
+            item = batch._audit_one(str(spec_file), spec_file.stem, True, options, draw)
         else:
-            item = batch.audit_one(str(spec_file), spec_file.stem, plots=True, options=options)
+            item = batch.audit_one(str(spec_file), spec_file.stem, True, options, draw)
     if item.report is None:
         typer.echo(f"error: {item.error}", err=True)
         raise typer.Exit(EXIT_INTERNAL if item.internal else EXIT_INPUT)
