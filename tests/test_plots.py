@@ -87,7 +87,8 @@ def test_no_damping_diagram_without_aerodynamics(write_spec):
 def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkeypatch):
     """The forked drawing process (and its own forks, one per core) returns exactly the PNG
     bytes of in-process drawing, in the registry's order — here with every detail figure
-    of MOD-0 (Floquet, drive train, power sweep), split over three processes."""
+    of MOD-0 (Floquet, drive train, power sweep), one process per figure (two per core, of
+    three cores)."""
     from wtvib.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
@@ -98,6 +99,28 @@ def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkey
         assert drawer._child is not None  # it did fork
         forked = drawer.pngs(reports["mod-0"], detail=True)
     assert list(forked) == list(inline) and forked == inline
+
+
+def test_no_fork_while_another_thread_runs(monkeypatch):
+    """A fork copies no thread but every lock a thread holds (a spinner's, a Dask client's):
+    with another thread alive the figures are drawn in-process."""
+    import threading
+
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "cores", lambda: 2)
+    monkeypatch.delenv("WTVIB_DRAW", raising=False)
+    assert render.forking() or threading.active_count() > 1
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait)
+    other.start()
+    try:
+        assert not render.forking()
+        with render.Drawer() as drawer:
+            assert drawer._child is None
+    finally:
+        stop.set()
+        other.join()
 
 
 def test_a_failed_drawing_process_costs_time_not_figures(reports, monkeypatch):

@@ -359,8 +359,9 @@ def report(
     from .outputs import write_atomic
     from .plots.render import Drawer
 
-    # every figure, drawn beside the audit as check draws its own (plots.render)
-    with _working("auditing and drawing the figures"), Drawer() as drawer:
+    # every figure, drawn beside the audit as check draws its own (plots.render); forked
+    # before the spinner's thread starts (a fork copies no thread, but a lock one holds)
+    with Drawer() as drawer, _working("auditing and drawing the figures"):
 
         def draw(report: "audit.Report") -> dict[str, bytes]:
             return drawer.pngs(report, detail=True)

@@ -20,6 +20,7 @@ import pickle
 import select
 import signal
 import sys
+import threading
 import time
 from collections.abc import Callable
 from types import TracebackType
@@ -38,12 +39,15 @@ def cores() -> int:
 
 
 def forking() -> bool:
-    """Whether drawing beside the audit can help here."""
+    """Whether drawing beside the audit can help here — and is safe: never from a process
+    with other threads running (a fork copies none of them, but any lock one holds, and the
+    drawing process could wait on it for ever; Python 3.12 warns of it too)."""
     return (
         sys.platform.startswith("linux")
         and hasattr(os, "fork")
         and cores() > 1
         and os.environ.get("WTVIB_DRAW", "") != "inline"
+        and threading.active_count() == 1
     )
 
 
