@@ -15,7 +15,7 @@ if TYPE_CHECKING:
 
 
 #: The least height [in] an axes keeps; margins that would leave less make the figure taller.
-MIN_AXES_IN = 2.0
+MIN_AXES_IN = 1.5
 
 #: Inches per line of an axes title (12 pt, matplotlib's "large", line spacing 1.2).
 TITLE_LINE_IN = 0.22
@@ -74,14 +74,14 @@ def legend_below(  # type: ignore[no-untyped-def]
     """The legend under the axes at the bottom of the figure, the axes above it: margins
     set with :func:`fixed_layout` (``top`` and ``left`` in inches)."""
     below = legend_height(len(labels), columns, fontsize)
+    fixed_layout(fig, top=top, left=left, bottom=below + 0.62)  # may make the figure taller
     ax.legend(
         handles,
         labels,
         loc="lower center",
-        bbox_to_anchor=(0.5, 0.04 / fig.get_size_inches()[1]),
+        bbox_to_anchor=(0.5, 0.04 / fig.get_size_inches()[1]),  # 0.04 in above the edge
         bbox_transform=fig.transFigure,
         fontsize=fontsize,
         ncol=columns,
         frameon=False,
     )
-    fixed_layout(fig, top=top, left=left, bottom=below + 0.62)
