@@ -132,3 +132,19 @@ def test_png_that_cannot_pass_through_goes_to_reportlab(tmp_path):
     out = tmp_path / "two.pdf"
     SimpleDocTemplate(str(out)).build([image(rgb, 40, 30), fallback])
     assert len(PdfReader(out).pages[0].images) == 2
+
+
+def test_a_figure_taller_than_a_page_is_drawn_to_fit():
+    """A figure made taller by a legend of many rows (plots.layout) must still fit a page:
+    reportlab refuses a flowable taller than its frame (LayoutError) — the PDF of a
+    results import with very many modes would not build."""
+    from PIL import Image
+
+    from wtvib import pdfreport
+
+    report = audit.run(spec.load(TURBINES / "wka-60.yaml")).to_dict()
+    buf = io.BytesIO()
+    Image.new("RGB", (1500, 4000), "white").save(buf, format="png")  # 10 × 26.7 in
+    pdf = pdfreport.build([(report, {"campbell": buf.getvalue()})])
+    reader = PdfReader(io.BytesIO(pdf))
+    assert any(page.images for page in reader.pages)

@@ -80,6 +80,9 @@ class _Kit:
             self.styles[name].keepWithNext = 1
         self.small = self.styles["BodyText"].clone("small", fontSize=8, leading=9.6)
         self.width = A4[0] - 36 * mm
+        #: the tallest figure a page takes (its frame is 265 mm): a taller one (a legend of
+        #: many rows makes the figure taller) is drawn narrower, never too large for a page
+        self.tallest = 230 * mm
 
     def p(self, text: Any, style: str | None = None) -> Any:
         """A paragraph of plain text (escaped)."""
@@ -265,7 +268,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             drawn.add(diagram)
             out += [
                 k.Spacer(1, 2 * k.mm),
-                k.image(pngs[diagram], k.width, k.width * _aspect(pngs[diagram])),
+                k.image(pngs[diagram], *_fitted(k, _aspect(pngs[diagram]))),
             ]
         rows = [k.header("status", "check", "numbers", "rule and source")]
         rows += [
@@ -320,6 +323,13 @@ def _in_operation(m: dict[str, Any]) -> str:
         else f"{op['at_rpm']:.3g} rpm"
     )
     return f" ({_num(op['lowest_total_damping_ratio'])} at {where})"
+
+
+def _fitted(k: _Kit, aspect: float) -> tuple[float, float]:
+    """Width and height [pt] of a figure of this aspect: the text width, or less where the
+    height would not fit a page."""
+    width = min(k.width, k.tallest / aspect) if aspect > 0 else k.width
+    return width, width * aspect
 
 
 def _aspect(png: bytes) -> float:
