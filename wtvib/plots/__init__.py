@@ -42,8 +42,11 @@ def png_bytes(fig: "Figure") -> bytes:
     canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
     canvas.draw()
     width, height = canvas.get_width_height(physical=True)
-    rows = np.zeros((height, 1 + 3 * width), dtype=np.uint8)  # each row: filter 0, RGB
-    rows[:, 1:] = np.asarray(canvas.buffer_rgba())[:, :, :3].reshape(height, 3 * width)
+    rows = np.empty((height, 1 + 3 * width), dtype=np.uint8)  # each row: filter 0, RGB
+    rows[:, 0] = 0
+    pixels = rows[:, 1:].reshape(height, width, 3)  # a view: the last axis splits in place
+    assert np.may_share_memory(pixels, rows)
+    pixels[...] = np.asarray(canvas.buffer_rgba())[:, :, :3]
     per_metre = round(fig.dpi / 0.0254)
     return b"".join(
         [
