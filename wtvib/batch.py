@@ -206,12 +206,10 @@ def _audit_one(
     report = audit.run(turbine, options.settings(turbine))
     t2 = time.perf_counter()
     pngs: dict[str, bytes] = {}
-    if plots and draw is not None:
-        pngs = draw(report)
-    elif plots:
-        from .plots import diagrams, png_bytes
+    if plots:
+        from .plots.render import inline
 
-        pngs = {suffix: png_bytes(fig) for suffix, fig in diagrams(report).items()}
+        pngs = draw(report) if draw is not None else inline(report, detail=True)
     t3 = time.perf_counter()
     return Item(
         path,
