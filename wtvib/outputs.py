@@ -9,10 +9,10 @@ caller passes ``force``.
 
 import mmap
 import os
-import struct
 import tempfile
 from pathlib import Path
 
+from . import png
 from .errors import OutputError
 
 SOFTWARE_TAG = "wtvib"
@@ -41,22 +41,17 @@ def is_ours(path: Path) -> bool:
                     return whole.find(b"/Creator (wtvib") >= 0
     except (OSError, ValueError):
         return False
-    if head.startswith(b"\x89PNG\r\n\x1a\n"):
+    if head.startswith(png.SIGNATURE):
         return _png_software(head).startswith(SOFTWARE_TAG)
     return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER, CAMPBELL_HEADER, IDENTITY))
 
 
 def _png_software(data: bytes) -> str:
-    pos = 8
-    while pos + 8 <= len(data):
-        (length,) = struct.unpack(">I", data[pos : pos + 4])
-        kind = data[pos + 4 : pos + 8]
-        body = data[pos + 8 : pos + 8 + length]
+    for kind, body in png.chunks(data):
         if kind == b"tEXt" and body.startswith(b"Software\x00"):
             return body.split(b"\x00", 1)[1].decode("latin-1")
         if kind == b"IDAT":
             break
-        pos += 12 + length
     return ""
 
 

@@ -14,19 +14,12 @@ import zlib
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from .. import __version__
+from .. import __version__, png
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..audit import Report
-
-
-PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
-
-
-def _chunk(kind: bytes, data: bytes) -> bytes:
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
 
 def png_bytes(fig: "Figure") -> bytes:
@@ -50,12 +43,12 @@ def png_bytes(fig: "Figure") -> bytes:
     per_metre = round(fig.dpi / 0.0254)
     return b"".join(
         [
-            PNG_SIGNATURE,
-            _chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)),
-            _chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
-            _chunk(b"tEXt", b"Software\x00" + f"wtvib {__version__}".encode("latin-1")),
-            _chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)),
-            _chunk(b"IEND", b""),
+            png.SIGNATURE,
+            png.chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)),
+            png.chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
+            png.chunk(b"tEXt", b"Software\x00" + f"wtvib {__version__}".encode("latin-1")),
+            png.chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)),
+            png.chunk(b"IEND", b""),
         ]
     )
 
