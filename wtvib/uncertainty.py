@@ -142,12 +142,19 @@ def sample(
 ) -> Samples:
     """Monte Carlo samples of the uncertain modes (chunked, reproducible); ``nominal``: the
     audit's frequencies (:func:`nominal_of`)."""
+    return combine([sample_chunk(*args) for args in _chunks(spec, n, seed, chunk, nominal)])
+
+
+def _chunks(
+    spec: Spec, n: int, seed: int, chunk: int, nominal: Nominal | None
+) -> list[tuple[Spec, int, np.random.SeedSequence, Nominal, "TowerRitz | None"]]:
+    """The arguments of each :func:`sample_chunk` call — the same locally and on a
+    cluster, so that both draw the same samples: one seed sequence per chunk of ``chunk``
+    samples, the nominal frequencies and the reduced tower built once for all."""
     base = nominal if nominal is not None else nominal_of(spec)
     seqs = np.random.SeedSequence(seed).spawn(max(1, math.ceil(n / chunk)))
-    sizes = [min(chunk, n - i * chunk) for i in range(len(seqs))]
     ritz = tower_ritz(spec)
-    parts = [sample_chunk(spec, m, s, base, ritz) for m, s in zip(sizes, seqs, strict=True)]
-    return combine(parts)
+    return [(spec, min(chunk, n - i * chunk), s, base, ritz) for i, s in enumerate(seqs)]
 
 
 def combine(parts: Sequence[Samples]) -> Samples:
@@ -280,8 +287,9 @@ class TowerRitz:
 def tower_ritz(spec: Spec) -> TowerRitz | None:
     """The spec's reduced tower problems for sampling, or None where no linear tower input
     is uncertain (or soil is: the mudline stiffness is not linear in it)."""
-    paths = tuple(p for p in sorted(uncertain(spec)) if p.startswith(LINEAR_TOWER))
-    soil = any(p.startswith(SOIL) for p in uncertain(spec))
+    inputs = sorted(uncertain(spec))
+    paths = tuple(p for p in inputs if p.startswith(LINEAR_TOWER))
+    soil = any(p.startswith(SOIL) for p in inputs)
     if not paths or soil or not spec.tower.has_structure:
         return None
 
@@ -489,17 +497,6 @@ def sample_distributed(
 ) -> Samples:
     """:func:`sample` on a Dask cluster (``client``: a ``distributed.Client``): the same
     chunks and seeds, so the same samples as a local run (optional extra ``distributed``)."""
-    seqs = np.random.SeedSequence(seed).spawn(max(1, math.ceil(n / chunk)))
-    sizes = [min(chunk, n - i * chunk) for i in range(len(seqs))]
-    base = nominal if nominal is not None else nominal_of(spec)
-    ritz = tower_ritz(spec)
-    futures = client.map(
-        sample_chunk,
-        [spec] * len(seqs),
-        sizes,
-        seqs,
-        [base] * len(seqs),
-        [ritz] * len(seqs),
-        pure=False,
-    )
+    calls = _chunks(spec, n, seed, chunk, nominal)
+    futures = client.map(sample_chunk, *zip(*calls, strict=True), pure=False)
     return combine(client.gather(futures))
