@@ -131,17 +131,15 @@ class SoilLayer(_Strict):
 
     @model_validator(mode="after")
     def _given(self) -> "SoilLayer":
-        if self.kind == "sand" and self.friction_angle_deg is None:
-            raise ValueError("a sand layer needs friction_angle_deg")
-        if self.kind == "clay" and self.undrained_shear_strength_pa is None:
-            raise ValueError("a clay layer needs undrained_shear_strength_pa")
-        if self.kind == "modulus" and self.modulus_pa is None:
-            raise ValueError("a modulus layer needs modulus_pa")
-        uses = {
-            "sand": {"friction_angle_deg"},
-            "clay": {"undrained_shear_strength_pa"},
-            "modulus": {"modulus_pa", "gradient_pa_m"},
+        # each kind's required field, then the optional ones it also uses
+        needs, *also = {
+            "sand": ("friction_angle_deg",),
+            "clay": ("undrained_shear_strength_pa",),
+            "modulus": ("modulus_pa", "gradient_pa_m"),
         }[self.kind]
+        if getattr(self, needs) is None:
+            raise ValueError(f"a {self.kind} layer needs {needs}")
+        uses = {needs, *also}
         unused = [
             name
             for name, field in type(self).model_fields.items()
