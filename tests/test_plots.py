@@ -101,6 +101,39 @@ def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkey
     assert list(forked) == list(inline) and forked == inline
 
 
+_DRAW = """
+import pickle, sys
+if sys.argv[1] == "plain":
+    import matplotlib.pyplot  # matplotlib as a user's program imports it
+from wtvib import audit, spec
+from wtvib.plots import render
+pngs = render.inline(audit.run(spec.load(sys.argv[2])), detail=True)
+import matplotlib.lines
+sys.stdout.buffer.write(pickle.dumps((pngs, matplotlib.lines.Line2D.set.__doc__)))
+"""
+
+
+def test_matplotlib_without_its_help_text_draws_the_same_pixels():
+    """render._lean_matplotlib skips matplotlib's generated docstrings and signatures: a
+    fresh process drawing MOD-0's every figure that way writes the bytes of one that
+    imported matplotlib as usual first (where the skip does not apply)."""
+    import pickle
+    import subprocess
+    import sys
+
+    def draw(how: str) -> tuple[dict[str, bytes], str | None]:
+        run = subprocess.run(
+            [sys.executable, "-c", _DRAW, how, str(TURBINES / "mod-0.yaml")],
+            capture_output=True,
+            check=True,
+        )
+        return pickle.loads(run.stdout)  # type: ignore[no-any-return]
+
+    (lean, lean_doc), (plain, plain_doc) = draw("lean"), draw("plain")
+    assert lean_doc is None and plain_doc  # the skip applied in one process only
+    assert len(lean) >= 4 and lean == plain
+
+
 def test_no_fork_while_another_thread_runs(monkeypatch):
     """A fork copies no thread but every lock a thread holds (a spinner's, a Dask client's):
     with another thread alive the figures are drawn in-process."""
