@@ -66,6 +66,10 @@ def test_schedule_regions(nrel):
     tsr = sol.omega[below] * 63.0 / sol.wind[below]
     np.testing.assert_allclose(tsr, 7.5, rtol=1e-9)  # VS_TSRopt
     assert sch.rated_wind is not None and sch.rated_wind in sch.wind
+    # the rated wind is where the fine-pitch power reaches rated (bem._rated_wind): the
+    # point there, still at the fine pitch, has rated power to 1e-6 (secant in a 3.5 mm cell)
+    at = int(np.argmin(np.abs(sch.wind - sch.rated_wind)))
+    assert sch.pitch_deg[at] == 0.0 and sol.power[at] == pytest.approx(p_rated, rel=1e-6)
 
 
 def test_fixed_speed_stall_regulation_holds_pitch(write_spec):
