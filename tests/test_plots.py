@@ -239,3 +239,40 @@ def test_a_legend_of_many_rows_makes_the_figure_taller_not_the_axes_vanish():
     box = narrow.add_subplot()
     fixed_layout(narrow, left=9.0)  # tick labels wider than the figure: cut, not an error
     assert box.get_position().width > 0.2
+
+
+# --- what a figure shows is inside it ----------------------------------------------------
+
+
+@pytest.mark.parametrize("name", ["aeroman", "stall-rotor-1mw", "euros-44m", "mod-2"])
+def test_every_text_of_a_figure_is_inside_it(name):
+    """Fixed margins (plots.layout) must leave room for what the figure writes: no title,
+    tick, line label (Aeroman's "mesh.stage1" at the right edge) or legend entry is cut
+    at the figure's edge — every figure of the turbine, drawn."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    report = audit.run(spec.load(TURBINES / f"{name}.yaml"))
+    for suffix, fig in diagrams(report, detail=True).items():
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        drawn = fig.get_tightbbox(canvas.get_renderer())  # [in]: everything drawn
+        width, height = fig.get_size_inches()
+        tol = 1 / fig.dpi  # a pixel
+        assert drawn.x0 >= -tol and drawn.y0 >= -tol, (suffix, drawn.bounds)
+        assert drawn.x1 <= width + tol and drawn.y1 <= height + tol, (suffix, drawn.bounds)
+
+
+def test_log_axes_label_their_decades_as_plain_numbers(reports):
+    """Damping in % of critical on a symlog axis reads 100, 10, 1, 0.1, 0, −0.1 — plain
+    numbers, no mathtext powers of ten (plots.layout.plain_decades)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from wtvib.plots.layout import _plain
+
+    assert [_plain(v) for v in (100.0, 1.0, 0.1, 0.0, -0.1, 1e-5, 3e7)] == [
+        "100", "1", "0.1", "0", "\u22120.1", "1e-5", "1e7"
+    ]  # fmt: skip
+    fig = campbell.damping_plot(reports["stall-rotor-1mw"])
+    FigureCanvasAgg(fig).draw()
+    labels = [t.get_text() for t in fig.axes[0].get_yticklabels() if t.get_text()]
+    assert "10" in labels and "0" in labels and not any("$" in t for t in labels)

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import fixed_layout
+from .layout import fixed_layout, plain_decades
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -146,6 +146,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     )
     ax.axvline(0.0, color="#616161", lw=0.8)
     ax.set_yscale("log")
+    plain_decades(ax.yaxis)
     ax.set_ylim(bottom, top)
     ax.set_xlabel("centre of mass behind the elastic axis [% chord]")
     ax.set_ylabel("torsional stiffness k_θ [kN·m/rad per m]")

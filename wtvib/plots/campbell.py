@@ -15,7 +15,7 @@ from ..excitation import operating_range
 from ..results import Sampled
 from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
-from .layout import TITLE_LINE_IN, legend_below
+from .layout import TITLE_LINE_IN, legend_below, plain_decades
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -84,6 +84,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     )
 
     excitations = {f.excitation.id: f.excitation for f in findings}
+    right = 0.3  # the right margin [in]: room for the line labels at the right edge
     for exc in excitations.values():
         style = {
             "dominant": dict(color="#212121", lw=1.8, ls="-"),
@@ -92,7 +93,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         }[exc.energy]
         f_line = exc.frequency_hz(omega)
         ax.plot(rpm, f_line, **style)  # type: ignore[arg-type]
-        _label_line(ax, exc.id, rpm, f_line, f_top, style["color"])  # type: ignore[arg-type]
+        right = max(right, _label_line(ax, exc.id, rpm, f_line, f_top, style["color"]))  # type: ignore[arg-type]
 
     colours = _palette(len(modes))
     drawn: list[np.ndarray] = []
@@ -200,6 +201,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     shown_top = max((m.frequency_hz for m in modes), default=low)
     if shown_top / low > 20:  # modes spanning decades (drive trains): log scale
         ax.set_yscale("log")
+        plain_decades(ax.yaxis)
         ax.set_ylim(low * 0.5, f_top)
     else:
         ax.set_ylim(0, f_top)
@@ -236,6 +238,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         {e.energy for e in excitations.values()},
         bool(spec.rotor.speed.quick_pass_rpm),
         title_lines=heading.count("\n") + 1,
+        right=right,
     )
     return fig
 
@@ -256,10 +259,17 @@ def _palette(n: int) -> list[str]:
     return [base[i % len(base)] for i in range(n)]
 
 
-def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None:  # type: ignore[no-untyped-def]
+#: Width [in] of a character of a line label (9 pt bold DejaVu Sans: "mesh.stage2" 0.084,
+#: "12P" 0.089 in a character, measured) and the label's offset from its line's end.
+LABEL_CHAR_IN, LABEL_OFFSET_IN = 0.09, 0.06
+
+
+def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> float:  # type: ignore[no-untyped-def]
+    """Name an excitation line where it leaves the axes (the right edge or the top); the
+    right margin [in] its label needs (0 where it is placed well inside)."""
     inside = np.nonzero(f_line <= f_top * 0.97)[0]
     if inside.size == 0:
-        return
+        return 0.0
     i = inside[-1]
     ax.annotate(
         text,
@@ -270,9 +280,13 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> None: 
         color=colour,
         fontweight="bold",
     )
+    near_edge = i >= 0.8 * (len(rpm) - 1)  # a label further in has the axes' width
+    return LABEL_OFFSET_IN + LABEL_CHAR_IN * len(text) if near_edge else 0.0
 
 
-def _legend(ax, rule_label: str, energies: set[str], quick: bool, title_lines: int) -> None:  # type: ignore[no-untyped-def]
+def _legend(  # type: ignore[no-untyped-def]
+    ax, rule_label: str, energies: set[str], quick: bool, title_lines: int, right: float
+) -> None:
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -307,7 +321,7 @@ def _legend(ax, rule_label: str, energies: set[str], quick: bool, title_lines: i
         labels.append(label)
     ncol = 2 if max(len(t) for t in labels) > 40 else 4
     top = 0.25 + TITLE_LINE_IN * title_lines
-    legend_below(ax.figure, ax, handles, labels, columns=ncol, fontsize=8, top=top)
+    legend_below(ax.figure, ax, handles, labels, columns=ncol, fontsize=8, top=top, right=right)
 
 
 def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
@@ -370,6 +384,7 @@ def damping_plot(report: Report) -> "Figure | None":
             ms=4,
         )
     ax.set_yscale("symlog", linthresh=0.1)
+    plain_decades(ax.yaxis)
     schedule = report.results.get("aerodynamics", {}).get("schedule")
     if schedule is not None and schedule.rated_wind is not None:
         ax.axvline(schedule.rated_wind, color="#616161", lw=0.8, ls="--")

@@ -8,6 +8,7 @@ Titles are placed at ``y=1.0`` explicitly: matplotlib then does not measure the 
 every draw for tick labels above them, which these axes do not have (the same picture).
 """
 
+import math
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -70,11 +71,12 @@ def legend_below(  # type: ignore[no-untyped-def]
     fontsize: float,
     top: float,
     left: float = 0.8,
+    right: float = 0.3,
 ) -> None:
     """The legend under the axes at the bottom of the figure, the axes above it: margins
-    set with :func:`fixed_layout` (``top`` and ``left`` in inches)."""
+    set with :func:`fixed_layout` (``top``, ``left`` and ``right`` in inches)."""
     below = legend_height(len(labels), columns, fontsize)
-    fixed_layout(fig, top=top, left=left, bottom=below + 0.62)  # may make the figure taller
+    fixed_layout(fig, top=top, left=left, right=right, bottom=below + 0.62)  # may grow it
     ax.legend(
         handles,
         labels,
@@ -85,3 +87,21 @@ def legend_below(  # type: ignore[no-untyped-def]
         ncol=columns,
         frameon=False,
     )
+
+
+def plain_decades(axis) -> None:  # type: ignore[no-untyped-def]
+    """Label a log or symlog axis's decades as plain numbers — 100, 10, 1, 0.1, 0, −0.1 —
+    rather than as powers of ten: read at a glance, and drawn without mathtext, whose
+    parser matplotlib builds at its first use in each drawing process (≈ 45 ms here).
+    Minor ticks keep matplotlib's labels (shown only on an axis of about one decade)."""
+    from matplotlib.ticker import FuncFormatter
+
+    axis.set_major_formatter(FuncFormatter(lambda value, _: _plain(value)))
+
+
+def _plain(value: float) -> str:
+    if value == 0:
+        return "0"
+    size = abs(value)
+    text = f"{size:g}" if 1e-4 <= size < 1e6 else f"1e{round(math.log10(size))}"
+    return ("\u2212" if value < 0 else "") + text
