@@ -147,26 +147,32 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             label="yaw frequency range with gear play",
         )
     labels: list[tuple[float, float, float, str]] = []  # rpm, Hz, DAF, colour
+    marks: dict[str, list[tuple[float, float]]] = {}  # the crossings by status: rpm, Hz
     for f in findings:
         for c, daf in zip(f.crossings, f.crossing_daf or [None] * len(f.crossings), strict=True):
             f_c = float(f.excitation.frequency_hz(np.array([c]))[0])
             if f_c > f_top:
                 continue
             status = f.status_at(c, op)
-            colour = STATUS_COLOUR[status]
-            big = STATUS_ORDER[status] >= STATUS_ORDER["warn"]
-            ax.plot(
-                float(rad_s_to_rpm(c)),
-                f_c,
-                marker="X" if big else "o",
-                ms=11 if big else 6,
-                color=colour,
-                mec="white",
-                mew=0.8,
-                zorder=5,
-            )
+            marks.setdefault(status, []).append((float(rad_s_to_rpm(c)), f_c))
             if status != "pass" and daf is not None:  # the crossing's amplification
-                labels.append((float(rad_s_to_rpm(c)), f_c, daf, colour))
+                labels.append((float(rad_s_to_rpm(c)), f_c, daf, STATUS_COLOUR[status]))
+    # one marker line per status (a line per crossing cost a millisecond each), the worse
+    # drawn over the milder where crossings coincide
+    for kind in sorted(marks, key=STATUS_ORDER.__getitem__):
+        big = STATUS_ORDER[kind] >= STATUS_ORDER["warn"]
+        at_rpm, at_hz = zip(*marks[kind], strict=True)
+        ax.plot(
+            at_rpm,
+            at_hz,
+            ls="",
+            marker="X" if big else "o",
+            ms=11 if big else 6,
+            color=STATUS_COLOUR[kind],
+            mec="white",
+            mew=0.8,
+            zorder=5,
+        )
     # each crossing's DAF, the largest first; one label where several crossings coincide
     placed: list[tuple[float, float]] = []
     for x, y, daf, colour in sorted(labels, key=lambda t: -t[2]):
@@ -220,12 +226,12 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         heading = f"{spec.turbine.name}\nCampbell diagram, {title} — verdict {verdict}{cls}"
     ax.set_title(heading, color=STATUS_COLOUR[report.verdict], fontweight="bold", y=1.0)
     if hidden:
+        low_hz, high_hz = (f"{g(m.frequency_hz for m in hidden):.3g}" for g in (min, max))
         ax.text(
             0.99,
             0.99,
-            f"{len(hidden)} mode(s) above every excitation line not drawn "
-            f"({min(m.frequency_hz for m in hidden):.3g}–"
-            f"{max(m.frequency_hz for m in hidden):.3g} Hz)",
+            f"{len(hidden)} mode{'s' if len(hidden) > 1 else ''} above every excitation line "
+            f"not drawn ({low_hz if low_hz == high_hz else f'{low_hz}–{high_hz}'} Hz)",
             transform=ax.transAxes,
             ha="right",
             va="top",
