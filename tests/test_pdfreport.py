@@ -7,7 +7,7 @@ from pypdf import PdfReader
 from typer.testing import CliRunner
 
 from tests.conftest import TURBINES
-from wtvib import audit, spec
+from wtvib import audit, pdfreport, spec
 from wtvib.cli import app
 
 runner = CliRunner()
@@ -148,3 +148,18 @@ def test_a_figure_taller_than_a_page_is_drawn_to_fit():
     pdf = pdfreport.build([(report, {"campbell": buf.getvalue()})])
     reader = PdfReader(io.BytesIO(pdf))
     assert any(page.images for page in reader.pages)
+
+
+def test_paragraphs_wrapped_once_give_the_same_document(monkeypatch):
+    """pdfreport.once_wrapped reuses a paragraph's line breaks at an unchanged width: the
+    catalogue's longest tables (Aeroman's drive train, MOD-0's checks), split across many
+    pages, give the bytes reportlab's own Paragraph gives."""
+    entries = [
+        (audit.run(spec.load(TURBINES / f"{name}.yaml")).to_dict(), {})
+        for name in ("aeroman", "mod-0")
+    ]
+    once = pdfreport.build(entries)
+    monkeypatch.setattr(pdfreport, "once_wrapped", lambda paragraph: paragraph)
+    plain = pdfreport.build(entries)
+    assert len(PdfReader(io.BytesIO(once)).pages) >= 6
+    assert once == plain
