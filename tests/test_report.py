@@ -54,3 +54,23 @@ def test_terminal_leads_with_a_summary_and_never_cuts_an_id():
         if _shown(c, False):  # (passing low-energy checks need --all)
             assert c["id"] in table, c["id"]  # whole, on one line
     assert "…" not in table
+
+
+def test_batch_progress_redraws_without_a_thread():
+    """The batch forks its workers inside the progress bar: no refresh thread may run
+    beside them (its locks would be copied held). The bar still shows each completion."""
+    import io
+    import threading
+    from types import SimpleNamespace
+
+    from rich.console import Console
+
+    from wtvib.report import batch_progress
+
+    out = io.StringIO()
+    console = Console(file=out, force_terminal=True, width=80)
+    before = threading.active_count()
+    with batch_progress(console, 3) as advance:
+        assert threading.active_count() == before
+        advance(SimpleNamespace(path="turbines/mod-2.yaml"))
+        assert "1/3" in out.getvalue() and "mod-2.yaml" in out.getvalue()

@@ -202,7 +202,10 @@ def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-a
 
 @contextmanager
 def batch_progress(console: Console, total: int) -> Iterator[Callable[[Any], None]]:
-    """A progress bar on ``console``; yields ``advance(item)``."""
+    """A progress bar on ``console``; yields ``advance(item)``, which redraws it. No
+    thread redraws it in between: the batch forks its workers inside, and a fork beside a
+    running thread copies every lock that thread holds (stderr's, mid-write: a worker
+    that then writes a warning would wait for ever)."""
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
     with Progress(
@@ -212,11 +215,13 @@ def batch_progress(console: Console, total: int) -> Iterator[Callable[[Any], Non
         TextColumn("{task.description}"),
         console=console,
         transient=True,
+        auto_refresh=False,
     ) as progress:
         task = progress.add_task("", total=total)
+        progress.refresh()
 
         def advance(item: Any) -> None:
-            progress.update(task, advance=1, description=Path(item.path).name)
+            progress.update(task, advance=1, description=Path(item.path).name, refresh=True)
 
         yield advance
 
