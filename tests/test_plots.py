@@ -187,6 +187,41 @@ def test_an_audit_that_fails_ends_the_drawing_process(monkeypatch):
         os.waitpid(pid, os.WNOHANG)  # reaped already
 
 
+def test_a_caller_that_fails_after_sending_the_report_ends_the_drawing(reports, monkeypatch):
+    """send() starts the drawing; a caller that then fails (its text output, a file that
+    may not be replaced) leaves the Drawer without collecting: the drawing process is
+    killed and reaped, not waited for."""
+    import os
+    import signal
+
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    kills: list[tuple[int, int]] = []
+    real_kill = os.kill
+    monkeypatch.setattr(
+        os, "kill", lambda pid, sig: (kills.append((pid, sig)), real_kill(pid, sig))
+    )
+    with pytest.raises(ValueError), render.Drawer() as drawer:
+        assert drawer._child is not None
+        pid = drawer._child[0]
+        drawer.send(reports["mod-0"], detail=True)  # every figure: seconds of drawing
+        raise ValueError("the caller failed")
+    assert kills == [(pid, signal.SIGKILL)]  # killed, not waited for
+    with pytest.raises(ChildProcessError):
+        os.waitpid(pid, os.WNOHANG)  # reaped already
+
+
+def test_send_then_pngs_gives_the_figures_once(reports, monkeypatch):
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    with render.Drawer() as drawer:
+        drawer.send(reports["wka-60"], detail=False)
+        got = drawer.pngs(reports["wka-60"], detail=False)
+    assert got == render.inline(reports["wka-60"], detail=False)
+
+
 def test_a_hung_drawing_process_is_killed_and_the_figures_drawn_in_process(reports, monkeypatch):
     import time
 

@@ -74,3 +74,24 @@ def test_batch_progress_redraws_without_a_thread():
         assert threading.active_count() == before
         advance(SimpleNamespace(path="turbines/mod-2.yaml"))
         assert "1/3" in out.getvalue() and "mod-2.yaml" in out.getvalue()
+
+
+def test_a_report_rendered_ahead_prints_as_one_printed_directly():
+    """check renders its terminal report while the figures draw (captured), and prints it
+    once they are written, then the files' lines (report.wrote): the same bytes, colours
+    included, as printing it all at once."""
+    from pathlib import Path
+
+    from wtvib.report import wrote
+
+    r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
+    files = [Path("out") / "mod-0.campbell.png", Path("out") / "mod-0.floquet.png"]
+    direct = io.StringIO()
+    terminal(r, Console(file=direct, force_terminal=True, width=100), written=files)
+    later = io.StringIO()
+    console = Console(file=later, force_terminal=True, width=100)
+    with console.capture() as captured:
+        terminal(r, console)
+    later.write(captured.get())
+    wrote(console, files)
+    assert "\x1b[" in direct.getvalue() and later.getvalue() == direct.getvalue()

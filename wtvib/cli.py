@@ -314,6 +314,23 @@ def check(
                 client=client,
             )
         if plot:
+            drawer.send(report, detail=figures is Figures.all)  # drawn while the text renders
+        # the report rendered while the figures draw, printed once they are written (a
+        # file that may not be replaced stops the check before anything is printed)
+        if format is Format.json:
+            from .report import to_json
+
+            text = to_json(report)
+        else:
+            from rich.console import Console
+
+            from .report import terminal, wrote
+
+            console = Console()
+            with console.capture() as captured:
+                terminal(report, console, show_all=show_all, detail=detail or show_all)
+            text = captured.get()
+        if plot:
             folder = out if out is not None else Path.cwd()  # never beside the input (#21)
             with _working("drawing the figures"):
                 pngs = drawer.pngs(report, detail=figures is Figures.all)
@@ -323,18 +340,13 @@ def check(
     if campbell_csv is not None:
         data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
+    sys.stdout.write(text)
     if format is Format.json:
-        from .report import to_json
-
-        sys.stdout.write(to_json(report))
         for path in written:
             typer.echo(f"wrote {path}", err=True)
     else:
-        from rich.console import Console
-
-        from .report import terminal
-
-        terminal(report, Console(), written=written, show_all=show_all, detail=detail or show_all)
+        sys.stdout.flush()
+        wrote(console, written)
     for warning in report.warnings:
         typer.echo(f"warning: {warning}", err=True)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")

@@ -69,7 +69,13 @@ def terminal(
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
         console.print(_t(f"  • {line}"))
-    for path in written:  # a path is never wrapped or cut (issue 21)
+    wrote(console, written)
+
+
+def wrote(console: Console, written: Sequence[Path]) -> None:
+    """A line for each file written, the report's last lines; a path is never wrapped or
+    cut (issue 21)."""
+    for path in written:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 
 

@@ -196,6 +196,7 @@ class Drawer:
     def __init__(self, enabled: bool = True) -> None:
         self._child: tuple[int, int] | None = None
         self._inbox: int | None = None
+        self._sent = False
         if not (enabled and forking()):
             return
         read, write = os.pipe()
@@ -220,23 +221,36 @@ class Drawer:
             os.close(read)
         self._inbox = write
 
-    def pngs(self, report: "Report", detail: bool) -> dict[str, bytes]:
-        """The report's figures as PNG bytes by file stem suffix (diagrams' order)."""
-        if self._child is not None and self._inbox is not None:
-            child, inbox = self._child, self._inbox
-            self._child = self._inbox = None
+    def send(self, report: "Report", detail: bool) -> None:
+        """Hand the report to the drawing process, which starts drawing at once: the caller
+        may do other work (render its text) before it asks for :meth:`pngs`."""
+        if self._inbox is not None:
+            inbox, self._inbox = self._inbox, None
+            self._sent = True
             with contextlib.suppress(OSError):  # the drawing process is gone
                 _write(inbox, pickle.dumps((report, detail)))
+
+    def pngs(self, report: "Report", detail: bool) -> dict[str, bytes]:
+        """The report's figures as PNG bytes by file stem suffix (diagrams' order); the
+        same report and ``detail`` as :meth:`send`, if it was called."""
+        self.send(report, detail)
+        if self._child is not None:
+            child, self._child = self._child, None
             value = _collect(*child)
             if isinstance(value, dict):
                 return value
         return inline(report, detail)
 
     def close(self) -> None:
+        """End the drawing process: told there is nothing to draw, or, given a report whose
+        figures are no longer wanted (the caller failed after :meth:`send`), killed."""
         if self._inbox is not None:
             os.close(self._inbox)
             self._inbox = None
         if self._child is not None:
+            if self._sent:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(self._child[0], signal.SIGKILL)
             _collect(*self._child)
             self._child = None
 
