@@ -163,3 +163,23 @@ def test_paragraphs_wrapped_once_give_the_same_document(monkeypatch):
     plain = pdfreport.build(entries)
     assert len(PdfReader(io.BytesIO(once)).pages) >= 6
     assert once == plain
+
+
+def test_a_subsystem_without_checks_says_where_its_modes_are_judged():
+    """The catalogue NREL 5-MW's drive train has only its brake-locked mode (no regime),
+    the OpenFAST deck's its free modes judged in the coupled model too: the section says
+    so instead of an empty table of checks."""
+    report = audit.run(spec.load(TURBINES / "nrel-5mw.yaml")).to_dict()
+    assert not any(c["subsystem"] == "drivetrain" for c in report["checks"])
+    text = " ".join(
+        p.extract_text() for p in PdfReader(io.BytesIO(pdfreport.build([(report, {})]))).pages
+    ).replace("\n", " ")
+    assert "No checks of its own — in no operating regime: drivetrain.locked.1." in text
+    deck = [
+        {"id": "drivetrain.free.1", "superseded_by": "system.drivetrain1"},
+        {"id": "drivetrain.locked.1", "regimes": []},
+    ]
+    assert pdfreport._judged_elsewhere(deck) == (
+        "No checks of its own — judged in the whole-turbine model: drivetrain.free.1 as "
+        "system.drivetrain1; in no operating regime: drivetrain.locked.1."
+    )

@@ -297,7 +297,10 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             for c in r["checks"]
             if c["subsystem"] == sub
         ]
-        out += [k.Spacer(1, 2 * k.mm), k.table(rows, [0.08, 0.2, 0.36, 0.36])]
+        if len(rows) > 1:
+            out += [k.Spacer(1, 2 * k.mm), k.table(rows, [0.08, 0.2, 0.36, 0.36])]
+        else:  # a table of no rows says nothing: say where its modes are judged
+            out.append(k.p(_judged_elsewhere(modes), "BodyText"))
 
     out.append(k.p("Inputs and their provenance", "Heading2"))
     if r["inputs"]:
@@ -386,6 +389,19 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
         k.p(f"Coupled model, {c['condition']}: {'; '.join(c['model'])}.", "BodyText"),
         k.table(rows, [0.34, 0.12, 0.3, 0.12, 0.12]),
     ]
+
+
+def _judged_elsewhere(modes: Sequence[Mapping[str, Any]]) -> str:
+    """Why a subsystem has no checks of its own: where each of its modes is judged."""
+    moved = [f"{m['id']} as {m['superseded_by']}" for m in modes if m.get("superseded_by")]
+    idle = [m["id"] for m in modes if not m.get("superseded_by") and m.get("regimes") == []]
+    rest = [m["id"] for m in modes if not m.get("superseded_by") and m.get("regimes") != []]
+    parts = [f"judged in the whole-turbine model: {', '.join(moved)}"] if moved else []
+    if idle:
+        parts.append(f"in no operating regime: {', '.join(idle)}")
+    if rest:
+        parts.append(f"no check applies to {', '.join(rest)}")
+    return "No checks of its own — " + "; ".join(parts) + "."
 
 
 def _judged_note(m: Mapping[str, Any]) -> str:
