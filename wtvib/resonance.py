@@ -18,6 +18,7 @@ start-up only      info for dominant/secondary lines: the "encounter" of soft
 =================  ==============================================================
 """
 
+import functools
 import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
@@ -188,14 +189,19 @@ def regime_of(omega: float, op: OperatingRange) -> str:
     return "overspeed" if omega > op.highest else "start-up"
 
 
+@functools.lru_cache(maxsize=64)
 def _grid(op: OperatingRange) -> NDArray[np.float64]:
+    """The speeds every line is sampled at (one grid per operating range: computed once
+    for the audit's hundred-odd pairs, read-only)."""
     top = op.overspeed
     edges = [s for pair in op.steady + op.quick_pass for s in pair]
-    return np.unique(
+    grid = np.unique(
         np.concatenate(
             [np.linspace(0.0, top, 801), np.geomspace(top * 1e-4, top, 200), np.array(edges)]
         )
     )
+    grid.flags.writeable = False
+    return grid
 
 
 ArrayFn = Callable[[NDArray[np.float64]], NDArray[np.float64]]
