@@ -140,7 +140,7 @@ def track(previous: NDArray[Any], current: NDArray[Any]) -> NDArray[np.intp]:
 def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
     """For each row of a similarity matrix (previous modes × candidates) the column that
     continues it (max total score): exhaustive for up to 7 square, greedy otherwise;
-    ``optimal``: the best assignment always (Hungarian method, scipy)."""
+    ``optimal``: the best assignment always (Hungarian method, :func:`_hungarian`)."""
     if optimal:
         return _hungarian(np.asarray(score, float))
     n, candidates = score.shape
