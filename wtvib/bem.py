@@ -17,6 +17,7 @@ stated: shaft tilt, precone, prebend, blade deflection, wind shear, tower shadow
 inflow (uniform steady axial wind on a rigid, planar rotor).
 """
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -70,10 +71,19 @@ class Rotor:
         x = x / POLAR_STEP_DEG
         i = np.minimum(x.astype(np.intp), self.cl.shape[1] - 2)
         t = x - i
-        s = np.broadcast_to(np.arange(len(self.radius)), x.shape)
-        cl = self.cl[s, i] * (1 - t) + self.cl[s, i + 1] * t
-        cd = self.cd[s, i] * (1 - t) + self.cd[s, i + 1] * t
+        k = i + self._row_start  # into the flattened tables: station s's row starts at s·A
+        cl_flat, cd_flat = self._flat
+        cl = cl_flat.take(k) * (1 - t) + cl_flat.take(k + 1) * t
+        cd = cd_flat.take(k) * (1 - t) + cd_flat.take(k + 1) * t
         return cl, cd
+
+    @functools.cached_property
+    def _flat(self) -> tuple[Array, Array]:
+        return self.cl.ravel(), self.cd.ravel()
+
+    @functools.cached_property
+    def _row_start(self) -> NDArray[np.intp]:
+        return np.arange(self.cl.shape[0], dtype=np.intp) * self.cl.shape[1]
 
 
 def rotor(spec: Spec) -> Rotor:
