@@ -15,7 +15,7 @@ from ..excitation import operating_range
 from ..results import Sampled
 from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
-from .layout import TITLE_LINE_IN, legend_below, plain_decades
+from .layout import TITLE_LINE_IN, legend_below, plain_decades, text_width
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -265,9 +265,9 @@ def _palette(n: int) -> list[str]:
     return [base[i % len(base)] for i in range(n)]
 
 
-#: Width [in] of a character of a line label (9 pt bold DejaVu Sans: "mesh.stage2" 0.084,
-#: "12P" 0.089 in a character, measured) and the label's offset from its line's end.
-LABEL_CHAR_IN, LABEL_OFFSET_IN = 0.09, 0.06
+#: The room [in] between a line's end and its label (2 pt offset, and some), and the
+#: label's size [pt], bold.
+LABEL_OFFSET_IN, LABEL_PT = 0.06, 9
 
 
 def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> float:  # type: ignore[no-untyped-def]
@@ -282,12 +282,12 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> float:
         (rpm[i], f_line[i]),
         xytext=(2, 2),
         textcoords="offset points",
-        fontsize=9,
+        fontsize=LABEL_PT,
         color=colour,
         fontweight="bold",
     )
     near_edge = i >= 0.8 * (len(rpm) - 1)  # a label further in has the axes' width
-    return LABEL_OFFSET_IN + LABEL_CHAR_IN * len(text) if near_edge else 0.0
+    return LABEL_OFFSET_IN + text_width(text, LABEL_PT, bold=True) if near_edge else 0.0
 
 
 def _legend(  # type: ignore[no-untyped-def]

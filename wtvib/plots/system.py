@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import legend_below
+from .layout import legend_below, text_width
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -48,8 +48,7 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     ax.set_xlim(0, 1)
     ax.set_xlabel("share of the mode's kinetic energy")
     handles, labels = ax.get_legend_handles_labels()
-    # the tick labels' width: 7 pt characters average about half their size
-    margin = 0.3 + max(len(t) for t in names) * 7 * 0.55 / 72
+    margin = 0.3 + max(text_width(t, 7) for t in names)  # the tick labels' width
     legend_below(fig, ax, handles, labels, columns=4, fontsize=7, top=0.45, left=margin)
     ax.set_title(
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
