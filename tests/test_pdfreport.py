@@ -183,3 +183,19 @@ def test_a_subsystem_without_checks_says_where_its_modes_are_judged():
         "No checks of its own — judged in the whole-turbine model: drivetrain.free.1 as "
         "system.drivetrain1; in no operating regime: drivetrain.locked.1."
     )
+
+
+def test_png_header_is_read_in_one_place():
+    """wtvib.png.header: the IHDR of a PNG wtvib wrote (the size the PDF scales by), None
+    for anything that is not a PNG with its IHDR first."""
+    from wtvib import png
+    from wtvib.plots import png_bytes
+    from wtvib.plots.campbell import campbell_plot
+
+    fig = campbell_plot(audit.run(spec.load(TURBINES / "mod-2.yaml")))
+    data = png_bytes(fig)
+    width, height = (round(v * fig.dpi) for v in fig.get_size_inches())
+    assert png.header(data) == (width, height, 8, 2, 0, 0, 0)  # 8-bit RGB, not interlaced
+    assert pdfreport._aspect(data) == height / width
+    assert png.header(b"GIF89a") is None and png.header(data[:20]) is None
+    assert pdfreport._aspect(b"GIF89a") == 0.7

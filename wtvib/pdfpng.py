@@ -15,7 +15,6 @@ reportlab is imported at the top: import this module only where a PDF is built.
 
 import hashlib
 import io
-import struct
 from dataclasses import dataclass
 from typing import Any
 
@@ -42,11 +41,10 @@ class PngStream:
 def png_stream(data: bytes) -> PngStream | None:
     """The PNG's size and concatenated IDAT data, or None if a PDF cannot take it as it is
     (not a PNG, interlaced, not 8 bits per sample, palette or alpha channel, truncated)."""
-    header, idat, complete = None, [], False
+    header = png.header(data)
+    idat, complete = [], False
     for kind, body in png.chunks(data):
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body[:13])
-        elif kind == b"IDAT":
+        if kind == b"IDAT":
             idat.append(body)
         elif kind == b"IEND":
             complete = True

@@ -9,7 +9,7 @@ import io
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from . import __version__
+from . import __version__, png
 
 STATUS_HEX = {
     "pass": "#2e7d32",
@@ -351,11 +351,10 @@ def _fitted(k: _Kit, aspect: float) -> tuple[float, float]:
     return width, width * aspect
 
 
-def _aspect(png: bytes) -> float:
-    """Height over width of a PNG (from its IHDR chunk)."""
-    width = int.from_bytes(png[16:20], "big")
-    height = int.from_bytes(png[20:24], "big")
-    return height / width if width else 0.7
+def _aspect(data: bytes) -> float:
+    """Height over width of a PNG (from its IHDR chunk; 0.7 where it has none)."""
+    found = png.header(data)
+    return found[1] / found[0] if found is not None and found[0] else 0.7
 
 
 def _rule_text(check_rule: dict[str, str], margin_rule: dict[str, Any]) -> str:

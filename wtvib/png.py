@@ -28,3 +28,13 @@ def chunks(data: bytes) -> Iterator[tuple[bytes, bytes]]:
             return
         yield kind, body
         pos += 12 + length
+
+
+def header(data: bytes) -> tuple[int, int, int, int, int, int, int] | None:
+    """The IHDR fields — width, height, bit depth, colour type, compression, filter and
+    interlace methods — or None if ``data`` is not a PNG with a whole IHDR first."""
+    for kind, body in chunks(data):
+        if kind == b"IHDR" and len(body) >= 13:
+            return struct.unpack(">IIBBBBB", body[:13])  # type: ignore[return-value]
+        return None  # IHDR must come first (§5.6)
+    return None
