@@ -386,15 +386,17 @@ def summary(
         )
         if exists:
             assert mode is not None
-            acting = [e for e in lines if e.acts_on(mode.subsystem)]
-            hits = dict.fromkeys((e.id for e in acting), 0)
+            line_hz = {
+                e.id: e.frequency_hz(omega)[None, :] for e in lines if e.acts_on(mode.subsystem)
+            }
+            hits = dict.fromkeys(line_hz, 0)
             factors = f[stable] / mode.frequency_hz
             # in blocks of samples: each block's (samples × speeds) arrays stay in cache
             for start in range(0, len(factors), SUMMARY_BLOCK):
                 curves = sampled_curves(mode, factors[start : start + SUMMARY_BLOCK], omega)
-                for e in acting:
-                    sep = rule.separation(e.frequency_hz(omega)[None, :], curves)
-                    hits[e.id] += int(np.count_nonzero(rule.violates(sep).any(axis=1)))
+                for key, f_e in line_hz.items():
+                    sep = rule.separation(f_e, curves)
+                    hits[key] += int(np.count_nonzero(rule.violates(sep).any(axis=1)))
             probs = {key: _share(n, len(f)) for key, n in hits.items()}
         out[mode_id] = {
             "mean_hz": round(float(np.mean(f[stable])), 6),
