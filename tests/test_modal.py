@@ -78,3 +78,46 @@ def test_deep_stacks_invert_their_cholesky_factors_row_by_row():
     assert np.all(np.triu(got, 1) == 0.0)  # lower-triangular, as the inverse must be
     few = lower[:3]
     assert np.array_equal(modal._inverse_lower(few), np.linalg.inv(few))
+
+
+def _chain(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """A fixed–free chain of n unit masses on unit springs."""
+    k = 2 * np.eye(n) - np.eye(n, k=1) - np.eye(n, k=-1)
+    k[-1, -1] = 1.0
+    return k, np.diag(np.linspace(1.0, 2.0, n))
+
+
+def test_ritz_basis_holds_the_modes_and_one_vector_per_new_load_direction():
+    """M-orthonormal; the lowest modes first, as solve gives them; a change the kept modes
+    carry whole (C = M: C φ = M φ) adds nothing, a spring to ground at one mass (rank one)
+    exactly one vector, whatever the number of modes imaged."""
+    k, m = _chain(30)
+    spring = np.zeros_like(k)
+    spring[7, 7] = 1.0
+    modes = modal.solve(k, m, 4).shapes
+    assert modal.ritz_basis(k, m, 4, [m], 4).shape[1] == 4
+    basis = modal.ritz_basis(k, m, 4, [spring, m], 4)
+    assert basis.shape[1] == 5
+    np.testing.assert_allclose(basis.T @ m @ basis, np.eye(5), atol=1e-12)
+    np.testing.assert_allclose(np.abs(basis[:, :4]), np.abs(modes), atol=1e-12)
+
+
+def test_ritz_basis_follows_a_changed_problem_closer_than_its_modes_alone():
+    """The lowest four frequencies of the chain with a spring to ground at one mass, from
+    the unchanged modes and their one load-dependent vector: upper bounds of the full
+    problem's (the reference; Rayleigh–Ritz), five times closer than the modes alone give
+    them (measured 6.1e-6 against 1.3e-6). A chain's spectrum is dense: a model whose
+    truncated modes lie far above the kept ones (the coupled turbine) gains orders of
+    magnitude (tests/validation/test_coupled.py)."""
+    k, m = _chain(30)
+    spring = np.zeros_like(k)
+    spring[20, 20] = 1e-3
+
+    def lowest(basis: np.ndarray) -> np.ndarray:
+        return modal.solve(basis.T @ (k + spring) @ basis, basis.T @ m @ basis, 4).frequency_hz
+
+    exact = modal.solve(k + spring, m, 4).frequency_hz
+    plain = lowest(modal.solve(k, m, 4).shapes) / exact - 1
+    enriched = lowest(modal.ritz_basis(k, m, 4, [spring], 4)) / exact - 1
+    assert np.all(enriched > -1e-12) and np.all(enriched <= plain + 1e-12)
+    assert enriched.max() < plain.max() / 4, (plain, enriched)

@@ -49,7 +49,6 @@ from numpy.typing import NDArray
 
 from . import bem
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
-from .multiblade import RITZ_DAMPED
 from .results import Check, Mode, OperatingDamping, Rule
 from .spec import Spec
 
@@ -154,8 +153,8 @@ class Coupled:
 
 def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     """The coupled model's damped modes at each operating point (None: no coupled model
-    with a rotating multi-blade view); ``reduced``: in the model's Ritz basis of standstill
-    modes (``multiblade.RITZ_DAMPED``), else the full model."""
+    with a rotating multi-blade view); ``reduced``: in the model's Ritz basis
+    (``Model.ritz``), else the full model."""
     from . import coupled as coupled_model
     from .multiblade import fixed_frame_damping, matched, perturbed, track
 
@@ -163,14 +162,13 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         return None
     assert spec.coupled is not None
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
-    basis = RITZ_DAMPED if reduced else None
     sol = sec.schedule.solution
     c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
     # the structural modes at each operating speed, followed from standstill (LEAD steps up
     # to the first operating speed): the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
     lead = [float(w) for w in np.linspace(0.0, speeds[0], LEAD + 1)[:-1]]
-    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=basis)
+    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=reduced)
     at = {w: i for i, w in enumerate(speeds, start=len(lead))}
     kept = path.kept
     freq = np.empty((len(sol.omega), kept))
@@ -181,7 +179,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         ref = path.shapes[i]
         d = model.section_damping(c_points[k])
         extra = fixed_frame_damping(model, d, float(om))
-        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=basis)
+        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=path.basis)
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode instead
         poor = score < MATCH
@@ -337,8 +335,9 @@ def in_operation(
     if cpl is not None:
         notes.append(
             "Coupled modes: the damped eigenproblem of the whole-turbine model at each "
-            "operating point (multi-blade coordinates, a Ritz basis of "
-            f"{RITZ_DAMPED} standstill modes), each mode matched by shape and energy to the "
+            "operating point (multi-blade coordinates; a Ritz basis of standstill modes and "
+            "of what the rotation's and the dampers' loads on them excite, the full "
+            "model's ζ to 1e-9), each mode matched by shape and energy to the "
             "structural mode at that rotor speed; frequencies are judged on the structural "
             f"curve, which the aeroelastic |λ| of the modes damped below ζ = {heavy:g} "
             f"departs from by at most {shift:.1%}."

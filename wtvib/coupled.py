@@ -213,14 +213,18 @@ class Model:
         return m, d0, d1 - d0, k0, k1 - k0
 
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
-        """A reduced basis Φ (the lowest ``count`` standstill modes in multi-blade
-        coordinates, M-orthonormal) and the multi-blade matrices projected on it, ΦᵀXΦ
-        (computed once per model and count): the sweep and the damped solves at the
+        """A reduced basis Φ — the lowest ``count`` undamped standstill modes in
+        multi-blade coordinates and what the loads of the dampers (D₀) and of the rotation
+        (K₂, D₁) on the lowest ``multiblade.RITZ_IMAGES`` excite beyond them, M-orthonormal
+        (:func:`wtvib.modal.ritz_basis`) — and the multi-blade matrices projected on it,
+        ΦᵀXΦ (computed once per model and count): the sweep and the damped solves at the
         operating points run in it."""
+        from .multiblade import RITZ_IMAGES
+
         cache = self.__dict__.setdefault("_ritz", {})  # frozen: the cache lives in __dict__
         if count not in cache:
             m, d0, d1, k0, k2 = self.multiblade
-            basis = modal.solve(k0, m, min(count, m.shape[0])).shapes
+            basis = modal.ritz_basis(k0, m, count, [k2, d1, d0], RITZ_IMAGES)
             cache[count] = (basis, tuple(basis.T @ x @ basis for x in (m, d0, d1, k0, k2)))
         out: tuple[Array, tuple[Array, Array, Array, Array, Array]] = cache[count]
         return out

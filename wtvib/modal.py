@@ -141,6 +141,38 @@ def _check_stable(w2: Array) -> None:
         )
 
 
+def ritz_basis(k: Array, m: Array, count: int, changes: list[Array], images: int) -> Array:
+    """An M-orthonormal Rayleigh–Ritz basis for K φ = ω² M φ as other terms change it: the
+    lowest ``count`` modes and, for each change matrix C (a term the undamped modes leave
+    out: a damper, the rotor's Ω² stiffness, its Ω damping), what the lowest ``images``
+    modes' loads C φ excite beyond those modes — the static response (K + σM)⁻¹ r to the
+    part r of each load the kept modes do not carry (modal truncation augmentation:
+    Dickens, Nakagawa & Wittbrodt, "A critique of mode acceleration and modal truncation
+    augmentation methods for modal response analysis", Comput. Struct. 62, 1997). A vector
+    that adds no new direction (a load the kept modes carry whole) is dropped.
+
+    σ > 0 makes K + σM invertible where K is singular (a free rotor on its shaft): the
+    squared circular frequency of the highest mode imaged.
+    """
+    base = solve(k, m, min(count, k.shape[0]))
+    phi = base.shapes
+    if not changes or images <= 0 or phi.shape[1] == k.shape[0]:
+        return phi
+    top = min(images, phi.shape[1])
+    sigma = max(float(2 * np.pi * base.frequency_hz[top - 1]) ** 2, 1.0)
+    loads = np.concatenate([c @ phi[:, :top] for c in changes], axis=1)
+    rest = loads - m @ (phi @ (phi.T @ loads))  # the force the kept modes do not carry
+    left = np.linalg.norm(rest, axis=0) > 1e-9 * np.linalg.norm(loads, axis=0)
+    x = np.linalg.solve(k + sigma * m, rest[:, left])
+    x /= np.sqrt(np.einsum("ij,ij->j", x, m @ x))
+    for _ in range(2):  # M-orthogonal to the modes (to round-off; twice, as Gram–Schmidt)
+        x -= phi @ (phi.T @ (m @ x))
+    gram, vec = np.linalg.eigh(x.T @ m @ x)
+    keep = gram > 1e-10  # a new direction, not round-off (which sits below 1e-12)
+    extra = x @ (vec[:, keep] / np.sqrt(gram[keep]))
+    return np.concatenate([phi, extra], axis=1)
+
+
 def mac(a: NDArray[Any], b: NDArray[Any]) -> Array:
     """MAC matrix between the columns of ``a`` and of ``b`` (values in 0 … 1); complex
     shapes (gyroscopic systems) use the Hermitian form |aᴴb|² / (aᴴa · bᴴb)."""

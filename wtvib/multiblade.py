@@ -33,12 +33,6 @@ Index = NDArray[np.intp]
 #: first and second tower, blade-flap and drive-train modes of Jonkman et al. Table 9-1).
 MODES_KEPT = 16
 
-#: Standstill modes spanning the reduced basis of the rotating sweep (three times the modes
-#: kept: its frequencies agree with the full model's to 1e-8 on the NREL 5-MW, IEA-15 and
-#: IEA-22) and of the damped solves at the operating points (twice: ζ within 1e-5,
-#: tests/validation/test_aerodynamics.py).
-RITZ_MODES, RITZ_DAMPED = 48, 32
-
 #: A mode above the lowest ones kept is kept too where it carries at least this share of the
 #: kinetic energy of a part that no kept mode is dominated by — the drive train, tower
 #: torsion, yaw — and a mode's description names such a share: on the WindPACT 1.5 MW the
@@ -49,6 +43,22 @@ CONTENT_SHARE = 0.2
 #: At most this many modes are kept by content.
 CONTENT_EXTRA = 4
 _CONTENT = {"drivetrain": "drive-train torsion", "tower.tor": "tower torsion", "yaw": "yaw"}
+#: Candidates a tracked path compares beyond the modes it follows.
+TRACK_SPARE = 4
+
+#: The Ritz basis of the rotating sweep and of the damped solves at the operating points
+#: (``Model.ritz``, :func:`wtvib.modal.ritz_basis`): the undamped standstill modes up to the
+#: highest a path follows and its spare candidates (at least RITZ_STANDSTILL), and what the
+#: loads on the lowest RITZ_IMAGES excite beyond them — of the drive train's dampers, of the
+#: Ω² stiffness (centrifugal stiffening and softening) and of the Ω damping (gyroscopic and
+#: Coriolis terms): 31–34 vectors on seven reference turbines. The sweep's frequencies then
+#: agree with the full model's to 1e-8 and the damped solves' ζ to 1e-9, where 48
+#: standstill modes alone were up to 3e-4 off (the AOC 15/50) and the 32 of the damped
+#: solves 2e-5 (the NREL 5-MW): tests/validation/test_coupled.py, test_aerodynamics.py. A
+#: path's first point, where the modes it follows are chosen (by content among 3 ×
+#: MODES_KEPT roots), is solved in full.
+RITZ_STANDSTILL = MODES_KEPT + CONTENT_EXTRA + TRACK_SPARE
+RITZ_IMAGES = MODES_KEPT
 
 _KINDS = {"flap": "flapwise", "edge": "edgewise"}
 
@@ -180,15 +190,16 @@ def rotating(
     count: int = MODES_KEPT,
     extra: tuple[Array, Array] | None = None,
     named: bool = True,
-    reduced: int | None = None,
+    reduced: int = 0,
     by_content: bool = False,
 ) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3): the
     lowest ``count`` and, ``by_content``, the higher ones :func:`_by_content` keeps;
     ``extra`` adds a damping and a stiffness matrix in multi-blade coordinates (the
     aerodynamic ones of an operating point, :func:`fixed_frame_damping`); ``reduced``
-    solves in the model's Ritz basis of that many standstill modes (``Model.ritz``)."""
-    if reduced:  # in the Ritz basis of standstill modes, shapes mapped back
+    solves in the model's Ritz basis of that many standstill modes and their images
+    (``Model.ritz``)."""
+    if reduced:  # in the Ritz basis, shapes mapped back
         basis, (m, d0, d1, k0, k2) = model.ritz(reduced)
     else:
         m, d0, d1, k0, k2 = model.multiblade
@@ -355,7 +366,7 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     """Fixed-frame modes at each speed (three or more blades), tracked by shape."""
     if model.blades < 3:
         raise ValueError("the rotating sweep needs three or more blades (MBC)")
-    path = track(model, [(float(om), None) for om in speeds], count, reduced=RITZ_MODES)
+    path = track(model, [(float(om), None) for om in speeds], count, reduced=True)
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
     texts = tuple(
         f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
@@ -384,6 +395,7 @@ class Path:
     last: tuple[str, ...]  # descriptions at the last point
     whirl: tuple[tuple[str | None, ...], ...]  # (points, modes)
     shapes: tuple[NDArray[np.complex128], ...]  # (points): each (coordinates, modes)
+    basis: int = 0  # the standstill modes of the Ritz basis it was followed in (0: none)
 
     @property
     def kept(self) -> int:
@@ -395,12 +407,15 @@ def track(
     points: list[tuple[float, tuple[Array, Array] | None]],
     count: int = MODES_KEPT,
     named: bool = True,
-    reduced: int | None = None,
+    reduced: bool = False,
 ) -> Path:
     """Modes at each (Ω, extra matrices) point, each followed from the point before by
     mass-weighted MAC (modal.track); ``named``: whirl and description at every point (else
-    at the first only, the rest empty)."""
-    first = rotating(model, points[0][0], count, points[0][1], reduced=reduced, by_content=True)
+    at the first only, the rest empty); ``reduced``: the points after the first in the
+    model's Ritz basis (RITZ_STANDSTILL). The first is solved in full: the modes followed
+    are chosen there, the same as the full model's."""
+    first = rotating(model, points[0][0], count, points[0][1], by_content=True)
+    basis = max(RITZ_STANDSTILL, first.span + TRACK_SPARE) if reduced else 0
     kept = len(first.frequency_hz)
     # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
     # would otherwise weigh by their units, not by their share of the motion
@@ -415,7 +430,7 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     for i, (om, extra) in enumerate(points[1:], start=1):
-        cur = rotating(model, om, first.span + 4, extra, named, reduced)
+        cur = rotating(model, om, first.span + TRACK_SPARE, extra, named, basis)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
@@ -425,7 +440,8 @@ def track(
         if named:
             last = tuple(cur.descriptions[o] for o in order)
             whirl.append([cur.whirl[o] for o in order])
-    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every))
+    whirls = tuple(tuple(w) for w in whirl)
+    return Path(first, freqs, zetas, last, whirls, tuple(every), basis)
 
 
 def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128]) -> Array:
@@ -447,7 +463,7 @@ def matched(
     extra: tuple[Array, Array],
     reference: NDArray[np.complex128],
     spare: int = 24,
-    reduced: int | None = None,
+    reduced: int = 0,
 ) -> tuple[Array, Array, Array]:
     """|λ|/2π and ζ of the modes with ``extra`` matrices at Ω, each matched to a column of
     ``reference`` (the structural modes at the same speed) by shape and by where its energy

@@ -394,3 +394,27 @@ def test_windpact_drive_train_torsion_is_kept_where_the_tower_takes_it(shared):
     ]
     assert len(carrying) >= 2, [(m.id, m.frequency_hz) for m in ms]
     assert min(carrying) >= multiblade.CONTENT_SHARE
+
+
+@pytest.mark.parametrize(
+    "deck",
+    [
+        "reference/NREL5MW/NREL-5MW.fst",
+        "reference/AOC15-50/Test08.fst",  # a drive-train damper; 48 standstill modes: 3e-4
+        WINDPACT,  # drive-train torsion kept by content above the lowest 16 modes
+    ],
+)
+def test_the_rotating_sweep_in_its_ritz_basis_matches_the_full_model(shared, deck):
+    """The sweep over rotor speed runs in the model's Ritz basis (standstill modes and what
+    the dampers' and the rotation's loads excite beyond them, multiblade.RITZ_STANDSTILL):
+    the same modes kept, and every frequency and damping ratio at every speed as the full
+    multi-blade eigenproblem gives them, to 1e-7 (the reference: the full model itself)."""
+    s = importers.load(shared / deck)
+    model = coupled.build(s, s.coupled.rotating_condition)
+    points = [(float(om), None) for om in coupled.speeds(s)]
+    full = multiblade.track(model, points)
+    reduced = multiblade.track(model, points, reduced=True)
+    assert reduced.basis and model.ritz(reduced.basis)[0].shape[1] < model.multiblade[0].shape[0]
+    assert reduced.first.names == full.first.names
+    np.testing.assert_allclose(reduced.frequency_hz, full.frequency_hz, rtol=1e-7)
+    np.testing.assert_allclose(reduced.damping_ratio, full.damping_ratio, atol=1e-7)
