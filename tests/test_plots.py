@@ -311,3 +311,29 @@ def test_log_axes_label_their_decades_as_plain_numbers(reports):
     FigureCanvasAgg(fig).draw()
     labels = [t.get_text() for t in fig.axes[0].get_yticklabels() if t.get_text()]
     assert "10" in labels and "0" in labels and not any("$" in t for t in labels)
+
+
+def _legend_texts(fig) -> list[str]:  # type: ignore[no-untyped-def]
+    return [t.get_text() for legend in fig.legends for t in legend.get_texts()] + [
+        t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()
+    ]
+
+
+def test_a_campbell_diagram_names_and_keys_only_what_it_draws(reports):
+    """MOD-2 has a tower and no blade model: its diagram's title says "tower", not "tower
+    and blades", and every crossing passes or is only told (info) — so its key names no
+    fail or warn marker and no least-margin diamond (none is drawn). The Aeroman's drive
+    train fails at a mesh line in steady operation: the diamond is drawn and keyed there."""
+    mod2 = audit.run(spec.load(TURBINES / "mod-2.yaml"))
+    fig = campbell.campbell_plot(mod2)
+    title = fig.axes[0].get_title()
+    assert "Campbell diagram, tower —" in title and "blades" not in title
+    key = _legend_texts(fig)
+    assert "crossing: pass" in key and "crossing: info" in key
+    assert not {"crossing: fail", "crossing: warn", "least margin in operation"} & set(key)
+    assert not any("quick-pass" in t for t in key)  # MOD-2 has no quick-pass band
+    aeroman = audit.run(spec.load(TURBINES / "aeroman.yaml"))
+    drive = campbell.campbell_plot(aeroman, campbell.DIAGRAMS["campbell-drivetrain"])
+    assert "least margin in operation" in _legend_texts(drive)
+    both = campbell.campbell_plot(reports["stall-rotor-1mw"])  # tower and blade modes
+    assert "Campbell diagram, tower and blades —" in both.axes[0].get_title()

@@ -24,7 +24,7 @@ if TYPE_CHECKING:
 
 STATUS_COLOUR = {"pass": "#2e7d32", "info": "#1565c0", "warn": "#ef6c00", "fail": "#c62828"}
 SUBSYSTEM_TITLE = {
-    "tower": "tower and blades",
+    "tower": "tower",
     "blade": "blades",
     "drivetrain": "drive train",
     "yaw": "yaw system",
@@ -62,7 +62,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     top_line = max((f.excitation.order for f in findings), default=1.0) * rpm_top / 60.0
     # Modes above every excitation line cannot resonate: the axis stops there.
     f_top = max(min(top_mode * 1.18, top_line * 1.05), blade_pass * 1.1)
-    hidden = [m for m in modes if m.frequency_hz > f_top]
+    covered, hidden = modes, [m for m in modes if m.frequency_hz > f_top]
     modes = [m for m in modes if m.frequency_hz <= f_top]
 
     fig = Figure(figsize=(10, 7), dpi=150)
@@ -74,14 +74,19 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             ax.axvline(a, color="#66bb6a", lw=6, alpha=0.45)
     for a, b in spec.rotor.speed.quick_pass_rpm:
         ax.axvspan(a, b, facecolor="none", hatch="//", edgecolor="#81c784", lw=0)
-    ax.axvspan(
-        spec.rotor.speed.top_rpm,
-        spec.rotor.speed.overspeed,
-        facecolor="#fff3e0",
-        hatch="xx",
-        edgecolor="#ffcc80",
-        lw=0,
-    )
+    shown: set[str] = set()  # what is drawn, for the legend to name (and nothing else)
+    if spec.rotor.speed.overspeed > spec.rotor.speed.top_rpm:
+        ax.axvspan(
+            spec.rotor.speed.top_rpm,
+            spec.rotor.speed.overspeed,
+            facecolor="#fff3e0",
+            hatch="xx",
+            edgecolor="#ffcc80",
+            lw=0,
+        )
+        shown.add("overspeed")
+    if spec.rotor.speed.quick_pass_rpm:
+        shown.add("quick-pass")
 
     excitations = {f.excitation.id: f.excitation for f in findings}
     right = 0.3  # the right margin [in]: room for the line labels at the right edge
@@ -93,6 +98,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         }[exc.energy]
         f_line = exc.frequency_hz(omega)
         ax.plot(rpm, f_line, **style)  # type: ignore[arg-type]
+        shown.add(exc.energy)
         right = max(right, _label_line(ax, exc.id, rpm, f_line, f_top, style["color"]))  # type: ignore[arg-type]
 
     colours = _palette(len(modes))
@@ -112,6 +118,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             continue
         lo, hi = rule.forbidden_band(1.0)
         ax.fill_between(rpm, f_n * lo, f_n * hi, color=colour, alpha=0.16, lw=0)
+        shown.add("margin")
         # a mode on top of one drawn before (fa1 and ss1 of a round tower) is dashed, so
         # that both stay visible
         under = any(np.allclose(f_n, g, rtol=5e-3) for g in drawn)
@@ -135,6 +142,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
                 edgecolor="#5c6bc0",
                 lw=0,
             )
+            shown.add("spread")
     by_id = {m.id: m for m in modes}
     if "yaw.1" in by_id and "yaw.play.1" in by_id:  # Hau Fig. 7.18: the band play opens
         ax.fill_between(
@@ -173,6 +181,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             mew=0.8,
             zorder=5,
         )
+        shown.add(f"crossing: {kind}")
     # each crossing's DAF, the largest first; one label where several crossings coincide
     placed: list[tuple[float, float]] = []
     for x, y, daf, colour in sorted(labels, key=lambda t: -t[2]):
@@ -201,6 +210,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
                 mew=0.8,
                 zorder=6,
             )
+            shown.add("least margin")
 
     ax.set_xlim(0, rpm_top)
     low = min((m.frequency_hz for m in modes), default=f_top)
@@ -216,7 +226,10 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     ax.grid(True, alpha=0.3)
     verdict = report.verdict.upper()
     cls = f", {report.tower_class} tower" if report.tower_class and "tower" in subsystems else ""
-    title = SUBSYSTEM_TITLE[subsystems[0]] if len(subsystems) == 1 else "tower and blades"
+    # the parts whose modes the diagram holds, drawn or noted above the lines (MOD-2's has
+    # no blade model: "tower")
+    held = [SUBSYSTEM_TITLE[s] for s in subsystems if any(m.subsystem == s for m in covered)]
+    title = " and ".join(held or [SUBSYSTEM_TITLE[s] for s in subsystems])
     if spec.results is not None and "system" in subsystems:
         title = f"whole turbine as {spec.results.tool} computed it"
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
@@ -238,14 +251,7 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             fontsize=8,
             color="#616161",
         )
-    _legend(
-        ax,
-        rule.label,
-        {e.energy for e in excitations.values()},
-        bool(spec.rotor.speed.quick_pass_rpm),
-        title_lines=heading.count("\n") + 1,
-        right=right,
-    )
+    _legend(ax, rule.label, shown, title_lines=heading.count("\n") + 1, right=right)
     return fig
 
 
@@ -291,40 +297,58 @@ def _label_line(ax, text: str, rpm, f_line, f_top: float, colour: str) -> float:
 
 
 def _legend(  # type: ignore[no-untyped-def]
-    ax, rule_label: str, energies: set[str], quick: bool, title_lines: int, right: float
+    ax, rule_label: str, shown: set[str], title_lines: int, right: float
 ) -> None:
+    """The modes' labels and a key to each kind of thing drawn — only those ``shown``."""
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
     handles, labels = ax.get_legend_handles_labels()
-    extra = [
-        (Patch(color="#c8e6c9"), "steady operation"),
-        *(
-            [(Patch(facecolor="none", hatch="//", edgecolor="#81c784"), "quick-pass band")]
-            if quick
-            else []
-        ),
-        (Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"), "overspeed (transient)"),
-        (Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
-        (Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),
-        *(
-            [(Line2D([], [], color="#424242", lw=1.2, ls="--"), "secondary (kP, 1<k<N_b)")]
-            if "secondary" in energies
-            else []
-        ),
-        (Line2D([], [], color="#9e9e9e", lw=0.8, ls=":"), "minor harmonic"),
+    key = [
+        ("steady", Patch(color="#c8e6c9"), "steady operation"),
+        ("quick-pass", Patch(facecolor="none", hatch="//", edgecolor="#81c784"), "quick-pass band"),
         (
+            "overspeed",
+            Patch(facecolor="#fff3e0", hatch="xx", edgecolor="#ffcc80"),
+            "overspeed (transient)",
+        ),
+        ("margin", Patch(color="#9e9e9e", alpha=0.3), f"margin band: {rule_label}"),
+        (
+            "spread",
+            Patch(facecolor="none", hatch="...", edgecolor="#5c6bc0"),
+            "5–95 % frequency band (tolerances sampled)",
+        ),
+        ("dominant", Line2D([], [], color="#212121", lw=1.8), "dominant excitation (1P, N_b·P)"),
+        (
+            "secondary",
+            Line2D([], [], color="#424242", lw=1.2, ls="--"),
+            "secondary (kP, 1<k<N_b)",
+        ),
+        ("minor", Line2D([], [], color="#9e9e9e", lw=0.8, ls=":"), "minor harmonic"),
+        (
+            "least margin",
             Line2D([], [], marker="D", ls="", color="#9e9e9e", mec="black"),
             "least margin in operation",
         ),
-        (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["fail"]), "crossing: fail"),
-        (Line2D([], [], marker="X", ls="", color=STATUS_COLOUR["warn"]), "crossing: warn"),
-        (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["info"]), "crossing: info"),
-        (Line2D([], [], marker="o", ls="", color=STATUS_COLOUR["pass"]), "crossing: pass"),
+        *(
+            (
+                f"crossing: {status}",
+                Line2D(
+                    [],
+                    [],
+                    marker="X" if status in ("fail", "warn") else "o",
+                    ls="",
+                    color=STATUS_COLOUR[status],
+                ),
+                f"crossing: {status}",
+            )
+            for status in ("fail", "warn", "info", "pass")
+        ),
     ]
-    for h, label in extra:
-        handles.append(h)
-        labels.append(label)
+    for kind, h, label in key:
+        if kind == "steady" or kind in shown:
+            handles.append(h)
+            labels.append(label)
     ncol = 2 if max(len(t) for t in labels) > 40 else 4
     top = 0.25 + TITLE_LINE_IN * title_lines
     legend_below(ax.figure, ax, handles, labels, columns=ncol, fontsize=8, top=top, right=right)

@@ -29,9 +29,10 @@ def floquet_plot(report: Report) -> "Figure | None":
             ax.axvspan(a, b, color="#c8e6c9", alpha=0.6, lw=0, label="steady operation")
         else:
             ax.axvline(a, color="#66bb6a", lw=6, alpha=0.5, label="operating speed")
-    ax.axvspan(speed.top_rpm, speed.overspeed, color="#fff3e0", lw=0, label="overspeed")
+    if speed.overspeed > speed.top_rpm:
+        ax.axvspan(speed.top_rpm, speed.overspeed, color="#fff3e0", lw=0, label="overspeed")
     for a, b in smap.unstable_rpm:
-        ax.axvspan(a, b, color="#e53935", alpha=0.2, lw=0)
+        ax.axvspan(a, b, color="#e53935", alpha=0.2, lw=0, label="unstable: |ρ| > 1")
     ax.plot(rpm, rho, color="#1f77b4", lw=2, label="largest |ρ| (Floquet multiplier)")
     # a span of at least ±5 % about |ρ| = 1: rounding (1e-12) is not drawn as structure
     finite = rho[np.isfinite(rho)]
