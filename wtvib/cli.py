@@ -245,11 +245,18 @@ def _root(
     _state["debug"] = debug
 
 
+#: What a turbine file may be (wtvib.importers.load tells them apart).
+SPEC_HELP = (
+    "Turbine file: a wtvib spec, a windIO turbine YAML, an OpenFAST deck (.fst or ElastoDyn "
+    ".dat), or another tool's Campbell results (.cmb, .csv, .lin, a linearisation folder)."
+)
+
+
 @app.command()
 @_user_errors
 @_run_options
 def check(
-    spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
+    spec_file: Annotated[Path, typer.Argument(help=SPEC_HELP)],
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
     out: Annotated[
         Path | None,
@@ -289,10 +296,7 @@ def check(
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
-    """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNG.
-
-    SPEC_FILE may be a wtvib spec, a windIO turbine YAML or an OpenFAST ElastoDyn deck.
-    """
+    """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
     from . import audit
     from .outputs import write_atomic
 
@@ -357,7 +361,7 @@ def check(
 @_user_errors
 @_run_options
 def report(
-    spec_file: Annotated[Path, typer.Argument(help="Turbine spec (wtvib YAML).")],
+    spec_file: Annotated[Path, typer.Argument(help=SPEC_HELP)],
     output: Annotated[Path, typer.Option("--output", "-o", help="PDF file to write.")],
     force: Annotated[
         bool, typer.Option(help="Replace an existing file not written by wtvib.")
