@@ -2,7 +2,7 @@
 change a frequency by a factor, the damping each mode is judged with."""
 
 from tests.conftest import spec_text
-from wtvib import audit, spec
+from wtvib import audit, importers, spec
 
 HEAD = """
 tower_head: {mass_kg: 300000, cm_downwind_m: 0.5, cm_above_top_m: 2.0}
@@ -127,3 +127,24 @@ def test_a_natural_frequency_under_a_hundredth_of_a_hertz_is_a_warning():
     d["yaw"]["modes"]["1"] = 1e-15
     warned = [w for w in audit.run(spec.Spec.model_validate(d)).warnings if "under 0.01 Hz" in w]
     assert len(warned) == 1 and warned[0].startswith("yaw.1: 1e-15 Hz")
+
+
+def test_a_stiffness_typed_far_too_large_is_a_warning(shared, tmp_path):
+    """The NREL 5-MW deck with its drive-train spring (DTTorSpr 8.67637e8 N·m/rad) typed
+    8.67637e28: the drive train's torsion mode lands at 1.4e11 Hz, which warns (above
+    audit.FASTEST_MODE_HZ) and says the slow modes lose precision beside it — they do (the
+    coupled fore-aft mode moves from 0.314 to 0.37 Hz): not a quiet answer. The deck as
+    published warns of nothing of the kind."""
+    import shutil
+
+    deck = tmp_path / "NREL5MW"
+    shutil.copytree(shared / "reference/NREL5MW", deck)
+    ed = deck / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    text = ed.read_text()
+    assert "8.67637E+08   DTTorSpr" in text
+    fast = "natural frequency over"
+    assert not [w for w in audit.run(importers.load(deck / "NREL-5MW.fst")).warnings if fast in w]
+    ed.write_text(text.replace("8.67637E+08   DTTorSpr", "8.67637E+28   DTTorSpr"))
+    warned = [w for w in audit.run(importers.load(deck / "NREL-5MW.fst")).warnings if fast in w]
+    assert warned and all("lose precision" in w for w in warned)
+    assert any(w.startswith("drivetrain.") and "e+11 Hz" in w for w in warned)

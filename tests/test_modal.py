@@ -121,3 +121,16 @@ def test_ritz_basis_follows_a_changed_problem_closer_than_its_modes_alone():
     enriched = lowest(modal.ritz_basis(k, m, 4, [spring], 4)) / exact - 1
     assert np.all(enriched > -1e-12) and np.all(enriched <= plain + 1e-12)
     assert enriched.max() < plain.max() / 4, (plain, enriched)
+
+
+def test_roots_beyond_double_precision_are_refused_not_returned():
+    """Two masses, one on a spring 10³⁰ times stiffer than the other's: the slow root is
+    below the eigen-solver's rounding (machine epsilon times the matrix's norm), so the
+    damped solve refuses with a ModalError instead of returning rounding as a frequency;
+    10⁸ times stiffer is resolved (the slow root as its closed form √k/m, to 1e-6)."""
+    m = np.eye(2)
+    d = np.zeros((2, 2))
+    lam, _ = modal.oscillations(np.diag([1.0, 1e8]), m, d, floor=1e-3)
+    assert abs(lam[0]) == pytest.approx(1.0, rel=1e-6)
+    with pytest.raises(modal.ModalError, match="orders of magnitude"):
+        modal.oscillations(np.diag([1.0, 1e30]), m, d, floor=1e-3)

@@ -391,6 +391,11 @@ SLOW_RANGE = 0.15
 #: reference turbines are the IEA-22 windIO example's coupled tower (0.126 Hz) and, outside
 #: the tower, Growian's drive train with the rotor locked (0.188 Hz).
 SLOWEST_MODE_HZ = 0.01
+#: Any mode above this [Hz] is suspicious: the fastest of the catalogue and the reference
+#: turbines is the Aeroman's second gear-mesh mode (470 Hz). A stiffness typed far too large
+#: lands here — and where it spans more orders of magnitude than double precision resolves,
+#: the model's slow modes beside it are rounding (modal.ROUNDING).
+FASTEST_MODE_HZ = 1e4
 
 #: Rated power per swept area outside this band [W/m²] is suspicious (wtvib's bounds around
 #: the catalogue's 88 (MOD-0) to 837 W/m² (WTS-4) and the reference turbines' 330–400:
@@ -449,6 +454,13 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                     f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
                     "under 0.05 Hz is implausible"
                 )
+        elif m.frequency_hz > FASTEST_MODE_HZ:
+            out.append(
+                f"{m.id}: {m.frequency_hz:.3g} Hz — a natural frequency over "
+                f"{FASTEST_MODE_HZ:g} Hz is implausible for a wind turbine's structure (a "
+                "stiffness typed far too large? units?); the slow modes of the same model lose "
+                "precision beside it"
+            )
         elif m.frequency_hz < SLOWEST_MODE_HZ:
             out.append(
                 f"{m.id}: {m.frequency_hz:.3g} Hz — a natural frequency under "

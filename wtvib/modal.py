@@ -11,6 +11,7 @@ Vibration 37(8), 2003 (MAC).
 """
 
 import itertools
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -291,6 +292,12 @@ def state_matrix(k: Array, m: Array, d: Array) -> Array:
     return out
 
 
+#: A root smaller than this times the largest is lost in rounding: the eigen-solver's
+#: absolute error is about the machine epsilon (2.2e-16) times the matrix's norm, so such a
+#: root is not known to four digits (Golub & Van Loan, *Matrix Computations*, §7.2).
+ROUNDING = 1e-11
+
+
 def oscillations(
     k: Array,
     m: Array,
@@ -321,6 +328,12 @@ def oscillations(
     osc = (lam.imag > imag) & (np.abs(lam) > tiny)
     if overdamped:
         osc |= (np.abs(lam.imag) <= imag) & (lam.real < 0) & (np.abs(lam) > tiny)
+    if np.any(np.abs(lam[osc]) < ROUNDING * scale):
+        raise ModalError(
+            f"the model's roots span {math.log10(scale / np.abs(lam[osc]).min()):.0f} orders "
+            "of magnitude, beyond what double precision resolves: its slowest modes are "
+            "rounding, not physics — a damper, stiffness or inertia far out of range?"
+        )
     lam, vec = lam[osc], vec[:n, osc]
     order = np.argsort(np.abs(lam))
     return lam[order], vec[:, order]

@@ -56,7 +56,9 @@ TRACK_SPARE = 4
 #: standstill modes alone were up to 3e-4 off (the AOC 15/50) and the 32 of the damped
 #: solves 2e-5 (the NREL 5-MW): tests/validation/test_coupled.py, test_aerodynamics.py. A
 #: path's first point, where the modes it follows are chosen (by content among 3 ×
-#: MODES_KEPT roots), is solved in full.
+#: MODES_KEPT roots), is solved in a basis of that many standstill modes: the same modes as
+#: the full model's, and none of a stiffness far above the rest (a shaft typed as rigid),
+#: whose root would squeeze the slow ones into rounding.
 RITZ_STANDSTILL = MODES_KEPT + CONTENT_EXTRA + TRACK_SPARE
 RITZ_IMAGES = MODES_KEPT
 
@@ -192,13 +194,14 @@ def rotating(
     named: bool = True,
     reduced: int = 0,
     by_content: bool = False,
+    overdamped: bool | None = None,
 ) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3): the
     lowest ``count`` and, ``by_content``, the higher ones :func:`_by_content` keeps;
     ``extra`` adds a damping and a stiffness matrix in multi-blade coordinates (the
     aerodynamic ones of an operating point, :func:`fixed_frame_damping`); ``reduced``
     solves in the model's Ritz basis of that many standstill modes and their images
-    (``Model.ritz``)."""
+    (``Model.ritz``); ``overdamped``: real roots kept too (None: where not ``named``)."""
     if reduced:  # in the Ritz basis, shapes mapped back
         basis, (m, d0, d1, k0, k2) = model.ritz(reduced)
     else:
@@ -211,7 +214,8 @@ def rotating(
         d, k = d + ed, k + ek
     # modes below 1 mHz are the rotor turning on a free generator, not oscillations; a path
     # followed by shape alone keeps overdamped roots (heavily damped flap modes)
-    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3, overdamped=not named)
+    real = not named if overdamped is None else overdamped
+    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3, overdamped=real)
     if reduced:
         vec = basis @ vec
         m = model.multiblade[0]
@@ -412,9 +416,10 @@ def track(
     """Modes at each (Ω, extra matrices) point, each followed from the point before by
     mass-weighted MAC (modal.track); ``named``: whirl and description at every point (else
     at the first only, the rest empty); ``reduced``: the points after the first in the
-    model's Ritz basis (RITZ_STANDSTILL). The first is solved in full: the modes followed
-    are chosen there, the same as the full model's."""
-    first = rotating(model, points[0][0], count, points[0][1], by_content=True)
+    model's Ritz basis (RITZ_STANDSTILL); the first, where the modes followed are chosen,
+    in one of as many standstill modes as the search by content sees."""
+    wide = count + _spare(count) if reduced else 0  # as many as the search by content sees
+    first = rotating(model, points[0][0], count, points[0][1], reduced=wide, by_content=True)
     basis = max(RITZ_STANDSTILL, first.span + TRACK_SPARE) if reduced else 0
     kept = len(first.frequency_hz)
     # shapes compared mass-weighted (√diag M): metres of tower and modal blade coordinates
@@ -430,7 +435,7 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     for i, (om, extra) in enumerate(points[1:], start=1):
-        cur = rotating(model, om, first.span + TRACK_SPARE, extra, named, basis)
+        cur = _candidates(model, om, first.span + TRACK_SPARE, extra, named, basis, kept)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
@@ -442,6 +447,31 @@ def track(
             whirl.append([cur.whirl[o] for o in order])
     whirls = tuple(tuple(w) for w in whirl)
     return Path(first, freqs, zetas, last, whirls, tuple(every), basis)
+
+
+def _candidates(
+    model: "Model",
+    omega: float,
+    count: int,
+    extra: tuple[Array, Array] | None,
+    named: bool,
+    basis: int,
+    kept: int,
+) -> SystemModes:
+    """The roots a path's point after the first chooses its ``kept`` modes from, overdamped
+    ones among them (a followed mode damped past critical keeps its place, with ζ = 1):
+    solved in the Ritz basis of ``basis`` standstill modes, or in full where that basis
+    holds fewer roots than the path follows (a damper far out of range squeezes roots
+    towards zero). Fewer in the full model too: a mode fell below 1 mHz — ModalError."""
+    for reduced in dict.fromkeys((basis, 0)):
+        cur = rotating(model, omega, count, extra, named, reduced, overdamped=True)
+        if len(cur.frequency_hz) >= kept:
+            return cur
+    raise modal.ModalError(
+        f"the coupled model keeps {len(cur.frequency_hz)} of its {kept} modes at "
+        f"{rad_s_to_rpm(omega):.3g} rpm (the others slower than 1 mHz): a damper or a "
+        "stiffness far out of range?"
+    )
 
 
 def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128]) -> Array:
@@ -470,7 +500,7 @@ def matched(
     sits (:func:`_overlap`): one assignment per point, so a heavily damped mode cannot hand
     its name along a chain. The third array is each match's score (0 … 2: MAC + overlap)."""
     kept = reference.shape[1]
-    cur = rotating(model, omega, kept + spare, extra, named=False, reduced=reduced)
+    cur = _candidates(model, omega, kept + spare, extra, False, reduced, kept)
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
     # (blind to phase: keeps an overdamped, standing form with its whirling origin)
