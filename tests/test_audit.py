@@ -148,3 +148,26 @@ def test_a_stiffness_typed_far_too_large_is_a_warning(shared, tmp_path):
     warned = [w for w in audit.run(importers.load(deck / "NREL-5MW.fst")).warnings if fast in w]
     assert warned and all("lose precision" in w for w in warned)
     assert any(w.startswith("drivetrain.") and "e+11 Hz" in w for w in warned)
+
+
+def test_a_table_station_far_from_both_neighbours_is_a_warning(shared, tmp_path):
+    """An exponent typed wrong in the NREL 5-MW tower table (TwFAStif at HtFract 0.5:
+    2.9101100E-09 for 2.9101100E+11 N·m²) leaves a tower that audits — fore-aft 0.26 Hz
+    instead of 0.32 — so it must not pass quietly: the station is named, with its height
+    (0.5 × 87.6 m = 43.8 m) and how far it sits below both neighbours. No reference or
+    catalogue table has such a step (the sharpest: 1.34, audit.SPIKE)."""
+    import shutil
+
+    deck = tmp_path / "NREL5MW"
+    shutil.copytree(shared / "reference/NREL5MW", deck)
+    tower = deck / "NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat"
+    text = tower.read_text()
+    row = "5.0000000E-01  3.9164100E+03  2.9101100E+11"
+    assert row in text
+    tower.write_text(text.replace(row, row.replace("E+11", "E-09"), 1))
+    warned = [
+        w for w in audit.suspicious(importers.load(deck / "NREL-5MW.fst"), []) if "exponent" in w
+    ]
+    assert len(warned) == 1
+    assert warned[0].startswith("tower.distributed.ei_fa_nm2[5]: 2.91e-09 at 43.8 m")
+    assert "below both its neighbours" in warned[0]

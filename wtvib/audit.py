@@ -468,6 +468,7 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                 "implausible for a wind turbine's structure (units? a typing slip?)"
             )
     out += _missing_yaw_inertia(spec, modes)
+    out += _spikes(spec)
     far = scaling.head_warning(spec)
     if far:
         out.append(far)
@@ -486,6 +487,41 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             f"blade.mass_kg: {spec.rotor.blades} blades of {blades:,.0f} kg outweigh the "
             f"rest of the tower head ({head.mass_kg:,.0f} kg in all) — check the masses"
         )
+    return out
+
+
+#: A station of a distributed property this many times above or below both its neighbours
+#: is suspicious (an exponent typed wrong: 2.9E-09 for 2.9E+11): the sharpest such step in
+#: the reference turbines' tower and blade tables is 1.34 (the IEA-22's flapwise stiffness).
+SPIKE = 100.0
+
+
+def _spikes(spec: Spec) -> list[str]:
+    """A tower or blade table's station far above or below both its neighbours."""
+    tables: list[tuple[str, Any, str, str]] = []
+    if spec.tower.distributed is not None:
+        tables.append(("tower.distributed", spec.tower.distributed, "height_m", "m"))
+    if spec.tower.sections is not None:
+        tables.append(("tower.sections", spec.tower.sections, "height_m", "m"))
+    if spec.blade.structure is not None:
+        tables.append(("blade.structure", spec.blade.structure, "span_m", "m from the root"))
+    out = []
+    for where, table, axis, unit in tables:
+        at = getattr(table, axis)
+        for name, values in table:
+            if name == axis or not isinstance(values, list) or len(values) < 3:
+                continue
+            v = np.abs(np.asarray(values, dtype=float))
+            a, b, c = v[:-2], v[1:-1], v[2:]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                step = np.maximum(np.minimum(b / a, b / c), np.minimum(a / b, c / b))
+            for i in np.flatnonzero(step >= SPIKE)[:3] + 1:
+                way = "above" if v[i] > v[i - 1] else "below"
+                out.append(
+                    f"{where}.{name}[{i}]: {values[i]:.4g} at {at[i]:g} {unit} is "
+                    f"{float(step[i - 1]):.3g} times {way} both its neighbours' — an exponent "
+                    "typed wrong?"
+                )
     return out
 
 
