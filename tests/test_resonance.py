@@ -77,6 +77,37 @@ def test_exclusion_band_is_reported_for_variable_speed():
     assert check.id == "tower.resonance.3P"
 
 
+def test_exclusion_band_holds_only_the_modes_that_need_clearing():
+    """Two modes in one check against 3P over 10–30 rpm: 1 Hz, lightly damped, fails
+    (forbidden 18.18–22.22 rpm by hand); 1.4 Hz with ζ = 0.4 (heavily damped: no resonant
+    peak, info) sits within the margin at 25.45–31.11 rpm. Clearing the check needs the
+    first band only — the JSON's exclude_rpm and the message say the same; a second failing
+    mode at 1.05 Hz widens the band to 22.22 → 23.33 rpm, which the message states as the
+    whole exclusion beside the governing mode's own."""
+    steady = op([(10, 30)], 34.5)
+    fail = assess(mode(1.0), harmonic(3), steady, BAND, SEVERITY, 0.01)
+    damped = Mode("tower.fa2", "tower", "test mode", 1.4, 0.4, None)
+    info = assess(damped, harmonic(3), steady, BAND, SEVERITY, 0.01)
+    assert (fail.status, info.status) == ("fail", "info") and info.violations["steady"]
+    [check] = resonance_checks([fail, info], steady, BAND)
+    band = [[pytest.approx(60 / 3.3, abs=1e-4), pytest.approx(60 / 2.7, abs=1e-4)]]
+    assert check.numbers["exclude_rpm"] == band
+    assert "all together" not in check.message
+    near = assess(
+        Mode("tower.ss1", "tower", "test mode", 1.05, 0.01, None),
+        harmonic(3),
+        steady,
+        BAND,
+        SEVERITY,
+        0.01,
+    )
+    [check] = resonance_checks([fail, info, near], steady, BAND)
+    assert check.numbers["exclude_rpm"] == [
+        [pytest.approx(60 / 3.3, abs=1e-4), pytest.approx(63 / 2.7, abs=1e-4)]
+    ]
+    assert "all together: exclude 18.2–23.3 rpm" in check.message
+
+
 def test_overspeed_only_warns():
     # forbidden from 18.18 rpm; steady up to 16 rpm, overspeed to 20 rpm
     f = assess(mode(1.0), harmonic(3), op([(10, 16)], 20), BAND, SEVERITY, 0.01)

@@ -76,7 +76,10 @@ CHECK_NUMBERS: dict[str, str] = {
     "energy": "The line's energy class (dominant, secondary, minor).",
     "energy_on_mode": "The energy class on the governing mode's whirl.",
     "crossings_rpm": "Speeds where the line crosses the mode's curve [rpm].",
-    "exclude_rpm": "Speed bands to exclude to clear the check [rpm].",
+    "exclude_rpm": (
+        "Speed bands to exclude to clear the check: those of its modes that warn or fail "
+        "(none where it passes or only informs) [rpm]."
+    ),
     "modes": "Each mode's status against this line.",
     "torque_amplification": "Shaft torque amplification of a drive-train resonance [-].",
     "tower_class": "stiff, soft, soft-soft or resonant.",

@@ -443,9 +443,22 @@ def _check(
     )
     others = [f.mode.id for f in findings if f is not gov and f.status == gov.status != "pass"]
     message = _message(gov, op, rule)
-    if others:
-        message += f" (also: {', '.join(others)})"
-    exclude = [iv for f in findings for iv in f.violations["steady"] + f.violations["quick-pass"]]
+    # the speed bands to exclude to clear the check: those of every mode that warns or fails
+    # (one told only as info — heavily damped, a minor harmonic — needs no clearing)
+    exclude = _merge(
+        [
+            iv
+            for f in findings
+            if STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]
+            for iv in f.violations["steady"] + f.violations["quick-pass"]
+        ]
+    )
+    own = _merge(gov.violations["steady"] + gov.violations["quick-pass"])
+    notes = [f"also: {', '.join(others)}"] if others else []
+    if op.variable and own and exclude != own:  # the governing mode's bands are not all
+        notes.append(f"all together: exclude {', '.join(_span(iv) for iv in exclude)}")
+    if notes:
+        message += f" ({'; '.join(notes)})"
     numbers = {
         "excitation": exc.id,
         "energy": exc.energy,
@@ -466,7 +479,7 @@ def _check(
         **({"driven_by": gov.driven_by} if gov.driven_by else {}),
         "crossings_rpm": [_r(float(rad_s_to_rpm(c))) for c in gov.crossings],
         "exclude_rpm": [
-            [_r(float(rad_s_to_rpm(a))), _r(float(rad_s_to_rpm(b)))] for a, b in _merge(exclude)
+            [_r(float(rad_s_to_rpm(a))), _r(float(rad_s_to_rpm(b)))] for a, b in exclude
         ]
         if op.variable
         else [],
