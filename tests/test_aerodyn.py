@@ -32,6 +32,9 @@ def test_the_nrel_deck_set_gives_its_aerodynamics(shared: Path):
     assert aero.control.generator_efficiency == pytest.approx(0.944)  # GenEff
     assert aero.control.rated_power_kw == pytest.approx(5000.0)  # VS_RtPwr
     assert aero.air_density_kg_m3 == pytest.approx(1.225)
+    # where each controller value came from, as the audit states it
+    told = [a for a in spec.assumptions if "From the controller (DISCON.IN)" in a]
+    assert len(told) == 1 and "VS_TSRopt 7.5" in told[0] and "VS_RtPwr 5000 kW" in told[0]
 
 
 def _edit(path: Path, old: str, new: str) -> None:

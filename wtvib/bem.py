@@ -367,7 +367,7 @@ def _schedule(spec: Spec) -> Schedule:
         "precone, prebend, shear or tower shadow)"
     ]
     if c.tip_speed_ratio is not None:
-        tsr, tsr_source = c.tip_speed_ratio, "given (aerodynamics.control.tip_speed_ratio)"
+        tsr, tsr_source = c.tip_speed_ratio, "given as aerodynamics.control.tip_speed_ratio"
     else:
         tsr = optimal_tsr(r, c.fine_pitch_deg)
         tsr_source = f"the BEM's highest C_p at {c.fine_pitch_deg:g}° pitch"

@@ -332,10 +332,25 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
         rated = aero[0]["control"].get("rated_power_kw")
         if rated is not None:
             data["turbine"]["rated_power_kw"] = q(rated, "VS_RtPwr (DISCON)")
+        control = aero[0]["control"]
+        given = [
+            f"{key} {control[field]:.6g}{unit}"
+            for key, field, unit in (
+                ("VS_TSRopt", "tip_speed_ratio", " (region-2 tip-speed ratio)"),
+                ("VS_RtPwr", "rated_power_kw", " kW (rated power)"),
+                ("PC_FinePit", "fine_pitch_deg", "° (fine pitch)"),
+            )
+            if field in control
+        ]
         data["assumptions"].append(
             "Aerodynamics from AeroDyn 15 (stations at HubRad + BlSpn, precone neglected; the "
             "first table of each aerofoil file); cut-in and cut-out wind not in the deck set: "
             "3 and 25 m/s assumed."
+            + (
+                f" From the controller ({_controller_file(servo)}): {', '.join(given)}."
+                if given
+                else ""
+            )
         )
     return data
 
@@ -387,6 +402,11 @@ def _tower_torsion(
             "replace it."
         ),
     )
+
+
+def _controller_file(servo: "Deck | None") -> str:
+    """The name of the controller's input file (ServoDyn's DLL_InFile)."""
+    return _file(servo, "DLL_InFile").name if servo is not None else "DLL_InFile"
 
 
 def controller(servo: "Deck | None") -> dict[str, tuple[float, int]]:
