@@ -27,6 +27,7 @@ def test_windio2_iea15_aerodynamics():
     blends = [n for n in aero.airfoils if "|" in n]
     assert blends  # stations between two named aerofoils carry a blended polar
     assert aero.control.tip_speed_ratio == pytest.approx(9.0)
+    assert any("tip-speed ratio is control.optimal_tsr (9)" in a for a in spec.assumptions)
     assert aero.control.min_pitch is not None  # control.min_pitch_table (peak shaving)
 
 

@@ -124,6 +124,7 @@ def aerodynamics(
         }
     if tsr:
         control["tip_speed_ratio"] = float(tsr)
+    tsr_key = "control.optimal_tsr" if v2 else "control.torque.tsr"
     if cut_in:
         control["cut_in_wind_m_s"] = float(cut_in)
     if cut_out:
@@ -150,6 +151,7 @@ def aerodynamics(
             if "min_pitch" in control
             else ""
         )
+        + (f"; the region-2 tip-speed ratio is {tsr_key} ({float(tsr):g})" if tsr else "")
         + "."
     )
     return block, note
