@@ -95,3 +95,41 @@ def test_a_report_rendered_ahead_prints_as_one_printed_directly():
     later.write(captured.get())
     wrote(console, files)
     assert "\x1b[" in direct.getvalue() and later.getvalue() == direct.getvalue()
+
+
+def test_the_batch_summary_breaks_a_long_check_id_after_a_dot_only():
+    """At 80 columns the Aeroman's worst check, drivetrain.resonance.mesh.stage2 (32
+    characters), is shown as "drivetrain.resonance." over "mesh.stage2" — not cut mid-word
+    as it was ("drivetrain.grid.powe" / "r"), and not truncated: the turbine names wrap."""
+    from pathlib import Path
+
+    from wtvib.report import batch_summary
+
+    class Item:
+        def __init__(self, name: str, check: str) -> None:
+            self.values = {
+                "file": Path(f"{name}.yaml"),
+                "turbine": name,
+                "tower_class": "stiff",
+                "verdict": "fail",
+                "worst_check": check,
+                "margin": 0.019,
+                "message": "",
+            }
+
+        def row(self) -> dict:
+            return self.values
+
+    items = [
+        Item("Aeroman with active yaw retrofit", "drivetrain.resonance.mesh.stage2"),
+        Item("MOD-0", "drivetrain.grid.power"),
+        Item("Growian", "drivetrain.resonance.2P"),
+    ]
+    out = io.StringIO()
+    batch_summary(Console(file=out, width=80), items, [])
+    lines = out.getvalue().splitlines()
+    assert any("drivetrain.resonance. " in ln for ln in lines)
+    assert any("mesh.stage2" in ln for ln in lines)
+    assert any("drivetrain.grid.power" in ln for ln in lines)
+    assert any("drivetrain.resonance.2P" in ln for ln in lines)
+    assert "…" not in out.getvalue()

@@ -238,25 +238,32 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     table.add_column("verdict", no_wrap=True)
     table.add_column("turbine")
     table.add_column("tower class", no_wrap=True)
-    table.add_column("worst check", overflow="fold")
+    rows = [it.row() for it in items]
+    failed = ("input-error", "internal-error")
+    worst = [
+        f"{r['verdict'].replace('-', ' ')} (below)" if r["verdict"] in failed else r["worst_check"]
+        for r in rows
+    ]
+    # a long check id is broken after a dot, not mid-word ("drivetrain.grid.powe" / "r")
+    worst = [_dotted(w) if w else w for w in worst]
+    width = max((len(line) for w in worst if w for line in w.splitlines()), default=0)
+    table.add_column("worst check", no_wrap=True, min_width=width or None)
     table.add_column("margin", justify="right", no_wrap=True)
     counts: dict[str, int] = {}
     errors = []
-    for it in items:
-        row = it.row()
+    for row, check in zip(rows, worst, strict=True):
         counts[row["verdict"]] = counts.get(row["verdict"], 0) + 1
         verdict = Text(row["verdict"].upper(), style=STYLE.get(row["verdict"], "magenta"))
-        if row["verdict"] in ("input-error", "internal-error"):
+        if row["verdict"] in failed:
             errors.append(row)
-            kind = row["verdict"].replace("-", " ")
-            table.add_row(verdict, _t(Path(row["file"]).name), "—", f"{kind} (below)", "")
+            table.add_row(verdict, _t(Path(row["file"]).name), "—", check, "")
             continue
         margin = "" if row["margin"] is None else f"{row['margin']:.1%}"
         table.add_row(
             verdict,
             _t(row["turbine"]),
             row["tower_class"] or "—",
-            _t(row["worst_check"] or "—"),
+            _t(check or "—"),
             margin,
         )
     console.print(table)
@@ -266,6 +273,22 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     if written:
         folder = {p.parent for p in written}
         console.print(_t(f"wrote {len(written)} files to {', '.join(map(str, folder))}", "dim"))
+
+
+#: The widest line of a check id in the batch summary before it breaks after a dot.
+ID_LINE = 24
+
+
+def _dotted(name: str, width: int = ID_LINE) -> str:
+    """A dotted id in lines of at most ``width`` characters, each broken after a dot (a part
+    longer than the width keeps a line of its own)."""
+    parts = name.split(".")
+    lines = [""]
+    for piece in [p + "." for p in parts[:-1]] + parts[-1:]:
+        if lines[-1] and len(lines[-1]) + len(piece) > width:
+            lines.append("")
+        lines[-1] += piece
+    return "\n".join(lines)
 
 
 def windows_table(console: Console, doc: dict[str, Any]) -> None:
