@@ -199,3 +199,22 @@ def test_png_header_is_read_in_one_place():
     assert pdfreport._aspect(data) == height / width
     assert png.header(b"GIF89a") is None and png.header(data[:20]) is None
     assert pdfreport._aspect(b"GIF89a") == 0.7
+
+
+def test_ids_break_after_a_dot_and_headings_do_not_empty_a_page():
+    """The Aeroman's report: every check id of its summary is in the page text whole or
+    broken after a dot (drivetrain.resonance. / mesh.stage2), never mid-word (it was
+    "drivetrain.resonance.mesh.st" / "age2"); and the summary of checks starts on the page
+    of the turbine's identity table — a heading kept with the page-long table after it had
+    moved both on and left that page two-thirds empty."""
+    r = audit.run(spec.load(TURBINES / "aeroman.yaml"))
+    pages = PdfReader(io.BytesIO(pdfreport.build([(r.to_dict(), {})]))).pages
+    text = "\n".join(p.extract_text() for p in pages)
+    for c in r.checks:
+        parts = c.id.split(".")
+        broken = any(
+            ".".join(parts[:i]) + ".\n" + ".".join(parts[i:]) in text for i in range(1, len(parts))
+        )
+        assert c.id in text or broken, c.id
+    second = pages[1].extract_text()
+    assert "Verdict" in second and "Summary of checks" in second

@@ -92,8 +92,10 @@ class _Kit:
 
         self.image = image
         self.styles = getSampleStyleSheet()
-        for name in ("Heading1", "Heading2"):
-            self.styles[name].keepWithNext = 1
+        # a section heading is kept off the foot of a page by the room asked before it
+        # (:meth:`heading`), not by keepWithNext, which moves the heading with the whole
+        # table after it: a page-long table left the page before it half empty
+        self.styles["Heading1"].keepWithNext = 1
         self.small = self.styles["BodyText"].clone("small", fontSize=8, leading=9.6)
         self.width = A4[0] - 36 * mm
         #: the tallest figure a page takes (its frame is 265 mm): a taller one (a legend of
@@ -107,6 +109,22 @@ class _Kit:
     def raw(self, markup: str, style: str | None = None) -> Any:
         """A paragraph of reportlab mini-markup."""
         return self.Paragraph(markup, self.styles[style] if style else self.small)
+
+    def heading(self, text: str) -> list[Any]:
+        """A section heading, on the next page where less than 50 mm is left on this one."""
+        return [self.CondPageBreak(50 * self.mm), self.p(text, "Heading2")]
+
+    def ident(self, name: str, fraction: float) -> Any:
+        """A dotted id or field path in a column ``fraction`` of the text width wide: broken
+        after a dot where it does not fit, never mid-word ("…mesh.st" / "age2")."""
+        from reportlab.pdfbase.pdfmetrics import stringWidth
+
+        from .results import dotted_lines
+
+        room = fraction * self.width - 12  # the cell's padding: 6 pt a side
+        font, size = self.small.fontName, self.small.fontSize
+        lines = dotted_lines(name, lambda line: stringWidth(line, font, size) <= room)
+        return self.raw("<br/>".join(_esc(line) for line in lines))
 
     def status(self, s: str) -> Any:
         label = s.upper().replace("-", " ")
@@ -167,7 +185,7 @@ def build(
                 k.p(r["turbine"]["source_file"]),
                 k.p(r["tower_class"] or "—"),
                 k.status(r["verdict"]),
-                k.p(worst["id"] if worst else "—"),
+                k.ident(worst["id"], 0.24) if worst else k.p("—"),
                 k.p(_pct(worst.get("margin")) if worst else ""),
             ]
         )
@@ -238,12 +256,12 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
     ]
     out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
 
-    out.append(k.p("Summary of checks", "Heading2"))
+    out += k.heading("Summary of checks")
     rows = [k.header("status", "check", "margin", "DAF", "finding")]
     rows += [
         [
             k.status(c["status"]),
-            k.p(c["id"]),
+            k.ident(c["id"], 0.2),
             k.p(_pct(c.get("margin"))),
             k.p(_num(c.get("daf"))),
             k.p(c["message"]),
@@ -261,13 +279,12 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
             continue  # a structural audit: said in the identity table and the summary
         if sub == "system" and r.get("results"):  # another tool's modes, not our model
             title = f"Whole turbine: the modes as {r['results']['tool']} computed them"
-        out.append(k.CondPageBreak(50 * k.mm))  # no heading alone at the foot of a page
-        out.append(k.p(title, "Heading2"))
+        out += k.heading(title)
         in_op = any(m.get("damping_in_operation") for m in modes)
         rows = [k.header("mode", "description", "f [Hz]", "ζ (lowest in op.)" if in_op else "ζ")]
         rows += [
             [
-                k.p(m["id"]),
+                k.ident(m["id"], 0.22),
                 k.p(m["description"] + _judged_note(m)),
                 k.p(f"{m['frequency_hz']:.4g}"),
                 k.p(_num(m["damping_ratio"]) + _in_operation(m)),
@@ -290,7 +307,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         rows += [
             [
                 k.status(c["status"]),
-                k.p(c["id"]),
+                k.ident(c["id"], 0.2),
                 k.p(_numbers(c)),
                 k.p(_rule_text(c["rule"], rule)),
             ]
@@ -302,12 +319,12 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         else:  # a table of no rows says nothing: say where its modes are judged
             out.append(k.p(_judged_elsewhere(modes), "BodyText"))
 
-    out.append(k.p("Inputs and their provenance", "Heading2"))
+    out += k.heading("Inputs and their provenance")
     if r["inputs"]:
         rows = [k.header("field", "value", "provenance", "source and note")]
         rows += [
             [
-                k.p(_breakable(path)),
+                k.ident(path, 0.33),
                 k.raw(_for_people(q["value"])),
                 k.p(q["provenance"]),
                 k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
@@ -319,7 +336,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         out.append(
             k.p("No provenance was recorded in the spec: all values are as given.", "BodyText")
         )
-    out.append(k.p("Assumptions", "Heading2"))
+    out += k.heading("Assumptions")
     out += [k.p(f"• {a}", "BodyText") for a in r["assumptions"]]
     return out
 
@@ -376,9 +393,9 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
         shift = row["change"]
         rows.append(
             [
-                k.p(row["id"]),
+                k.ident(row["id"], 0.34),
                 k.p(f"{row['coupled_hz']:.4g}"),
-                k.p(row["isolated_id"] or "—"),
+                k.ident(row["isolated_id"], 0.3) if row["isolated_id"] else k.p("—"),
                 k.p("—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}"),
                 k.p("—" if shift is None else f"{shift:+.1%}"),
             ]
@@ -515,13 +532,6 @@ def _for_people(value: Any) -> str:
     mantissa, exponent = f"{v:.4e}".split("e")
     mantissa = mantissa.rstrip("0").rstrip(".")
     return f"{mantissa}×10<super>{int(exponent)}</super>"
-
-
-def _breakable(path: str, width: int = 40) -> str:
-    """A dotted field path that wraps after a dot, not mid-word: a path longer than the
-    column gets a space after its dots (the PDF's fonts have no zero-width space; the JSON
-    keeps the exact path)."""
-    return path if len(path) <= width else path.replace(".", ". ")
 
 
 def _pct(x: float | None) -> str:

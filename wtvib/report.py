@@ -280,15 +280,10 @@ ID_LINE = 24
 
 
 def _dotted(name: str, width: int = ID_LINE) -> str:
-    """A dotted id in lines of at most ``width`` characters, each broken after a dot (a part
-    longer than the width keeps a line of its own)."""
-    parts = name.split(".")
-    lines = [""]
-    for piece in [p + "." for p in parts[:-1]] + parts[-1:]:
-        if lines[-1] and len(lines[-1]) + len(piece) > width:
-            lines.append("")
-        lines[-1] += piece
-    return "\n".join(lines)
+    """A dotted id in lines of at most ``width`` characters, broken after a dot."""
+    from .results import dotted_lines
+
+    return "\n".join(dotted_lines(name, lambda line: len(line) <= width))
 
 
 def windows_table(console: Console, doc: dict[str, Any]) -> None:

@@ -2,6 +2,7 @@
 
 import functools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -252,3 +253,16 @@ class Check:
 def ordinal(k: int) -> str:
     """Ordinal words of mode descriptions: 1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
     return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"
+
+
+def dotted_lines(name: str, fits: Callable[[str], bool]) -> list[str]:
+    """A dotted id or field path (``drivetrain.resonance.mesh.stage2``) in lines that each
+    ``fits``, broken after a dot, never mid-word; a part too long for any line keeps one of
+    its own. For tables: the id stays readable and whole (the JSON keeps it on one line)."""
+    parts = name.split(".")
+    lines = [""]
+    for piece in [p + "." for p in parts[:-1]] + parts[-1:]:
+        if lines[-1] and not fits(lines[-1] + piece):
+            lines.append("")
+        lines[-1] += piece
+    return lines
