@@ -112,3 +112,20 @@ def test_the_optimal_tip_speed_ratio_maximises_cp(nrel):
     cp = bem.power_coefficient(r, np.array([best - 0.5, best, best + 0.5]), 0.0)
     assert cp[1] >= cp[0] and cp[1] >= cp[2]
     assert math.isfinite(best)
+
+
+def test_the_pitch_grid_in_chunks_gives_the_pitch_of_the_whole_grid(nrel, monkeypatch):
+    """Above rated the pitch grid is solved PITCH_CHUNK points at a time, further points only
+    for winds still above rated: the same brackets, so the same pitches to the last bit as
+    the whole 0–60° grid at once — also where a wind needs the second chunk (a chunk of 2
+    points: 0–5°)."""
+    r = bem.rotor(nrel)
+    wind = np.linspace(12.0, 25.0, 9)
+    omega = np.full_like(wind, 1.2671)  # 12.1 rpm
+    low = np.zeros_like(wind)
+    p = 5e6 / 0.944
+    chunked = bem._pitch_to_rated(r, wind, omega, low, p)
+    for chunk in (13, 2):
+        monkeypatch.setattr(bem, "PITCH_CHUNK", chunk)
+        np.testing.assert_array_equal(bem._pitch_to_rated(r, wind, omega, low, p), chunked)
+    assert np.all(np.diff(chunked) > 0) and math.degrees(chunked[-1]) > 15  # feathering

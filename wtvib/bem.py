@@ -458,8 +458,10 @@ def _rated_wind(excess: Callable[[Array], Array], lo: float, hi: float) -> float
 
 #: Pitch search above rated: a grid of this step [deg] up to PITCH_SPAN_DEG past the fine
 #: pitch brackets rated power at each wind, then PITCH_REFINE steps of regula falsi, all
-#: winds at once (the power is smooth and monotonic in pitch within a bracket).
-PITCH_STEP_DEG, PITCH_SPAN_DEG, PITCH_REFINE = 5.0, 60.0, 5
+#: winds at once (the power is smooth and monotonic in pitch within a bracket). The grid is
+#: solved PITCH_CHUNK points at a time, further points only for the winds still above rated
+#: (the reference turbines pitch at most 23–25° at cut-out: one chunk).
+PITCH_STEP_DEG, PITCH_SPAN_DEG, PITCH_REFINE, PITCH_CHUNK = 5.0, 60.0, 5, 6
 
 
 def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: float) -> Array:
@@ -468,8 +470,16 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
     steps = np.radians(np.arange(0.0, PITCH_SPAN_DEG + 1e-9, PITCH_STEP_DEG))
     grid = low[:, None] + steps[None, :]  # (winds, grid)
     k, g = grid.shape
-    power = solve(r, np.repeat(wind, g), np.repeat(omega, g), grid.ravel()).power
-    excess = power.reshape(k, g) - p_rated
+    excess = np.full((k, g), np.inf)  # a point not solved: above rated, as far as we know
+    for start in range(0, g, PITCH_CHUNK):
+        rows = np.flatnonzero(~np.any(excess <= 0, axis=1))  # no bracket yet
+        if rows.size == 0:
+            break
+        cols = np.arange(start, min(start + PITCH_CHUNK, g))
+        pts = np.ix_(rows, cols)
+        n = cols.size
+        power = solve(r, np.repeat(wind[rows], n), np.repeat(omega[rows], n), grid[pts].ravel())
+        excess[pts] = power.power.reshape(rows.size, n) - p_rated
     below = excess <= 0
     j = np.where(below.any(axis=1), np.argmax(below, axis=1), g - 1)
     j = np.maximum(j, 1)
