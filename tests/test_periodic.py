@@ -26,3 +26,33 @@ def test_a_speed_needing_too_many_steps_is_not_analysed(tmp_path):
     omega = 0.01  # rad/s: one revolution of 628 s against modes of several Hz
     assert floquet.steps_for(p.highest_hz, 2 * 3.141592653589793 / omega) > floquet.MAX_STEPS
     assert periodic.multipliers(p, omega) is None
+
+
+def test_the_step_error_on_a_neutral_mode_is_not_called_growth(shared):
+    """The AWT-27 deck (two-bladed, teetered, generator free: its rotor turns on a shaft
+    with no stiffness — a neutral, undamped slow mode). At 54.1 rpm two Magnus steps per
+    period of the fastest mode put that mode's multipliers at 1 + 2e-6, above GROWTH (the
+    check used to fail the deck on it); four times the steps put them at 1 to 1e-8, the
+    error falling as the fourth-order step's should. The check integrates again where it
+    sees growth (floquet.REFINE) and passes; the deck's real finding, its tower 8.7 % from
+    1P, still fails."""
+    import math
+
+    import numpy as np
+
+    from wtvib import importers
+    from wtvib.units import rpm_to_rad_s
+
+    s = importers.load(shared / "reference/AWT27/Test01.fst")
+    model = coupled.build(s, s.coupled.rotating_condition)
+    assert model.condition == "free"
+    p = periodic.periodic(model, cutoff_hz=periodic.cutoff_hz(s))
+    omega = float(rpm_to_rad_s(54.14))
+    steps = floquet.steps_for(p.highest_hz, 2 * math.pi / omega)
+    coarse = np.abs(periodic.multipliers(p, omega)).max()
+    fine = np.abs(periodic.multipliers(p, omega, steps=4 * steps, max_steps=10 * steps)).max()
+    assert coarse > 1 + floquet.GROWTH and abs(fine - 1) < 1e-7
+    report = audit.run(s)
+    check = next(c for c in report.checks if c.id == "system.floquet")
+    assert check.status == "pass" and "no growth" in check.message
+    assert next(c for c in report.checks if c.id == "tower.class").status == "fail"

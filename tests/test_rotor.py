@@ -24,3 +24,23 @@ def test_rotor_has_no_modes_of_its_own_and_judges_the_heads(write_spec):
     s = spec.load(write_spec(blades=2))
     assert rotor.build_modes(s, {}) == []
     assert rotor.NAME == "rotor"
+
+
+def test_a_speed_that_shows_growth_is_integrated_again_on_finer_steps(monkeypatch):
+    """MOD-0's head model with every speed taken as growing (GROWTH = −1): the map then
+    holds, at every speed, |ρ|max integrated with four times the steps (the finest of
+    floquet.REFINE) — the same, to rounding, as integrating with four times the steps in
+    the first place."""
+    s = spec.load(TURBINES / "mod-0.yaml")
+    model, _ = rotor.head_model(s, audit.run(s).modes)
+    assert model is not None
+    w = np.linspace(2.0, 6.0, 5)
+    monkeypatch.setattr(rotor, "GROWTH", -1.0)
+    refined = rotor.stability_map(model, w)
+    monkeypatch.setattr(rotor, "REFINE", ())
+    real_steps = rotor.steps_for
+    monkeypatch.setattr(rotor, "steps_for", lambda f, t: 4 * real_steps(f, t))
+    monkeypatch.setattr(rotor, "MIN_STEPS", 4 * rotor.MIN_STEPS)
+    monkeypatch.setattr(rotor, "MAX_STEPS", 4 * rotor.MAX_STEPS)
+    direct = rotor.stability_map(model, w)
+    np.testing.assert_allclose(refined, direct, rtol=1e-10)
