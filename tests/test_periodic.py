@@ -56,3 +56,5 @@ def test_the_step_error_on_a_neutral_mode_is_not_called_growth(shared):
     check = next(c for c in report.checks if c.id == "system.floquet")
     assert check.status == "pass" and "no growth" in check.message
     assert next(c for c in report.checks if c.id == "tower.class").status == "fail"
+    # the coupled model clamps the blades to the teetered hub, and says so
+    assert any("the model clamps the blades to it" in a for a in report.assumptions)

@@ -44,3 +44,22 @@ def test_a_speed_that_shows_growth_is_integrated_again_on_finer_steps(monkeypatc
     monkeypatch.setattr(rotor, "MAX_STEPS", 4 * rotor.MAX_STEPS)
     direct = rotor.stability_map(model, w)
     np.testing.assert_allclose(refined, direct, rtol=1e-10)
+
+
+def test_a_hub_a_model_does_not_have_is_said_where_it_is_modelled_otherwise(tmp_path):
+    """MOD-2 (teetered) with its hub declared hinged: the tower-head Floquet model has no
+    flap hinges, so it models the rotor hingeless — and its check says so, in the message
+    and in the hub it reports, instead of calling a hingeless result "hinged". As declared
+    (teetered), nothing of the kind."""
+    text = (TURBINES / "mod-2.yaml").read_text()
+    assert "hub: teetered" in text
+    path = tmp_path / "mod-2-hinged.yaml"
+    path.write_text(text.replace("hub: teetered", "hub: hinged"))
+    for file, hub, note in (
+        (path, "hingeless", True),
+        (TURBINES / "mod-2.yaml", "teetered", False),
+    ):
+        report = audit.run(spec.load(file))
+        check = next(c for c in report.checks if c.id == "rotor.floquet")
+        assert check.numbers["hub"] == hub and check.message.startswith(hub)
+        assert ("hinged hub modelled as hingeless" in check.message) is note

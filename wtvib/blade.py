@@ -278,6 +278,18 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         assumptions=(
             "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with "
             "centrifugal stiffening and in-plane softening at "
-            f"{SPEED_SAMPLES} speeds, followed by MAC{mesh}.",
+            f"{SPEED_SAMPLES} speeds, followed by MAC{mesh}"
+            + (
+                f"; the hub is {spec.rotor.hub}, the blade clamped at its root all the same"
+                + (
+                    " (the teeter hinge frees the rotor's asymmetric flap motion, which this "
+                    "model does not have)"
+                    if spec.rotor.hub == "teetered"
+                    else " (its flap hinge is not modelled)"
+                )
+                if spec.rotor.hub in ("teetered", "hinged")
+                else ""
+            )
+            + ".",
         )
     )

@@ -98,7 +98,10 @@ CHECK_NUMBERS: dict[str, str] = {
     "at_rpm": "Rotor speed of that lowest damping [rpm].",
     "curve": "A stall check's damping over the operating points.",
     "p1_hz_at_max": "1P at the highest steady speed (tower class) [Hz].",
-    "hub": "The hub type the Floquet check modelled (rigid, teetered, hinged).",
+    "hub": (
+        "The hub type the Floquet check modelled (rigid or hingeless, teetered; a hinged hub "
+        "is modelled hingeless)."
+    ),
     "polar_inertia_kgm2": "Rotor polar inertia the Floquet check used [kg·m²].",
     "speed_ratio": "Divergence or flutter speed over the highest section speed [-].",
     "cantilever_load_factor": "Strip-theory cantilever factor on the divergence speed [-].",

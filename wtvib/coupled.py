@@ -761,7 +761,20 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             "Coupled whole-turbine modes (system.*): tower, nacelle, drive train and "
             f"{spec.rotor.blades} flexible blades in one model (Lagrange, multi-blade "
             "coordinates); shaft tilt, precone, blade torsion and gravity on the blades "
-            f"neglected; damping in the model: {damping}.",
+            f"neglected; damping in the model: {damping}."
+            + (
+                f" The hub is {spec.rotor.hub}, but the model clamps the blades to it: its "
+                "asymmetric flap modes are those of a hingeless rotor, not the "
+                f"{spec.rotor.hub} rotor's ("
+                + (
+                    "the teeter hinge is modelled in the rotor-on-tower-head Floquet check only"
+                    if spec.rotor.hub == "teetered"
+                    else "no model here has flap hinges"
+                )
+                + ")."
+                if spec.rotor.hub in ("teetered", "hinged")
+                else ""
+            ),
         )
         if applies(spec)
         else ()

@@ -207,7 +207,7 @@ def head_model(spec: "Spec", modes: "Sequence[Mode]") -> tuple[HeadModel | None,
     k_y = (i_y + j_p / 2) * (2 * math.pi * f_tilt) ** 2
     c_z = 2 * spec.yaw.damping_ratio * math.sqrt(k_z * (i_z + j_p / 2))
     c_y = 2 * spec.tower.damping_ratio * math.sqrt(k_y * (i_y + j_p / 2))
-    hub = "teetered" if spec.rotor.hub == "teetered" else "hingeless"
+    hub = "hingeless" if spec.rotor.hub == "hinged" else spec.rotor.hub  # no flap hinges here
     return HeadModel(
         spec.rotor.blades,
         hub,
@@ -302,7 +302,7 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
     steady = split["steady"] + split["quick-pass"]
     transient = split["overspeed"] + split["start-up"]
     bands = ", ".join(f"{a:.3g}–{b:.3g} rpm" for a, b in smap.unstable_rpm) or "none"
-    hub = spec.rotor.hub
+    hub = model.hub  # the hub the model has (a hinged hub's flap hinges it has not)
     if steady:
         status = "fail"
         text = (
@@ -341,6 +341,11 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         )
         if status == "pass" and np.isnan(in_operation).any():
             status = "warn"  # part of the operating range is unknown: not a pass
+    if spec.rotor.hub != hub:
+        text += (
+            f" (the spec's {spec.rotor.hub} hub modelled as {hub}: the tower-head model has "
+            "no flap hinges)"
+        )
     finite = in_operation[np.isfinite(in_operation)]
     numbers = {
         "max_multiplier_in_operation": round(float(np.max(finite)), 6) if finite.size else None,
