@@ -71,6 +71,10 @@ def test_without_blades_three_are_assumed_and_said(tmp_path):
         ("bad.csv", TABLE.format(last="abc"), ":5: column damping_ratio"),
         ("few.csv", TABLE.format(last="0.1").replace(",forward\n", "\n", 1), ":4: 4 cells"),
         ("id.csv", TABLE.format(last="0.1").replace("tower.fa1", "Tower FA", 1), ":2: column mode"),
+        # a negative frequency beside a positive one at the same speed would have merged to
+        # a mean near 0 Hz (a .cmb's rated points do): refused where it is written
+        ("neg.csv", TABLE.format(last="0.1").replace("0.325", "-0.325", 1), ":3: column freq"),
+        ("zero.csv", TABLE.format(last="0.1").replace("1.20", "0", 1), ":4: column freq"),
     ],
 )
 def test_a_broken_table_is_one_line_and_exit_2(tmp_path, name, text, where):
@@ -93,6 +97,19 @@ def test_a_cmb_with_a_text_cell_is_one_line_and_exit_2(tmp_path):
     text = (DATA / "hawcstab2" / "blade.cmb").read_text().replace("0.610872E+00", "abc", 1)
     result = runner.invoke(app, ["check", str(write(tmp_path, text, "x.cmb")), "--no-plot"])
     assert result.exit_code == 2 and "x.cmb:3: a cell that is not a number" in result.output
+
+
+def test_a_cmb_with_a_frequency_that_is_not_positive_is_one_line_and_exit_2(tmp_path):
+    """steady.cmb's first mode at 5 m/s typed negative: its low winds share one rotor speed,
+    so the merge would have averaged −0.625 with +0.625 Hz into 4e-5 Hz and judged that."""
+    for f in ("steady.pwr", "steady.amp"):
+        (tmp_path / f).write_text((DATA / "hawcstab2" / f).read_text())
+    text = (DATA / "hawcstab2" / "steady.cmb").read_text()
+    assert "0.625376E+00" in text
+    cmb = write(tmp_path, text.replace("0.625376E+00", "-0.625376E+00", 1), "steady.cmb")
+    result = runner.invoke(app, ["check", str(cmb), "--blades", "3", "--no-plot"])
+    assert result.exit_code == 2
+    assert "steady.cmb:2: mode 1: frequency -0.625376 Hz" in result.output
 
 
 def test_results_and_the_coupled_model_cannot_both_give_the_system_modes(write_spec):

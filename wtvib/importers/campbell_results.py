@@ -90,6 +90,7 @@ def merge_speeds(m: dict[str, Any]) -> float:
     }
     for g in groups:
         f = [m["frequency_hz"][i] for i in g]
+        assert min(f) > 0, "the readers refuse frequencies that are not positive"
         spread = max(spread, (max(f) - min(f)) / min(f))
         low = min(g, key=lambda i: m["damping_ratio"][i]) if "damping_ratio" in m else g[0]
         out["rpm"].append(rpm[g[0]])

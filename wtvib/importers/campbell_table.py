@@ -76,7 +76,14 @@ def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
             },
         )
         m["rpm"].append(_number(cell["rpm"], line, "rpm", path))
-        m["frequency_hz"].append(_number(cell["frequency_hz"], line, "frequency_hz", path))
+        hz = _number(cell["frequency_hz"], line, "frequency_hz", path)
+        if hz <= 0:
+            raise SpecError(
+                f"column frequency_hz: {hz:g} Hz — a natural frequency is positive",
+                line=line,
+                source=str(path),
+            )
+        m["frequency_hz"].append(hz)
         for opt in ("damping_ratio", "wind_m_s"):
             value = cell.get(opt, "")
             m[opt].append(_number(value, line, opt, path) if value else None)

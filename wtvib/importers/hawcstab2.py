@@ -60,14 +60,16 @@ _WORDS = {
 }
 
 
-def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray]:
-    """Header lines ('#' or the first ``skip``) and the numeric rows of a whitespace table."""
+def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray, list[int]]:
+    """Header lines ('#' or the first ``skip``), the numeric rows of a whitespace table, and
+    each row's line in the file."""
     try:
         lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
     except OSError as exc:
         raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(path)) from None
     header: list[str] = []
     rows: list[list[float]] = []
+    at: list[int] = []
     for i, ln in enumerate(lines, start=1):
         if not ln.strip():
             continue
@@ -85,14 +87,15 @@ def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray]:
         if not all(math.isfinite(v) for v in row):
             raise SpecError("a number that is not finite", line=i, source=str(path))
         rows.append(row)
+        at.append(i)
     if not rows:
         raise SpecError("no rows of numbers", source=str(path))
-    return header, np.array(rows)
+    return header, np.array(rows), at
 
 
 def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
     """(point label, points, frequencies [points × modes], damping ratios or NaN)."""
-    header, data = _table(path)
+    header, data, at = _table(path)
     if not header:
         raise SpecError("no header line: not a HAWCStab2 .cmb file", source=str(path))
     tokens = header[0].lstrip("# ").split()
@@ -108,6 +111,14 @@ def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
             source=str(path),
         )
     freq = data[:, 1 : 1 + n]
+    bad = np.argwhere(freq <= 0)
+    if bad.size:
+        row, mode = (int(x) for x in bad[0])
+        raise SpecError(
+            f"mode {mode + 1}: frequency {freq[row, mode]:g} Hz — a natural frequency is positive",
+            line=at[row],
+            source=str(path),
+        )
     damp = data[:, 1 + n : 1 + 2 * n] / 100 if cols // n >= 2 else np.full_like(freq, np.nan)
     return label, data[:, 0], freq, damp
 
@@ -130,7 +141,7 @@ def rotor_speeds(
     for suffix, column, skip in ((".opt", 2, 1), (".pwr", 9, 0)):
         side = cmb.with_suffix(suffix)
         if side.is_file():
-            _, table = _table(side, skip)
+            _, table, _ = _table(side, skip)
             if table.shape[1] <= column:
                 raise SpecError(f"no rotor-speed column {column + 1}", source=str(side))
             order = np.argsort(table[:, 0])
@@ -152,7 +163,7 @@ def rotor_speeds(
 
 def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
     """(kind, coordinate) of each mode and the frame (``fixed`` turbine, ``rotating`` blade)."""
-    header, data = _table(amp)
+    header, data, _ = _table(amp)
     text = " ".join(header)
     if "TWR" in text:
         per = 2 * len(TURBINE_SENSORS)
