@@ -1,6 +1,9 @@
 """The one generic eigen-solver and mode tracking, shared by every structural model.
 
 * :func:`solve` — the generalised symmetric problem K φ = ω² M φ (undamped modes);
+* :func:`oscillations` — the damped (state-space) roots, refused where they fall below
+  rounding;
+* :func:`ritz_basis` — a reduced basis that follows a problem as parameters change it;
 * :func:`mac` and :func:`track` — modal assurance criterion and following modes across a
   parameter sweep by shape similarity rather than by sorting frequencies.
 
@@ -294,7 +297,7 @@ def state_matrix(k: Array, m: Array, d: Array) -> Array:
 
 #: A root smaller than this times the largest is lost in rounding: the eigen-solver's
 #: absolute error is about the machine epsilon (2.2e-16) times the matrix's norm, so such a
-#: root is not known to four digits (Golub & Van Loan, *Matrix Computations*, §7.2).
+#: root's relative error exceeds 2e-5 (Golub & Van Loan, *Matrix Computations*, §7.2).
 ROUNDING = 1e-11
 
 
