@@ -27,9 +27,12 @@ def main() -> None:
     free = coupled.build(s, "free")
     speeds = coupled.speeds(s)
     audit.run(s)  # warm up
+    points = [(float(om), None) for om in speeds]
+    path = multiblade.track(free, points, reduced=True)
+    basis = free.ritz(path.basis)[0].shape[1]
 
     def cold(condition: str) -> coupled.Model:
-        coupled._LAST_BLADE.clear()  # recompute the blade's modes too
+        s._derived.clear()  # recompute the blade's modes and the model too
         return coupled.build(s, condition)
 
     rows = [
@@ -50,6 +53,16 @@ def main() -> None:
         (
             f"{len(speeds)}-point Campbell sweep, from the spec",
             median_ms(lambda: multiblade.sweep(cold("free"), speeds), 5),
+            "ms",
+        ),
+        (
+            f"  the sweep, model built, Ritz basis ({basis})",
+            median_ms(lambda: multiblade.track(free, points, reduced=True), 5),
+            "ms",
+        ),
+        (
+            "  the sweep, model built, full model",
+            median_ms(lambda: multiblade.track(free, points), 5),
             "ms",
         ),
     ]
