@@ -337,3 +337,22 @@ def test_a_campbell_diagram_names_and_keys_only_what_it_draws(reports):
     assert "least margin in operation" in _legend_texts(drive)
     both = campbell.campbell_plot(reports["stall-rotor-1mw"])  # tower and blade modes
     assert "Campbell diagram, tower and blades —" in both.axes[0].get_title()
+    assert "margin violated, no crossing (warn/fail)" not in key
+
+
+def test_a_warning_with_no_crossing_is_marked_on_the_diagram():
+    """The Darrieus rotor warns because its first flatwise mode (1.26 Hz) sits inside the
+    2P margin at overspeed, 34.6–35.7 rpm, without 2P ever meeting it there: no crossing
+    marker would show the warning, so a square in the warning colour marks the band's
+    middle (35.2 rpm) on the mode's curve, and the key names it."""
+    r = audit.run(spec.load(TURBINES / "darrieus.yaml"))
+    fig = campbell.campbell_plot(r)
+    assert "margin violated, no crossing (warn/fail)" in _legend_texts(fig)
+    squares = [
+        line
+        for line in fig.axes[0].lines
+        if line.get_marker() == "s" and line.get_color() == campbell.STATUS_COLOUR["warn"]
+    ]
+    assert len(squares) == 1
+    (x,), (y,) = squares[0].get_data()
+    assert 34.6 < x < 35.7 and abs(y - 1.28) < 0.05

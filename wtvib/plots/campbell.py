@@ -198,6 +198,27 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             zorder=6,
         )
 
+    # a band violated with no crossing in it (the line runs inside the margin, never meets
+    # the mode: MOD-2's yaw at overspeed, the Darrieus flap at 2P) gets a square mid-band in
+    # the colour of its status — else a warning or failure would have nothing drawn
+    for f in findings:
+        for a, b in (band for bands in f.violations.values() for band in bands):
+            mid = 0.5 * (a + b)
+            status = f.status_at(mid, op)
+            if STATUS_ORDER[status] < STATUS_ORDER["warn"] or any(a <= c <= b for c in f.crossings):
+                continue
+            ax.plot(
+                float(rad_s_to_rpm(mid)),
+                float(f.mode.frequency_at(np.array([mid]))[0]),
+                marker="s",
+                ms=8,
+                ls="",
+                color=STATUS_COLOUR[status],
+                mec="black",
+                mew=0.8,
+                zorder=6,
+            )
+            shown.add("band violated")
     for f in findings:
         if f.regime in ("steady", "quick-pass") and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:
             ax.plot(
@@ -329,6 +350,11 @@ def _legend(  # type: ignore[no-untyped-def]
             "least margin",
             Line2D([], [], marker="D", ls="", color="#9e9e9e", mec="black"),
             "least margin in operation",
+        ),
+        (
+            "band violated",
+            Line2D([], [], marker="s", ls="", color="#9e9e9e", mec="black"),
+            "margin violated, no crossing (warn/fail)",
         ),
         *(
             (
