@@ -134,3 +134,26 @@ def test_points_at_one_speed_merge_to_the_mean_frequency_and_lowest_damping():
     assert m["frequency_hz"] == pytest.approx([1.0, 2.1])
     assert m["damping_ratio"] == [0.1, 0.02] and m["wind_m_s"] == [5.0, 15.0]
     assert spread == pytest.approx(0.1)
+
+
+def test_azimuths_too_few_or_uneven_for_mbc3_are_a_warning(tmp_path):
+    """The stored linearisation is three of OpenFAST's 36 azimuths (0.4°, 120°, 330°): MBC3's
+    average does not cancel the rotor's periodic terms over them, and the import says so.
+    The same files with the third azimuth moved to 240° (evenly spaced) say nothing; one
+    file alone (one azimuth) warns again."""
+    src = DATA / "openfast"
+    files = sorted(src.glob("*.lin"))
+
+    def warnings(folder: Path) -> list[str]:
+        return [w for w in importers.load(folder).warnings if "azimuths" in w]
+
+    assert len(warnings(src)) == 1 and "ws03.0 (3 at 6.97 rpm)" in warnings(src)[0]
+    even = tmp_path / "even"
+    even.mkdir()
+    for f in files:
+        (even / f.name).write_text(f.read_text().replace("5.7600 rad", "4.1888 rad"))
+    assert warnings(even) == []
+    one = tmp_path / "one"
+    one.mkdir()
+    (one / files[0].name).write_text(files[0].read_text())
+    assert len(warnings(one)) == 1

@@ -169,6 +169,16 @@ class PointModes:
     shapes: NDArray[np.complex128]  # weighted displacements, multi-blade coordinates
 
 
+def _even(files: list[LinFile]) -> bool:
+    """Whether an operating point's azimuths are at least three and evenly spaced round the
+    rotor (no gap more than half again the even spacing)."""
+    if len(files) < 3:
+        return False
+    psi = np.sort(np.mod([f.azimuth for f in files], 2 * np.pi))
+    gaps = np.diff(np.append(psi, psi[0] + 2 * np.pi))
+    return bool(gaps.max() <= 1.5 * 2 * np.pi / len(files))
+
+
 def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
     """MBC3 over the azimuths of one point, the modes and the number of blades."""
     first = files[0]
@@ -411,12 +421,15 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
     points = []
     nbs = set()
     read_files: list[str] = []
-    for _, paths in sorted(groups.items()):
+    uneven: list[str] = []
+    for root, paths in sorted(groups.items()):
         lins = [read(p) for p in paths]
         read_files += [str(p) for p in paths]
         pm, nb = operating_point(lins)
         points.append(pm)
         nbs.add(nb)
+        if lins[0].rotor_speed > 0 and not _even(lins):
+            uneven.append(f"{root} ({len(lins)} at {pm.rpm:.3g} rpm)")
     points.sort(key=lambda p: p.rpm)
     modes, weakest = _followed(points)
     for m in modes.values():
@@ -436,6 +449,12 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
         data["warnings"].append(
             f"{weakest[1]}: followed to {weakest[2]:.4g} rpm with a MAC of only "
             f"{weakest[0]:.2f} (under {TRACK_MAC}): check that curve"
+        )
+    if uneven:
+        data["warnings"].append(
+            "azimuths too few or unevenly spaced for MBC3 to average the rotor's periodic "
+            f"terms out (OpenFAST's NLinTimes, at least 3, evenly spaced): {', '.join(uneven)}"
+            " — the modes there keep some of them"
         )
     outside = [f for f in read_files if Path(f).parent != (path if path.is_dir() else path.parent)]
     if outside:
