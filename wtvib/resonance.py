@@ -455,7 +455,7 @@ def _check(
     )
     own = _merge(gov.violations["steady"] + gov.violations["quick-pass"])
     notes = [f"also: {', '.join(others)}"] if others else []
-    if op.variable and own and exclude != own:  # the governing mode's bands are not all
+    if exclude and own and exclude != own and op.variable:  # the governing mode's are not all
         notes.append(f"all together: exclude {', '.join(_span(iv) for iv in exclude)}")
     if notes:
         message += f" ({'; '.join(notes)})"
@@ -567,7 +567,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
                 if dwelt
                 else "; a secondary harmonic swept in partial load, not at rated speed: milder"
             )
-        if op.variable:
+        if op.variable and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:  # (info: no need)
             text += f"; exclude {spans} to clear it"
         return text
     if f.regime == "quick-pass":
