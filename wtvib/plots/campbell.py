@@ -199,17 +199,20 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         )
 
     # a band violated with no crossing in it (the line runs inside the margin, never meets
-    # the mode: MOD-2's yaw at overspeed, the Darrieus flap at 2P) gets a square mid-band in
-    # the colour of its status — else a warning or failure would have nothing drawn
+    # the mode: the Darrieus flap at 2P in overspeed) gets a square mid-band in the colour
+    # of its status — else a warning or failure would have nothing drawn
     for f in findings:
         for a, b in (band for bands in f.violations.values() for band in bands):
             mid = 0.5 * (a + b)
             status = f.status_at(mid, op)
             if STATUS_ORDER[status] < STATUS_ORDER["warn"] or any(a <= c <= b for c in f.crossings):
                 continue
+            f_mid = float(f.mode.frequency_at(np.array([mid]))[0])
+            if f_mid > f_top:  # a mode above the axis (noted, not drawn)
+                continue
             ax.plot(
                 float(rad_s_to_rpm(mid)),
-                float(f.mode.frequency_at(np.array([mid]))[0]),
+                f_mid,
                 marker="s",
                 ms=8,
                 ls="",
