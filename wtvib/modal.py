@@ -200,6 +200,9 @@ def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
     continues it (max total score): exhaustive for up to 7 square, greedy otherwise;
     ``optimal``: the best assignment always (Hungarian method, :func:`_hungarian`)."""
     if optimal:
+        best = np.argmax(score, axis=1)
+        if len(np.unique(best)) == len(best):  # each row's best column, none shared: the
+            return best.astype(np.intp)  # sum of the row maxima, which nothing exceeds
         return _hungarian(np.asarray(score, float))
     n, candidates = score.shape
     if n <= 7 and candidates == n:
