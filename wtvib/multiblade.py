@@ -254,23 +254,35 @@ def _groups(model: "Model") -> dict[str, Index]:
 
 def shares(
     m: Array, shapes: NDArray[np.complex128], groups: dict[str, Index]
-) -> list[tuple[dict[str, float], dict[str, float]]]:
+) -> tuple[tuple[str, ...], Array, tuple[str, ...], Array]:
     """Each mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed,
-    normalised), and the same with each cyclic cos/sin pair merged into one ``cyclic``
-    group — all modes (the columns of ``shapes``) in one product."""
+    normalised) and the same with each cyclic cos/sin pair merged into one ``cyclic``
+    group — all modes (the columns of ``shapes``) at once: the group names and a
+    (groups, modes) table of shares, then the merged names and table."""
     energy = np.abs(np.real(np.conj(shapes) * (m @ shapes)))
     total = energy.sum(axis=0)
     total[total == 0.0] = 1.0
-    table = {g: energy[i].sum(axis=0) / total for g, i in groups.items() if len(i)}
-    merge = {g: g.replace("cos", "cyclic").replace("sin", "cyclic") for g in table}
-    out = []
-    for j in range(shapes.shape[1]):
-        share = {g: float(v[j]) for g, v in table.items()}
-        merged: dict[str, float] = {}
-        for g, v in share.items():
-            merged[merge[g]] = merged.get(merge[g], 0.0) + v
-        out.append((share, merged))
-    return out
+    names = tuple(g for g, i in groups.items() if len(i))
+    table = np.array([energy[groups[g]].sum(axis=0) / total for g in names])
+    merge = [g.replace("cos", "cyclic").replace("sin", "cyclic") for g in names]
+    merged_names = tuple(dict.fromkeys(merge))
+    merged = np.zeros((len(merged_names), shapes.shape[1]))
+    row = {g: k for k, g in enumerate(merged_names)}
+    for g, share in zip(merge, table, strict=True):  # cos before sin, as they are listed
+        merged[row[g]] += share
+    return names, table, merged_names, merged
+
+
+def whirls(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str | None, ...]:
+    """Each mode's whirl (backward, forward, cyclic, collective, alternating; None: not a
+    rotor mode), as :func:`_name` gives it, without the names: what a sweep records at
+    every speed."""
+    groups = _groups(model)
+    _, _, merged_names, merged = shares(m, shapes, groups)
+    return tuple(
+        _whirl(merged_names[int(t)], shapes[:, j], groups)
+        for j, t in enumerate(np.argmax(merged, axis=0))
+    )
 
 
 def _name(
@@ -279,15 +291,20 @@ def _name(
     """Ids, descriptions, energy shares (merged) and whirl of each mode, named by those
     shares."""
     groups = _groups(model)
+    group_names, table, merged_names, merged_table = shares(m, shapes, groups)
+    share = dict(zip(group_names, table, strict=True))
     names: list[str] = []
     texts: list[str] = []
     energy: list[dict[str, float]] = []
     whirls: list[str | None] = []
     counters: dict[str, int] = {}
-    for j, (share, merged) in enumerate(shares(m, shapes, groups)):
-        x = shapes[:, j]
-        top = max(merged, key=lambda g: merged[g])
-        name, text, whirl = _mode_name(top, share, x, groups, counters)
+    for j in range(shapes.shape[1]):
+        merged = {g: float(v) for g, v in zip(merged_names, merged_table[:, j], strict=True)}
+        top = merged_names[int(np.argmax(merged_table[:, j]))]
+        whirl = _whirl(top, shapes[:, j], groups)
+        name, text = _mode_name(top, share, j, counters, whirl)
+        if whirl in ("forward", "backward"):
+            text = f"{text}, {whirl} whirl"
         mixed = [
             f"{merged[g]:.0%} {label}"
             for g, label in _CONTENT.items()
@@ -304,50 +321,62 @@ def _name(
     return tuple(names), tuple(texts), tuple(energy), tuple(whirls)
 
 
+_PARTS = {
+    "tower.fa": "tower fore-aft",
+    "tower.ss": "tower side-side",
+    "tower.tor": "tower torsion",
+    "drivetrain": "drive-train torsion",
+    "yaw": "yaw",
+}
+
+
 def _mode_name(
-    top: str,
-    share: dict[str, float],
-    x: NDArray[np.complex128],
-    groups: dict[str, Index],
-    counters: dict[str, int],
-) -> tuple[str, str, str | None]:
-    if top in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw"):
+    top: str, share: dict[str, Array], j: int, counters: dict[str, int], whirl: str | None
+) -> tuple[str, str]:
+    """Id and description of mode j, whose energy sits mostly in group ``top``."""
+    if top in _PARTS:
         counters[top] = counters.get(top, 0) + 1
         k = counters[top]
-        label = {
-            "tower.fa": "tower fore-aft",
-            "tower.ss": "tower side-side",
-            "tower.tor": "tower torsion",
-            "drivetrain": "drive-train torsion",
-            "yaw": "yaw",
-        }[top]
-        return f"{top}{k}", f"{ordinal(k)} {label}", None
+        return f"{top}{k}", f"{ordinal(k)} {_PARTS[top]}"
     _, mode, coord = top.split(".")
     kind = mode.rstrip("0123456789")
     number = int(mode[len(kind) :])
     words = f"{ordinal(number)} blade {_KINDS[kind]}"
     if coord == "collective":
-        return f"blade.{mode}.collective", f"{words}, collective", "collective"
+        return f"blade.{mode}.collective", f"{words}, collective"
     if coord == "alternating":
-        text = f"{words}, alternating (two blades in opposition)"
-        return f"blade.{mode}.alternating", text, "alternating"
+        return f"blade.{mode}.alternating", f"{words}, alternating (two blades in opposition)"
     h = coord.removeprefix("cyclic")
-    c = share.get(f"blade.{mode}.cos{h}", 0.0)
-    s = share.get(f"blade.{mode}.sin{h}", 0.0)
+    c = share[f"blade.{mode}.cos{h}"][j] if f"blade.{mode}.cos{h}" in share else 0.0
+    s = share[f"blade.{mode}.sin{h}"][j] if f"blade.{mode}.sin{h}" in share else 0.0
     # flap ∝ cos ψⱼ nods the rotor (tilt), ∝ sin ψⱼ yaws it; edge: cos pushes sideways (yaw
     # through the overhang), sin up and down (tilt)
     tilt = (c >= s) == (kind == "flap")
     axis = "tilt" if tilt else "yaw"
     suffix = "" if h == "1" else h
+    name = f"blade.{mode}.cyclic{suffix}_{axis}"
+    if whirl in ("forward", "backward"):
+        return name, f"{words}, cyclic{suffix}"
+    return name, f"{words}, cyclic{suffix} ({axis})"
+
+
+def _whirl(top: str, x: NDArray[np.complex128], groups: dict[str, Index]) -> str | None:
+    """The whirl of a mode of shape x whose energy sits mostly in group ``top``: none for
+    a tower, drive-train or yaw mode; collective, alternating; for a cyclic one, forward or
+    backward where the cyclic pattern travels round the rotor, else cyclic (standing)."""
+    if top in _PARTS:
+        return None
+    _, mode, coord = top.split(".")
+    if coord in ("collective", "alternating"):
+        return coord
+    h = coord.removeprefix("cyclic")
     xc = x[groups[f"blade.{mode}.cos{h}"]].sum()
     xs = x[groups[f"blade.{mode}.sin{h}"]].sum()
     whirl = float(np.imag(np.conj(xc) * xs))
     scale = float(abs(xc) * abs(xs)) or 1.0
     if abs(whirl) > 0.5 * scale:  # rotating: the cyclic pattern travels round the rotor
-        turn = "forward" if whirl < 0 else "backward"
-        name = f"blade.{mode}.cyclic{suffix}_{axis}"
-        return name, f"{words}, cyclic{suffix}, {turn} whirl", turn
-    return f"blade.{mode}.cyclic{suffix}_{axis}", f"{words}, cyclic{suffix} ({axis})", "cyclic"
+        return "forward" if whirl < 0 else "backward"
+    return "cyclic"
 
 
 # ---------------------------------------------------------------------------------------
@@ -414,10 +443,10 @@ def track(
     reduced: bool = False,
 ) -> Path:
     """Modes at each (Ω, extra matrices) point, each followed from the point before by
-    mass-weighted MAC (modal.track); ``named``: whirl and description at every point (else
-    at the first only, the rest empty); ``reduced``: the points after the first in the
-    model's Ritz basis (RITZ_STANDSTILL); the first, where the modes followed are chosen,
-    in one of as many standstill modes as the search by content sees."""
+    mass-weighted MAC (modal.track); ``named``: the whirl at every point and the
+    descriptions at the last (else at the first only); ``reduced``: the points after the
+    first in the model's Ritz basis (RITZ_STANDSTILL); the first, where the modes followed
+    are chosen, in one of as many standstill modes as the search by content sees."""
     wide = count + _spare(count) if reduced else 0  # as many as the search by content sees
     first = rotating(model, points[0][0], count, points[0][1], reduced=wide, by_content=True)
     basis = max(RITZ_STANDSTILL, first.span + TRACK_SPARE) if reduced else 0
@@ -434,19 +463,22 @@ def track(
     every = [shapes]
     last = first.descriptions
     whirl = [list(first.whirl)]
+    m = model.multiblade[0]
     for i, (om, extra) in enumerate(points[1:], start=1):
-        cur = _candidates(model, om, first.span + TRACK_SPARE, extra, named, basis, kept)
+        cur = _candidates(model, om, first.span + TRACK_SPARE, extra, basis, kept)
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
         zetas[i] = cur.damping_ratio[order]
         shapes = cur.shapes[:, order]
         every.append(shapes)
-        if named:
-            last = tuple(cur.descriptions[o] for o in order)
-            whirl.append([cur.whirl[o] for o in order])
-    whirls = tuple(tuple(w) for w in whirl)
-    return Path(first, freqs, zetas, last, whirls, tuple(every), basis)
+        if named:  # the whirl at every point, the descriptions at the last (named with
+            # every candidate, so that "2nd" counts the same modes wherever it is asked)
+            whirl.append(list(whirls(model, m, shapes)))
+            if i == len(points) - 1:
+                texts = _name(model, m, cur.shapes)[1]
+                last = tuple(texts[o] for o in order)
+    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every), basis)
 
 
 def _candidates(
@@ -454,7 +486,6 @@ def _candidates(
     omega: float,
     count: int,
     extra: tuple[Array, Array] | None,
-    named: bool,
     basis: int,
     kept: int,
 ) -> SystemModes:
@@ -464,7 +495,7 @@ def _candidates(
     holds fewer roots than the path follows (a damper far out of range squeezes roots
     towards zero). Fewer in the full model too: a mode fell below 1 mHz — ModalError."""
     for reduced in dict.fromkeys((basis, 0)):
-        cur = rotating(model, omega, count, extra, named, reduced, overdamped=True)
+        cur = rotating(model, omega, count, extra, False, reduced, overdamped=True)
         if len(cur.frequency_hz) >= kept:
             return cur
     raise modal.ModalError(
@@ -500,7 +531,7 @@ def matched(
     sits (:func:`_overlap`): one assignment per point, so a heavily damped mode cannot hand
     its name along a chain. The third array is each match's score (0 … 2: MAC + overlap)."""
     kept = reference.shape[1]
-    cur = _candidates(model, omega, kept + spare, extra, False, reduced, kept)
+    cur = _candidates(model, omega, kept + spare, extra, reduced, kept)
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
     # (blind to phase: keeps an overdamped, standing form with its whirling origin)
