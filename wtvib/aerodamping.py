@@ -54,10 +54,6 @@ from .spec import Spec
 
 Array = NDArray[np.float64]
 
-#: Evenly spaced structural solves from standstill up to the first operating speed, which
-#: follow each mode's shape (and name) there.
-LEAD = 8
-
 #: A damped mode stands for a structural one when MAC + energy overlap reaches this (of 2);
 #: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
 MATCH = 1.5
@@ -124,7 +120,13 @@ def _sections(spec: Spec) -> Sections:
     return Sections(sch, r.radius, c)
 
 
-def _operating(sch: bem.Schedule, aero: Array, structural: float, source: str) -> OperatingDamping:
+def _operating(
+    sch: bem.Schedule,
+    aero: Array,
+    structural: float,
+    source: str,
+    part: tuple[str, ...] | None = None,
+) -> OperatingDamping:
     sol = sch.solution
     return OperatingDamping(
         tuple(float(v) for v in sol.wind),
@@ -133,6 +135,7 @@ def _operating(sch: bem.Schedule, aero: Array, structural: float, source: str) -
         tuple(float(a) for a in aero),
         tuple(float(a) + structural for a in aero),
         source,
+        part,
     )
 
 
@@ -149,6 +152,7 @@ class Coupled:
     damping_ratio: Array  # (K, modes), eigenvalue damping (aerodynamics + dampers)
     standstill: Array  # (modes,), the eigenvalue damping at standstill (the dampers)
     first_order: NDArray[np.bool_]  # (K, modes): no damped mode matched, first-order ζ
+    parts: tuple[tuple[str, ...], ...]  # (K, modes): where each mode's energy sits there
 
 
 def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
@@ -156,7 +160,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     with a rotating multi-blade view); ``reduced``: in the model's Ritz basis
     (``Model.ritz``), else the full model."""
     from . import coupled as coupled_model
-    from .multiblade import fixed_frame_damping, matched, perturbed, track
+    from .multiblade import at_speeds, fixed_frame_damping, matched, parts, perturbed
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
         return None
@@ -164,16 +168,16 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
     sol = sec.schedule.solution
     c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
-    # the structural modes at each operating speed, followed from standstill (LEAD steps up
-    # to the first operating speed): the names and reference shapes
+    # the structural modes at each operating speed, continued from the rotating sweep's
+    # nearest speed: the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
-    lead = [float(w) for w in np.linspace(0.0, speeds[0], LEAD + 1)[:-1]]
-    path = track(model, [(w, None) for w in [*lead, *speeds]], named=False, reduced=reduced)
-    at = {w: i for i, w in enumerate(speeds, start=len(lead))}
+    path = at_speeds(model, coupled_model.rotating_sweep(spec), speeds, reduced)
+    at = {w: i for i, w in enumerate(speeds)}
     kept = path.kept
     freq = np.empty((len(sol.omega), kept))
     zeta = np.empty((len(sol.omega), kept))
     unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
+    part = [parts(model, model.multiblade[0], shapes) for shapes in path.shapes]
     for k, om in enumerate(sol.omega):
         i = at[round(float(om), 12)]
         ref = path.shapes[i]
@@ -198,6 +202,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         zeta,
         np.asarray(path.first.damping_ratio),
         unresolved,
+        tuple(part[at[round(float(om), 12)]] for om in sol.omega),
     )
 
 
@@ -323,7 +328,10 @@ def in_operation(
                     rel = np.abs(cpl.frequency_hz[ok, index[m.id]] / f_struct[ok] - 1)
                     shift = max(shift, float(rel.max()))
             structural = m.damping_ratio or 0.0
-            done.append(replace(m, operating=_operating(sch, aero, structural, source)))
+            part = None
+            if m.id in index and cpl is not None:
+                part = tuple(row[index[m.id]] for row in cpl.parts)
+            done.append(replace(m, operating=_operating(sch, aero, structural, source, part)))
         out[sub] = done
     notes = [*sch.assumptions, _statement(spec, sch)]
     notes.append(

@@ -81,7 +81,7 @@ from .kinematics import (
     skew,
     spin,
 )
-from .multiblade import MODES_KEPT, parked, sweep
+from .multiblade import MODES_KEPT, Sweep, parked, sweep
 from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl
 from .rigid import Rigid, nacelle, rotor_points
@@ -532,6 +532,17 @@ def speeds(spec: Spec) -> Array:
     return np.linspace(0.0, top, SPEED_SAMPLES)
 
 
+def rotating_sweep(spec: Spec) -> Sweep:
+    """The rotating sweep of the coupled model in the spec's rotating condition (three or
+    more blades), once per spec object: the Campbell curves of the coupled modes, and the
+    modes the damped solves at the operating points continue (aerodamping)."""
+    assert spec.coupled is not None
+    cond = spec.coupled.rotating_condition
+    key = ("coupled.sweep." + cond, 0)
+    found: Sweep = spec.derived(key, spec, lambda: sweep(build(spec, cond), speeds(spec)))
+    return found
+
+
 #: A coupled mode kept for its content (beyond the lowest MODES_KEPT) stands for its isolated
 #: namesake only within this factor of its frequency; farther off it is another mode of the
 #: same part (IEA-15: the isolated tower torsion, 0.77 Hz, turns the rigid rotor's yaw
@@ -583,7 +594,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
                 zip(res.frequency_hz, res.names, res.descriptions, strict=True)
             )
         ]
-    sw = sweep(model, speeds(spec))
+    sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
     out = []
     for j, name in enumerate(sw.names):

@@ -13,6 +13,7 @@ analysis", AIAA 2008-1300; M. H. Hansen, "Improved modal dynamics of wind turbin
 stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 """
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -285,6 +286,20 @@ def whirls(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[st
     )
 
 
+def parts(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str, ...]:
+    """The part each mode's kinetic energy mostly sits in: a blade mode over all its
+    multi-blade coordinates (``blade.flap1``, ``blade.edge1`` …), else ``tower.fa``,
+    ``tower.ss``, ``tower.tor``, ``drivetrain`` or ``yaw``. A mode followed through a
+    veering keeps its name and changes its part."""
+    names, table, _, _ = shares(m, shapes, _groups(model))
+    part = [".".join(g.split(".")[:2]) if g.startswith("blade.") else g for g in names]
+    kinds = tuple(dict.fromkeys(part))
+    summed = np.zeros((len(kinds), shapes.shape[1]))
+    for g, share in zip(part, table, strict=True):
+        summed[kinds.index(g)] += share
+    return tuple(kinds[int(k)] for k in np.argmax(summed, axis=0))
+
+
 def _name(
     model: "Model", m: Array, shapes: NDArray[np.complex128]
 ) -> tuple[tuple[str, ...], tuple[str, ...], tuple[dict[str, float], ...], tuple[str | None, ...]]:
@@ -393,6 +408,7 @@ class Sweep:
     descriptions: tuple[str, ...]  # at standstill and at the last speed (whirl direction)
     damping_ratio: Array  # at the first speed
     whirl: tuple[tuple[str | None, ...], ...]  # (modes, speeds): the whirl at each speed
+    path: "Path"  # the modes followed (shapes at every speed): other speeds continue it
 
 
 def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
@@ -414,7 +430,28 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
         texts,
         path.first.damping_ratio,
         by_mode,
+        path,
     )
+
+
+def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool = True) -> "Path":
+    """The sweep's modes at other rotor speeds [rad/s] (the operating points'), each
+    followed by MAC from the sweep's nearest speed — the sweep's names and kept modes, one
+    solve per speed; ``reduced``: in the sweep's Ritz basis, else in the full model."""
+    path = sw.path
+    weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
+    freqs = np.empty((len(omegas), path.kept))
+    zetas = np.empty((len(omegas), path.kept))
+    shapes = []
+    for i, om in enumerate(omegas):
+        near = int(np.argmin(np.abs(sw.omega - om)))
+        count = path.first.span + TRACK_SPARE
+        cur = _candidates(model, om, count, None, path.basis if reduced else 0, path.kept)
+        order = modal.track(weight * path.shapes[near], weight * cur.shapes)
+        assert cur.damping_ratio is not None
+        freqs[i], zetas[i] = cur.frequency_hz[order], cur.damping_ratio[order]
+        shapes.append(cur.shapes[:, order])
+    return Path(path.first, freqs, zetas, (), (), tuple(shapes), path.basis if reduced else 0)
 
 
 @dataclass(frozen=True)

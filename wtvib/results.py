@@ -99,6 +99,9 @@ class OperatingDamping:
     aero: tuple[float, ...]  # aerodynamic damping ratio ζ_a
     total: tuple[float, ...]  # ζ_a + structural
     source: str  # the model it came from
+    # where the mode's energy sits at each point (coupled modes: ``blade.flap1``,
+    # ``tower.fa`` … — a mode followed through a veering changes part); None: not known
+    part: tuple[str, ...] | None = None
 
     def at(self, omega: float) -> float:
         """The lowest total damping of the operating points at rotor speed Ω [rad/s]

@@ -181,13 +181,36 @@ def damping_curve(spec: "Spec", mode: "Mode", radius: float) -> list[Point] | No
     return out
 
 
-def judged_as(mode: "Mode", modes: "list[Mode] | tuple[Mode, ...]") -> "Mode":
-    """The mode as judged: where the coupled model has it (the modes that replace it), the
-    least damped of those in operation — one truth per mode (issue 17)."""
-    coupled = [m for m in modes if m.replaces == mode.id and m.operating is not None]
-    if not coupled:
-        return mode
-    return min(coupled, key=lambda m: m.operating.total[m.operating.lowest])  # type: ignore[union-attr]
+_KIND = {"flap1": "flapwise", "edge1": "edgewise"}
+
+
+def by_part(
+    spec: "Spec", part: str, modes: "list[Mode] | tuple[Mode, ...]"
+) -> tuple[list[Point], list[str]] | None:
+    """At each operating point the least damped mode in operation whose energy sits mostly
+    in ``part`` there (``blade.flap1``: the coupled model's modes, whose parts are known
+    point by point — a mode followed through a veering changes part, so a name alone does
+    not say which modes are flapwise where): the points and the mode of each; None where no
+    mode has that part at any point — one truth per mode (issue 17)."""
+    known = [m for m in modes if m.operating is not None and m.operating.part is not None]
+    if not known:
+        return None
+    from .bem import schedule
+
+    alpha = np.degrees(schedule(spec).solution.alpha[:, -2])  # the station inboard of the tip
+    points, ids = [], []
+    for k, al in enumerate(alpha):
+        here = [m for m in known if m.operating.part[k] == part]  # type: ignore[union-attr,index]
+        if not here:
+            continue
+        low = min(here, key=lambda m: m.operating.total[k])  # type: ignore[union-attr]
+        op = low.operating
+        assert op is not None
+        points.append(
+            Point(op.wind[k], float(rad_s_to_rpm(op.omega[k])), op.aero[k], op.total[k], float(al))
+        )
+        ids.append(low.id)
+    return (points, ids) if points else None
 
 
 def _in_operation(spec: "Spec", mode: "Mode") -> list[Point] | None:
@@ -238,9 +261,13 @@ def judge(
     for name in ("flap1", "edge1"):
         cid = f"blade.stall.{name}"
         mode = by_id.get(f"blade.{name}")
-        if mode is not None and spec.aerodynamics is not None:
-            mode = judged_as(mode, modes)
-        curve = damping_curve(spec, mode, radius) if mode and radius else None
+        coupled = by_part(spec, f"blade.{name}", modes) if spec.aerodynamics else None
+        ids: list[str] | None = None
+        curve: list[Point] | None
+        if coupled is not None:
+            curve, ids = coupled
+        else:
+            curve = damping_curve(spec, mode, radius) if mode and radius else None
         if curve is None:
             need = [
                 n
@@ -263,12 +290,13 @@ def judge(
             out.append(Check(cid, "blade", "info", "not analysed: needs " + ", ".join(need), rule))
             continue
         curves[name] = curve
-        low = min(curve, key=lambda p: p.total)
+        lowest = min(range(len(curve)), key=lambda i: curve[i].total)
+        low = curve[lowest]
         low_aero = min(curve, key=lambda p: p.aero)
         negative = [p for p in curve if p.total < 0]
         where = f"{low.wind:.3g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
-        if mode is not None and mode.id != f"blade.{name}":
-            where += f", as {mode.id}"
+        if ids is not None:
+            where += f", as {ids[lowest]} (the least damped {_KIND[name]} mode there)"
         status: Status
         if negative:
             status = "fail"
