@@ -309,16 +309,17 @@ def in_operation(
     sch = sec.schedule
     cpl = coupled(spec, sec)
     index = {n: j for j, n in enumerate(cpl.names)} if cpl else {}
+    by_id = {m.id: m for ms in built.values() for m in ms}
     shift = 0.0
     out: dict[str, list[Mode]] = {}
-    skipped: list[str] = []
+    skipped: dict[str, list[str]] = {}  # why not → modes
     for sub, modes in built.items():
         done = []
         for m in modes:
-            aero, source = _aerodynamic(spec, m, sec, cpl, index)
+            aero, source = _aerodynamic(spec, m, sec, cpl, index, by_id)
             if aero is None:
                 if m.judged and m.subsystem != "rotor":
-                    skipped.append(m.id)
+                    skipped.setdefault(source, []).append(m.id)
                 done.append(m)
                 continue
             if m.id in index and cpl is not None:  # how far |λ| departs from the judged curve
@@ -365,36 +366,85 @@ def in_operation(
             + ", ".join(named)
             + "."
         )
-    if skipped:
+    for why, ids in skipped.items():
         notes.append(
-            "No aerodynamic damping for " + ", ".join(skipped) + " (no model of it: the "
-            "coupled model has the aerodynamics of every mode it holds): judged with the "
+            f"No aerodynamic damping for {', '.join(ids)} ({why}): judged with the "
             "structural damping."
         )
     return out, tuple(notes)
 
 
+#: Why a mode has no aerodynamic damping (the report says it, mode by mode).
+NO_MODEL = (
+    "no model of it: the coupled model, where there is one, damps every mode it holds; the "
+    "isolated estimates cover the first tower bending and the blades' flap and edge modes"
+)
+NO_TOWER_MASS = (
+    "the isolated estimate of the first tower bending needs the tower head and the tower's "
+    "mass: tower.mass_kg or its structure"
+)
+NO_BLADE_MASS = "the isolated estimate of a blade mode needs the blade's mass and span"
+
+
 def _aerodynamic(
-    spec: Spec, m: Mode, sec: Sections, cpl: Coupled | None, index: Mapping[str, int]
+    spec: Spec,
+    m: Mode,
+    sec: Sections,
+    cpl: Coupled | None,
+    index: Mapping[str, int],
+    by_id: Mapping[str, Mode],
 ) -> tuple[Array | None, str]:
     """A mode's aerodynamic damping ratio at each operating point and the model it came
     from: the coupled model's where it has the mode (judged), else an isolated estimate for
-    blade and first tower modes (also for isolated modes shown beside a coupled one); None
-    where no model gives one."""
+    blade and first tower modes (also for isolated modes shown beside a coupled one, and
+    for a coupled mode the coupled model gives none: fewer than three blades); None, and
+    why not, where no model gives one."""
     if m.id in index and cpl is not None:
         if not m.judged:
             return None, ""
         j = index[m.id]
         aero = cpl.damping_ratio[:, j] - cpl.standstill[j]
         return aero, "coupled model, damped eigenvalues at the operating points"
-    if m.subsystem == "blade":
-        return isolated_blade(spec, m, sec), "isolated blade mode, section damping on its shape"
-    if m.subsystem == "tower":
-        return isolated_tower(spec, m, sec), (
+    if m.subsystem == "system":  # a coupled mode without a damped solve (N < 3: periodic)
+        base = by_id.get(m.replaces or "")
+        if base is None or base.subsystem not in ("blade", "tower"):
+            return None, _periodic(spec)
+        aero, why = _isolated(spec, base, sec)
+        if aero is None:
+            also = "no isolated estimate covers it either" if why == NO_MODEL else why
+            return None, f"{_periodic(spec)}; {also}"
+        # the same modal damping coefficient at this mode's frequency: ζ ∝ 1/ω
+        omega = sec.schedule.solution.omega
+        aero = aero * base.frequency_at(omega) / m.frequency_at(omega)
+        return aero, (
+            f"isolated estimate of {base.id} at this mode's frequency ({_periodic(spec)})"
+        )
+    return _isolated(spec, m, sec)
+
+
+def _isolated(spec: Spec, m: Mode, sec: Sections) -> tuple[Array | None, str]:
+    if m.subsystem == "blade" and m.id.split(".")[1].rstrip("0123456789") in ("flap", "edge"):
+        aero = isolated_blade(spec, m, sec)
+        if aero is None:
+            return None, NO_BLADE_MASS
+        return aero, "isolated blade mode, section damping on its shape"
+    if m.subsystem == "tower" and m.id in ("tower.fa1", "tower.ss1"):
+        aero = isolated_tower(spec, m, sec)
+        if aero is None:
+            return None, NO_TOWER_MASS
+        return aero, (
             "isolated tower mode: the rotor's damping of the hub's translation on the head + "
             "33/140 of the tower (tilt and blade flexibility left out: low)"
         )
-    return None, ""
+    return None, NO_MODEL
+
+
+def _periodic(spec: Spec) -> str:
+    n = spec.rotor.blades
+    return (
+        f"the coupled model of a {n}-bladed rotor has periodic coefficients: its damped "
+        "modes in operation are not computed"
+    )
 
 
 def _statement(spec: Spec, sch: bem.Schedule) -> str:

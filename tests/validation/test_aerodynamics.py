@@ -19,6 +19,7 @@ Sources of the expected numbers:
 """
 
 import math
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -347,3 +348,35 @@ def test_stall_checks_judge_modes_by_where_their_energy_sits(iea15):
     assert flap.numbers["min_total_damping_ratio"] > 0.25
     assert edge.numbers["min_total_damping_ratio"] < 0.05
     assert "the least damped flapwise mode there" in flap.message
+
+
+def test_a_two_bladed_rotors_coupled_modes_take_the_isolated_estimates(shared: Path, tmp_path):
+    """Fewer than three blades: the coupled equations have periodic coefficients, so no
+    damped coupled modes are solved in operation. A coupled mode that stands for an isolated
+    one with an estimate (first tower bending, blade flap and edge) takes that estimate at
+    its own frequency (the same modal damping coefficient: ζ ∝ 1/ω) — before, it was judged
+    with 1 % structural damping beside a fore-aft rotor damping of several per cent
+    (Hau 7.5.1); the others are listed with the reason. The NREL 5-MW deck set with two
+    blades (an edit of NumBl)."""
+    folder = tmp_path / "two"
+    shutil.copytree(shared / "reference/NREL5MW", folder)
+    deck = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    text = deck.read_text()
+    assert "          3   NumBl" in text
+    deck.write_text(text.replace("          3   NumBl", "          2   NumBl"))
+    report = audit.run(load(folder / "NREL-5MW.fst"))
+    modes = {m.id: m for m in report.modes}
+    coupled, isolated = modes["system.tower.fa1"], modes["tower.fa1"]
+    assert coupled.operating is not None and isolated.operating is not None
+    assert "isolated estimate of tower.fa1" in coupled.operating.source
+    omega = np.asarray(coupled.operating.omega)
+    expected = (
+        np.asarray(isolated.operating.aero)
+        * isolated.frequency_at(omega)
+        / coupled.frequency_at(omega)
+    )
+    np.testing.assert_allclose(coupled.operating.aero, expected, rtol=1e-12)
+    assert min(coupled.operating.aero) > 0.005 and 0.02 < max(coupled.operating.aero) < 0.2
+    flap = [m for m in report.modes if m.id.startswith("system.blade.flap1")]
+    assert flap and all(m.operating is not None for m in flap)
+    assert any("2-bladed rotor has periodic coefficients" in a for a in report.assumptions)
