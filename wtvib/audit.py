@@ -324,7 +324,7 @@ def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, l
                 m,
                 superseded_by=replaced.get(m.id),
                 damping_ratio=damping.ratio if m.damping_ratio is None else m.damping_ratio,
-                damping_source=damping.source if m.damping_ratio is None else None,
+                damping_source=damping.source if m.damping_ratio is None else m.damping_source,
                 band_hz=m.band_hz or _band_of(m, stands_for.get(m.id)),
             )
             for m in built[sub.NAME]
