@@ -77,3 +77,18 @@ def test_a_drive_train_damped_past_critical_is_one_line(tmp_path):
     data["drivetrain"]["shafts"][2]["damping_nms_rad"] = 1.0e9
     with pytest.raises(ModalError, match=r"no oscillatory mode at .* power"):
         audit.run(spec.from_data(data))
+
+
+def test_the_dampers_add_to_the_trains_material_damping():
+    """The Aeroman's induction generator damps its first grid mode heavily (ζ ≈ 0.26) and
+    its third hardly (2e-5, the generator barely moves in it): that mode keeps the train's
+    material damping (the assumed 0.02) with the dampers' part on top — it was judged with
+    the 2e-5 alone, a DAF of 22,000 at a crossing."""
+    s = spec.load(TURBINES / "aeroman.yaml")
+    default = drivetrain.default_damping(s).ratio
+    modes = {m.id: m for m in audit.run(s).modes if m.subsystem == "drivetrain"}
+    assert all(m.damping_ratio is not None and m.damping_ratio >= default for m in modes.values())
+    third = modes["drivetrain.grid.3"]
+    assert third.damping_ratio is not None and default < third.damping_ratio < default + 1e-3
+    assert third.damping_source is not None and "dampers" in third.damping_source
+    assert modes["drivetrain.grid.1"].damping_ratio > 0.25  # type: ignore[operator]

@@ -567,12 +567,17 @@ def _assumptions(
             f"the highest steady speed ({speed.overspeed:.3g} rpm) is checked."
         )
     for sub in SUBSYSTEMS:
-        ids = [m.id for m in modes if m.subsystem == sub.NAME and m.damping_source]
         damping = sub.default_damping(spec)
-        if ids and damping.assumed:  # an assumption is stated only when it was made
+        mine = [m for m in modes if m.subsystem == sub.NAME and m.damping_source]
+        alone = [m.id for m in mine if m.damping_ratio == damping.ratio]
+        added = [m.id for m in mine if m.damping_ratio != damping.ratio]
+        if mine and damping.assumed:  # an assumption is stated only when it was made
+            parts = [f"for {', '.join(alone)}"] if alone else []
+            if added:
+                parts.append(f"added to what the dampers give for {', '.join(added)}")
             out.append(
-                f"{sub.NAME}: damping ratio {damping.ratio:.3g} {damping.source} for "
-                f"{', '.join(ids)}."
+                f"{sub.NAME}: damping ratio {damping.ratio:.3g} {damping.source} "
+                f"{'; '.join(parts)}."
             )
     stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:

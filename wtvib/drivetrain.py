@@ -261,11 +261,17 @@ def edge_frequency(spec: Spec, blade_modes: list[Mode]) -> float | None:
     return next((m.frequency_hz for m in blade_modes if m.id == "blade.edge1"), None)
 
 
+#: A mode whose damping ratio from the train's dampers is below this has none worth stating:
+#: its damping ratio is the train's material damping alone.
+DAMPERS_FLOOR = 1e-6
+
+
 def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
     """Drive-train modes per condition (ids ``drivetrain.<condition>.<k>``)."""
     if not spec.drivetrain.chain:
         return _given(spec)
     chain = reduce(spec, edge_frequency(spec, blade_modes or []))
+    material = default_damping(spec)
     out: list[Mode] = []
     for condition in conditions(spec):
         m, k, d = system(chain, spec, condition)
@@ -273,7 +279,11 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
         names = chain.names[: m.shape[0]]
         positions = tuple(float(i) for i in range(len(names)))
         for j, f in enumerate(res.frequency_hz, start=1):
+            # the dampers' part (generator, couplings, shafts) adds to the train's material
+            # damping: a mode that barely moves the generator must not lose it to the
+            # generator's 2e-5 (Aeroman, grid: its third mode)
             zeta = float(res.damping_ratio[j - 1])
+            dampers = zeta if zeta > DAMPERS_FLOOR else 0.0
             out.append(
                 Mode(
                     id=f"drivetrain.{condition}.{j}",
@@ -281,7 +291,10 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
                     description=f"{ordinal(j)} drive-train torsion, {CONDITIONS[condition]}: "
                     f"{describe(res.shapes[:, j - 1], names, np.diag(m), condition)} (computed)",
                     frequency_hz=float(f),
-                    damping_ratio=zeta if zeta > 1e-6 else None,
+                    damping_ratio=material.ratio + dampers if dampers else None,
+                    damping_source=f"{material.source}, plus {dampers:.3g} from the dampers"
+                    if dampers
+                    else None,
                     shape=Shape(positions, tuple(res.shapes[:, j - 1].tolist()), names),
                     regimes=regimes(spec, condition),
                     condition=CONDITIONS[condition],
