@@ -46,3 +46,36 @@ def test_the_headline_says_where_imported_speeds_come_from(shared):
     assert "IEA-3.4-130-RWT.yaml" in doc["operation"]["source"]
     doc = audit.run(load(path, head_mass=1.5e5, rpm=(3.8, 11.75))).to_dict()
     assert doc["operation"]["source"] == "the command line (--rpm/--rated)"
+
+
+def test_a_deck_on_a_platform_says_its_tower_is_clamped_at_its_base(shared):
+    """The IEA-15 monopile deck enables ElastoDyn's platform degrees of freedom (SubDyn
+    holds the pile, which wtvib does not read): its tower, clamped at TowerBsHt, has a first
+    bending of 0.23 Hz where tower and monopile have 0.17–0.18 (Gaertner et al. 2020) — the
+    headline says the frequencies are upper bounds; it said so in an assumption only."""
+    deck = "reference/IEA15/IEA-15-240-RWT-Monopile/IEA-15-240-RWT-Monopile_ElastoDyn.dat"
+    spec = importers.load(shared / deck, rpm=(5.0, 7.56))
+    said = [w for w in spec.warnings if w.startswith("tower.foundation")]
+    assert said and "PtfmSgDOF" in said[0] and "TowerBsHt = 15 m" in said[0]
+    assert "upper bounds" in said[0]
+    onshore = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
+    assert not [w for w in onshore.warnings if w.startswith("tower.foundation")]
+
+
+def test_a_floating_deck_set_is_refused_unless_clamped(shared, tmp_path):
+    """Moorings in the .fst (CompMooring > 0): a floating turbine, whose tower modes its
+    platform sets — refused as a floating windIO file is, and audited clamped on request
+    with the headline saying the platform's modes are missing."""
+    import shutil
+
+    folder = tmp_path / "floating"
+    shutil.copytree(shared / "reference/NREL5MW", folder)
+    fst = folder / "NREL-5MW.fst"
+    text = fst.read_text()
+    assert "          0   CompMooring" in text
+    fst.write_text(text.replace("          0   CompMooring", "          3   CompMooring"))
+    with pytest.raises(SpecError, match=r"floating turbine \(moorings \(CompMooring\)\)"):
+        importers.load(fst)
+    spec = importers.load(fst, clamped_base=True)
+    said = [w for w in spec.warnings if w.startswith("tower.foundation")]
+    assert said and "moorings' own modes are missing" in said[0]

@@ -77,8 +77,9 @@ ClampedOption = Annotated[
     bool,
     typer.Option(
         "--clamped-base",
-        help="Audit a floating windIO turbine's tower as if clamped at its base (said in the "
-        "report's headline; platform and moorings are not modelled).",
+        help="Audit a floating turbine's tower (windIO file or OpenFAST deck set) as if "
+        "clamped at its base (said in the report's headline; platform and moorings are not "
+        "modelled).",
     ),
 ]
 SoilOption = Annotated[

@@ -83,7 +83,7 @@ def to_data(
     elif kind == "elastodyn":
         from . import elastodyn
 
-        data = elastodyn.to_spec_data(p, text)
+        data = elastodyn.to_spec_data(p, text, clamped_base)
     elif kind == "windio":
         from . import windio
 

@@ -117,6 +117,19 @@ class Deck:
             )
         return frac
 
+    def flag(self, key: str) -> bool:
+        """A logical input (True/False), read as Fortran reads one: an optional period, then
+        T or F; an absent key is False."""
+        if key not in self.values:
+            return False
+        raw, line = self.values[key]
+        word = raw.strip('"').lstrip(".").lower()
+        if word[:1] in ("t", "f"):
+            return word[0] == "t"
+        raise SpecError(
+            f"{key} must be True or False (got {raw!r})", line=line, source=str(self.path)
+        )
+
     def whole(self, key: str, low: int = 0) -> int:
         """A count (``NumBl``): a whole number ≥ ``low`` — 2.7 blades is an error, not 2."""
         value = self.num(key)

@@ -163,10 +163,46 @@ def _switch(deck: Deck, key: str, default: int | None = None) -> int:
     return int(value)
 
 
-def to_spec_data(path: Path, text: str) -> dict[str, Any]:
-    """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst."""
+#: ElastoDyn's platform degrees of freedom: any of them on, the tower's base moves.
+PLATFORM_DOFS = ("PtfmSgDOF", "PtfmSwDOF", "PtfmHvDOF", "PtfmRDOF", "PtfmPDOF", "PtfmYDOF")
+
+
+def platform(main: Deck, fst: Deck | None) -> tuple[str, bool] | None:
+    """What the deck set puts under the tower that wtvib does not read — its platform
+    degrees of freedom, the .fst's SubDyn, HydroDyn and mooring modules, FAST v7's
+    PtfmModel — and whether it floats (moorings, or PtfmModel 3); None: a fixed base."""
+    found = [k for k in PLATFORM_DOFS if main.flag(k)]
+    floating = False
+    if fst is not None:
+        for key, name in (("CompSub", "SubDyn"), ("CompHydro", "HydroDyn")):
+            if fst.num(key, default=0) > 0:
+                found.append(f"{name} ({key})")
+        if fst.num("CompMooring", default=0) > 0:
+            found.append("moorings (CompMooring)")
+            floating = True
+    model = main.num("PtfmModel", default=0)  # FAST v7
+    if model >= 2:
+        found.append(f"PtfmModel {model:g}")
+        floating = floating or model >= 3
+    return (", ".join(found), floating) if found else None
+
+
+def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str, Any]:
+    """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst.
+
+    A deck set whose tower stands on a platform (its platform degrees of freedom, SubDyn,
+    HydroDyn or moorings) is audited with the tower clamped at its base, which the report's
+    headline says; a floating one is refused unless ``clamped_base`` asks for that."""
     main, fst, servo = deck_set(path, text)
     path = main.path
+    below = platform(main, fst)
+    if below is not None and below[1] and not clamped_base:
+        raise SpecError(
+            f"a floating turbine ({below[0]}): wtvib has no platform or mooring model, so its "
+            "tower modes cannot be computed; --clamped-base audits the tower as if clamped at "
+            "its base (not the floating system's modes)",
+            source=str(path),
+        )
     tower = parse(_file(main, "TwrFile"))
     blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
@@ -323,8 +359,23 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             operating["note"],
             files,
         ],
-        **({"warnings": [operating["warning"]]} if operating.get("warning") else {}),
     }
+    warnings = [operating["warning"]] if operating.get("warning") else []
+    if below is not None:
+        base = main.num("TowerBsHt", default=0.0)
+        warnings.append(
+            f"tower.foundation: the deck set's tower stands on a platform ({below[0]}), "
+            f"which wtvib does not read: the tower is clamped at its base (TowerBsHt = "
+            f"{base:g} m), so its bending frequencies are upper bounds"
+            + (
+                " and the platform's and moorings' own modes are missing"
+                if below[1]
+                else " (the IEA-15 monopile deck: first fore-aft 0.23 Hz clamped, 0.17–0.18 Hz "
+                "published on its monopile)"
+            )
+        )
+    if warnings:
+        data["warnings"] = warnings
     if torsion is not None:
         data["assumptions"].append(torsion[2])
     if aero is not None:
