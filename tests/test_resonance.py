@@ -212,3 +212,46 @@ def test_two_modes_crossed_alike_are_governed_by_the_less_damped():
         assert all(f.margin == pytest.approx(0.0, abs=1e-9) for f in findings)
         (check,) = resonance_checks(findings, rng, BAND)
         assert check.message.startswith("tower.ss1") and "also: tower.fa1" in check.message
+
+
+def test_two_modes_crossed_with_one_damping_are_governed_by_the_first():
+    """Crossed with the same ζ, both amplify by 1/(2ζ) up to the rounding of their crossing
+    speeds (the IEA-3.4's 6P check went to one mode or the other with the root finder's
+    last digits): the first listed (the lower frequency) governs, whatever the rounding —
+    here each amplification nudged by 1e-13 either way."""
+    from dataclasses import replace
+
+    rng = op([(3.8, 11.75)], 13.5)
+    modes = [
+        Mode(f"tower.{n}", "tower", n, f, 0.01) for n, f in (("fa1", 0.40031), ("ss1", 0.40599))
+    ]
+    findings = [assess(m, harmonic(6), rng, BAND, SEVERITY, 0.01) for m in modes]
+    assert [f.daf for f in findings] == pytest.approx([50.0, 50.0], rel=1e-9)
+    for nudge in (1 - 1e-13, 1 + 1e-13):
+        nudged = [findings[0], replace(findings[1], daf=findings[1].daf * nudge)]
+        (check,) = resonance_checks(nudged, rng, BAND)
+        assert check.numbers["mode"] == "tower.fa1"
+
+
+def test_bisect_solves_a_linear_piece_at_its_first_secant_and_a_curve_to_the_tolerance():
+    """A sampled curve against a line is linear between samples: the first secant is the
+    root, and the next one, not moving, confirms it — three evaluations of f (the ends,
+    then the root) instead of a dozen; a curved function (√x − 0.5, root 0.25, and a cubic
+    with roots at ±1) still converges to 1e-12, as the tolerance asks."""
+    import numpy as np
+
+    from wtvib.resonance import bisect
+
+    calls = []
+
+    def linear(x):  # roots 0.6521 and 1.7617; the first secant's f is rounding, not 0
+        calls.append(len(x))
+        return np.where(x < 1.0, 3.432 * (x - 0.6521), 1.529 * (1.7617 - x))
+
+    got = bisect(linear, np.array([0.0, 1.0]), np.array([0.9, 1.9]))
+    np.testing.assert_allclose(got, [0.6521, 1.7617], rtol=0, atol=1e-15)
+    assert len(calls) == 3
+    curved = bisect(lambda x: np.sqrt(x) - 0.5, np.array([0.0]), np.array([1.0]))
+    np.testing.assert_allclose(curved, [0.25], rtol=0, atol=1e-12)
+    cubic = bisect(lambda x: x**3 - x, np.array([-1.7, 0.4]), np.array([-0.3, 1.9]))
+    np.testing.assert_allclose(cubic, [-1.0, 1.0], rtol=0, atol=1e-12)

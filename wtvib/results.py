@@ -55,7 +55,13 @@ class Sampled:
     hz: tuple[float, ...]
 
     def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
-        return np.interp(np.asarray(omega, dtype=float), self.omega, self.hz)
+        return np.interp(np.asarray(omega, dtype=float), *self._arrays)
+
+    @functools.cached_property
+    def _arrays(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        # the tuples as arrays once: the resonance routine evaluates a curve thousands of
+        # times an audit
+        return np.asarray(self.omega, dtype=float), np.asarray(self.hz, dtype=float)
 
 
 @dataclass(frozen=True)
