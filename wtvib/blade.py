@@ -1,6 +1,7 @@
 """Rotor blades: flap, edge and torsion modes with rotational (centrifugal) stiffening."""
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -142,20 +143,61 @@ def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:
     return beyond[:, None] + (top - x) * 0.5 * (f_here + f_top)
 
 
+#: Standstill modes the finite-element model keeps (:func:`fe_model`): the basis of a sweep
+#: of four modes (RITZ_BLADE each), more than the coupled model's blade basis ever asks.
+STANDSTILL_MODES = 4 * RITZ_BLADE
+
+
+@dataclass(frozen=True)
+class BladeFE:
+    """The cantilevered blade on the default mesh: its matrices (:func:`blade_parts`) and
+    its lowest standstill modes — one eigen-solve, which the blade's rotating sweep and the
+    coupled model's blade basis share."""
+
+    nodes: Array
+    k0: Array
+    geo: Array
+    m_v: Array
+    m: Array
+    standstill: modal.Modes  # the lowest STANDSTILL_MODES (or all the mesh has)
+
+
+def fe_model(spec: Spec) -> BladeFE:
+    """The spec's blade model (computed once per spec object)."""
+    s = spec.blade.structure
+    assert s is not None
+    out: BladeFE = spec.derived(("blade.fe", 0), s, lambda: _fe_model(s, DEFAULT_ELEMENTS))
+    return out
+
+
+def _fe_model(s: BladeStructure, elements: int, modes: int = STANDSTILL_MODES) -> BladeFE:
+    nodes = beam.mesh(np.asarray(s.span_m, dtype=float), elements)
+    k0, geo, m_v, m = blade_parts(s, nodes)
+    return BladeFE(nodes, k0, geo, m_v, m, modal.solve(k0, m, min(modes, len(k0))))
+
+
 def rotating_modes(
-    s: BladeStructure, speeds: Array, elements: int = DEFAULT_ELEMENTS, count: int = 4
+    s: BladeStructure,
+    speeds: Array,
+    elements: int = DEFAULT_ELEMENTS,
+    count: int = 4,
+    fe: BladeFE | None = None,
 ) -> tuple[list[str], Array, Array, Array]:
-    """Bending modes over rotor speeds, followed by shape (MAC), named at standstill.
+    """Bending modes over rotor speeds, followed by shape (MAC), named at standstill;
+    ``fe``: the blade's model on ``elements`` already built (:func:`fe_model`).
 
     Returns names (``flap1``, ``edge1``, …), frequencies [Hz] of shape (speeds, count), the
     node positions and the standstill shapes.
     """
     nodes = beam.mesh(np.asarray(s.span_m, dtype=float), elements)
-    k0, geo, m_v, m = blade_parts(s, nodes)
+    need = min(RITZ_BLADE * count, 4 * len(nodes) - 4)  # the clamped root's 4 dofs out
+    if fe is None or not np.array_equal(fe.nodes, nodes) or fe.standstill.shapes.shape[1] < need:
+        fe = _fe_model(s, elements, need)
+    k0, geo, m_v, m = fe.k0, fe.geo, fe.m_v, fe.m
     # the rotating problems in the basis of the lowest standstill modes (Rayleigh–Ritz):
     # K(Ω) = K₀ + Ω²(G − M_v) is linear in Ω², so every speed is one small eigenproblem,
     # all solved as one stack (issue 20)
-    basis = modal.solve(k0, m, min(RITZ_BLADE * count, k0.shape[0])).shapes
+    basis = fe.standstill.shapes[:, :need]
     k_r, g_r, m_r = (basis.T @ a @ basis for a in (k0, geo - m_v, m))
     first = modal.solve(k_r, m_r, count)
     stack = modal.solve_stacked(
@@ -207,7 +249,7 @@ def structural_modes(spec: Spec) -> list[Mode]:
     assert s is not None
     top = float(rpm_to_rad_s(spec.rotor.speed.overspeed)) * 1.1
     speeds = np.linspace(0.0, top, SPEED_SAMPLES)
-    names, freqs, nodes, shapes = rotating_modes(s, speeds)
+    names, freqs, nodes, shapes = rotating_modes(s, speeds, fe=fe_model(spec))
     out = []
     for j, name in enumerate(names):
         if name not in ("flap1", "flap2", "edge1", "edge2"):

@@ -122,18 +122,19 @@ def blade_modes(spec: Spec, count: int) -> BladeModes:
     s = spec.blade.structure
     assert s is not None
     out: BladeModes = spec.derived(
-        ("coupled.blade_modes", count), s, lambda: _blade_modes(s, count)
+        ("coupled.blade_modes", count), s, lambda: _blade_modes(s, blade.fe_model(spec), count)
     )
     return out
 
 
-def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
+def _blade_modes(s: BladeStructure, fe: "blade.BladeFE", count: int) -> BladeModes:
     points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
     nodes, b = points.nodes, points.basis
-    # the tension's geometric stiffness only: the kinematics give the in-plane softening
-    k0, geo, _, m0 = blade.blade_parts(s, nodes)
-    res = modal.solve(k0, m0, count)
-    phi = res.shapes
+    # the tension's geometric stiffness only: the kinematics give the in-plane softening;
+    # the standstill modes are the blade model's own (the same mesh: rigid.rotor_points)
+    assert np.array_equal(nodes, fe.nodes)
+    geo = fe.geo
+    frequency_hz, phi = fe.standstill.frequency_hz[:count], fe.standstill.shapes[:, :count]
     full = np.vstack([np.zeros((4, phi.shape[1])), phi])
     n_el = len(nodes) - 1
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
@@ -150,7 +151,7 @@ def _blade_modes(s: BladeStructure, count: int) -> BladeModes:
         edge = np.vstack([edge, full[-2]])
     return BladeModes(
         tuple(blade.plane_names(phi)),
-        2 * np.pi * res.frequency_hz,
+        2 * np.pi * frequency_hz,
         phi.T @ geo @ phi,
         radius,
         mass,
