@@ -83,6 +83,22 @@ def test_the_good_spec_loads(write_spec):
     assert s.rotor.speed.steady_rpm == [(10.0, 20.0)]
 
 
+def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
+    """The README's ``quick_pass_rpm: [[10, 11]]``: YAML gives lists, which the strict
+    schema refused as "not a valid tuple" — the documented field could not be used."""
+    from wtvib.excitation import operating_range
+    from wtvib.units import rpm_to_rad_s
+
+    good = GOOD.replace("max_rpm: 20", "max_rpm: 20\n    quick_pass_rpm: [[12, 13.5]]")
+    s = spec.load(write_spec(good))
+    band = operating_range(s.rotor.speed).quick_pass
+    assert band == ((float(rpm_to_rad_s(12)), float(rpm_to_rad_s(13.5))),)
+    err = error_of(write_spec, good.replace("[[12, 13.5]]", "[[12]]"))
+    assert err.path == "rotor.speed.quick_pass_rpm[0]" and "at least 2 items" in err.message
+    err = error_of(write_spec, good.replace("[[12, 13.5]]", "[['12', 13.5]]"))
+    assert err.path == "rotor.speed.quick_pass_rpm[0][0]" and "valid number" in err.message
+
+
 @pytest.mark.parametrize(
     ("content", "words"),
     [

@@ -45,7 +45,7 @@ class OperatingRange:
 def operating_range(speed: RotorSpeed) -> OperatingRange:
     """The operating range of a spec's rotor speed, converted to rad/s."""
 
-    def conv(pairs: Sequence[tuple[float, float]]) -> tuple[tuple[float, float], ...]:
+    def conv(pairs: Sequence[Sequence[float]]) -> tuple[tuple[float, float], ...]:
         return tuple((float(rpm_to_rad_s(a)), float(rpm_to_rad_s(b))) for a, b in pairs)
 
     return OperatingRange(

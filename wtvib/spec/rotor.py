@@ -41,7 +41,8 @@ class RotorSpeed(_Strict):
         description="Where the operating speeds come from (an importer's or the command "
         "line's statement, shown beside the speeds in the headline).",
     )
-    quick_pass_rpm: list[tuple[Rpm, Rpm]] = Field(
+    # pairs as lists: YAML has no tuples, and a strict tuple refuses every list it is given
+    quick_pass_rpm: list[Annotated[list[Rpm], Field(min_length=2, max_length=2)]] = Field(
         default_factory=list,
         description="Speed bands [low, high] the controller passes through quickly without "
         "steady operation (variable speed). [rpm]",
