@@ -79,3 +79,30 @@ def test_a_floating_deck_set_is_refused_unless_clamped(shared, tmp_path):
     spec = importers.load(fst, clamped_base=True)
     said = [w for w in spec.warnings if w.startswith("tower.foundation")]
     assert said and "moorings' own modes are missing" in said[0]
+
+
+def test_a_deck_whose_blades_differ_says_every_blade_is_modelled_as_the_first(shared, tmp_path):
+    """Blade 2's file with its mass adjusted (AdjBlMs 1.04536 → 1.10): wtvib models every
+    blade as blade 1's, which the headline now says; a second file identical to the first
+    says nothing."""
+    import shutil
+
+    folder = tmp_path / "blades"
+    shutil.copytree(shared / "reference/NREL5MW", folder)
+    deck = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    first = folder / "NRELOffshrBsline5MW_Blade.dat"
+    second = folder / "blade2.dat"
+    second.write_text(first.read_text())
+    text = deck.read_text()
+    line = '"NRELOffshrBsline5MW_Blade.dat"    BldFile(2)'
+    assert line in text
+    deck.write_text(text.replace(line, '"blade2.dat"    BldFile(2)'))
+
+    def said() -> list[str]:
+        return [w for w in importers.load(folder / "NREL-5MW.fst").warnings if "blades differ" in w]
+
+    assert said() == []  # the same blade in another file
+    blade = second.read_text()
+    assert "    1.04536   AdjBlMs" in blade
+    second.write_text(blade.replace("    1.04536   AdjBlMs", "    1.10   AdjBlMs"))
+    assert said() and "BldFile(2) = blade2.dat" in said()[0]

@@ -187,6 +187,41 @@ def platform(main: Deck, fst: Deck | None) -> tuple[str, bool] | None:
     return (", ".join(found), floating) if found else None
 
 
+def _same(a: Deck, b: Deck) -> bool:
+    """Two member files with the same inputs and tables (line numbers aside)."""
+    values = {k: v for k, (v, _) in a.values.items()} == {k: v for k, (v, _) in b.values.items()}
+    return (
+        values
+        and a.tables.keys() == b.tables.keys()
+        and all(
+            a.tables[k][0] == b.tables[k][0]
+            and np.array_equal(a.tables[k][1], b.tables[k][1], equal_nan=True)
+            for k in a.tables
+        )
+    )
+
+
+def _blades_differ(main: Deck, first: Deck, blades: int) -> list[str]:
+    """A warning where the deck names blade files whose tables differ from blade 1's: every
+    blade is modelled as blade 1 (a rotor of unlike blades is out of balance — a 1P load
+    wtvib does not size)."""
+    other = []
+    for b in range(2, blades + 1):
+        keys = (f"BldFile({b})", f"BldFile{b}")
+        if not any(k in main.values for k in keys):
+            continue
+        path = _file(main, *keys)
+        if path != first.path and not _same(parse(path), first):
+            other.append(f"{keys[0]} = {path.name}")
+    if not other:
+        return []
+    return [
+        f"rotor: the deck's blades differ ({', '.join(other)} against BldFile(1) = "
+        f"{first.path.name}): every blade is modelled as blade 1 — an unbalanced rotor's 1P "
+        "load is not sized"
+    ]
+
+
 def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str, Any]:
     """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst.
 
@@ -361,6 +396,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
         ],
     }
     warnings = [operating["warning"]] if operating.get("warning") else []
+    warnings += _blades_differ(main, blade, n_blades)
     if below is not None:
         base = main.num("TowerBsHt", default=0.0)
         warnings.append(
