@@ -165,3 +165,56 @@ def test_a_windio_file_is_checked_against_the_windio_schema_first(tmp_path, edit
     assert result.exit_code == 2
     line = result.output.strip().splitlines()[-1]
     assert "bad.yaml:" in line and where in line and message in line and "schema" in line
+
+
+def _as_windio_2_0(doc: dict) -> dict:  # type: ignore[type-arg]
+    """The IEA-15 2.1 example with its control block as windIO 2.0 has it: the converter
+    that takes 2.0 to 2.1 (windIO/converters/windIO2windIO.py, v2p0_to_v2p1) moves
+    torque.VS_minspd/VS_maxspd (rpm) to min/max_rotor_speed and drops the torque, pitch and
+    supervisory blocks — undone here, as WISDEM's 2.0 examples carry them."""
+    ctl = doc["control"]
+    doc["windIO_version"] = "2.0"
+    doc["control"] = {
+        "supervisory": {"Vin": 3.0, "Vout": 25.0},
+        "pitch": {"min_pitch": 1.5, "max_pitch": ctl["max_pitch_limit"]},  # degrees in 2.0
+        "torque": {
+            "tsr": ctl["optimal_tsr"],
+            "VS_minspd": ctl["min_rotor_speed"],
+            "VS_maxspd": ctl["rated_rotor_speed"],
+        },
+    }
+    for key in ("cut_in_wind_speed", "cut_out_wind_speed"):
+        doc["assembly"].pop(key)
+    return doc
+
+
+def test_a_windio_2_0_control_block_is_read_in_rpm_and_degrees(tmp_path):
+    """windIO 2.0 (WISDEM's examples: the NREL 5-MW with VS_maxspd 12.1) gives its speeds
+    in rpm and its pitch in degrees in 1.x's blocks; read as 1.x's rad/s, the IEA-15's
+    5–7.56 rpm became 48–72 rpm (the NREL 5-MW's 115.5, flagged only as suspicious)."""
+    import yaml
+
+    from wtvib import importers
+
+    p = tmp_path / "v20.yaml"
+    p.write_text(yaml.safe_dump(_as_windio_2_0(iea15()), sort_keys=False))
+    spec = importers.load(p)
+    speed = spec.rotor.speed
+    assert speed.min_rpm == pytest.approx(5.0, rel=1e-5)
+    assert speed.max_rpm == pytest.approx(7.56, rel=1e-5)
+    aero = spec.aerodynamics
+    assert aero is not None
+    assert aero.control.fine_pitch_deg == pytest.approx(1.5)
+    assert aero.control.tip_speed_ratio == pytest.approx(9.0)
+    assert aero.control.cut_in_wind_m_s == 3.0 and aero.control.cut_out_wind_m_s == 25.0
+    assert speed.source == "control.torque.VS_minspd/VS_maxspd (rpm) of v20.yaml"
+
+
+def test_a_windio_file_without_a_hub_mass_says_the_head_lacks_it(tmp_path):
+    """WISDEM's 2.0 NREL 5-MW gives the nacelle (240 t) and no hub: the head was assembled
+    without the hub's 56.8 t (16 %) without a word."""
+    doc = iea15()
+    doc["components"]["hub"].pop("elastic_properties")
+    report = load_mutated(tmp_path, doc)
+    assert any(w.startswith("components.hub: no elastic_properties.mass") for w in report.warnings)
+    assert not any("components.hub" in w for w in load_mutated(tmp_path, iea15()).warnings)

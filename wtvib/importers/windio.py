@@ -5,7 +5,10 @@ The two major versions differ: 2.x has ``components.tower.outer_shape`` and
 under ``control``; 1.x has ``outer_shape_bem`` / ``internal_structure_2d_fem``, blade
 properties under ``elastic_properties_mb.six_x_six`` (upper-triangle 6×6 per station) and
 speeds in rad/s under ``control.torque`` or ``control.supervisory``, and no hub or nacelle
-masses (WISDEM computes those), which must then be given with ``head_mass``.
+masses (WISDEM computes those), which must then be given with ``head_mass``. windIO 2.0
+(WISDEM's examples) has 2.x's geometry with 1.x's control blocks, their speeds in rpm and
+pitch in degrees (windIO's converter, ``converters/windIO2windIO.py``), and may lack the
+masses too.
 
 References
 ----------
@@ -340,18 +343,27 @@ class _Reader:
                 speed["overspeed_rpm"] = top
                 note += f"; control.max_rotor_speed {top:.3g} rpm checked as the overspeed limit"
             return speed, note + "."
-        to_rpm = 60.0 / (2.0 * math.pi)
-        for block, lo_key, hi_key in (
-            ("torque", "VS_minspd", "VS_maxspd"),
-            ("supervisory", "minOmega", "maxOmega"),
+        # the control blocks of 1.x, in rad/s — and of 2.0, whose geometry is 2.x's and whose
+        # VS_minspd/VS_maxspd are rpm (windIO's own converter, converters/windIO2windIO.py,
+        # v1p0_to_v2p0.convert_controls: "from rad/s to rpm"; WISDEM's 2.0 examples: the
+        # NREL 5-MW's 6.9/12.1)
+        per_rad_s = 60.0 / (2.0 * math.pi)
+        for block, lo_key, hi_key, factor, unit in (
+            (
+                "torque",
+                "VS_minspd",
+                "VS_maxspd",
+                *((1.0, "rpm") if self.v2 else (per_rad_s, "rad/s")),
+            ),
+            ("supervisory", "minOmega", "maxOmega", per_rad_s, "rad/s"),
         ):
             sub = ctl.get(block, {})
             lo, hi = sub.get(lo_key), sub.get(hi_key)
             if lo and hi and 0 < lo < hi:
                 return (
-                    {"min_rpm": lo * to_rpm, "max_rpm": hi * to_rpm},
-                    f"Operating range from control.{block}.{lo_key}/{hi_key} (rad/s): "
-                    f"{lo * to_rpm:.3g}–{hi * to_rpm:.3g} rpm.",
+                    {"min_rpm": lo * factor, "max_rpm": hi * factor},
+                    f"Operating range from control.{block}.{lo_key}/{hi_key} ({unit}): "
+                    f"{lo * factor:.3g}–{hi * factor:.3g} rpm.",
                 )
         raise self.fail(
             "no rotor speed range in 'control' (min/rated_rotor_speed, "
@@ -530,6 +542,13 @@ class _Reader:
         nacelle 1,565 t against 821 t in the turbine's OpenFAST deck)."""
         dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
         out = []
+        hub = self.c.get("hub")
+        if not (isinstance(hub, dict) and "mass" in (hub.get("elastic_properties") or {})):
+            out.append(
+                "components.hub: no elastic_properties.mass — the tower head is assembled "
+                "without the hub (16 % of the NREL 5-MW's: 56.8 of 350 t), so its tower "
+                "frequencies come out high; give the hub's mass, or the head's with --head-mass"
+            )
         for name in ("generator", "gearbox", "bedplate"):
             part = dt.get(name) if isinstance(dt, dict) else None
             if not isinstance(part, dict):
@@ -618,8 +637,9 @@ class _Reader:
                 parts.append((name, m, float(loc[0]), float(loc[2]), 0.0, 0.0, 0.0))
         if not any(p[0] == "nacelle" for p in parts):
             raise self.fail(
-                "the file gives no nacelle/hub masses (windIO 1.x leaves them to WISDEM); give "
-                "the tower-head mass with --head-mass KG, or convert and edit tower_head"
+                "the file gives no nacelle/hub masses (windIO files may leave them to WISDEM, "
+                "which sizes them); give the tower-head mass with --head-mass KG, or convert "
+                "and edit tower_head"
             )
         j_polar = 0.0
         if blade_mass and structure:

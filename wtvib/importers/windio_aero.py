@@ -6,7 +6,8 @@ their spanwise positions), ``airfoils[].polars[0].re_sets[0]`` (α in degrees),
 ``cut_out_wind_speed``. windIO 1.x: ``outer_shape_bem`` (twist in radians,
 ``airfoil_position``), ``airfoils[].polars[0].c_l/c_d`` (α in radians),
 ``control.torque.tsr``, ``control.pitch.min_pitch`` (radians), ``control.supervisory.Vin/
-Vout``. Between two named aerofoils a station's polar is blended linearly in span position
+Vout``; windIO 2.0 has 2.x's geometry and 1.x's control blocks, the pitch in degrees.
+Between two named aerofoils a station's polar is blended linearly in span position
 (as WISDEM does); stations sit at hub radius + span fraction × blade length (precone and
 prebend neglected). windIO schema documentation (windio.readthedocs.io).
 """
@@ -106,15 +107,19 @@ def aerodynamics(
         names.append(name)
     ctl = d.get("control", {})
     asm = d.get("assembly", {})
-    if v2:
-        tsr = ctl.get("optimal_tsr")
-        fine = float(ctl.get("fine_pitch", 0.0))
-        cut_in, cut_out = asm.get("cut_in_wind_speed"), asm.get("cut_out_wind_speed")
+    sup = ctl.get("supervisory", {})
+    # 2.1 names them at the top of control (degrees); 1.x and 2.0 in its torque, pitch and
+    # supervisory blocks — the pitch in radians in 1.x, in degrees in 2.0 (windIO's
+    # converter, converters/windIO2windIO.py, v1p0_to_v2p0.convert_controls)
+    tsr_key = "control.optimal_tsr" if "optimal_tsr" in ctl else "control.torque.tsr"
+    tsr = ctl.get("optimal_tsr", ctl.get("torque", {}).get("tsr"))
+    if "fine_pitch" in ctl:
+        fine = float(ctl["fine_pitch"])
     else:
-        tsr = ctl.get("torque", {}).get("tsr")
-        fine = math.degrees(float(ctl.get("pitch", {}).get("min_pitch", 0.0)))
-        sup = ctl.get("supervisory", {})
-        cut_in, cut_out = sup.get("Vin"), sup.get("Vout")
+        raw = float(ctl.get("pitch", {}).get("min_pitch", 0.0))
+        fine = raw if v2 else math.degrees(raw)
+    cut_in = asm.get("cut_in_wind_speed", sup.get("Vin"))
+    cut_out = asm.get("cut_out_wind_speed", sup.get("Vout"))
     control: dict[str, Any] = {"regulation": "pitch", "fine_pitch_deg": fine}
     table = ctl.get("min_pitch_table") if v2 else None
     if table and len(table.get("wind_speed", [])) >= 2:
@@ -124,7 +129,6 @@ def aerodynamics(
         }
     if tsr:
         control["tip_speed_ratio"] = float(tsr)
-    tsr_key = "control.optimal_tsr" if v2 else "control.torque.tsr"
     if cut_in:
         control["cut_in_wind_m_s"] = float(cut_in)
     if cut_out:
