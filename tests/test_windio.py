@@ -218,3 +218,22 @@ def test_a_windio_file_without_a_hub_mass_says_the_head_lacks_it(tmp_path):
     report = load_mutated(tmp_path, doc)
     assert any(w.startswith("components.hub: no elastic_properties.mass") for w in report.warnings)
     assert not any("components.hub" in w for w in load_mutated(tmp_path, iea15()).warnings)
+
+
+def test_a_windio_file_without_a_speed_range_takes_the_command_lines(tmp_path):
+    """WISDEM's IEA-3.4 and BAR examples give no usable range (VS_minspd 0): the error asks
+    for --rpm, and with --rpm the file was refused all the same, by the same line."""
+    import yaml
+
+    from wtvib import importers
+
+    doc = iea15()
+    for key in ("min_rotor_speed", "rated_rotor_speed", "max_rotor_speed"):
+        doc["control"].pop(key)
+    p = tmp_path / "nospeed.yaml"
+    p.write_text(yaml.safe_dump(doc, sort_keys=False))
+    with pytest.raises(SpecError, match="give --rpm MIN:MAX"):
+        importers.load(p)
+    spec = importers.load(p, rpm=(5.0, 7.56))
+    assert spec.rotor.speed.steady_rpm == [(5.0, 7.56)]
+    assert spec.rotor.speed.source == "the command line (--rpm/--rated)"

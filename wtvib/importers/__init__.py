@@ -87,7 +87,7 @@ def to_data(
     elif kind == "windio":
         from . import windio
 
-        data = windio.to_spec_data(p, text, head_mass, clamped_base, _soil_profile(soil))
+        data = windio.to_spec_data(p, text, head_mass, clamped_base, _soil_profile(soil), rpm)
     else:
         doc = load_document(p, text)
         data = doc.data

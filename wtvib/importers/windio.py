@@ -44,15 +44,17 @@ def to_spec_data(
     head_mass: float | None = None,
     clamped_base: bool = False,
     soil: dict[str, Any] | None = None,
+    rpm: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
-    """wtvib spec data from a windIO turbine file (see :func:`_to_spec_data`).
+    """wtvib spec data from a windIO turbine file (see :func:`_to_spec_data`); ``rpm``: the
+    operating range the command line gives (the file's is then not needed).
 
     A field wtvib needs that is missing is one line naming its path; anything else a
     hostile file can do to the reader (a number where a mapping goes, tables of unequal
     length) is one line naming the file and what failed — never a traceback.
     """
     try:
-        return _to_spec_data(path, text, head_mass, clamped_base, soil)
+        return _to_spec_data(path, text, head_mass, clamped_base, soil, rpm)
     except SpecError:
         raise
     except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
@@ -70,6 +72,7 @@ def _to_spec_data(
     head_mass: float | None = None,
     clamped_base: bool = False,
     soil: dict[str, Any] | None = None,
+    rpm: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file.
 
@@ -134,10 +137,13 @@ def _to_spec_data(
             f"assembly.number_of_blades must be a whole number ≥ 1 (got {blades!r})",
             source=str(path),
         )
-    found_speed, speed_note = reader.speed()
-    notes.append(speed_note)
-    where = speed_note.split(":")[0].removeprefix("Operating range from ")
-    speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
+    if rpm is None:
+        found_speed, speed_note = reader.speed()
+        notes.append(speed_note)
+        where = speed_note.split(":")[0].removeprefix("Operating range from ")
+        speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
+    else:  # the command line's (set by the caller): the file need not have one
+        speed = {"min_rpm": rpm[0], "max_rpm": rpm[1]} if rpm[0] < rpm[1] else {"fixed_rpm": rpm[0]}
     tower, tower_notes = reader.tower()
     if soil is not None:  # a soil profile beside the file (--soil): the pile stands on it
         pile = reader.embedded
