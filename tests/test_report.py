@@ -115,6 +115,7 @@ def test_the_batch_summary_breaks_a_long_check_id_after_a_dot_only():
                 "worst_check": check,
                 "margin": 0.019,
                 "message": "",
+                "warnings": [],
             }
 
         def row(self) -> dict:

@@ -98,7 +98,9 @@ class Item:
         return str(self.report["verdict"])
 
     def row(self) -> dict[str, Any]:
-        """The summary row: turbine, file, tower class, verdict, worst check, its margin."""
+        """The summary row: turbine, file, tower class, verdict, worst check, its margin, and
+        the report's warnings (what an importer assumed, suspicious values: a pass audited
+        at an assumed speed must not read as a plain pass)."""
         if self.report is None:
             return {
                 "file": self.path,
@@ -108,6 +110,7 @@ class Item:
                 "worst_check": None,
                 "margin": None,
                 "message": self.error,
+                "warnings": [],
             }
         worst = worst_check(self.report["checks"])
         return {
@@ -118,6 +121,7 @@ class Item:
             "worst_check": worst["id"] if worst else None,
             "margin": worst.get("margin") if worst else None,
             "message": worst["message"] if worst else None,
+            "warnings": list(self.report["warnings"]),
         }
 
 
@@ -369,11 +373,21 @@ def summary(items: Sequence[Item]) -> dict[str, Any]:
 def summary_csv(items: Sequence[Item]) -> str:
     """The summary rows as CSV text."""
     buf = io.StringIO()
-    cols = ["file", "turbine", "tower_class", "verdict", "worst_check", "margin", "message"]
+    cols = [
+        "file",
+        "turbine",
+        "tower_class",
+        "verdict",
+        "worst_check",
+        "margin",
+        "message",
+        "warnings",
+    ]
     writer = csv.DictWriter(buf, fieldnames=cols, lineterminator="\n")
     writer.writeheader()
     for it in items:
-        writer.writerow(it.row())
+        row = it.row()
+        writer.writerow({**row, "warnings": " | ".join(row["warnings"])})
     return buf.getvalue()
 
 

@@ -126,8 +126,8 @@ class _Kit:
         lines = dotted_lines(name, lambda line: stringWidth(line, font, size) <= room)
         return self.raw("<br/>".join(_esc(line) for line in lines))
 
-    def status(self, s: str) -> Any:
-        label = s.upper().replace("-", " ")
+    def status(self, s: str, mark: str = "") -> Any:
+        label = s.upper().replace("-", " ") + mark
         return self.raw(f'<font color="{STATUS_HEX[s]}"><b>{label}</b></font>')
 
     def table(self, rows: list[list[Any]], widths: list[float]) -> Any:
@@ -184,7 +184,7 @@ def build(
                 k.p(r["turbine"]["name"]),
                 k.p(r["turbine"]["source_file"]),
                 k.p(r["tower_class"] or "—"),
-                k.status(r["verdict"]),
+                k.status(r["verdict"], "*" if r["warnings"] else ""),
                 k.ident(worst["id"], 0.24) if worst else k.p("—"),
                 k.p(_pct(worst.get("margin")) if worst else ""),
             ]
@@ -192,6 +192,8 @@ def build(
     for file, message, outcome in errors:
         rows.append([k.p("—"), k.p(file), k.p("—"), k.status(outcome), k.p(message), k.p("")])
     story.append(k.table(rows, [0.2, 0.28, 0.1, 0.1, 0.24, 0.08]))
+    if any(r["warnings"] for r, _ in entries):  # a verdict that rests on an assumption
+        story.append(k.p("* with warnings: see the turbine's own pages.", "BodyText"))
     for r, pngs in entries:
         story += [k.PageBreak(), *_turbine(k, r, pngs)]
 
@@ -255,6 +257,13 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         if key in t
     ]
     out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
+    if r["warnings"]:  # what an importer assumed, suspicious values: before any verdict
+        out.append(k.p("Warnings", "Heading2"))
+        out += [
+            k.raw(f'<font color="{STATUS_HEX["warn"]}">• {_esc(w)}</font>', "BodyText")
+            for w in r["warnings"]
+        ]
+        out.append(k.Spacer(1, 3 * k.mm))
 
     out += k.heading("Summary of checks")
     rows = [k.header("status", "check", "margin", "DAF", "finding")]

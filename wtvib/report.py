@@ -253,7 +253,10 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     errors = []
     for row, check in zip(rows, worst, strict=True):
         counts[row["verdict"]] = counts.get(row["verdict"], 0) + 1
-        verdict = Text(row["verdict"].upper(), style=STYLE.get(row["verdict"], "magenta"))
+        # a verdict resting on an assumption (a speed range not found, a clamped platform)
+        # must not read as a plain one: marked, and the warnings listed below the table
+        mark = "*" if row["warnings"] else ""
+        verdict = Text(row["verdict"].upper() + mark, style=STYLE.get(row["verdict"], "magenta"))
         if row["verdict"] in failed:
             errors.append(row)
             table.add_row(verdict, _t(Path(row["file"]).name), "—", check, "")
@@ -269,6 +272,12 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     console.print(table)
     for row in errors:
         console.print(_t(f"{row['verdict'].replace('-', ' ')}: {row['message']}", "magenta"))
+    warned = [row for row in rows if row["warnings"]]
+    if warned:
+        console.print(_t("* with warnings (each report lists them all):", STYLE["warn"]))
+    for row in warned:
+        more = f" (and {len(row['warnings']) - 1} more)" if len(row["warnings"]) > 1 else ""
+        console.print(_t(f"  {row['turbine']}: {row['warnings'][0]}{more}", STYLE["warn"]))
     console.print(", ".join(f"{n} {k}" for k, n in sorted(counts.items())))
     if written:
         folder = {p.parent for p in written}
