@@ -104,9 +104,10 @@ def classify(
     return Classification(cls, f_t, findings, mode.id)
 
 
-def _violated(f: Finding) -> str:
+def _violated(f: Finding, headline_hz: float) -> str:
     """Where a classifying excitation violates the margin: its speeds, and the numbers at
-    the speed of least separation."""
+    the speed of least separation — with the mode's frequency there where its curve has
+    moved from the headline's standstill value (the separation is measured there)."""
     regime = f.regime or "steady"
     spans = ", ".join(
         f"{rad_s_to_rpm(a):.3g} rpm"
@@ -114,9 +115,14 @@ def _violated(f: Finding) -> str:
         else f"{rad_s_to_rpm(a):.3g}–{rad_s_to_rpm(b):.3g} rpm"
         for a, b in f.violations[regime]
     )
+    there = (
+        f", the mode at {f.natural_hz:.3g} Hz"
+        if f"{f.natural_hz:.3g}" != f"{headline_hz:.3g}"
+        else ""
+    )
     return (
         f"within the margin of {f.excitation.id} at {spans} ({f.excitation.id} = "
-        f"{f.excitation_hz:.3g} Hz at {rad_s_to_rpm(f.speed):.3g} rpm: separation "
+        f"{f.excitation_hz:.3g} Hz at {rad_s_to_rpm(f.speed):.3g} rpm{there}: separation "
         f"{f.margin:.1%})"
     )
 
@@ -138,7 +144,8 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     crossed = f"; {' and '.join(startup)} sweep through it at start-up" if startup else ""
     if c.tower_class == "resonant":
         hit = [f for f in c.findings if f.status == "fail"]
-        status, text = "fail", f"resonant: {head} " + "; ".join(_violated(f) for f in hit)
+        text = f"resonant: {head} " + "; ".join(_violated(f, c.frequency_hz) for f in hit)
+        status = "fail"
     elif c.tower_class == "stiff":
         status, text = "pass", f"stiff: {head} above {blades}P ({where}); no start-up encounter"
     elif c.tower_class == "soft":
