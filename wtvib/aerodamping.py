@@ -178,12 +178,17 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     zeta = np.empty((len(sol.omega), kept))
     unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
     part = [parts(model, model.multiblade[0], shapes) for shapes in path.shapes]
+    extras = [
+        fixed_frame_damping(model, model.section_damping(c_points[k]), float(om))
+        for k, om in enumerate(sol.omega)
+    ]
+    refs = [path.shapes[at[round(float(om), 12)]] for om in sol.omega]
+    points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
+    damped = matched(model, points, refs, reduced=path.basis)
     for k, om in enumerate(sol.omega):
         i = at[round(float(om), 12)]
-        ref = path.shapes[i]
-        d = model.section_damping(c_points[k])
-        extra = fixed_frame_damping(model, d, float(om))
-        freq[k], zeta[k], score = matched(model, float(om), extra, ref, reduced=path.basis)
+        ref, extra = refs[k], extras[k]
+        freq[k], zeta[k], score = damped[k]
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode instead
         poor = score < MATCH

@@ -322,8 +322,37 @@ def oscillations(
     positive real part. ``overdamped``: real roots count too (a mode damped past critical
     keeps a place, with ζ = 1, so that shape tracking does not hand its name to another).
     """
+    ((lam, vec),) = oscillations_stacked(k[None], m, d[None], floor, unstable, overdamped)
+    return lam, vec
+
+
+def oscillations_stacked(
+    k: Array,
+    m: Array,
+    d: Array,
+    floor: float | None = None,
+    unstable: str = "keep",
+    overdamped: bool = False,
+) -> list[tuple[NDArray[np.complex128], NDArray[np.complex128]]]:
+    """:func:`oscillations` of a stack of problems (K and D shaped (p, n, n), one M): the
+    state matrices built and solved as one stack (M inverted once, one eigen-solver call
+    for the lot — a sweep's points, an operating schedule's), each filtered alone."""
     n = k.shape[-1]
-    lam, vec = np.linalg.eig(state_matrix(k, m, d))
+    lams, vecs = np.linalg.eig(state_matrix(k, m, d))
+    return [
+        _oscillatory(lam, vec, n, floor, unstable, overdamped)
+        for lam, vec in zip(lams, vecs, strict=True)
+    ]
+
+
+def _oscillatory(
+    lam: NDArray[np.complex128],
+    vec: NDArray[np.complex128],
+    n: int,
+    floor: float | None,
+    unstable: str,
+    overdamped: bool,
+) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
     scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
     if floor is None:
         tiny, imag = 1e-5 * scale, 1e-9 * scale

@@ -14,7 +14,7 @@ stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 """
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -203,35 +203,64 @@ def rotating(
     aerodynamic ones of an operating point, :func:`fixed_frame_damping`); ``reduced``
     solves in the model's Ritz basis of that many standstill modes and their images
     (``Model.ritz``); ``overdamped``: real roots kept too (None: where not ``named``)."""
-    if reduced:  # in the Ritz basis, shapes mapped back
-        basis, (m, d0, d1, k0, k2) = model.ritz(reduced)
-    else:
-        m, d0, d1, k0, k2 = model.multiblade
-    d, k = d0 + omega * d1, k0 + omega**2 * k2
-    if extra is not None:
-        ed, ek = extra
-        if reduced:
-            ed, ek = basis.T @ ed @ basis, basis.T @ ek @ basis
-        d, k = d + ed, k + ek
     # modes below 1 mHz are the rotor turning on a free generator, not oscillations; a path
     # followed by shape alone keeps overdamped roots (heavily damped flap modes)
     real = not named if overdamped is None else overdamped
-    lam, vec = modal.oscillations(k, m, d, floor=2 * np.pi * 1e-3, overdamped=real)
-    if reduced:
-        vec = basis @ vec
-        m = model.multiblade[0]
+    ((lam, vec),) = _roots(model, [(omega, extra)], reduced, real)
+    m = model.multiblade[0]
     idx = (
         _by_content(model, m, vec[:, : count + _spare(count)], count)
         if by_content
         else np.arange(min(count, len(lam)))
     )
-    lam, shapes = lam[idx], vec[:, idx]
-    f = np.abs(lam) / (2 * np.pi)  # natural frequency, as wtvib.modal.damped
-    zeta = -lam.real / np.abs(lam)
-    span = int(idx[-1]) + 1 if len(idx) else 0
+    modes = _selected(lam, vec, idx)
     if not named:  # followed by shape only (the names come from where the path starts)
-        return SystemModes(f, shapes, (), (), (), (), damping_ratio=zeta, span=span)
-    return SystemModes(f, shapes, *_name(model, m, shapes), damping_ratio=zeta, span=span)
+        return modes
+    names, texts, energy, whirl = _name(model, m, modes.shapes)
+    return replace(modes, names=names, descriptions=texts, energy=energy, whirl=whirl)
+
+
+def _selected(lam: NDArray[np.complex128], vec: NDArray[np.complex128], idx: Index) -> SystemModes:
+    """The roots ``idx`` as modes (unnamed): |λ|/2π and −Re λ/|λ|, as wtvib.modal.damped."""
+    lam, shapes = lam[idx], vec[:, idx]
+    span = int(idx[-1]) + 1 if len(idx) else 0
+    return SystemModes(
+        np.abs(lam) / (2 * np.pi),
+        shapes,
+        (),
+        (),
+        (),
+        (),
+        damping_ratio=-lam.real / np.abs(lam),
+        span=span,
+    )
+
+
+def _roots(
+    model: "Model",
+    points: Sequence[tuple[float, tuple[Array, Array] | None]],
+    reduced: int,
+    overdamped: bool,
+) -> list[tuple[NDArray[np.complex128], NDArray[np.complex128]]]:
+    """The oscillatory roots and their shapes (multi-blade coordinates) at each (Ω, extra
+    matrices) point — D = D₀ + Ω·D₁ (+ extra), K = K₀ + Ω²·K₂ (+ extra) — all points as one
+    stack (modal.oscillations_stacked); ``reduced``: in the model's Ritz basis of that many
+    standstill modes, the shapes mapped back."""
+    if reduced:  # in the Ritz basis, shapes mapped back
+        basis, (m, d0, d1, k0, k2) = model.ritz(reduced)
+    else:
+        m, d0, d1, k0, k2 = model.multiblade
+    omega = np.array([om for om, _ in points], dtype=float)[:, None, None]
+    d, k = d0 + omega * d1, k0 + omega**2 * k2
+    for i, (_, extra) in enumerate(points):
+        if extra is not None:
+            ed, ek = extra
+            if reduced:
+                ed, ek = basis.T @ ed @ basis, basis.T @ ek @ basis
+            d[i] += ed
+            k[i] += ek
+    found = modal.oscillations_stacked(k, m, d, floor=2 * np.pi * 1e-3, overdamped=overdamped)
+    return [(lam, basis @ vec if reduced else vec) for lam, vec in found]
 
 
 def _groups(model: "Model") -> dict[str, Index]:
@@ -443,15 +472,16 @@ def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool 
     freqs = np.empty((len(omegas), path.kept))
     zetas = np.empty((len(omegas), path.kept))
     shapes = []
-    for i, om in enumerate(omegas):
+    basis = path.basis if reduced else 0
+    points = [(float(om), None) for om in omegas]
+    found = _candidates(model, points, path.first.span + TRACK_SPARE, basis, path.kept)
+    for i, (om, cur) in enumerate(zip(omegas, found, strict=True)):
         near = int(np.argmin(np.abs(sw.omega - om)))
-        count = path.first.span + TRACK_SPARE
-        cur = _candidates(model, om, count, None, path.basis if reduced else 0, path.kept)
         order = modal.track(weight * path.shapes[near], weight * cur.shapes)
         assert cur.damping_ratio is not None
         freqs[i], zetas[i] = cur.frequency_hz[order], cur.damping_ratio[order]
         shapes.append(cur.shapes[:, order])
-    return Path(path.first, freqs, zetas, (), (), tuple(shapes), path.basis if reduced else 0)
+    return Path(path.first, freqs, zetas, (), (), tuple(shapes), basis)
 
 
 @dataclass(frozen=True)
@@ -501,8 +531,8 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     m = model.multiblade[0]
-    for i, (om, extra) in enumerate(points[1:], start=1):
-        cur = _candidates(model, om, first.span + TRACK_SPARE, extra, basis, kept)
+    found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
+    for i, cur in enumerate(found, start=1):
         order = modal.track(weight * shapes, weight * cur.shapes)
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
@@ -520,26 +550,29 @@ def track(
 
 def _candidates(
     model: "Model",
-    omega: float,
+    points: Sequence[tuple[float, tuple[Array, Array] | None]],
     count: int,
-    extra: tuple[Array, Array] | None,
     basis: int,
     kept: int,
-) -> SystemModes:
-    """The roots a path's point after the first chooses its ``kept`` modes from, overdamped
-    ones among them (a followed mode damped past critical keeps its place, with ζ = 1):
-    solved in the Ritz basis of ``basis`` standstill modes, or in full where that basis
-    holds fewer roots than the path follows (a damper far out of range squeezes roots
-    towards zero). Fewer in the full model too: a mode fell below 1 mHz — ModalError."""
-    for reduced in dict.fromkeys((basis, 0)):
-        cur = rotating(model, omega, count, extra, False, reduced, overdamped=True)
-        if len(cur.frequency_hz) >= kept:
-            return cur
-    raise modal.ModalError(
-        f"the coupled model keeps {len(cur.frequency_hz)} of its {kept} modes at "
-        f"{rad_s_to_rpm(omega):.3g} rpm (the others slower than 1 mHz): a damper or a "
-        "stiffness far out of range?"
-    )
+) -> list[SystemModes]:
+    """The roots a path's points after the first choose their ``kept`` modes from (the
+    lowest ``count``), overdamped ones among them (a followed mode damped past critical
+    keeps its place, with ζ = 1): solved in the Ritz basis of ``basis`` standstill modes,
+    all points as one stack, or in full at a point where that basis holds fewer roots than
+    the path follows (a damper far out of range squeezes roots towards zero). Fewer in the
+    full model too: a mode fell below 1 mHz — ModalError."""
+    out = []
+    for (omega, extra), (lam, vec) in zip(points, _roots(model, points, basis, True), strict=True):
+        if len(lam) < kept and basis:
+            ((lam, vec),) = _roots(model, [(omega, extra)], 0, True)
+        if len(lam) < kept:
+            raise modal.ModalError(
+                f"the coupled model keeps {len(lam)} of its {kept} modes at "
+                f"{rad_s_to_rpm(omega):.3g} rpm (the others slower than 1 mHz): a damper or "
+                "a stiffness far out of range?"
+            )
+        out.append(_selected(lam, vec, np.arange(min(count, len(lam)))))
+    return out
 
 
 def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128]) -> Array:
@@ -557,28 +590,31 @@ def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128
 
 def matched(
     model: "Model",
-    omega: float,
-    extra: tuple[Array, Array],
-    reference: NDArray[np.complex128],
+    points: Sequence[tuple[float, tuple[Array, Array]]],
+    references: Sequence[NDArray[np.complex128]],
     spare: int = 24,
     reduced: int = 0,
-) -> tuple[Array, Array, Array]:
-    """|λ|/2π and ζ of the modes with ``extra`` matrices at Ω, each matched to a column of
-    ``reference`` (the structural modes at the same speed) by shape and by where its energy
-    sits (:func:`_overlap`): one assignment per point, so a heavily damped mode cannot hand
-    its name along a chain. The third array is each match's score (0 … 2: MAC + overlap)."""
-    kept = reference.shape[1]
-    cur = _candidates(model, omega, kept + spare, extra, reduced, kept)
+) -> list[tuple[Array, Array, Array]]:
+    """At each (Ω, extra matrices) point, |λ|/2π and ζ of the modes with the extra matrices,
+    each matched to a column of that point's reference (the structural modes at the same
+    speed) by shape and by where its energy sits (:func:`_overlap`): one assignment per
+    point, so a heavily damped mode cannot hand its name along a chain. The third array is
+    each match's score (0 … 2: MAC + overlap). All points solved as one stack."""
+    kept = references[0].shape[1]
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
-    # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
-    # (blind to phase: keeps an overdamped, standing form with its whirling origin)
-    score = modal.mac(weight * reference, weight * cur.shapes) + _overlap(
-        model, reference, cur.shapes
-    )
-    order = modal.assign(score, optimal=True)
-    assert cur.damping_ratio is not None
-    best = score[np.arange(kept), order]
-    return cur.frequency_hz[order], cur.damping_ratio[order], best
+    out = []
+    found = _candidates(model, points, kept + spare, reduced, kept)
+    for reference, cur in zip(references, found, strict=True):
+        # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
+        # (blind to phase: keeps an overdamped, standing form with its whirling origin)
+        score = modal.mac(weight * reference, weight * cur.shapes) + _overlap(
+            model, reference, cur.shapes
+        )
+        order = modal.assign(score, optimal=True)
+        assert cur.damping_ratio is not None
+        best = score[np.arange(kept), order]
+        out.append((cur.frequency_hz[order], cur.damping_ratio[order], best))
+    return out
 
 
 def perturbed(
