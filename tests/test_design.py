@@ -41,3 +41,28 @@ def test_size_never_calls_an_unreached_target_a_success(write_spec, target):
     s = spec.load(write_spec(text))
     with pytest.raises(design.DesignError, match=r"above 0 Hz|no wall scaling reaches"):
         design.size(s, target, "wall")
+
+
+def test_size_takes_the_windows_of_window_under_the_same_options():
+    """``window --margin 0.2`` and ``size --target soft`` must aim at the same window: size
+    took no operating or rule options and sized to the default rule's windows. WKA-60,
+    soft window's middle at the default 10 % and at 20 %: ``size`` lands on each."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from tests.conftest import TURBINES
+    from wtvib.cli import app
+
+    runner = CliRunner()
+    path = str(TURBINES / "wka-60.yaml")
+    for margin in ("0.1", "0.2"):
+        win = runner.invoke(app, ["window", path, "-f", "json", "--no-plot", "--margin", margin])
+        (tower,) = [s for s in json.loads(win.stdout)["subsystems"] if s["subsystem"] == "tower"]
+        soft = next(w for w in tower["allowed"] if w["name"] == "soft")
+        goal = 0.5 * (soft["low_hz"] + soft["high_hz"])
+        out = runner.invoke(
+            app, ["size", path, "--target", "soft", "--format", "json", "--margin", margin]
+        )
+        assert out.exit_code == 0, out.stdout
+        assert json.loads(out.stdout)["frequency_hz"] == pytest.approx(goal, rel=1e-3)

@@ -631,6 +631,7 @@ def window(
 
 @app.command("size")
 @_user_errors
+@_run_options
 def size_command(
     spec_file: Annotated[Path, typer.Argument(help="Turbine spec with tower sections.")],
     target: Annotated[Target | None, typer.Option(help="Window to land in (its middle).")] = None,
@@ -639,17 +640,20 @@ def size_command(
     ] = None,
     scale: Annotated[ScaleWhat, typer.Option(help="What to scale.")] = ScaleWhat.wall,
     format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    *,
+    options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
 ) -> None:
-    """Scale the tower's wall (or diameter, or both) to put its first bending in a window."""
-    from . import audit, design, importers
+    """Scale the tower's wall (or diameter, or both) to put its first bending in a window
+    (the windows of `window` under the same operating and rule options)."""
+    from . import audit, design
 
-    turbine = importers.load(spec_file)
+    turbine = options.load(spec_file)
     if (target is None) == (target_hz is None):
         raise typer.BadParameter("give --target WINDOW or --target-hz HZ")
     goal = target_hz
     if target is not None:
-        report = audit.run(turbine)
+        report = audit.run(turbine, options.settings(turbine))
         found = design.all_windows(turbine, report.modes, report.rule)
         goal = design.window_goal(found, target.value)
     assert goal is not None
