@@ -47,3 +47,14 @@ def test_a_device_or_pipe_is_never_an_output(tmp_path):
     for target in (fifo, Path("/dev/null")):
         with pytest.raises(OutputError, match="not a regular file"):
             write_atomic(target, b"x", force=True)
+
+
+def test_a_file_where_the_output_folder_should_be_is_said_as_such(tmp_path):
+    """``--out report.txt`` (an existing file): "cannot write to …: File exists" named no
+    culprit; now the line says which path is a file, not a folder."""
+    blocker = tmp_path / "afile"
+    blocker.write_text("mine")
+    for folder in (blocker, blocker / "sub"):
+        with pytest.raises(OutputError, match=f"{blocker} is a file, not a folder"):
+            write_atomic(folder / "x.png", b"data")
+    assert blocker.read_text() == "mine"

@@ -300,11 +300,12 @@ class FolderLock:
 
     def __enter__(self) -> "FolderLock":
         from .errors import OutputError
+        from .outputs import unwritable
 
         try:
             self.path.parent.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
-            raise OutputError(f"cannot write to {self.path.parent}: {exc.strerror}") from None
+            raise OutputError(unwritable(self.path.parent, exc)) from None
         for _ in range(2):
             try:
                 fd = os.open(self.path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)

@@ -62,6 +62,15 @@ def _umask() -> int:
     return mask
 
 
+def unwritable(folder: Path, exc: OSError) -> str:
+    """Why a folder cannot take an output: a file where the folder should be (``--out``
+    naming a file) is said as such, not as the system's "File exists"."""
+    blocker = next((p for p in (folder, *folder.parents) if p.exists()), None)
+    if blocker is not None and not blocker.is_dir():
+        return f"cannot write to {folder}: {blocker} is a file, not a folder"
+    return f"cannot write to {folder}: {exc.strerror}"
+
+
 def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
     """Write ``data`` to ``path`` atomically.
 
@@ -80,7 +89,7 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
-        raise OutputError(f"cannot write to {path.parent}: {exc.strerror}") from None
+        raise OutputError(unwritable(path.parent, exc)) from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
