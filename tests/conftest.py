@@ -105,6 +105,22 @@ def shared() -> Path:
     pytest.skip(reason)
 
 
+def edited_reference(
+    shared: Path, tmp_path: Path, folder: str, file: str, old: str, new: str
+) -> Path:
+    """A copy of a ``../shared/reference`` folder with one literal edit of one of its files
+    (which must still hold ``old``: a reference file that changed fails here, not later)."""
+    import shutil
+
+    target = tmp_path / Path(folder).name
+    shutil.copytree(shared / "reference" / folder, target)
+    path = target / file
+    text = path.read_text()
+    assert old in text, f"{file} no longer holds {old!r}"
+    path.write_text(text.replace(old, new))
+    return target
+
+
 @pytest.fixture(autouse=True)
 def _outputs_in_a_temporary_folder(
     tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch

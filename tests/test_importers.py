@@ -66,14 +66,10 @@ def test_a_floating_deck_set_is_refused_unless_clamped(shared, tmp_path):
     """Moorings in the .fst (CompMooring > 0): a floating turbine, whose tower modes its
     platform sets — refused as a floating windIO file is, and audited clamped on request
     with the headline saying the platform's modes are missing."""
-    import shutil
+    from tests.conftest import edited_reference
 
-    folder = tmp_path / "floating"
-    shutil.copytree(shared / "reference/NREL5MW", folder)
-    fst = folder / "NREL-5MW.fst"
-    text = fst.read_text()
-    assert "          0   CompMooring" in text
-    fst.write_text(text.replace("          0   CompMooring", "          3   CompMooring"))
+    mooring = "          0   CompMooring", "          3   CompMooring"
+    fst = edited_reference(shared, tmp_path, "NREL5MW", "NREL-5MW.fst", *mooring) / "NREL-5MW.fst"
     with pytest.raises(SpecError, match=r"floating turbine \(moorings \(CompMooring\)\)"):
         importers.load(fst)
     spec = importers.load(fst, clamped_base=True)
@@ -85,18 +81,13 @@ def test_a_deck_whose_blades_differ_says_every_blade_is_modelled_as_the_first(sh
     """Blade 2's file with its mass adjusted (AdjBlMs 1.04536 → 1.10): wtvib models every
     blade as blade 1's, which the headline now says; a second file identical to the first
     says nothing."""
-    import shutil
+    from tests.conftest import edited_reference
 
-    folder = tmp_path / "blades"
-    shutil.copytree(shared / "reference/NREL5MW", folder)
-    deck = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
-    first = folder / "NRELOffshrBsline5MW_Blade.dat"
-    second = folder / "blade2.dat"
-    second.write_text(first.read_text())
-    text = deck.read_text()
+    deck = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
     line = '"NRELOffshrBsline5MW_Blade.dat"    BldFile(2)'
-    assert line in text
-    deck.write_text(text.replace(line, '"blade2.dat"    BldFile(2)'))
+    folder = edited_reference(shared, tmp_path, "NREL5MW", deck, line, '"blade2.dat"    BldFile(2)')
+    second = folder / "blade2.dat"
+    second.write_text((folder / "NRELOffshrBsline5MW_Blade.dat").read_text())
 
     def said() -> list[str]:
         return [w for w in importers.load(folder / "NREL-5MW.fst").warnings if "blades differ" in w]

@@ -19,12 +19,12 @@ Sources of the expected numbers:
 """
 
 import math
-import shutil
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+from tests.conftest import edited_reference
 from wtvib import aerodamping, audit, bem, stall
 from wtvib.importers import load
 from wtvib.results import Mode
@@ -358,12 +358,8 @@ def test_a_two_bladed_rotors_coupled_modes_take_the_isolated_estimates(shared: P
     with 1 % structural damping beside a fore-aft rotor damping of several per cent
     (Hau 7.5.1); the others are listed with the reason. The NREL 5-MW deck set with two
     blades (an edit of NumBl)."""
-    folder = tmp_path / "two"
-    shutil.copytree(shared / "reference/NREL5MW", folder)
-    deck = folder / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
-    text = deck.read_text()
-    assert "          3   NumBl" in text
-    deck.write_text(text.replace("          3   NumBl", "          2   NumBl"))
+    deck, blades = "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", "   NumBl"
+    folder = edited_reference(shared, tmp_path, "NREL5MW", deck, f"3{blades}", f"2{blades}")
     report = audit.run(load(folder / "NREL-5MW.fst"))
     modes = {m.id: m for m in report.modes}
     coupled, isolated = modes["system.tower.fa1"], modes["tower.fa1"]
