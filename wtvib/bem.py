@@ -67,7 +67,7 @@ class Rotor:
     def polar(self, alpha: Array) -> tuple[Array, Array]:
         """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
         reads the table at 0°: the solution's finiteness check names the failure)."""
-        x = (np.degrees(np.nan_to_num(alpha, posinf=0.0, neginf=0.0)) + 180.0) % 360.0
+        x = (np.degrees(np.where(np.isfinite(alpha), alpha, 0.0)) + 180.0) % 360.0
         x = x / POLAR_STEP_DEG
         i = np.minimum(x.astype(np.intp), self.cl.shape[1] - 2)
         t = x - i
