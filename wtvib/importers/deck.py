@@ -130,12 +130,14 @@ class Deck:
             f"{key} must be True or False (got {raw!r})", line=line, source=str(self.path)
         )
 
-    def whole(self, key: str, low: int = 0) -> int:
-        """A count (``NumBl``): a whole number ≥ ``low`` — 2.7 blades is an error, not 2."""
+    def whole(self, key: str, low: int = 0, high: int | None = None) -> int:
+        """A count (``NumBl``): a whole number ≥ ``low`` (and ≤ ``high``) — 2.7 blades is an
+        error, not 2."""
         value = self.num(key)
-        if value != int(value) or value < low:
+        if value != int(value) or value < low or (high is not None and value > high):
+            within = f"from {low} to {high}" if high is not None else f"≥ {low}"
             raise SpecError(
-                f"{key} must be a whole number ≥ {low} (got {self.values[key][0]!r})",
+                f"{key} must be a whole number {within} (got {self.values[key][0]!r})",
                 line=self.values[key][1],
                 source=str(self.path),
             )

@@ -187,6 +187,10 @@ def platform(main: Deck, fst: Deck | None) -> tuple[str, bool] | None:
     return (", ".join(found), floating) if found else None
 
 
+#: ElastoDyn models one to three blades (NumBl; its blade inputs are BldFile(1..3)).
+MAX_BLADES = 3
+
+
 def _same(a: Deck, b: Deck) -> bool:
     """Two member files with the same inputs and tables (line numbers aside)."""
     values = {k: v for k, (v, _) in a.values.items()} == {k: v for k, (v, _) in b.values.items()}
@@ -206,7 +210,7 @@ def _blades_differ(main: Deck, first: Deck, blades: int) -> list[str]:
     blade is modelled as blade 1 (a rotor of unlike blades is out of balance — a 1P load
     wtvib does not size)."""
     other = []
-    for b in range(2, blades + 1):
+    for b in range(2, min(blades, MAX_BLADES) + 1):  # ElastoDyn's blades: 1 to 3
         keys = (f"BldFile({b})", f"BldFile{b}")
         if not any(k in main.values for k in keys):
             continue
@@ -241,7 +245,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
     tower = parse(_file(main, "TwrFile"))
     blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
-    n_blades = main.whole("NumBl", low=1)
+    n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
 
     frac = tower.fractions("HtFract")
