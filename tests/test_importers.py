@@ -97,3 +97,23 @@ def test_a_deck_whose_blades_differ_says_every_blade_is_modelled_as_the_first(sh
     assert "    1.04536   AdjBlMs" in blade
     second.write_text(blade.replace("    1.04536   AdjBlMs", "    1.10   AdjBlMs"))
     assert said() and "BldFile(2) = blade2.dat" in said()[0]
+
+
+def test_the_other_files_of_a_deck_set_say_which_file_to_give(shared):
+    """The AeroDyn input was taken for an ElastoDyn deck (its NumBlNds) and failed with
+    "TwrFile is missing from the deck"; the blade, tower, ServoDyn and polar files got the
+    generic "not a format"; the deck set's folder "holds no .lin files". Each now says what
+    it is and which file to give."""
+    folder = shared / "reference" / "NREL5MW"
+    for name, what in (
+        ("NRELOffshrBsline5MW_Onshore_AeroDyn15.dat", "AeroDyn"),
+        ("NRELOffshrBsline5MW_AeroDyn_blade.dat", "AeroDyn"),
+        ("NRELOffshrBsline5MW_Onshore_ServoDyn.dat", "ServoDyn"),
+        ("NRELOffshrBsline5MW_Blade.dat", "ElastoDyn blade"),
+        ("NRELOffshrBsline5MW_Onshore_ElastoDyn_Tower.dat", "ElastoDyn tower"),
+        ("Airfoils/DU21_A17.dat", "aerofoil"),
+    ):
+        with pytest.raises(SpecError, match=f"an OpenFAST {what}.*give the .fst"):
+            importers.load(folder / name)
+    with pytest.raises(SpecError, match="no .lin files; to audit its deck set, give NREL-5MW.fst"):
+        importers.load(folder)

@@ -6,6 +6,7 @@ it out as an editable spec.
 """
 
 import math
+import re
 from pathlib import Path
 from typing import Any
 
@@ -32,8 +33,16 @@ def detect(path: Path, text: str) -> str:
         if looks_like(text):
             return "campbell-table"
     deck_like = path.suffix.lower() in (".dat", ".fst") or "ELASTODYN" in head.upper()
-    if deck_like and ("TwrFile" in text or "NumBl" in text or "EDFile" in text):
+    numbl = re.search(r"^\s*\S+\s+NumBl\b", text, re.MULTILINE)  # the key, not NumBlNds
+    if deck_like and ("TwrFile" in text or "EDFile" in text or numbl):
         return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
+    part = _deck_part(text) if deck_like else None
+    if part is not None:
+        raise SpecError(
+            f"an OpenFAST {part} file: wtvib reads it through the deck set that names it — "
+            "give the .fst (or the ElastoDyn deck)",
+            source=str(path),
+        )
     if path.suffix.lower() in (".yaml", ".yml"):
         windio_like = "components:" in text and ("assembly:" in text or "windIO" in text)
         return "windio" if windio_like and "wtvib:" not in head else "wtvib"
@@ -41,6 +50,22 @@ def detect(path: Path, text: str) -> str:
     if first.replace(" ", "").startswith("wtvib:"):
         return "wtvib"
     raise SpecError(f"not a format wtvib reads; expected {FORMATS}", source=str(path))
+
+
+#: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
+_DECK_PARTS = (
+    ("AeroDyn", ("AFNames", "ADBlFile", "BlSpn")),
+    ("ServoDyn", ("PCMode", "VSContrl", "DLL_FileName")),
+    ("ElastoDyn tower", ("HtFract", "TwFAStif")),
+    ("ElastoDyn blade", ("BlFract", "FlpStff")),
+    ("InflowWind", ("WindType",)),
+    ("aerofoil (AeroDyn polar)", ("NumAlf", "InterpOrd")),
+)
+
+
+def _deck_part(text: str) -> str | None:
+    """Which other file of an OpenFAST deck set this is, if any."""
+    return next((name for name, keys in _DECK_PARTS if any(k in text for k in keys)), None)
 
 
 def to_data(

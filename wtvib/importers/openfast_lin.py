@@ -142,7 +142,9 @@ def files_of(path: Path) -> dict[str, list[Path]]:
     if path.is_dir():
         found = sorted(p for p in path.iterdir() if p.suffix.lower() == ".lin")
         if not found:
-            raise SpecError("the folder holds no .lin files", source=str(path))
+            decks = sorted(p.name for p in path.iterdir() if p.suffix.lower() == ".fst")
+            hint = f"; to audit its deck set, give {' or '.join(decks)}" if decks else ""
+            raise SpecError(f"the folder holds no .lin files{hint}", source=str(path))
     else:
         m = _ROOT.match(path.name)
         if m is None:
