@@ -115,5 +115,6 @@ def test_the_other_files_of_a_deck_set_say_which_file_to_give(shared):
     ):
         with pytest.raises(SpecError, match=f"an OpenFAST {what}.*give the .fst"):
             importers.load(folder / name)
-    with pytest.raises(SpecError, match="no .lin files; to audit its deck set, give NREL-5MW.fst"):
+    hint = r"no \.lin files; to audit its deck set, give NREL-5MW\.fst"
+    with pytest.raises(SpecError, match=hint):
         importers.load(folder)
