@@ -192,21 +192,16 @@ def rotating(
     omega: float,
     count: int = MODES_KEPT,
     extra: tuple[Array, Array] | None = None,
-    named: bool = True,
     reduced: int = 0,
     by_content: bool = False,
-    overdamped: bool | None = None,
 ) -> SystemModes:
     """Fixed-frame modes at rotor speed Ω [rad/s] (multi-blade coordinates, N ≥ 3): the
     lowest ``count`` and, ``by_content``, the higher ones :func:`_by_content` keeps;
     ``extra`` adds a damping and a stiffness matrix in multi-blade coordinates (the
     aerodynamic ones of an operating point, :func:`fixed_frame_damping`); ``reduced``
     solves in the model's Ritz basis of that many standstill modes and their images
-    (``Model.ritz``); ``overdamped``: real roots kept too (None: where not ``named``)."""
-    # modes below 1 mHz are the rotor turning on a free generator, not oscillations; a path
-    # followed by shape alone keeps overdamped roots (heavily damped flap modes)
-    real = not named if overdamped is None else overdamped
-    ((lam, vec),) = _roots(model, [(omega, extra)], reduced, real)
+    (``Model.ritz``)."""
+    ((lam, vec),) = _roots(model, [(omega, extra)], reduced, overdamped=False)
     m = model.multiblade[0]
     idx = (
         _by_content(model, m, vec[:, : count + _spare(count)], count)
@@ -214,8 +209,6 @@ def rotating(
         else np.arange(min(count, len(lam)))
     )
     modes = _selected(lam, vec, idx)
-    if not named:  # followed by shape only (the names come from where the path starts)
-        return modes
     names, texts, energy, whirl = _name(model, m, modes.shapes)
     return replace(modes, names=names, descriptions=texts, energy=energy, whirl=whirl)
 
@@ -245,7 +238,9 @@ def _roots(
     """The oscillatory roots and their shapes (multi-blade coordinates) at each (Ω, extra
     matrices) point — D = D₀ + Ω·D₁ (+ extra), K = K₀ + Ω²·K₂ (+ extra) — all points as one
     stack (modal.oscillations_stacked); ``reduced``: in the model's Ritz basis of that many
-    standstill modes, the shapes mapped back."""
+    standstill modes, the shapes mapped back; ``overdamped``: real roots kept too (a path
+    followed by shape keeps heavily damped flap modes). Roots below 1 mHz are the rotor
+    turning on a free generator, not oscillations."""
     if reduced:  # in the Ritz basis, shapes mapped back
         basis, (m, d0, d1, k0, k2) = model.ritz(reduced)
     else:
@@ -294,13 +289,21 @@ def shares(
     total[total == 0.0] = 1.0
     names = tuple(g for g, i in groups.items() if len(i))
     table = np.array([energy[groups[g]].sum(axis=0) / total for g in names])
-    merge = [g.replace("cos", "cyclic").replace("sin", "cyclic") for g in names]
-    merged_names = tuple(dict.fromkeys(merge))
-    merged = np.zeros((len(merged_names), shapes.shape[1]))
-    row = {g: k for k, g in enumerate(merged_names)}
-    for g, share in zip(merge, table, strict=True):  # cos before sin, as they are listed
-        merged[row[g]] += share
+    merged_names, merged = _summed(
+        [g.replace("cos", "cyclic").replace("sin", "cyclic") for g in names], table
+    )
     return names, table, merged_names, merged
+
+
+def _summed(keys: list[str], table: Array) -> tuple[tuple[str, ...], Array]:
+    """The rows of ``table`` summed by their ``keys`` (first-seen order; rows added in the
+    order they are listed: a cyclic pair's cos before its sin)."""
+    unique = tuple(dict.fromkeys(keys))
+    out = np.zeros((len(unique), table.shape[1]))
+    row = {k: i for i, k in enumerate(unique)}
+    for key, values in zip(keys, table, strict=True):
+        out[row[key]] += values
+    return unique, out
 
 
 def whirls(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str | None, ...]:
@@ -321,11 +324,9 @@ def parts(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str
     ``tower.ss``, ``tower.tor``, ``drivetrain`` or ``yaw``. A mode followed through a
     veering keeps its name and changes its part."""
     names, table, _, _ = shares(m, shapes, _groups(model))
-    part = [".".join(g.split(".")[:2]) if g.startswith("blade.") else g for g in names]
-    kinds = tuple(dict.fromkeys(part))
-    summed = np.zeros((len(kinds), shapes.shape[1]))
-    for g, share in zip(part, table, strict=True):
-        summed[kinds.index(g)] += share
+    kinds, summed = _summed(
+        [".".join(g.split(".")[:2]) if g.startswith("blade.") else g for g in names], table
+    )
     return tuple(kinds[int(k)] for k in np.argmax(summed, axis=0))
 
 
@@ -506,14 +507,13 @@ def track(
     model: "Model",
     points: list[tuple[float, tuple[Array, Array] | None]],
     count: int = MODES_KEPT,
-    named: bool = True,
     reduced: bool = False,
 ) -> Path:
     """Modes at each (Ω, extra matrices) point, each followed from the point before by
-    mass-weighted MAC (modal.track); ``named``: the whirl at every point and the
-    descriptions at the last (else at the first only); ``reduced``: the points after the
-    first in the model's Ritz basis (RITZ_STANDSTILL); the first, where the modes followed
-    are chosen, in one of as many standstill modes as the search by content sees."""
+    mass-weighted MAC (modal.track), with the whirl at every point and the descriptions at
+    the last; ``reduced``: the points after the first in the model's Ritz basis
+    (RITZ_STANDSTILL); the first, where the modes followed are chosen, in one of as many
+    standstill modes as the search by content sees."""
     wide = count + _spare(count) if reduced else 0  # as many as the search by content sees
     first = rotating(model, points[0][0], count, points[0][1], reduced=wide, by_content=True)
     basis = max(RITZ_STANDSTILL, first.span + TRACK_SPARE) if reduced else 0
@@ -539,12 +539,10 @@ def track(
         zetas[i] = cur.damping_ratio[order]
         shapes = cur.shapes[:, order]
         every.append(shapes)
-        if named:  # the whirl at every point, the descriptions at the last (named with
-            # every candidate, so that "2nd" counts the same modes wherever it is asked)
-            whirl.append(list(whirls(model, m, shapes)))
-            if i == len(points) - 1:
-                texts = _name(model, m, cur.shapes)[1]
-                last = tuple(texts[o] for o in order)
+        whirl.append(list(whirls(model, m, shapes)))
+        if i == len(points) - 1:  # named with every candidate, so that "2nd" counts the
+            texts = _name(model, m, cur.shapes)[1]  # same modes wherever it is asked
+            last = tuple(texts[o] for o in order)
     return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every), basis)
 
 
