@@ -173,6 +173,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     speeds = sorted({round(float(w), 12) for w in sol.omega})
     path = at_speeds(model, coupled_model.rotating_sweep(spec), speeds, reduced)
     at = {w: i for i, w in enumerate(speeds)}
+    where = [at[round(float(om), 12)] for om in sol.omega]  # each point's speed in the path
     kept = path.kept
     freq = np.empty((len(sol.omega), kept))
     zeta = np.empty((len(sol.omega), kept))
@@ -182,11 +183,10 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         fixed_frame_damping(model, model.section_damping(c_points[k]), float(om))
         for k, om in enumerate(sol.omega)
     ]
-    refs = [path.shapes[at[round(float(om), 12)]] for om in sol.omega]
+    refs = [path.shapes[i] for i in where]
     points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
     damped = matched(model, points, refs, reduced=path.basis)
-    for k, om in enumerate(sol.omega):
-        i = at[round(float(om), 12)]
+    for k, (om, i) in enumerate(zip(sol.omega, where, strict=True)):
         ref, extra = refs[k], extras[k]
         freq[k], zeta[k], score = damped[k]
         # where no damped mode resembles the structural one (veering, overdamping): the
@@ -207,7 +207,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         zeta,
         np.asarray(path.first.damping_ratio),
         unresolved,
-        tuple(part[at[round(float(om), 12)]] for om in sol.omega),
+        tuple(part[i] for i in where),
     )
 
 
