@@ -20,6 +20,7 @@ import numpy as np
 from ..errors import SpecError
 from ..spec import read_text
 from .deck import _NUMBER, Deck, _file, parse
+from .floating import refusal
 
 
 def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
@@ -236,12 +237,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
     path = main.path
     below = platform(main, fst)
     if below is not None and below[1] and not clamped_base:
-        raise SpecError(
-            f"a floating turbine ({below[0]}): wtvib has no platform or mooring model, so its "
-            "tower modes cannot be computed; --clamped-base audits the tower as if clamped at "
-            "its base (not the floating system's modes)",
-            source=str(path),
-        )
+        raise refusal(below[0], str(path))
     tower = parse(_file(main, "TwrFile"))
     blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"

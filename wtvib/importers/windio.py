@@ -29,6 +29,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..yamlio import format_path, parse, parse_plain
+from .floating import refusal
 
 #: Index of the mass and polar inertia in a row-major upper triangle of the 6×6 mass matrix.
 _UT = {"mass": 0, "i_plr": 20}
@@ -87,13 +88,10 @@ def _to_spec_data(
         raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
     floating = [c for c in FLOATING if c in d["components"]]
     if floating and not clamped_base:
-        raise SpecError(
-            f"a floating turbine (components.{' and components.'.join(floating)}): wtvib has "
-            "no platform or mooring model, so its tower modes cannot be computed; "
-            "--clamped-base audits the tower as if clamped at its base (not the floating "
-            "system's modes)",
+        raise refusal(
+            "components." + " and components.".join(floating),
+            str(path),
             path="components." + floating[0],
-            source=str(path),
         )
     v2 = "outer_shape" in d["components"].get("tower", {})
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
