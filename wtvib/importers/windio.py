@@ -48,7 +48,8 @@ def to_spec_data(
     rpm: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file (see :func:`_to_spec_data`); ``rpm``: the
-    operating range the command line gives (the file's is then not needed).
+    operating range the command line gives — the file's is then not read, and the caller
+    sets the rotor speed (``importers._with_speed``).
 
     A field wtvib needs that is missing is one line naming its path; anything else a
     hostile file can do to the reader (a number where a mapping goes, tables of unequal
@@ -140,8 +141,8 @@ def _to_spec_data(
         notes.append(speed_note)
         where = speed_note.split(":")[0].removeprefix("Operating range from ")
         speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
-    else:  # the command line's (set by the caller): the file need not have one
-        speed = {"min_rpm": rpm[0], "max_rpm": rpm[1]} if rpm[0] < rpm[1] else {"fixed_rpm": rpm[0]}
+    else:  # the command line's, which the caller sets (importers._with_speed)
+        speed = {}
     tower, tower_notes = reader.tower()
     if soil is not None:  # a soil profile beside the file (--soil): the pile stands on it
         pile = reader.embedded
