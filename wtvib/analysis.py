@@ -69,6 +69,18 @@ class Damping:
     source: str
     assumed: bool
 
+    def with_dampers(
+        self, zeta: float, floor: float, dampers: str
+    ) -> tuple[float | None, str | None]:
+        """A computed mode's damping ratio and its source: this (material) damping plus the
+        ``zeta`` its ``dampers`` give it (the eigenvalue damping), which adds to it — a mode
+        that barely moves a damper must not lose its material damping to the damper's
+        tiny share. (None, None) where ``zeta`` is below ``floor``: the mode takes this
+        damping as the default, and the audit states it as such."""
+        if not zeta > floor:  # (a NaN too)
+            return None, None
+        return self.ratio + zeta, f"{self.source}, plus {zeta:.3g} from {dampers}"
+
 
 class Subsystem(Protocol):
     """The protocol a subsystem module satisfies (modules are protocol implementations)."""

@@ -605,8 +605,9 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         # parts' own material damping: a tower mode that moves the gearbox a little must
         # not lose its structural damping to the dampers' 0.0002 (AOC 15/50: side-side
         # judged at ζ = 0.0011, DAF 450)
-        zeta = float(sw.damping_ratio[j])
-        dampers = zeta if zeta > DAMPERS_FLOOR else 0.0
+        ratio, source = material.with_dampers(
+            float(sw.damping_ratio[j]), DAMPERS_FLOOR, "the drive train's dampers"
+        )
         labels = sw.whirl[j]
         whirl = (
             Whirl(omega, tuple(w or "fixed" for w in labels))
@@ -619,11 +620,8 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
                 "system",
                 sw.descriptions[j],
                 float(sw.frequency_hz[0, j]),
-                damping_ratio=material.ratio + dampers if dampers else None,
-                damping_source=f"{material.source}, plus {dampers:.3g} from the drive "
-                "train's dampers"
-                if dampers
-                else None,
+                damping_ratio=ratio,
+                damping_source=source,
                 curve=curve,
                 regimes=exists(name),
                 condition=condition,

@@ -282,8 +282,9 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
             # the dampers' part (generator, couplings, shafts) adds to the train's material
             # damping: a mode that barely moves the generator must not lose it to the
             # generator's 2e-5 (Aeroman, grid: its third mode)
-            zeta = float(res.damping_ratio[j - 1])
-            dampers = zeta if zeta > DAMPERS_FLOOR else 0.0
+            ratio, source = material.with_dampers(
+                float(res.damping_ratio[j - 1]), DAMPERS_FLOOR, "the dampers"
+            )
             out.append(
                 Mode(
                     id=f"drivetrain.{condition}.{j}",
@@ -291,10 +292,8 @@ def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
                     description=f"{ordinal(j)} drive-train torsion, {CONDITIONS[condition]}: "
                     f"{describe(res.shapes[:, j - 1], names, np.diag(m), condition)} (computed)",
                     frequency_hz=float(f),
-                    damping_ratio=material.ratio + dampers if dampers else None,
-                    damping_source=f"{material.source}, plus {dampers:.3g} from the dampers"
-                    if dampers
-                    else None,
+                    damping_ratio=ratio,
+                    damping_source=source,
                     shape=Shape(positions, tuple(res.shapes[:, j - 1].tolist()), names),
                     regimes=regimes(spec, condition),
                     condition=CONDITIONS[condition],
