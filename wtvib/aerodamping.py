@@ -179,10 +179,9 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     zeta = np.empty((len(sol.omega), kept))
     unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
     part = [parts(model, model.multiblade[0], shapes) for shapes in path.shapes]
-    extras = [
-        fixed_frame_damping(model, model.section_damping(c_points[k]), float(om))
-        for k, om in enumerate(sol.omega)
-    ]
+    # every operating point's aerodynamic damping and stiffness at once (stacks)
+    d_aero, k_aero = fixed_frame_damping(model, model.section_damping(c_points), sol.omega)
+    extras = list(zip(d_aero, k_aero, strict=True))
     refs = [path.shapes[i] for i in where]
     points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
     damped = matched(model, points, refs, reduced=path.basis)

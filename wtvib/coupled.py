@@ -310,12 +310,23 @@ class Model:
 
     def section_damping(self, c: Array) -> Array:
         """The damping matrix (global coordinates, ψ = 0) of section forces −c·v per blade
-        point: ``c`` (P, 2, 2) [N·s/m] acts on the (out-of-plane, in-plane) velocity."""
-        d = np.zeros((self.layout.size, self.layout.size))
-        for j, jac in enumerate(self.section_velocity):
-            cj = np.einsum("pab,pbk->pak", c, jac).reshape(-1, jac.shape[-1])
-            self._scatter(d, jac.reshape(-1, jac.shape[-1]).T @ cj, j)
+        point: ``c`` (…, P, 2, 2) [N·s/m] acts on the (out-of-plane, in-plane) velocity — a
+        stack of such tables (the operating points) gives the stack of matrices."""
+        lead = c.shape[:-3]
+        d = np.zeros((*lead, self.layout.size, self.layout.size))
+        flat = c.reshape(*lead, -1)
+        n = self.section_velocity.shape[-1]
+        for j, products in enumerate(self._velocity_products):
+            # Σ_{p,a,b} c[p, a, b]·J[p, a, :]ᵀ·J[p, b, :]: one product with the table
+            self._scatter(d, (flat @ products).reshape(*lead, n, n), j)
         return d
+
+    @functools.cached_property
+    def _velocity_products(self) -> Array:
+        """(blades, P·2·2, n·n): J[p, a, i]·J[p, b, k] of each blade's section velocities."""
+        jac = self.section_velocity
+        b, p, _, n = jac.shape
+        return np.einsum("jpai,jpbk->jpabik", jac, jac).reshape(b, p * 4, n * n)
 
     def _scatter(
         self, target: Array, local: Array, blade_no: int, rigid_only: bool = False
@@ -324,9 +335,11 @@ class Model:
         sgn = self.layout.sign[blade_no]
         if rigid_only:
             idx, sgn = idx[:_RIGID], sgn[:_RIGID]
-        keep = idx >= 0
+        keep = np.flatnonzero(idx >= 0)
         i, s = idx[keep], sgn[keep]
-        target[np.ix_(i, i)] += s[:, None] * local[np.ix_(keep, keep)] * s[None, :]
+        # the last two axes (a stack of matrices keeps its leading ones)
+        part = local[..., keep[:, None], keep[None, :]]
+        target[..., i[:, None], i[None, :]] += s[:, None] * part * s[None, :]
 
 
 def _rigid_mass(part: Rigid) -> Array:

@@ -109,12 +109,14 @@ def fixed_frame(model: "Model", omega: float, psi: float = 0.0) -> tuple[Array, 
     )
 
 
-def fixed_frame_damping(model: "Model", d: Array, omega: float) -> tuple[Array, Array]:
+def fixed_frame_damping(model: "Model", d: Array, omega: float | Array) -> tuple[Array, Array]:
     """A damping matrix ``d`` of the periodic equations (at ψ = 0) in multi-blade
     coordinates: Tᵀ·D·T to the damping and Ω·Tᵀ·D·T′ to the stiffness (q̇ = T·ż + Ω·T′·z),
-    exact for an isotropic rotor of three or more blades."""
+    exact for an isotropic rotor of three or more blades. A stack of matrices (…, n, n)
+    takes a rotor speed per matrix."""
     t, t1, _ = _transform(model, 0.0)
-    return t.T @ d @ t, omega * (t.T @ d @ t1)
+    speed = np.asarray(omega, dtype=float)[..., None, None]
+    return t.T @ d @ t, speed * (t.T @ d @ t1)
 
 
 def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
