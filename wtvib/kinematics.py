@@ -11,6 +11,7 @@ M. H. Hansen, "Improved modal dynamics of wind turbines to avoid stall-induced v
 Wind Energy 6 (2003) 179–195 (the kinematics of the rotor on a moving nacelle).
 """
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -70,20 +71,32 @@ class MatrixJet:
 
     def apply(self, v: Jet) -> Jet:
         """(A·v) truncated at the order of v (tensordot: BLAS rather than einsum loops)."""
-        c1 = np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2)
+        c0, c1, c2 = (v.c0, v.c1, v.c2) if self._identity else self._constant(v)
         c1 = c1 + np.tensordot(v.c0, self.a1, axes=([-1], [1]))
-        if v.c2 is None:
-            return Jet(v.c0 @ self.a0.T, c1, None)
+        if c2 is None:
+            return Jet(c0, c1, None)
         cross = np.tensordot(v.c1, self.a1, axes=([-2], [1]))  # (..., m, i, n)
         cross = np.moveaxis(cross, -3, -1)  # (..., i, n, m)
         return Jet(
-            v.c0 @ self.a0.T,
+            c0,
             c1,
-            np.moveaxis(np.tensordot(v.c2, self.a0, axes=([-3], [1])), -1, -3)
-            + np.tensordot(v.c0, self.a2, axes=([-1], [1]))
-            + cross
-            + np.swapaxes(cross, -1, -2),
+            c2 + np.tensordot(v.c0, self.a2, axes=([-1], [1])) + cross + np.swapaxes(cross, -1, -2),
         )
+
+    def _constant(self, v: Jet) -> tuple[Array, Array, Array | None]:
+        """A₀·v, term by term."""
+        return (
+            v.c0 @ self.a0.T,
+            np.moveaxis(np.tensordot(v.c1, self.a0, axes=([-2], [1])), -1, -2),
+            None
+            if v.c2 is None
+            else np.moveaxis(np.tensordot(v.c2, self.a0, axes=([-3], [1])), -1, -3),
+        )
+
+    @functools.cached_property
+    def _identity(self) -> bool:
+        """A₀ = I (every small rotation about the undeflected state): A₀·v is v itself."""
+        return bool(np.array_equal(self.a0, np.eye(3)))
 
 
 def nacelle_rotation(n: int) -> MatrixJet:
