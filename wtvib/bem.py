@@ -78,6 +78,29 @@ class Rotor:
         return cl, cd
 
     @functools.cached_property
+    def solidity(self) -> Array:
+        """Local solidity B·c/(2πr) per station."""
+        return np.asarray(self.blades * self.chord / (2 * np.pi * self.radius))
+
+    @functools.cached_property
+    def loss_terms(self) -> tuple[tuple[Array, Array] | None, tuple[Array, Array] | None]:
+        """Prandtl's exponents x·sin φ = numerator / denominator, tip then hub (None: that
+        loss off; no hub, no hub loss and no 1/0)."""
+        tip = None
+        if self.tip_loss:
+            tip = (
+                self.blades / 2 * (self.tip_radius - self.radius),
+                np.maximum(self.radius, 1e-12),
+            )
+        hub = None
+        if self.hub_loss and self.hub_radius > 0:
+            hub = (
+                self.blades / 2 * (self.radius - self.hub_radius),
+                np.full_like(self.radius, self.hub_radius),
+            )
+        return tip, hub
+
+    @functools.cached_property
     def _flat(self) -> tuple[Array, Array]:
         return self.cl.ravel(), self.cd.ravel()
 
@@ -151,49 +174,72 @@ class Solution:
 
 
 def _losses(r: Rotor, phi: Array) -> Array:
+    """Prandtl's tip and hub loss factor F(φ) at each station (≥ 1e-6)."""
     s = np.maximum(np.abs(np.sin(phi)), 1e-9)
-    f = np.ones_like(phi)
-    if r.tip_loss:
-        x = r.blades / 2 * (r.tip_radius - r.radius) / (np.maximum(r.radius, 1e-12) * s)
-        f = f * (2 / np.pi) * np.arccos(np.clip(np.exp(-x), 0.0, 1.0))
-    if r.hub_loss and r.hub_radius > 0:  # no hub, no hub loss (and no 1/0)
-        x = r.blades / 2 * (r.radius - r.hub_radius) / (r.hub_radius * s)
-        f = f * (2 / np.pi) * np.arccos(np.clip(np.exp(-x), 0.0, 1.0))
-    return np.maximum(f, 1e-6)
+    tip, hub = r.loss_terms
+    f: Array | None = None
+    # arccos(e^(−x)) with e^(−x) ≤ 1 (x < 0 only past the tip: F = 0 there)
+    if tip is not None:
+        f = (2 / np.pi) * np.arccos(np.minimum(np.exp(-(tip[0] / (tip[1] * s))), 1.0))
+    if hub is not None:
+        g = np.arccos(np.minimum(np.exp(-(hub[0] / (hub[1] * s))), 1.0))
+        f = (2 / np.pi) * g if f is None else f * (2 / np.pi) * g
+    return np.maximum(f, 1e-6) if f is not None else np.ones_like(phi)
+
+
+def _coefficients(r: Rotor, phi: Array, theta: Array) -> tuple[Array, ...]:
+    """sin φ, cos φ, C_L, C_D, F and Ning's k, k′ at inflow angles φ (twist + pitch θ)."""
+    s, c = np.sin(phi), np.cos(phi)
+    cl, cd = r.polar(phi - theta)
+    cn = cl * c + cd * s
+    ct = cl * s - cd * c
+    f = _losses(r, phi)
+    sigma = r.solidity
+    k = sigma * cn / (4 * f * s * s)
+    kp = sigma * ct / (4 * f * s * c)
+    return s, c, cl, cd, f, k, kp
+
+
+def _momentum(k: Array, f: Array) -> Array:
+    """The axial induction of the momentum region (φ > 0): a = k/(1 + k), Buhl's empirical
+    thrust above k = 2/3."""
+    g1 = 2 * f * k - (10 / 9 - f)
+    g2 = np.maximum(2 * f * k - f * (4 / 3 - f), 0.0)
+    g3 = 2 * f * k - (25 / 9 - 2 * f)
+    flat = np.abs(g3) < 1e-6
+    buhl = np.where(
+        flat,
+        1 - 1 / (2 * np.sqrt(np.maximum(g2, 1e-12))),
+        (g1 - np.sqrt(g2)) / np.where(flat, 1.0, g3),
+    )
+    return np.asarray(np.where(k <= 2 / 3, k / (1 + k), buhl))
+
+
+def _balance(
+    phi: Array, s: Array, c: Array, k: Array, kp: Array, a_pos: Array, speed_ratio: Array
+) -> Array:
+    """Ning's residual R(φ) (momentum region with ``a_pos``; propeller brake for φ < 0)."""
+    one_minus_a = np.where(np.abs(1 - a_pos) < 1e-12, 1e-12, 1 - a_pos)  # a = 1: no flow
+    swirl = c / speed_ratio * (1 - kp)
+    return np.asarray(np.where(phi > 0, s / one_minus_a - swirl, s * (1 - k) - swirl))
+
+
+def _residual(r: Rotor, phi: Array, theta: Array, speed_ratio: Array) -> Array:
+    """Ning's residual R(φ) alone (the root search's evaluations)."""
+    s, c, _, _, f, k, kp = _coefficients(r, phi, theta)
+    return _balance(phi, s, c, k, kp, _momentum(k, f), speed_ratio)
 
 
 def _induction(
     r: Rotor, phi: Array, theta: Array, speed_ratio: Array
 ) -> tuple[Array, Array, Array, Array, Array]:
     """Ning's residual R(φ) and the inductions, C_L, C_D it implies."""
-    s, c = np.sin(phi), np.cos(phi)
-    cl, cd = r.polar(phi - theta)
-    cn = cl * c + cd * s
-    ct = cl * s - cd * c
-    f = _losses(r, phi)
-    sigma = r.blades * r.chord / (2 * np.pi * r.radius)
-    k = sigma * cn / (4 * f * s * s)
-    kp = sigma * ct / (4 * f * s * c)
-    # momentum region (φ > 0): a = k/(1 + k), Buhl's empirical thrust above k = 2/3
-    g1 = 2 * f * k - (10 / 9 - f)
-    g2 = np.maximum(2 * f * k - f * (4 / 3 - f), 0.0)
-    g3 = 2 * f * k - (25 / 9 - 2 * f)
-    buhl = np.where(
-        np.abs(g3) < 1e-6,
-        1 - 1 / (2 * np.sqrt(np.maximum(g2, 1e-12))),
-        (g1 - np.sqrt(g2)) / np.where(np.abs(g3) < 1e-6, 1.0, g3),
-    )
-    a_pos = np.where(k <= 2 / 3, k / (1 + k), buhl)
+    s, c, cl, cd, f, k, kp = _coefficients(r, phi, theta)
+    a_pos = _momentum(k, f)
     a_neg = k / np.where(np.abs(k - 1) < 1e-12, 1e-12, k - 1)  # propeller brake (φ < 0)
     a = np.where(phi > 0, a_pos, a_neg)
     a_t = kp / np.where(np.abs(1 - kp) < 1e-12, 1e-12, 1 - kp)
-    one_minus_a = np.where(np.abs(1 - a) < 1e-12, 1e-12, 1 - a)  # a = 1: no through-flow
-    res = np.where(
-        phi > 0,
-        s / one_minus_a - c / speed_ratio * (1 - kp),
-        s * (1 - k) - c / speed_ratio * (1 - kp),
-    )
-    return res, a, a_t, cl, cd
+    return _balance(phi, s, c, k, kp, a_pos, speed_ratio), a, a_t, cl, cd
 
 
 def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
@@ -212,7 +258,7 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
     lam = np.broadcast_to(lam, shape)
 
     def res(phi: Array) -> Array:
-        return _induction(r, phi, theta, lam)[0]
+        return _residual(r, phi, theta, lam)
 
     # brackets in Ning's order: momentum/windmill (0, π/2], propeller brake [−π/4, 0),
     # then (π/2, π); the next is tried only where no bracket is found yet
