@@ -3,7 +3,7 @@ the audit (the coupled model's validation is in tests/validation/test_aerodynami
 
 import numpy as np
 
-from wtvib import aerodamping, audit
+from wtvib import aerodamping, audit, bem
 from wtvib.results import OperatingDamping
 from wtvib.spec import load
 
@@ -81,3 +81,17 @@ def test_aerodynamics_without_a_mode_to_damp_is_said(write_spec):
     stab = next(c for c in report.checks if c.id == "aerodynamics.stability")
     assert stab.status == "info" and "blade.mass_kg" in stab.message
     assert any("No aerodynamic damping for" in a for a in report.assumptions)
+
+
+def test_the_best_power_coefficient_is_named_over_its_plateau(write_spec):
+    """Region 2 holds one tip-speed ratio at one pitch, so C_p is the same at every wind
+    there to rounding: the message names those winds, not whichever one's rounding came
+    out highest (that wind moved with the last bit of the BEM)."""
+    spec = load(write_spec(SPEC))
+    report = audit.run(spec)
+    sch = bem.schedule(spec)
+    inside = (sch.rpm > 15 * (1 + 1e-9)) & (sch.rpm < 30 * (1 - 1e-9))  # Ω follows the wind
+    winds = sch.wind[inside]
+    assert len(winds) >= 2
+    text = next(c.message for c in report.checks if c.id == "aerodynamics.operation")
+    assert f"at {len(winds)} winds {winds[0]:.3g}–{winds[-1]:.3g} m/s" in text

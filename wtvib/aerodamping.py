@@ -509,13 +509,20 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     r = bem.rotor(spec)
     cp, ct = sch.coefficients(r)
     sol = sch.solution
-    best = int(np.argmax(cp))
+    # a variable-speed rotor holds its best C_p over region 2 (one λ, one pitch): the
+    # winds where it is reached to 1e-6, not the one whose rounding happens to be highest
+    peak = sch.wind[cp >= cp.max() * (1 - 1e-6)]
+    at = (
+        f"at {peak[0]:.3g} m/s"
+        if len(peak) == 1
+        else f"at {len(peak)} winds {peak[0]:.3g}–{peak[-1]:.3g} m/s"
+    )
     operation = Check(
         f"{NAME}.operation",
         NAME,
         "info",
         f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "
-        f"C_p up to {cp[best]:.3f} (at {sch.wind[best]:.3g} m/s), thrust up to "
+        f"C_p up to {cp.max():.3f} ({at}), thrust up to "
         f"{sol.thrust.max() / 1e3:,.0f} kN, {sch.rpm.min():.3g}–{sch.rpm.max():.3g} rpm, "
         f"pitch {sch.pitch_deg.min():.3g}–{sch.pitch_deg.max():.3g}°"
         + (f", rated wind {sch.rated_wind:.3g} m/s" if sch.rated_wind is not None else ""),
