@@ -255,3 +255,21 @@ def test_bisect_solves_a_linear_piece_at_its_first_secant_and_a_curve_to_the_tol
     np.testing.assert_allclose(curved, [0.25], rtol=0, atol=1e-12)
     cubic = bisect(lambda x: x**3 - x, np.array([-1.7, 0.4]), np.array([-0.3, 1.9]))
     np.testing.assert_allclose(cubic, [-1.0, 1.0], rtol=0, atol=1e-12)
+
+
+def test_all_pairs_at_once_agree_with_each_pair_alone_to_the_bit():
+    """assess_all solves every pair's crossings and run edges together: the same numbers as
+    judging each pair alone (a sampled curve, a Southwell curve, a soil band, a fixed
+    speed range and a quick-pass band among them)."""
+    from wtvib.resonance import assess_all
+    from wtvib.results import Sampled
+
+    sampled = Sampled((0.0, 1.0, 2.0, 3.0), (0.9, 0.95, 1.1, 1.2))
+    banded = Mode("tower.ss1", "tower", "soil band", 0.35, 0.01, None, band_hz=(0.3, 0.4))
+    modes = [mode(0.35), mode(1.0, curve=sampled), mode(0.8, curve=Southwell(0.7, 1.2)), banded]
+    lines = [harmonic(k) for k in (1, 2, 3, 6)]
+    o = op([(8, 14), (20, 20)], 24, quick=[(10, 11)])
+    together = assess_all(modes, lines, o, BAND, SEVERITY, 0.01)
+    alone = [assess(m, e, o, BAND, SEVERITY, 0.01) for e in lines for m in modes]
+    assert together == alone
+    assert any(f.crossings for f in together) and any(f.forbidden for f in together)

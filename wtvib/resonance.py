@@ -84,38 +84,72 @@ def assess(
     heavy_damping: float = 0.3,
 ) -> Finding:
     """Judge one mode against one excitation line over 0 → overspeed."""
+    return _assess([(mode, exc)], op, rule, severity, default_damping, heavy_damping)[0]
 
-    band = mode.band_factors()
+
+def _assess(
+    pairs: Sequence[tuple[Mode, Excitation]],
+    op: OperatingRange,
+    rule: MarginRule,
+    severity: Mapping[str, Status],
+    default_damping: float,
+    heavy_damping: float,
+) -> list[Finding]:
+    """Judge modes against lines, pair by pair: the speed grid, the crossings and the edges
+    of the forbidden runs of every pair computed together (a few array calls for all of
+    them), each pair then judged on its own."""
+    if not pairs:
+        return []
+    ev = _Pairs.of(pairs, rule)
+    grid = _grid(op)
+    diff, sep = ev.on_grid(grid)
+    crossings = _crossings(ev, grid, diff)
+    forbidden = _forbidden(ev, grid, sep, crossings)
+    on_steady = ev.on_grid(_judged_speeds(op.steady))[1]
+    return [
+        _judge(
+            mode,
+            exc,
+            ev.band[p],
+            crossings[p],
+            forbidden[p],
+            on_steady[p],
+            op,
+            rule,
+            severity,
+            default_damping,
+            heavy_damping,
+        )
+        for p, (mode, exc) in enumerate(pairs)
+    ]
+
+
+def _judge(
+    mode: Mode,
+    exc: Excitation,
+    band: Floats,
+    crossings: tuple[float, ...],
+    forbidden: tuple[Interval, ...],
+    on_steady: Floats,
+    op: OperatingRange,
+    rule: MarginRule,
+    severity: Mapping[str, Status],
+    default_damping: float,
+    heavy_damping: float,
+) -> Finding:
+    """One pair's finding from its crossings, forbidden speed runs and separation at the
+    steady speeds."""
 
     def sep(omega: Floats) -> Floats:
-        f_e, f_n = exc.frequency_hz(omega), mode.frequency_at(omega)
-        s = rule.separation(f_e, f_n)
-        if band is None:
-            return s
-        # a frequency band (lower/upper-bound soil): the line's separation from the band —
-        # none where the line lies in it, else from its nearer end
-        lo, hi = band[0] * f_n, band[1] * f_n
-        ends = np.minimum(rule.separation(f_e, lo), rule.separation(f_e, hi))
-        return np.where((f_e - lo) * (f_e - hi) <= 0, 0.0, np.minimum(s, ends))
-
-    def gaps(omega: Floats) -> Floats:
-        return sep(omega) - rule.margin * (1.0 - 1e-9)
+        return _separation(rule, exc.frequency_hz(omega), mode.frequency_at(omega), *band)
 
     def gap(omega: float) -> float:
-        return float(gaps(np.array([omega]))[0])
-
-    def diff(omega: Floats) -> Floats:
-        return exc.frequency_hz(omega) - mode.frequency_at(omega)
-
-    grid = _grid(op)
-    crossings = tuple(_roots(diff, grid, diff(grid)))
-    grid = np.union1d(grid, np.array(crossings, dtype=float))
-    forbidden = tuple(_runs(gaps, grid, rule.violates(sep(grid))))
+        return float(sep(np.array([omega]))[0] - rule.margin * (1.0 - 1e-9))
 
     violations = split_by_regime(forbidden, op, lambda w: gap(w) < 0)
     if mode.regimes is not None:  # a condition that exists only in some regimes
         violations = {k: (v if k in mode.regimes else ()) for k, v in violations.items()}
-    speed, margin = _worst_judged(sep, op, crossings, mode.regimes)
+    speed, margin = _worst_judged(sep, op, crossings, mode.regimes, on_steady)
     # a fixed-frame rotor mode takes the class of the blade harmonic that drives it, at the
     # speed where it is met (its whirl can change along the curve)
     at = next((0.5 * (a + b) for r in _REGIMES for a, b in violations[r][:1]), speed)
@@ -180,6 +214,160 @@ def assess(
             for c in crossings
         ),
     )
+
+
+@dataclass(frozen=True)
+class _Pairs:
+    """Modes against lines, many pairs evaluated at once: pair ``ids[i]`` at rotor speed
+    ``x[i]`` — elementwise the arithmetic of a single pair, so a batch and one pair agree to
+    the bit."""
+
+    modes: tuple[Mode, ...]  # the distinct modes
+    mode_of: NDArray[np.intp]  # (pairs,): each pair's mode in ``modes``
+    order: Floats  # (pairs,): the line's order
+    offset: Floats  # (pairs,): the line's offset [Hz]
+    band: Floats  # (pairs, 2): the mode's band factors on its frequency (NaN: no band)
+    rule: MarginRule
+
+    @classmethod
+    def of(cls, pairs: Sequence[tuple[Mode, Excitation]], rule: MarginRule) -> "_Pairs":
+        index: dict[int, int] = {}
+        for mode, _ in pairs:
+            index.setdefault(id(mode), len(index))
+        modes = {id(mode): mode for mode, _ in pairs}
+        bands = [mode.band_factors() or (math.nan, math.nan) for mode, _ in pairs]
+        return cls(
+            tuple(modes[k] for k in index),
+            np.array([index[id(mode)] for mode, _ in pairs], dtype=np.intp),
+            np.array([exc.order for _, exc in pairs], dtype=float),
+            np.array([exc.offset_hz for _, exc in pairs], dtype=float),
+            np.array(bands, dtype=float).reshape(len(pairs), 2),
+            rule,
+        )
+
+    def excitation_hz(self, ids: NDArray[np.intp], x: Floats) -> Floats:
+        """As :meth:`Excitation.frequency_hz`, pair by pair."""
+        return np.asarray(self.order[ids] * x / (2.0 * np.pi) + self.offset[ids])
+
+    def natural_hz(self, ids: NDArray[np.intp], x: Floats) -> Floats:
+        """As :meth:`Mode.frequency_at`, pair by pair (one call per distinct mode)."""
+        out = np.empty_like(x)
+        which = self.mode_of[ids]
+        for u in np.unique(which):
+            sel = which == u
+            out[sel] = self.modes[u].frequency_at(x[sel])
+        return out
+
+    def difference(self, ids: NDArray[np.intp], x: Floats) -> Floats:
+        return self.excitation_hz(ids, x) - self.natural_hz(ids, x)
+
+    def separation(self, ids: NDArray[np.intp], x: Floats) -> Floats:
+        lo, hi = self.band[ids].T
+        return _separation(self.rule, self.excitation_hz(ids, x), self.natural_hz(ids, x), lo, hi)
+
+    def on_grid(self, grid: Floats) -> tuple[Floats, Floats]:
+        """(pairs, speeds) tables of f_exc − f_n and of the separation on ``grid``."""
+        f_n = np.stack([m.frequency_at(grid) for m in self.modes])[self.mode_of]
+        f_e = self.order[:, None] * grid[None, :] / (2.0 * np.pi) + self.offset[:, None]
+        lo, hi = self.band[:, 0, None], self.band[:, 1, None]
+        return f_e - f_n, _separation(self.rule, f_e, f_n, lo, hi)
+
+
+def _separation(
+    rule: MarginRule, f_e: Floats, f_n: Floats, lo: Floats | float, hi: Floats | float
+) -> Floats:
+    """The rule's separation of a line from a mode; for a mode with a frequency band
+    (lower/upper-bound soil: factors ``lo``, ``hi`` on f_n, NaN where none) the line's
+    separation from the band — none where the line lies in it, else from its nearer end."""
+    s = rule.separation(f_e, f_n)
+    banded = np.broadcast_to(np.isfinite(lo), s.shape)
+    if not banded.any():
+        return s
+    fe, fn = np.broadcast_to(f_e, s.shape)[banded], np.broadcast_to(f_n, s.shape)[banded]
+    low = np.broadcast_to(lo, s.shape)[banded] * fn
+    high = np.broadcast_to(hi, s.shape)[banded] * fn
+    ends = np.minimum(rule.separation(fe, low), rule.separation(fe, high))
+    s[banded] = np.where((fe - low) * (fe - high) <= 0, 0.0, np.minimum(s[banded], ends))
+    return s
+
+
+def _crossings(ev: _Pairs, grid: Floats, diff: Floats) -> list[tuple[float, ...]]:
+    """Each pair's speeds where line and mode meet: zeros of ``diff`` on the grid and its
+    sign changes refined, all pairs' in one bisection."""
+    rows, cells = np.nonzero(np.sign(diff[:, :-1]) * np.sign(diff[:, 1:]) < 0)
+    found = (
+        bisect(lambda x: ev.difference(rows, x), grid[cells], grid[cells + 1])
+        if rows.size
+        else np.empty(0)
+    )
+    out: list[list[float]] = [[] for _ in range(len(diff))]
+    for p, c in zip(*np.nonzero(diff == 0.0), strict=True):
+        out[p].append(float(grid[c]))
+    for p, x in zip(rows, found, strict=True):
+        out[p].append(float(x))
+    return [tuple(sorted(c)) for c in out]
+
+
+def _forbidden(
+    ev: _Pairs, grid: Floats, sep: Floats, crossings: Sequence[tuple[float, ...]]
+) -> list[tuple[Interval, ...]]:
+    """Each pair's maximal speed runs short of the margin (on the grid with its crossings
+    added), the edges refined to the zeros of separation − margin: every run's start (unless
+    at the grid's first point) in the cell before, its end (unless at the last) in the cell
+    after — all pairs' edges in one bisection."""
+    runs: list[tuple[Floats, NDArray[np.intp], NDArray[np.intp], int] | None] = []
+    ids: list[int] = []
+    lo_x: list[Floats] = []
+    hi_x: list[Floats] = []
+    for p, cross in enumerate(crossings):
+        g, s = (grid, sep[p]) if not cross else _with_crossings(ev, p, grid, sep[p], cross)
+        idx = np.nonzero(ev.rule.violates(s))[0]
+        if idx.size == 0:
+            runs.append(None)
+            continue
+        breaks = np.nonzero(np.diff(idx) != 1)[0]
+        starts = np.concatenate([[idx[0]], idx[breaks + 1]])
+        ends = np.concatenate([idx[breaks], [idx[-1]]])
+        lo_cells, hi_cells = starts[starts > 0], ends[ends < len(g) - 1]
+        runs.append((g, starts, ends, len(ids)))
+        brackets = np.concatenate([lo_cells - 1, hi_cells])
+        ids += [p] * brackets.size
+        lo_x.append(g[brackets])
+        hi_x.append(g[brackets + 1])
+    if not ids:
+        return [() for _ in crossings]
+    pair = np.array(ids, dtype=np.intp)
+    edges = bisect(
+        lambda x: ev.separation(pair, x) - ev.rule.margin * (1.0 - 1e-9),
+        np.concatenate(lo_x),
+        np.concatenate(hi_x),
+    )
+    out: list[tuple[Interval, ...]] = []
+    for run in runs:
+        if run is None:
+            out.append(())
+            continue
+        g, starts, ends, first = run
+        lo, hi = g[starts].copy(), g[ends].copy()
+        n_lo = int(np.count_nonzero(starts > 0))
+        n_hi = int(np.count_nonzero(ends < len(g) - 1))
+        lo[starts > 0] = edges[first : first + n_lo]
+        hi[ends < len(g) - 1] = edges[first + n_lo : first + n_lo + n_hi]
+        out.append(tuple((float(x), float(y)) for x, y in zip(lo, hi, strict=True)))
+    return out
+
+
+def _with_crossings(
+    ev: _Pairs, p: int, grid: Floats, sep: Floats, crossings: tuple[float, ...]
+) -> tuple[Floats, Floats]:
+    """The grid with a pair's crossings added (those not on it already), and the pair's
+    separation on it: ``sep`` on the grid with the crossings' own inserted."""
+    cross = np.array(crossings, dtype=float)
+    at = np.searchsorted(grid, cross)
+    new = grid[np.minimum(at, len(grid) - 1)] != cross
+    cross, at = cross[new], at[new]
+    on_cross = ev.separation(np.full(cross.shape, p, dtype=np.intp), cross)
+    return np.insert(grid, at, cross), np.insert(sep, at, on_cross)
 
 
 def regime_of(omega: float, op: OperatingRange) -> str:
@@ -272,38 +460,6 @@ def bisect(
     return np.where(open_, 0.5 * (a + b), root)
 
 
-def _roots(f: ArrayFn, grid: NDArray[np.float64], values: NDArray[np.float64]) -> list[float]:
-    """Zeros of ``f`` located by sign changes of ``values`` on ``grid``."""
-    exact = grid[values == 0.0]
-    change = np.nonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)[0]
-    found = bisect(f, grid[change], grid[change + 1]) if change.size else np.array([])
-    return sorted(float(x) for x in np.concatenate([exact, found]))
-
-
-def _runs(gap: ArrayFn, grid: NDArray[np.float64], bad: NDArray[np.bool_]) -> list[Interval]:
-    """Maximal speed intervals where ``bad`` holds, edges refined to the zeros of ``gap``."""
-    idx = np.nonzero(bad)[0]
-    if idx.size == 0:
-        return []
-    breaks = np.nonzero(np.diff(idx) != 1)[0]
-    starts = np.concatenate([[idx[0]], idx[breaks + 1]])
-    ends = np.concatenate([idx[breaks], [idx[-1]]])
-    last = len(grid) - 1
-    # every run's edges refined in one bisection: its start (unless at the grid's first
-    # point) in the cell before, its end (unless at the last) in the cell after
-    lo_cells, hi_cells = starts[starts > 0], ends[ends < last]
-    edges = bisect(
-        gap,
-        np.concatenate([grid[lo_cells - 1], grid[hi_cells]]),
-        np.concatenate([grid[lo_cells], grid[hi_cells + 1]]),
-    )
-    lo = grid[starts].copy()
-    hi = grid[ends].copy()
-    lo[starts > 0] = edges[: lo_cells.size]
-    hi[ends < last] = edges[lo_cells.size :]
-    return [(float(x), float(y)) for x, y in zip(lo, hi, strict=True)]
-
-
 def _overlap(a: Interval, b: Interval) -> Interval | None:
     lo, hi = max(a[0], b[0]), min(a[1], b[1])
     return (lo, hi) if hi - lo > 1e-9 * max(abs(hi), 1.0) else None
@@ -360,23 +516,37 @@ _REGIMES = ("steady", "quick-pass", "overspeed", "start-up")
 
 
 def _worst_judged(
-    sep: ArrayFn, op: OperatingRange, crossings: Sequence[float], regimes: frozenset[str] | None
+    sep: ArrayFn,
+    op: OperatingRange,
+    crossings: Sequence[float],
+    regimes: frozenset[str] | None,
+    on_steady: Floats | None = None,
 ) -> tuple[float, float]:
     """Speed of least separation where the mode is judged, and that separation: the steady
     speeds, or — for a mode that exists only in transients (generator free) — the overspeed
-    band; NaN for a mode that exists only during start-up (a margin there means nothing)."""
+    band; NaN for a mode that exists only during start-up (a margin there means nothing).
+    ``on_steady``: the separation at the steady ranges' speeds (:func:`_judged_speeds`),
+    where already known."""
     if regimes is None or "steady" in regimes or "quick-pass" in regimes:
         ranges = op.steady
     elif "overspeed" in regimes:
         ranges = ((op.highest, op.overspeed),)
     else:
         return op.lowest, math.nan
-    pts = [np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in ranges]
-    inside = [c for c in crossings for a, b in ranges if a <= c <= b]
-    speeds = np.concatenate([*pts, np.array(inside, dtype=float)])
-    s = sep(speeds)
+    pts = _judged_speeds(ranges)
+    inside = np.array([c for c in crossings for a, b in ranges if a <= c <= b], dtype=float)
+    speeds = np.concatenate([pts, inside])
+    if on_steady is not None and ranges is op.steady:  # computed with the other pairs'
+        s = np.concatenate([on_steady, sep(inside)]) if inside.size else on_steady
+    else:
+        s = sep(speeds)
     i = int(np.argmin(s))
     return float(speeds[i]), float(s[i])
+
+
+def _judged_speeds(ranges: Sequence[Interval]) -> Floats:
+    """The speeds a margin is measured at: 201 across each range (a fixed speed once)."""
+    return np.concatenate([np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in ranges])
 
 
 def steady_samples(op: OperatingRange, per_range: int = 25) -> NDArray[np.float64]:
@@ -415,12 +585,8 @@ def assess_all(
     heavy_damping: float = 0.3,
 ) -> list[Finding]:
     """Every judged mode (:attr:`Mode.judged`) against every excitation acting on it."""
-    return [
-        assess(m, e, op, rule, severity, default_damping, heavy_damping)
-        for e in excitations
-        for m in modes
-        if e.acts_on(m.subsystem) and m.judged
-    ]
+    pairs = [(m, e) for e in excitations for m in modes if e.acts_on(m.subsystem) and m.judged]
+    return _assess(pairs, op, rule, severity, default_damping, heavy_damping)
 
 
 def resonance_checks(
