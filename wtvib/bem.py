@@ -173,9 +173,10 @@ class Solution:
         return np.asarray(self.torque * self.omega)
 
 
-def _losses(r: Rotor, phi: Array) -> Array:
-    """Prandtl's tip and hub loss factor F(φ) at each station (≥ 1e-6)."""
-    s = np.maximum(np.abs(np.sin(phi)), 1e-9)
+def _losses(r: Rotor, phi: Array, sin_phi: Array | None = None) -> Array:
+    """Prandtl's tip and hub loss factor F(φ) at each station (≥ 1e-6); ``sin_phi``: sin φ,
+    where already computed."""
+    s = np.maximum(np.abs(np.sin(phi) if sin_phi is None else sin_phi), 1e-9)
     tip, hub = r.loss_terms
     f: Array | None = None
     # arccos(e^(−x)) with e^(−x) ≤ 1 (x < 0 only past the tip: F = 0 there)
@@ -193,7 +194,7 @@ def _coefficients(r: Rotor, phi: Array, theta: Array) -> tuple[Array, ...]:
     cl, cd = r.polar(phi - theta)
     cn = cl * c + cd * s
     ct = cl * s - cd * c
-    f = _losses(r, phi)
+    f = _losses(r, phi, s)
     sigma = r.solidity
     k = sigma * cn / (4 * f * s * s)
     kp = sigma * ct / (4 * f * s * c)
