@@ -212,11 +212,12 @@ def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
         )
         return np.array(best, dtype=np.intp)
     order = np.full(n, -1, dtype=np.intp)
-    free = set(range(candidates))
+    taken = np.zeros(candidates, dtype=bool)
     for i in np.argsort(-score.max(axis=1)):
-        j = max(free, key=lambda c: score[i, c])
+        # the free column of the highest score (the first of equals)
+        j = int(np.argmax(np.where(taken, -np.inf, score[i])))
         order[i] = j
-        free.remove(j)
+        taken[j] = True
     return order
 
 
