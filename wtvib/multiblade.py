@@ -13,8 +13,9 @@ analysis", AIAA 2008-1300; M. H. Hansen, "Improved modal dynamics of wind turbin
 stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 """
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
+from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -260,8 +261,20 @@ def _roots(
     return [(lam, basis @ vec if reduced else vec) for lam, vec in found]
 
 
-def _groups(model: "Model") -> dict[str, Index]:
-    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor)."""
+def _groups(model: "Model") -> Mapping[str, Index]:
+    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor),
+    built once per model (a sweep names or labels its modes at every speed)."""
+    cache = model.__dict__  # frozen: the cache lives in __dict__, as Model.ritz's
+    if "_groups" not in cache:
+        groups = _coordinate_groups(model)
+        for index in groups.values():
+            index.flags.writeable = False  # shared by every call: read-only
+        cache["_groups"] = MappingProxyType(groups)
+    out: Mapping[str, Index] = cache["_groups"]
+    return out
+
+
+def _coordinate_groups(model: "Model") -> dict[str, Index]:
     lay = model.layout
     out: dict[str, Index] = {
         "tower.fa": np.arange(lay.fa.start, lay.fa.stop),
@@ -280,7 +293,7 @@ def _groups(model: "Model") -> dict[str, Index]:
 
 
 def shares(
-    m: Array, shapes: NDArray[np.complex128], groups: dict[str, Index]
+    m: Array, shapes: NDArray[np.complex128], groups: Mapping[str, Index]
 ) -> tuple[tuple[str, ...], Array, tuple[str, ...], Array]:
     """Each mode's kinetic-energy share per coordinate group (|x̄ᵢ·(M x)ᵢ| summed,
     normalised) and the same with each cyclic cos/sin pair merged into one ``cyclic``
@@ -407,7 +420,7 @@ def _mode_name(
     return name, f"{words}, cyclic{suffix} ({axis})"
 
 
-def _whirl(top: str, x: NDArray[np.complex128], groups: dict[str, Index]) -> str | None:
+def _whirl(top: str, x: NDArray[np.complex128], groups: Mapping[str, Index]) -> str | None:
     """The whirl of a mode of shape x whose energy sits mostly in group ``top``: none for
     a tower, drive-train or yaw mode; collective, alternating; for a cyclic one, forward or
     backward where the cyclic pattern travels round the rotor, else cyclic (standing)."""
