@@ -209,9 +209,17 @@ class Model:
         holds the drive train's dampers)."""
         from .multiblade import fixed_frame  # the transformation lives there
 
-        m, d0, k0 = fixed_frame(self, 0.0)
+        m, d0, k0 = self.standstill
         _, d1, k1 = fixed_frame(self, 1.0)
         return m, d0, d1 - d0, k0, k1 - k0
+
+    @functools.cached_property
+    def standstill(self) -> tuple[Array, Array, Array]:
+        """M, D, K in multi-blade coordinates at standstill, blade 1 up (Ω = 0, ψ = 0):
+        the parked modes' and the multi-blade equations' constant terms."""
+        from .multiblade import fixed_frame
+
+        return fixed_frame(self, 0.0)
 
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
         """A reduced basis Φ — the lowest ``count`` undamped standstill modes in
