@@ -263,15 +263,18 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
 
     # brackets in Ning's order: momentum/windmill (0, π/2], propeller brake [−π/4, 0),
     # then (π/2, π); the next is tried only where no bracket is found yet
-    lo = np.full(shape, _EPS)
-    hi = np.full(shape, np.pi / 2)
-    r_lo, r_hi = res(lo), res(hi)
+    def ends(low: float, high: float) -> tuple[Array, Array, Array, Array]:
+        """A bracket's ends at every station and point, and R there (one evaluation)."""
+        both = np.stack([np.full(shape, low), np.full(shape, high)])
+        r_both = res(both)
+        return both[0], both[1], r_both[0], r_both[1]
+
+    lo, hi, r_lo, r_hi = ends(_EPS, np.pi / 2)
     found = r_lo * r_hi < 0
     for low, high in ((-np.pi / 4, -_EPS), (np.pi / 2, np.pi - _EPS)):
         if found.all():
             break
-        la, lb = np.full(shape, low), np.full(shape, high)
-        ra, rb = res(la), res(lb)
+        la, lb, ra, rb = ends(low, high)
         ok = ~found & (ra * rb < 0)
         lo, r_lo = np.where(ok, la, lo), np.where(ok, ra, r_lo)
         hi, r_hi = np.where(ok, lb, hi), np.where(ok, rb, r_hi)
