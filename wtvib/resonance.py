@@ -544,9 +544,13 @@ def _worst_judged(
     return float(speeds[i]), float(s[i])
 
 
-def _judged_speeds(ranges: Sequence[Interval]) -> Floats:
-    """The speeds a margin is measured at: 201 across each range (a fixed speed once)."""
-    return np.concatenate([np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in ranges])
+@functools.lru_cache(maxsize=64)
+def _judged_speeds(ranges: tuple[Interval, ...]) -> Floats:
+    """The speeds a margin is measured at: 201 across each range (a fixed speed once);
+    computed once per set of ranges, read-only."""
+    out = np.concatenate([np.linspace(a, b, 201) if b > a else np.array([a]) for a, b in ranges])
+    out.flags.writeable = False
+    return out
 
 
 def steady_samples(op: OperatingRange, per_range: int = 25) -> NDArray[np.float64]:
