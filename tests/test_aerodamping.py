@@ -95,3 +95,19 @@ def test_the_best_power_coefficient_is_named_over_its_plateau(write_spec):
     assert len(winds) >= 2
     text = next(c.message for c in report.checks if c.id == "aerodynamics.operation")
     assert f"at {len(winds)} winds {winds[0]:.3g}–{winds[-1]:.3g} m/s" in text
+
+
+def test_sections_at_other_radii_is_np_interp_of_every_entry(write_spec):
+    """Sections.at interpolates every operating point and matrix entry at once: the same
+    numbers as np.interp of each (zero outside the stations, a station's own value on it)."""
+    sec = aerodamping.sections(load(write_spec(SPEC)))
+    x = sec.radius
+    r = np.concatenate([np.linspace(x[0] - 1, x[-1] + 1, 97), x])
+    flat = sec.c.reshape(len(sec.c), len(x), 4)
+    expected = np.stack(
+        [
+            np.stack([np.interp(r, x, flat[k, :, e], left=0.0, right=0.0) for e in range(4)], -1)
+            for k in range(len(sec.c))
+        ]
+    ).reshape(len(sec.c), len(r), 2, 2)
+    assert np.array_equal(sec.at(r), expected)

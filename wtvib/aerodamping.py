@@ -91,11 +91,16 @@ class Sections:
         """The matrices at other radii (K, P, 2, 2): linear between stations, zero
         outside them."""
         r = np.asarray(radius, float)
-        flat = self.c.reshape(len(self.c), len(self.radius), 4)
-        out = np.empty((len(self.c), len(r), 4))
-        for k in range(len(self.c)):
-            for e in range(4):
-                out[k, :, e] = np.interp(r, self.radius, flat[k, :, e], left=0.0, right=0.0)
+        x = self.radius
+        flat = self.c.reshape(len(self.c), len(x), 4)
+        # every point and entry at once, with np.interp's own arithmetic: the slope of the
+        # interval times the distance from its start, a station's own value where r is one
+        j = np.clip(np.searchsorted(x, r, side="right") - 1, 0, len(x) - 2)
+        slope = (flat[:, j + 1] - flat[:, j]) / (x[j + 1] - x[j])[:, None]
+        out = slope * (r - x[j])[:, None] + flat[:, j]
+        out[:, r == x[j]] = flat[:, j][:, r == x[j]]
+        out[:, r == x[-1]] = flat[:, -1, None, :]
+        out[:, (r < x[0]) | (r > x[-1])] = 0.0
         return out.reshape(len(self.c), len(r), 2, 2)
 
 
