@@ -15,7 +15,6 @@ stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from types import MappingProxyType
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -269,7 +268,7 @@ def _groups(model: "Model") -> Mapping[str, Index]:
         groups = _coordinate_groups(model)
         for index in groups.values():
             index.flags.writeable = False  # shared by every call: read-only
-        cache["_groups"] = MappingProxyType(groups)
+        cache["_groups"] = groups  # (a plain dict: the report, with its models, is pickled)
     out: Mapping[str, Index] = cache["_groups"]
     return out
 
