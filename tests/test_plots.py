@@ -101,6 +101,28 @@ def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkey
     assert list(forked) == list(inline) and forked == inline
 
 
+def test_a_report_that_does_not_pickle_is_drawn_in_process(reports, monkeypatch):
+    """The report goes to the drawing process pickled; one that cannot be (an unpicklable
+    cache a model kept) costs the parallel drawing, never the figures or the verdict."""
+    import pickle
+
+    from wtvib.plots import render
+
+    monkeypatch.setattr(render, "forking", lambda: True)
+    monkeypatch.setattr(render, "cores", lambda: 3)
+    inline = render.inline(reports["mod-0"], detail=False)
+    with render.Drawer() as drawer:
+        assert drawer._child is not None  # it did fork
+
+        def refuse(*args: object, **kwargs: object) -> bytes:
+            raise TypeError("cannot pickle 'mappingproxy' object")
+
+        monkeypatch.setattr(pickle, "dumps", refuse)  # here only: the child forked already
+        drawn = drawer.pngs(reports["mod-0"], detail=False)
+        monkeypatch.undo()
+    assert drawn == inline
+
+
 _DRAW = """
 import pickle, sys
 if sys.argv[1] == "plain":

@@ -227,8 +227,13 @@ class Drawer:
         if self._inbox is not None:
             inbox, self._inbox = self._inbox, None
             self._sent = True
+            try:
+                data = pickle.dumps((report, detail))
+            except Exception:  # a report that does not pickle: the drawing process reads
+                os.close(inbox)  # nothing and ends; pngs() draws in-process
+                return
             with contextlib.suppress(OSError):  # the drawing process is gone
-                _write(inbox, pickle.dumps((report, detail)))
+                _write(inbox, data)
 
     def pngs(self, report: "Report", detail: bool) -> dict[str, bytes]:
         """The report's figures as PNG bytes by file stem suffix (diagrams' order); the
