@@ -129,3 +129,28 @@ def test_the_pitch_grid_in_chunks_gives_the_pitch_of_the_whole_grid(nrel, monkey
         monkeypatch.setattr(bem, "PITCH_CHUNK", chunk)
         np.testing.assert_array_equal(bem._pitch_to_rated(r, wind, omega, low, p), chunked)
     assert np.all(np.diff(chunked) > 0) and math.degrees(chunked[-1]) > 15  # feathering
+
+
+def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nrel):
+    """F = F_tip·F_hub with F = (2/π)·arccos(e^(−x)), x_tip = B/2·(R − r)/(r·|sin φ|),
+    x_hub = B/2·(r − R_hub)/(R_hub·|sin φ|) (Hansen, Aerodynamics of Wind Turbines, §6.3),
+    e^(−x) clipped to 1 at a station past the tip or inside the hub (F = 0 there, floored
+    at 1e-6)."""
+    import dataclasses
+
+    r = bem.rotor(nrel)
+    radius = np.array(
+        [0.5 * r.hub_radius, r.hub_radius, 20.0, 50.0, r.tip_radius, 1.02 * r.tip_radius]
+    )
+    rot = dataclasses.replace(r, radius=radius, chord=np.ones(6), twist=np.zeros(6))
+    phi = np.linspace(-0.6, 1.4, 7)[:, None] * np.ones(6)
+    s = np.maximum(np.abs(np.sin(phi)), 1e-9)
+    b = rot.blades / 2
+
+    def factor(x: np.ndarray) -> np.ndarray:
+        return 2 / np.pi * np.arccos(np.clip(np.exp(-x), 0.0, 1.0))
+
+    tip = factor(b * (rot.tip_radius - radius) / (radius * s))
+    hub = factor(b * (radius - rot.hub_radius) / (rot.hub_radius * s))
+    np.testing.assert_allclose(bem._losses(rot, phi), np.maximum(tip * hub, 1e-6), rtol=1e-14)
+    assert np.all(bem._losses(rot, phi)[:, [0, -1]] == 1e-6)

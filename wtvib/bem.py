@@ -73,8 +73,10 @@ class Rotor:
         t = x - i
         k = i + self._row_start  # into the flattened tables: station s's row starts at s·A
         cl_flat, cd_flat = self._flat
-        cl = cl_flat.take(k) * (1 - t) + cl_flat.take(k + 1) * t
-        cd = cd_flat.take(k) * (1 - t) + cd_flat.take(k + 1) * t
+        u = 1 - t
+        k1 = k + 1
+        cl = cl_flat.take(k) * u + cl_flat.take(k1) * t
+        cd = cd_flat.take(k) * u + cd_flat.take(k1) * t
         return cl, cd
 
     @functools.cached_property
@@ -83,18 +85,16 @@ class Rotor:
         return np.asarray(self.blades * self.chord / (2 * np.pi * self.radius))
 
     @functools.cached_property
-    def loss_terms(self) -> tuple[tuple[Array, Array] | None, tuple[Array, Array] | None]:
-        """Prandtl's exponents x·sin φ = numerator / denominator, tip then hub (None: that
-        loss off; no hub, no hub loss and no 1/0)."""
-        tip = None
+    def loss_terms(self) -> tuple["_Loss | None", "_Loss | None"]:
+        """Prandtl's exponents, tip then hub (None: that loss off; no hub, no hub loss and
+        no 1/0)."""
+        tip = hub = None
         if self.tip_loss:
-            tip = (
-                self.blades / 2 * (self.tip_radius - self.radius),
-                np.maximum(self.radius, 1e-12),
+            tip = _Loss.of(
+                self.blades / 2 * (self.tip_radius - self.radius), np.maximum(self.radius, 1e-12)
             )
-        hub = None
         if self.hub_loss and self.hub_radius > 0:
-            hub = (
+            hub = _Loss.of(
                 self.blades / 2 * (self.radius - self.hub_radius),
                 np.full_like(self.radius, self.hub_radius),
             )
@@ -173,17 +173,34 @@ class Solution:
         return np.asarray(self.torque * self.omega)
 
 
+@dataclass(frozen=True)
+class _Loss:
+    """One of Prandtl's loss factors, F = (2/π)·arccos(e^(−x)) with x = a / (b·|sin φ|)."""
+
+    minus_a: Array  # −a per station (−(a/d) is (−a)/d exactly)
+    b: Array
+    beyond: bool  # some a < 0 (a station past the tip): e^(−x) > 1 there, clipped to 1
+
+    @classmethod
+    def of(cls, a: Array, b: Array) -> "_Loss":
+        return cls(-a, b, bool(np.any(a < 0)))
+
+    def arccos(self, s: Array) -> Array:
+        """arccos(e^(−x)) at |sin φ| = ``s``."""
+        e = np.exp(self.minus_a / (self.b * s))
+        return np.asarray(np.arccos(np.minimum(e, 1.0) if self.beyond else e))
+
+
 def _losses(r: Rotor, phi: Array, sin_phi: Array | None = None) -> Array:
     """Prandtl's tip and hub loss factor F(φ) at each station (≥ 1e-6); ``sin_phi``: sin φ,
     where already computed."""
     s = np.maximum(np.abs(np.sin(phi) if sin_phi is None else sin_phi), 1e-9)
     tip, hub = r.loss_terms
     f: Array | None = None
-    # arccos(e^(−x)) with e^(−x) ≤ 1 (x < 0 only past the tip: F = 0 there)
     if tip is not None:
-        f = (2 / np.pi) * np.arccos(np.minimum(np.exp(-(tip[0] / (tip[1] * s))), 1.0))
+        f = (2 / np.pi) * tip.arccos(s)
     if hub is not None:
-        g = np.arccos(np.minimum(np.exp(-(hub[0] / (hub[1] * s))), 1.0))
+        g = hub.arccos(s)
         f = (2 / np.pi) * g if f is None else f * (2 / np.pi) * g
     return np.maximum(f, 1e-6) if f is not None else np.ones_like(phi)
 
@@ -204,16 +221,24 @@ def _coefficients(r: Rotor, phi: Array, theta: Array) -> tuple[Array, ...]:
 def _momentum(k: Array, f: Array) -> Array:
     """The axial induction of the momentum region (φ > 0): a = k/(1 + k), Buhl's empirical
     thrust above k = 2/3."""
-    g1 = 2 * f * k - (10 / 9 - f)
-    g2 = np.maximum(2 * f * k - f * (4 / 3 - f), 0.0)
-    g3 = 2 * f * k - (25 / 9 - 2 * f)
-    flat = np.abs(g3) < 1e-6
-    buhl = np.where(
-        flat,
-        1 - 1 / (2 * np.sqrt(np.maximum(g2, 1e-12))),
-        (g1 - np.sqrt(g2)) / np.where(flat, 1.0, g3),
-    )
-    return np.asarray(np.where(k <= 2 / 3, k / (1 + k), buhl))
+    light = k <= 2 / 3
+    if light.all():  # no station in Buhl's region (each branch costs what all of it does)
+        return np.asarray(k / (1 + k))
+    two_f = 2 * f
+    fk = two_f * k
+    g1 = fk - (10 / 9 - f)
+    g2 = np.maximum(fk - f * (4 / 3 - f), 0.0)
+    g3 = fk - (25 / 9 - two_f)
+    flat = np.abs(g3) < 1e-6  # g3 = 0: the quadratic's linear limit
+    if flat.any():
+        buhl = np.where(
+            flat,
+            1 - 1 / (2 * np.sqrt(np.maximum(g2, 1e-12))),
+            (g1 - np.sqrt(g2)) / np.where(flat, 1.0, g3),
+        )
+    else:
+        buhl = (g1 - np.sqrt(g2)) / g3
+    return np.asarray(np.where(light, k / (1 + k), buhl))
 
 
 def _balance(
