@@ -139,6 +139,7 @@ def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nr
     import dataclasses
 
     r = bem.rotor(nrel)
+    assert r.tip_loss and r.hub_loss  # AeroDyn's TipLoss and HubLoss, both on in the deck
     radius = np.array(
         [0.5 * r.hub_radius, r.hub_radius, 20.0, 50.0, r.tip_radius, 1.02 * r.tip_radius]
     )
