@@ -147,3 +147,21 @@ def test_blade_modes_are_computed_once_per_spec_and_never_shared_with_a_changed_
     stiffer = st.model_copy(update={"ei_flap_nm2": [2 * v for v in st.ei_flap_nm2]})
     other = s.model_copy(update={"blade": s.blade.model_copy(update={"structure": stiffer})})
     assert coupled.blade_modes(other, 3).omega[0] > first.omega[0]
+
+
+def test_aerodynamic_damping_in_multi_blade_coordinates_is_the_dense_transformation(tmp_path):
+    """multiblade.fixed_frame_damping changes only the blades' rows and columns (T is the
+    identity elsewhere, T′ zero): the same matrices as Tᵀ·D·T and Ω·Tᵀ·D·T′ with the dense
+    transformation, for a stack of damping matrices, each with its rotor speed."""
+    import numpy as np
+
+    model = coupled.build(spec.load(write(tmp_path)), "free")
+    n = model.layout.size
+    d = np.random.default_rng(7).standard_normal((4, n, n))
+    omega = np.array([0.0, 0.4, 1.1, 2.0])
+    t, t1, _ = multiblade._transform(model, 0.0)
+    damping, stiffness = multiblade.fixed_frame_damping(model, d, omega)
+    np.testing.assert_allclose(damping, t.T @ d @ t, rtol=0, atol=1e-13)
+    np.testing.assert_allclose(stiffness, omega[:, None, None] * (t.T @ d @ t1), atol=1e-13)
+    single = multiblade.fixed_frame_damping(model, d[2], 1.1)
+    np.testing.assert_array_equal(single[0], damping[2])
