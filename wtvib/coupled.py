@@ -221,6 +221,13 @@ class Model:
 
         return fixed_frame(self, 0.0)
 
+    @functools.cached_property
+    def standstill_modes(self) -> modal.Modes:
+        """Every undamped mode at standstill, blade 1 up (K₀ and M of :attr:`standstill`):
+        solved once for the Ritz bases and the parked modes."""
+        m, _, k0 = self.standstill
+        return modal.solve(k0, m)
+
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
         """A reduced basis Φ — the lowest ``count`` undamped standstill modes in
         multi-blade coordinates and what the loads of the dampers (D₀) and of the rotation
@@ -233,7 +240,7 @@ class Model:
         cache = self.__dict__.setdefault("_ritz", {})  # frozen: the cache lives in __dict__
         if count not in cache:
             m, d0, d1, k0, k2 = self.multiblade
-            basis = modal.ritz_basis(k0, m, count, [k2, d1, d0], RITZ_IMAGES)
+            basis = modal.ritz_basis(k0, m, count, [k2, d1, d0], RITZ_IMAGES, self.standstill_modes)
             cache[count] = (basis, tuple(basis.T @ x @ basis for x in (m, d0, d1, k0, k2)))
         out: tuple[Array, tuple[Array, Array, Array, Array, Array]] = cache[count]
         return out

@@ -56,6 +56,12 @@ def solve(k: Array, m: Array, count: int | None = None) -> Modes:
     return solve_stacked(k[None], m[None], count)[0]
 
 
+def lowest(modes: Modes, count: int) -> Modes:
+    """The lowest ``count`` of solved modes (all of them, if fewer): what :func:`solve` with
+    that count gives (it solves the whole problem and keeps the first)."""
+    return Modes(modes.frequency_hz[:count], modes.shapes[:, :count])
+
+
 #: the message where a model's matrices leave the range of floating point
 OUT_OF_RANGE = (
     "the model's numbers leave the range of floating point (a mass or inertia far too small "
@@ -145,7 +151,9 @@ def _check_stable(w2: Array) -> None:
         )
 
 
-def ritz_basis(k: Array, m: Array, count: int, changes: list[Array], images: int) -> Array:
+def ritz_basis(
+    k: Array, m: Array, count: int, changes: list[Array], images: int, modes: Modes | None = None
+) -> Array:
     """An M-orthonormal Rayleigh–Ritz basis for K φ = ω² M φ as other terms change it: the
     lowest ``count`` modes and, for each change matrix C (a term the undamped modes leave
     out: a damper, the rotor's Ω² stiffness, its Ω damping), what the lowest ``images``
@@ -156,9 +164,10 @@ def ritz_basis(k: Array, m: Array, count: int, changes: list[Array], images: int
     that adds no new direction (a load the kept modes carry whole) is dropped.
 
     σ > 0 makes K + σM invertible where K is singular (a free rotor on its shaft): the
-    squared circular frequency of the highest mode imaged.
+    squared circular frequency of the highest mode imaged. ``modes``: K and M's lowest modes,
+    where already solved (at least ``count`` of them, or all the problem has).
     """
-    base = solve(k, m, min(count, k.shape[0]))
+    base = solve(k, m, min(count, k.shape[0])) if modes is None else lowest(modes, count)
     phi = base.shapes
     if not changes or images <= 0 or phi.shape[1] == k.shape[0]:
         return phi

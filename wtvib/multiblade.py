@@ -167,8 +167,13 @@ def parked(
 ) -> SystemModes:
     """Modes of the parked turbine (Ω = 0) at rotor azimuth ψ (blade 1 up at ψ = 0): the
     lowest ``count`` and, ``by_content``, the higher ones :func:`by_content` keeps."""
-    m, _, k = model.standstill if psi == 0.0 else fixed_frame(model, 0.0, psi)
-    res = modal.solve(k, m, min(count + 2 + (_spare(count) if by_content else 0), m.shape[0]))
+    wanted = min(count + 2 + (_spare(count) if by_content else 0), model.layout.size)
+    if psi == 0.0:  # blade 1 up: the model's standstill modes, solved once
+        m, _, _ = model.standstill
+        res = modal.lowest(model.standstill_modes, wanted)
+    else:
+        m, _, k = fixed_frame(model, 0.0, psi)
+        res = modal.solve(k, m, wanted)
     keep = res.frequency_hz > 1e-3  # a free generator leaves the rotor free to turn
     f, shapes = res.frequency_hz[keep], res.shapes[:, keep].astype(complex)
     idx = _by_content(model, m, shapes, count) if by_content else np.arange(min(count, len(f)))
