@@ -151,6 +151,17 @@ class Spec(_Strict):
     # model's blade modes): they live and die with the spec object, never across specs
     _derived: dict[tuple[str, int], tuple[object, Any]] = PrivateAttr(default_factory=dict)
 
+    def __getstate__(self) -> dict[Any, Any]:
+        """Pickled without the derived results: a process that receives a spec or a report
+        (check's drawing process, a batch or Dask worker) recomputes whatever it asks for —
+        the figures ask for none of it — and the coupled models and their caches are most of
+        the bytes (4 of 6 MB for the NREL 5-MW deck's report, 19 of 21 MB for the IEA-22's)."""
+        state: dict[Any, Any] = super().__getstate__()
+        private = dict(state.get("__pydantic_private__") or {})
+        if "_derived" in private:
+            private["_derived"] = {}
+        return {**state, "__pydantic_private__": private}
+
     def derived(self, key: tuple[str, int], source: object, make: Callable[[], Any]) -> Any:
         """A value computed once from the part ``source`` of this spec (``make`` is pure in
         it). The entry is kept only while ``source`` is the very object it was made from:
