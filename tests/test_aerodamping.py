@@ -111,3 +111,17 @@ def test_sections_at_other_radii_is_np_interp_of_every_entry(write_spec):
         ]
     ).reshape(len(sec.c), len(r), 2, 2)
     assert np.array_equal(sec.at(r), expected)
+
+
+def test_a_rotor_that_draws_no_power_is_a_warning_not_a_crash(write_spec):
+    """A rotor turned far too fast (300 rpm on 40 m: tip speed 630 m/s) brakes at every
+    wind, C_p < 0 everywhere: the operation check names its best (negative) C_p and warns
+    that the input is likely wrong (a ROSCO gearbox ratio of 2.7 on the NREL 5-MW deck did
+    this, and the best-C_p wind came out of an empty selection: an internal error)."""
+    spec = load(write_spec(SPEC.replace("min_rpm: 15, max_rpm: 30", "min_rpm: 300, max_rpm: 400")))
+    report = audit.run(spec)
+    cp, _ = bem.schedule(spec).coefficients(bem.rotor(spec))
+    assert cp.max() < 0
+    check = next(c for c in report.checks if c.id == "aerodynamics.operation")
+    assert check.status == "warn" and "draws no power" in check.message
+    assert f"C_p up to {cp.max():.3f}" in check.message

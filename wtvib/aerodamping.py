@@ -516,18 +516,28 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     sol = sch.solution
     # a variable-speed rotor holds its best C_p over region 2 (one λ, one pitch): the
     # winds where it is reached to 1e-6, not the one whose rounding happens to be highest
-    peak = sch.wind[cp >= cp.max() * (1 - 1e-6)]
+    best = float(cp.max())
+    peak = sch.wind[cp >= best - 1e-6 * abs(best)]  # (a rotor that only brakes: C_p < 0)
     at = (
         f"at {peak[0]:.3g} m/s"
         if len(peak) == 1
         else f"at {len(peak)} winds {peak[0]:.3g}–{peak[-1]:.3g} m/s"
     )
+    # a rotor that draws no power anywhere is an input mistake (speed, pitch or twist), and
+    # the damping computed at its operating points describes a rotor nobody builds
+    braking = best <= 0
     operation = Check(
         f"{NAME}.operation",
         NAME,
-        "info",
-        f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "
-        f"C_p up to {cp.max():.3f} ({at}), thrust up to "
+        "warn" if braking else "info",
+        (
+            "the rotor draws no power at any operating point (C_p ≤ 0): check its speed, "
+            "pitch and twist — the damping in operation below is of that rotor; "
+            if braking
+            else ""
+        )
+        + f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "
+        f"C_p up to {best:.3f} ({at}), thrust up to "
         f"{sol.thrust.max() / 1e3:,.0f} kN, {sch.rpm.min():.3g}–{sch.rpm.max():.3g} rpm, "
         f"pitch {sch.pitch_deg.min():.3g}–{sch.pitch_deg.max():.3g}°"
         + (f", rated wind {sch.rated_wind:.3g} m/s" if sch.rated_wind is not None else ""),
