@@ -294,10 +294,12 @@ def bending_pair(
     foundation: "spec_mod.Foundation",
     gravity: bool = True,
     count: int = 2,
+    soil_factor: float = 1.0,
 ) -> tuple[modal.Modes, modal.Modes]:
-    """Fore-aft and side-side modes, solved together (one stacked eigenproblem)."""
-    fa = bending_system(b, head, point_masses, foundation, "fa", gravity)
-    ss = bending_system(b, head, point_masses, foundation, "ss", gravity)
+    """Fore-aft and side-side modes, solved together (one stacked eigenproblem: the
+    numbers of two :func:`bending_modes` calls)."""
+    fa = bending_system(b, head, point_masses, foundation, "fa", gravity, soil_factor=soil_factor)
+    ss = bending_system(b, head, point_masses, foundation, "ss", gravity, soil_factor=soil_factor)
     first, second = modal.solve_stacked(np.stack([fa[0], ss[0]]), np.stack([fa[1], ss[1]]), count)
     return first, second
 
@@ -400,14 +402,14 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     t = spec.tower
     b = discretise(t, elements)
     out: list[Mode] = []
-    for direction in ("fa", "ss"):
-        res = _spec_bending(spec, b, direction)
-        bands = _soil_bands(spec, b, direction)
+    bands = _soil_bands(spec, b)
+    for d, (direction, res) in enumerate(zip(("fa", "ss"), _spec_bending(spec, b), strict=True)):
         for k, f in enumerate(res.frequency_hz, start=1):
             shape = res.shapes[0::2, k - 1]
             mode = _computed(spec, f"{direction}{k}", float(f), b.nodes, shape)
             if bands is not None:
-                mode = replace(mode, band_hz=(float(bands[0][k - 1]), float(bands[1][k - 1])))
+                low, high = bands[0][d].frequency_hz, bands[1][d].frequency_hz
+                mode = replace(mode, band_hz=(float(low[k - 1]), float(high[k - 1])))
             out.append(mode)
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
@@ -422,27 +424,25 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     return out
 
 
-def _soil_bands(spec: Spec, b: Beam, direction: str) -> tuple[Array, Array] | None:
-    """The bending frequencies with lower- and upper-bound soil (a monopile in soil)."""
+Pair = tuple[modal.Modes, modal.Modes]
+
+
+def _soil_bands(spec: Spec, b: Beam) -> tuple[Pair, Pair] | None:
+    """The fore-aft and side-side bending modes with lower- and upper-bound soil (a monopile
+    in soil)."""
     t = spec.tower
     if t.foundation.kind != "soil":
         return None
     bounds = t.foundation.bounds
-    low, high = (_spec_bending(spec, b, direction, f) for f in (bounds.lower, bounds.upper))
-    return low.frequency_hz, high.frequency_hz
+    return _spec_bending(spec, b, bounds.lower), _spec_bending(spec, b, bounds.upper)
 
 
-def _spec_bending(spec: Spec, b: Beam, direction: str, soil_factor: float = 1.0) -> modal.Modes:
-    """The spec's tower bending modes in one plane (soil springs times ``soil_factor``)."""
+def _spec_bending(spec: Spec, b: Beam, soil_factor: float = 1.0) -> Pair:
+    """The spec's tower bending modes, fore-aft and side-side (soil springs times
+    ``soil_factor``)."""
     t = spec.tower
-    return bending_modes(
-        b,
-        spec.tower_head,
-        t.point_masses,
-        t.foundation,
-        direction,  # type: ignore[arg-type]
-        t.gravity,
-        soil_factor=soil_factor,
+    return bending_pair(
+        b, spec.tower_head, t.point_masses, t.foundation, t.gravity, soil_factor=soil_factor
     )
 
 

@@ -12,7 +12,7 @@ from typing import Any
 
 import pytest
 
-from wtvib import audit, soil, spec
+from wtvib import audit, soil, spec, tower
 from wtvib.spec.tower import Pile, SoilLayer
 
 E = 2.1e11
@@ -313,3 +313,24 @@ def test_a_mistake_in_a_soil_file_names_that_file_and_its_line(tmp_path):
     )
     s = importers.load(path, soil=tolerant)
     assert "tower.foundation.soil[0].friction_angle_deg" in s.provenance
+
+
+def test_the_tower_modes_solved_in_pairs_are_each_planes_own():
+    """The spec's fore-aft and side-side modes, and their lower- and upper-bound soil
+    bands, come from one stacked eigen-solve per soil case (tower.bending_pair): the same
+    numbers as each plane solved alone (tower.bending_modes)."""
+    s = monopile_turbine()
+    t = s.tower
+    b = tower.discretise(t)
+    modes = {m.id: m for m in tower.structural_modes(s)}
+    for direction in ("fa", "ss"):
+        alone = [
+            tower.bending_modes(
+                b, s.tower_head, t.point_masses, t.foundation, direction, t.gravity, 2, factor
+            ).frequency_hz
+            for factor in (1.0, t.foundation.bounds.lower, t.foundation.bounds.upper)
+        ]
+        for k in (1, 2):
+            mode = modes[f"tower.{direction}{k}"]
+            assert mode.frequency_hz == alone[0][k - 1]
+            assert mode.band_hz == (alone[1][k - 1], alone[2][k - 1])
