@@ -119,36 +119,30 @@ def gauss_points(nodes: Array) -> tuple[Array, Array]:
     return x, lengths[:, None] * GAUSS_W[None, :]
 
 
+def _hermite_tables() -> tuple[Array, Array, Array]:
+    """The cubic Hermite polynomials of ξ at the Gauss points, (4 points, 4 dofs): N, dN/dξ
+    and d²N/dξ², each dof's rotation ones still to be multiplied by the element length."""
+    xi = GAUSS_XI[:, None]
+    n = np.hstack(
+        [1 - 3 * xi**2 + 2 * xi**3, xi - 2 * xi**2 + xi**3, 3 * xi**2 - 2 * xi**3, -(xi**2) + xi**3]
+    )
+    d1 = np.hstack(
+        [-6 * xi + 6 * xi**2, 1 - 4 * xi + 3 * xi**2, 6 * xi - 6 * xi**2, -2 * xi + 3 * xi**2]
+    )
+    d2 = np.hstack([-6 + 12 * xi, -4 + 6 * xi, 6 - 12 * xi, -2 + 6 * xi])
+    return n, d1, d2
+
+
+_HERMITE = _hermite_tables()
+
+
 def _hermite(lengths: Array) -> tuple[Array, Array, Array]:
     """Hermite shape functions N, dN/dx, d²N/dx² at the Gauss points, each (n, 4, 4dofs)."""
-    xi = GAUSS_XI[None, :]
-    L = lengths[:, None]
-    ones = np.ones_like(L)
-    n = np.stack(
-        [
-            ones * (1 - 3 * xi**2 + 2 * xi**3),
-            L * (xi - 2 * xi**2 + xi**3),
-            ones * (3 * xi**2 - 2 * xi**3),
-            L * (-(xi**2) + xi**3),
-        ],
-        axis=-1,
-    )
-    d1 = (
-        np.stack(
-            [
-                ones * (-6 * xi + 6 * xi**2),
-                L * (1 - 4 * xi + 3 * xi**2),
-                ones * (6 * xi - 6 * xi**2),
-                L * (-2 * xi + 3 * xi**2),
-            ],
-            axis=-1,
-        )
-        / L[..., None]
-    )
-    d2 = np.stack(
-        [ones * (-6 + 12 * xi), L * (-4 + 6 * xi), ones * (6 - 12 * xi), L * (-2 + 6 * xi)], axis=-1
-    ) / (L[..., None] ** 2)
-    return n, d1, d2
+    L = lengths[:, None, None]
+    # the rotation dofs' functions scale with the element length (w′ = dw/dx)
+    scale = np.concatenate([np.ones_like(L), L, np.ones_like(L), L], axis=-1)
+    n, d1, d2 = (table[None] * scale for table in _HERMITE)
+    return n, d1 / L, d2 / L**2
 
 
 @dataclass(frozen=True)

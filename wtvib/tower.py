@@ -211,8 +211,10 @@ class Beam:
     def basis(self) -> beam.Basis:
         return beam.basis(self.nodes)
 
+    @functools.cached_property
     def mass_above(self) -> Array:
-        """Mass of the tower above each Gauss point, (elements, 4). [kg]"""
+        """Mass of the tower above each Gauss point, (elements, 4) [kg] (both bending planes
+        load the tower with it: computed once)."""
         x, w = self.basis.x, self.basis.w
         element = np.sum(w * self.mass, axis=1)
         above_element = np.cumsum(element[::-1])[::-1] - element
@@ -335,7 +337,7 @@ def bending_system(
     if gravity:
         xg = b.basis.x
         pm_above = sum((p.mass_kg * (xg < p.height_m) for p in point_masses), np.zeros_like(xg))
-        axial = -G * (b.mass_above() + pm_above + m_head)
+        axial = -G * (b.mass_above + pm_above + m_head)
     k, m = beam.assemble_bending(b.basis, ei, b.mass, axial)
     for p in point_masses:
         i = 2 * int(np.argmin(np.abs(b.nodes - p.height_m)))
