@@ -378,3 +378,30 @@ def test_a_warning_with_no_crossing_is_marked_on_the_diagram():
     assert len(squares) == 1
     (x,), (y,) = squares[0].get_data()
     assert 34.6 < x < 35.7 and abs(y - 1.28) < 0.05
+
+
+def test_a_crossing_hidden_under_a_worse_one_is_not_in_the_legend(reports):
+    """WKA-60's drive train has one frequency with the generator on the grid and free
+    (1.88 Hz): the 6P and 5P lines cross both modes at the same place, once judged info,
+    once pass. The info marker covers the pass one, so the legend names no pass crossing
+    a reader could not find."""
+    from wtvib.excitation import operating_range
+
+    wka = reports["wka-60"]
+    op = operating_range(wka.spec.rotor.speed)
+    marks = [
+        (f.excitation.id, c, f.status_at(c, op))
+        for f in wka.findings
+        if f.mode.subsystem == "drivetrain"
+        for c in f.crossings
+    ]
+    passes = [(line, c) for line, c, status in marks if status == "pass"]
+    assert passes  # each within 0.1 % of the speed range of an info crossing of its line
+    for line, c in passes:
+        assert any(
+            m[0] == line and m[2] == "info" and abs(m[1] - c) < 1e-3 * op.overspeed for m in marks
+        )
+    fig = diagrams(wka, detail=False)["campbell-drivetrain"]
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
+    texts = [t.get_text() for legend in legends for t in legend.get_texts()]
+    assert "crossing: info" in texts and "crossing: pass" not in texts

@@ -165,6 +165,21 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             marks.setdefault(status, []).append((float(rad_s_to_rpm(c)), f_c))
             if status != "pass" and daf is not None:  # the crossing's amplification
                 labels.append((float(rad_s_to_rpm(c)), f_c, daf, STATUS_COLOUR[status]))
+    # a crossing under a worse one at the same place (two modes of one frequency, e.g. the
+    # drive train with the generator on the grid and free) cannot be seen: not drawn, so
+    # that the legend names only markers a reader can find
+    worse: list[tuple[float, float]] = []
+    for kind in sorted(marks, key=STATUS_ORDER.__getitem__, reverse=True):
+        seen = [
+            (x, y)
+            for x, y in marks[kind]
+            if not any(
+                abs(x - wx) < 0.005 * rpm_top and abs(y - wy) < 0.005 * f_top for wx, wy in worse
+            )
+        ]
+        worse += marks[kind]
+        marks[kind] = seen
+    marks = {kind: points for kind, points in marks.items() if points}
     # one marker line per status (a line per crossing cost a millisecond each), the worse
     # drawn over the milder where crossings coincide
     for kind in sorted(marks, key=STATUS_ORDER.__getitem__):
