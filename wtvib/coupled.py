@@ -222,6 +222,17 @@ class Model:
         return fixed_frame(self, 0.0)
 
     @functools.cached_property
+    def groups(self) -> dict[str, Index]:
+        """The coordinate groups its modes are named by (:func:`multiblade.coordinate_groups`),
+        once per model — a sweep names or labels its modes at every speed; read-only."""
+        from .multiblade import coordinate_groups
+
+        out = coordinate_groups(self)
+        for index in out.values():
+            index.flags.writeable = False
+        return out
+
+    @functools.cached_property
     def standstill_modes(self) -> modal.Modes:
         """Every undamped mode at standstill, blade 1 up (K₀ and M of :attr:`standstill`):
         solved once for the Ritz bases and the parked modes."""

@@ -190,7 +190,7 @@ def _by_content(model: "Model", m: Array, shapes: NDArray[np.complex128], count:
     """Indices of the lowest ``count`` modes and of the higher ones that carry at least
     CONTENT_SHARE of the energy of a part (drive train, tower torsion, yaw) that dominates
     no lower mode, lowest first, at most CONTENT_EXTRA of them."""
-    groups = _groups(model)
+    groups = model.groups
     energy = np.abs(np.real(np.conj(shapes) * (m @ shapes)))
     energy /= np.maximum(energy.sum(axis=0, keepdims=True), 1e-300)
     part = {g: energy[groups[g]].sum(axis=0) for g in _CONTENT if g in groups and len(groups[g])}
@@ -277,20 +277,9 @@ def _roots(
     return [(lam, basis @ vec if reduced else vec) for lam, vec in found]
 
 
-def _groups(model: "Model") -> Mapping[str, Index]:
-    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor),
-    built once per model (a sweep names or labels its modes at every speed)."""
-    cache = model.__dict__  # frozen: the cache lives in __dict__, as Model.ritz's
-    if "_groups" not in cache:
-        groups = _coordinate_groups(model)
-        for index in groups.values():
-            index.flags.writeable = False  # shared by every call: read-only
-        cache["_groups"] = groups  # (a plain dict: the report, with its models, is pickled)
-    out: Mapping[str, Index] = cache["_groups"]
-    return out
-
-
-def _coordinate_groups(model: "Model") -> dict[str, Index]:
+def coordinate_groups(model: "Model") -> dict[str, Index]:
+    """Coordinate groups by which modes are named (multi-blade coordinates for the rotor);
+    a model keeps its own (``Model.groups``)."""
     lay = model.layout
     out: dict[str, Index] = {
         "tower.fa": np.arange(lay.fa.start, lay.fa.stop),
@@ -341,7 +330,7 @@ def whirls(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[st
     """Each mode's whirl (backward, forward, cyclic, collective, alternating; None: not a
     rotor mode), as :func:`_name` gives it, without the names: what a sweep records at
     every speed."""
-    groups = _groups(model)
+    groups = model.groups
     _, _, merged_names, merged = shares(m, shapes, groups)
     return tuple(
         _whirl(merged_names[int(t)], shapes[:, j], groups)
@@ -354,7 +343,7 @@ def parts(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str
     multi-blade coordinates (``blade.flap1``, ``blade.edge1`` …), else ``tower.fa``,
     ``tower.ss``, ``tower.tor``, ``drivetrain`` or ``yaw``. A mode followed through a
     veering keeps its name and changes its part."""
-    names, table, _, _ = shares(m, shapes, _groups(model))
+    names, table, _, _ = shares(m, shapes, model.groups)
     kinds, summed = _summed(
         [".".join(g.split(".")[:2]) if g.startswith("blade.") else g for g in names], table
     )
@@ -366,7 +355,7 @@ def _name(
 ) -> tuple[tuple[str, ...], tuple[str, ...], tuple[dict[str, float], ...], tuple[str | None, ...]]:
     """Ids, descriptions, energy shares (merged) and whirl of each mode, named by those
     shares."""
-    groups = _groups(model)
+    groups = model.groups
     group_names, table, merged_names, merged_table = shares(m, shapes, groups)
     share = dict(zip(group_names, table, strict=True))
     names: list[str] = []
