@@ -33,7 +33,7 @@ from .analysis import Analysis, Context, blade_damping, no_modes
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
-    from .results import Check, Mode
+    from .results import Check, Mode, OperatingDamping
     from .rules import Status
     from .spec import BladeAeroelastic, Spec
 
@@ -195,35 +195,40 @@ def by_part(
     known = [m for m in modes if m.operating is not None and m.operating.part is not None]
     if not known:
         return None
-    from .bem import schedule
-
-    alpha = np.degrees(schedule(spec).solution.alpha[:, -2])  # the station inboard of the tip
+    alpha = _tip_alpha(spec)
     points, ids = [], []
-    for k, al in enumerate(alpha):
+    for k in range(len(alpha)):
         here = [m for m in known if m.operating.part[k] == part]  # type: ignore[union-attr,index]
         if not here:
             continue
         low = min(here, key=lambda m: m.operating.total[k])  # type: ignore[union-attr]
-        op = low.operating
-        assert op is not None
-        points.append(
-            Point(op.wind[k], float(rad_s_to_rpm(op.omega[k])), op.aero[k], op.total[k], float(al))
-        )
+        assert low.operating is not None
+        points.append(_point(low.operating, k, alpha))
         ids.append(low.id)
     return (points, ids) if points else None
+
+
+def _tip_alpha(spec: "Spec") -> Array:
+    """The angle of attack [deg] at each operating point at the station inboard of the tip."""
+    from .bem import schedule
+
+    return np.asarray(np.degrees(schedule(spec).solution.alpha[:, -2]))
+
+
+def _point(op: "OperatingDamping", k: int, alpha: Array) -> Point:
+    """Operating point k of a mode's damping in operation."""
+    rpm = float(rad_s_to_rpm(op.omega[k]))
+    return Point(op.wind[k], rpm, op.aero[k], op.total[k], float(alpha[k]))
 
 
 def _in_operation(spec: "Spec", mode: "Mode") -> list[Point] | None:
     op = mode.operating
     if op is None:
         return None
-    from .bem import schedule
-
-    alpha = np.degrees(schedule(spec).solution.alpha[:, -2])  # the station inboard of the tip
-    return [
-        Point(w, float(rad_s_to_rpm(o)), a, t, float(al))
-        for w, o, a, t, al in zip(op.wind, op.omega, op.aero, op.total, alpha, strict=True)
-    ]
+    alpha = _tip_alpha(spec)
+    if len(alpha) != len(op.wind):
+        raise ValueError("the mode's operating points are not the schedule's")
+    return [_point(op, k, alpha) for k in range(len(alpha))]
 
 
 def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]":
