@@ -1,42 +1,84 @@
 # Everything a fresh machine needs: `make demo` and `make test` create the virtual
-# environment themselves (python3 -m venv + pip from PyPI).
+# environment themselves (python3 -m venv + pip from PyPI), from the lock files in
+# requirements/ (pinned versions with their hashes: the install that worked yesterday works
+# today). `make lock` refreshes them; pyproject.toml keeps the ranges a library user gets.
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
-STAMP  := $(VENV)/.installed
+RUNTIME := $(VENV)/.runtime-installed
+DEV     := $(VENV)/.dev-installed
+PIP_TOOLS := pip-tools==7.6.2
 
-.PHONY: demo test lint venv clean fuzz
+.PHONY: demo test lint venv clean fuzz lock install-check docs-images
 
-$(STAMP): pyproject.toml
+$(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[dev]'
-	touch $(STAMP)
 
-venv: $(STAMP)
+# The locked packages (pip checks every hash), then wtvib itself without touching them;
+# setuptools, its build backend, is in the lock too (--no-build-isolation uses it).
+$(RUNTIME): requirements/runtime.txt pyproject.toml | $(BIN)/python
+	$(BIN)/pip install --quiet --disable-pip-version-check -r requirements/runtime.txt
+	$(BIN)/pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
+	touch $@
 
-demo: $(STAMP)
+$(DEV): requirements/dev.txt pyproject.toml | $(BIN)/python
+	$(BIN)/pip install --quiet --disable-pip-version-check -r requirements/dev.txt
+	$(BIN)/pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
+	touch $@ $(RUNTIME)
+
+venv: $(DEV)
+
+demo: $(RUNTIME)
 	$(BIN)/wtvib check turbines/wka-60.yaml --out demo/ || test $$? -eq 1
 	@echo "Campbell diagram written to demo/"
 
-lint: $(STAMP)
+lint: $(DEV)
 	$(BIN)/ruff check wtvib tests bench
 	$(BIN)/ruff format --check wtvib tests bench
 	$(BIN)/mypy
 
 # One BLAS thread, as the CLI pins for itself: the tests solve the same small problems, and
 # OpenBLAS's spinning threads only slow them on a 2-core machine.
-test: lint
+test: lint install-check
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/pytest -q
+
+# wtvib as a user installs it: the wheel built from this tree (isolated build, as `pip
+# install .` does), installed into a fresh virtual environment without extras and without
+# the lock (pyproject's ranges, from PyPI), then started and run on a catalogue turbine with
+# its figures. A module wtvib imports but does not declare fails here.
+INSTALL_CHECK := build/install-check
+install-check: $(DEV)
+	rm -rf $(INSTALL_CHECK) && mkdir -p $(INSTALL_CHECK)/out
+	$(BIN)/pip wheel --quiet --disable-pip-version-check --no-deps -w $(INSTALL_CHECK)/dist .
+	$(PYTHON) -m venv $(INSTALL_CHECK)/venv
+	$(INSTALL_CHECK)/venv/bin/pip install --quiet --disable-pip-version-check $(INSTALL_CHECK)/dist/wtvib-*.whl
+	$(INSTALL_CHECK)/venv/bin/wtvib --version
+	cd $(INSTALL_CHECK)/out && ../venv/bin/wtvib check $(CURDIR)/turbines/mod-2.yaml > check.txt \
+		|| test $$? -eq 1
+	test -s $(INSTALL_CHECK)/out/mod-2.campbell.png
+	@echo "install-check: the bare wheel installs, starts and audits"
+
+# Refresh the lock files from pyproject.toml (newest releases within its ranges), with
+# pip-tools in a throwaway environment; commit requirements/ afterwards.
+lock:
+	rm -rf build/lock-venv && $(PYTHON) -m venv build/lock-venv
+	build/lock-venv/bin/pip install --quiet '$(PIP_TOOLS)'
+	build/lock-venv/bin/pip-compile --quiet --generate-hashes --allow-unsafe --strip-extras \
+		--all-build-deps --no-emit-index-url --no-emit-find-links \
+		pyproject.toml -o requirements/runtime.txt
+	build/lock-venv/bin/pip-compile --quiet --generate-hashes --allow-unsafe --strip-extras \
+		--all-build-deps --no-emit-index-url --no-emit-find-links --extra dev \
+		pyproject.toml -o requirements/dev.txt
+	rm -rf build/lock-venv
 
 # A long fuzzing campaign (>= 100,000 cases: 3 spec properties x 40,000 examples, 2
 # importer properties x 2,000); the outcome is recorded by hand in tests/FUZZ.md. CI runs
 # the short profile inside `make test`. The invariant's bounds: 30 s per example (the
 # profile's deadline) and 2 GB of address space per process (ulimit -v: a MemoryError is a
 # failure like any other exception).
-fuzz: $(STAMP)
+fuzz: $(DEV)
 	ulimit -v 2000000 && OPENBLAS_NUM_THREADS=1 HYPOTHESIS_PROFILE=fuzz $(BIN)/pytest -q tests/test_fuzz.py \
 		tests/test_fuzz_importers.py -p no:cacheprovider --hypothesis-show-statistics
 
 clean:
-	rm -rf $(VENV) demo .pytest_cache .mypy_cache .ruff_cache
+	rm -rf $(VENV) demo build .pytest_cache .mypy_cache .ruff_cache
