@@ -118,3 +118,40 @@ def test_the_other_files_of_a_deck_set_say_which_file_to_give(shared):
     hint = r"no \.lin files; to audit its deck set, give NREL-5MW\.fst"
     with pytest.raises(SpecError, match=hint):
         importers.load(folder)
+
+
+def test_a_spec_is_recognised_by_its_format_key_not_by_its_prose():
+    # a converted deck set's assumptions name ElastoDyn, BlSpn and NumBl: detection read them
+    # as an AeroDyn file and `convert … && check` failed on wtvib's own output
+    text = (
+        "# wtvib spec converted from NREL-5MW.fst\nwtvib: 1\nturbine: {name: n}\n"
+        "assumptions:\n- 'ElastoDyn deck: 3 NumBl, AeroDyn BlSpn stations, TwrFile read'\n"
+    )
+    assert importers.detect(Path("n.yaml"), text) == "wtvib"
+    assert importers.detect(Path("n.txt"), text) == "wtvib"
+
+
+def test_a_deck_is_recognised_by_the_key_column_only():
+    prose = "This text mentions TwrFile and NumBl in passing and PCMode too.\n"
+    with pytest.raises(SpecError, match="not a format wtvib reads"):
+        importers.detect(Path("notes.dat"), prose)
+    with pytest.raises(SpecError, match="an OpenFAST SubDyn file"):
+        importers.detect(Path("sd.dat"), "   3   NReact  - number of reactions\n")
+
+
+def test_convert_then_check_round_trips_a_deck_set_with_aerodyn(shared, tmp_path):
+    from wtvib.spec import from_document, load_document, read_text
+
+    out = tmp_path / "n.yaml"
+    data = importers.to_data(shared / "reference/NREL5MW/NREL-5MW.fst")
+    import yaml
+
+    out.write_text("wtvib: 1\n" + yaml.safe_dump({k: v for k, v in data.items() if k != "wtvib"}))
+    assert importers.detect(out, read_text(out)) == "wtvib"
+    from_document(load_document(out, read_text(out)))  # loads as a spec
+
+
+def test_a_folder_of_specs_points_to_batch(tmp_path):
+    (tmp_path / "a.yaml").write_text("wtvib: 1\n")
+    with pytest.raises(SpecError, match="wtvib batch"):
+        importers.detect(tmp_path, "")

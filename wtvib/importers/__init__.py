@@ -20,10 +20,23 @@ FORMATS += "linearisation (.lin, or a folder of them), HAWCStab2 (.cmb) or a tab
 
 
 def detect(path: Path, text: str) -> str:
-    """``wtvib``, ``windio`` or ``elastodyn`` by content; SpecError for anything else."""
-    head = text[:4000]
+    """``wtvib``, ``windio``, ``elastodyn`` or a Campbell-results reader, by content;
+    SpecError for anything else.
+
+    Keys decide, never prose: a wtvib spec by its top-level ``wtvib:`` key (a converted deck
+    set's assumptions mention ElastoDyn and BlSpn), a YAML file by its suffix, an OpenFAST
+    input by a key in the key column of a ``value Key - description`` line.
+    """
     suffix = path.suffix.lower()
-    if path.is_dir() or suffix == ".lin":
+    if path.is_dir():
+        if _holds_specs(path):
+            raise SpecError(
+                "a folder of turbine files: audit them with `wtvib batch "
+                f"{path}` (check takes one turbine file, or a folder of .lin files)",
+                source=str(path),
+            )
+        return "openfast-lin"
+    if suffix == ".lin":
         return "openfast-lin"
     if suffix == ".cmb":
         return "hawcstab2"
@@ -32,40 +45,55 @@ def detect(path: Path, text: str) -> str:
 
         if looks_like(text):
             return "campbell-table"
-    deck_like = path.suffix.lower() in (".dat", ".fst") or "ELASTODYN" in head.upper()
-    numbl = re.search(r"^\s*\S+\s+NumBl\b", text, re.MULTILINE)  # the key, not NumBlNds
-    if deck_like and ("TwrFile" in text or "EDFile" in text or numbl):
+    if _WTVIB_KEY.search(text[:100_000]):
+        return "wtvib"
+    if suffix in (".yaml", ".yml"):
+        windio_like = "components:" in text and ("assembly:" in text or "windIO" in text)
+        return "windio" if windio_like else "wtvib"
+    keys = set(_DECK_KEY.findall(text))
+    if keys & {"TwrFile", "EDFile", "NumBl"}:
         return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
-    part = _deck_part(text) if deck_like else None
+    part = next((name for name, marks in _DECK_PARTS if keys & set(marks)), None)
     if part is not None:
         raise SpecError(
             f"an OpenFAST {part} file: wtvib reads it through the deck set that names it — "
             "give the .fst (or the ElastoDyn deck)",
             source=str(path),
         )
-    if path.suffix.lower() in (".yaml", ".yml"):
-        windio_like = "components:" in text and ("assembly:" in text or "windIO" in text)
-        return "windio" if windio_like and "wtvib:" not in head else "wtvib"
-    first = next((ln for ln in head.splitlines() if ln.strip() and ln.lstrip()[0] != "#"), "")
-    if first.replace(" ", "").startswith("wtvib:"):
-        return "wtvib"
     raise SpecError(f"not a format wtvib reads; expected {FORMATS}", source=str(path))
 
 
+#: A wtvib spec's format key, at the top level of the document.
+_WTVIB_KEY = re.compile(r"^wtvib\s*:", re.MULTILINE)
+#: The key of an OpenFAST ``value Key - description`` line (the second token).
+_DECK_KEY = re.compile(r"^[ \t]*\S+[ \t]+([A-Za-z_][A-Za-z0-9_()]*)(?=\s|$)", re.MULTILINE)
+
 #: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
 _DECK_PARTS = (
-    ("AeroDyn", ("AFNames", "ADBlFile", "BlSpn")),
+    ("AeroDyn", ("AFNames", "ADBlFile", "NumBlNds")),
     ("ServoDyn", ("PCMode", "VSContrl", "DLL_FileName")),
-    ("ElastoDyn tower", ("HtFract", "TwFAStif")),
-    ("ElastoDyn blade", ("BlFract", "FlpStff")),
+    ("ElastoDyn tower", ("NTwInpSt", "TwrFADmp(1)", "TwrFADmp")),
+    ("ElastoDyn blade", ("NBlInpSt", "BldFlDmp(1)", "BldFlDmp")),
     ("InflowWind", ("WindType",)),
     ("aerofoil (AeroDyn polar)", ("NumAlf", "InterpOrd")),
+    ("BeamDyn", ("QuasiStaticInit", "member_total", "kp_total")),
+    ("HydroDyn", ("PotMod", "PotFile")),
+    ("SubDyn", ("FEMMod", "NReact", "SttcSolve")),
+    ("SeaState", ("WaveHs", "WaveTp")),
+    ("mooring (MoorDyn, MAP++ or FEAMooring)", ("NumLines", "LineTypes", "NLines")),
 )
 
 
-def _deck_part(text: str) -> str | None:
-    """Which other file of an OpenFAST deck set this is, if any."""
-    return next((name for name, keys in _DECK_PARTS if any(k in text for k in keys)), None)
+def _holds_specs(folder: Path) -> bool:
+    """Whether a folder holds turbine specs or windIO files (what batch discovers) and no
+    .lin or .fst file (a deck set's folder gets the name of its .fst instead)."""
+    try:
+        names = [p.name.lower() for p in folder.iterdir()]
+    except OSError:
+        return False
+    if any(n.endswith((".lin", ".fst")) for n in names):
+        return False
+    return any(n.endswith((".yaml", ".yml")) for n in names)
 
 
 def to_data(
