@@ -72,6 +72,11 @@ def test_every_value_has_provenance_with_a_cited_source(name):
     for path, q in s.provenance.items():
         if q.provenance == "published":
             assert q.source, f"{path} is published but names no source"
+            # a published value cites a publication, not the project's own brief or README
+            cited = s.sources[q.source].lower()
+            assert not any(w in cited for w in ("wtvib", "domain brief", "readme")), (
+                f"{path} is marked published but cites {s.sources[q.source]!r}"
+            )
 
 
 def test_wka60_resonates_with_2p_at_rated_speed_with_daf_4():
