@@ -26,7 +26,7 @@ CASES = [
     # (edit of GOOD, field path, line, words in the message); a missing field or a
     # cross-field error points at the line of the enclosing mapping
     (lambda t: t.replace("  blades: 3\n", ""), "rotor.blades", 3, "required field is missing"),
-    (lambda t: t.replace("blades: 3", "blades: three"), "rotor.blades", 4, "valid integer"),
+    (lambda t: t.replace("blades: 3", "blades: three"), "rotor.blades", 4, "a whole number"),
     (lambda t: t.replace("fa1: 0.5", "fa1: -0.5"), "tower.modes.fa1", 12, "greater than 0"),
     (lambda t: t.replace("min_rpm: 10", "min_rpm: 25"), "rotor.speed", 7, "exceeds max_rpm"),
     (
@@ -96,7 +96,7 @@ def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
     err = error_of(write_spec, good.replace("[[12, 13.5]]", "[[12]]"))
     assert err.path == "rotor.speed.quick_pass_rpm[0]" and "at least 2 items" in err.message
     err = error_of(write_spec, good.replace("[[12, 13.5]]", "[['12', 13.5]]"))
-    assert err.path == "rotor.speed.quick_pass_rpm[0][0]" and "valid number" in err.message
+    assert err.path == "rotor.speed.quick_pass_rpm[0][0]" and "should be a number" in err.message
 
 
 @pytest.mark.parametrize(
@@ -196,10 +196,21 @@ def test_json_schema_accepts_quantities():
 @pytest.mark.parametrize(
     ("line", "replacement", "message"),
     [
-        ("  blades: 2", "  blades: true", "rotor.blades: Input should be a valid integer"),
-        ("  blades: 2", "  blades: 2.0", "rotor.blades: Input should be a valid integer"),
-        ("    fixed_rpm: 30", "    fixed_rpm: 1:30", "Input should be a valid number (got '1:30')"),
-        ("    fixed_rpm: 30", '    fixed_rpm: "30"', "Input should be a valid number (got '30')"),
+        ("  blades: 2", "  blades: true", "rotor.blades: should be a whole number, not true"),
+        ("  blades: 2", "  blades: 2.0", "rotor.blades: should be a whole number (got 2.0)"),
+        ("    fixed_rpm: 30", "    fixed_rpm: 1:30", "should be a number, not text (got '1:30')"),
+        # a quoted number: what the field wants, and how to write it (issue 34: a quoted
+        # float in a quantity was told "Input should be a valid integer")
+        (
+            "    fixed_rpm: 30",
+            '    fixed_rpm: "30"',
+            "should be a number, not text (got '30': write it without quotes)",
+        ),
+        (
+            "    fixed_rpm: 30",
+            '    fixed_rpm: {value: "30.5", provenance: published}',
+            "rotor.speed.fixed_rpm.value: should be a number, not text (got '30.5': write it",
+        ),
         ("    fa1: 0.75", "    fa1: 0_75", "got '0_75'"),
     ],
 )

@@ -1,5 +1,6 @@
 """pydantic validation errors as one readable line with field path and YAML line."""
 
+from collections.abc import Set as AbstractSet
 from typing import Any
 
 from pydantic import ValidationError
@@ -48,15 +49,12 @@ def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecE
     if typo is not None:
         chosen = {**typo[0], "missing_sibling": typo[1]}
     err = chosen
-    loc: list[str | int] = []
-    for part in err["loc"]:
-        if part in ("number", "full", "[key]", "int", "float", "str") or (
-            isinstance(part, str) and part.startswith(_BRANCH)
-        ):
-            continue
-        loc.append(part)
+    loc = _field(err["loc"])
     path: Path = (*prefix, *loc)
-    message = _message(err)
+    # every branch's complaint about this field: a number field (int | float) that got text
+    # says "a number", not the first branch's "a valid integer"
+    kinds = {e["type"] for e in errors if _field(e["loc"]) == loc}
+    message = _message(err, kinds)
     extra = len({tuple(e["loc"][: len(loc)]) for e in errors}) - 1 - (typo is not None)
     more = f" (and {extra} more problem{'s' * (extra > 1)})" if extra > 0 else ""
     return SpecError(
@@ -67,9 +65,36 @@ def _spec_error(exc: ValidationError, doc: Document, prefix: Path = ()) -> SpecE
     )
 
 
-def _message(err: Any) -> str:
+def _field(where: Any) -> list[str | int]:
+    """A validation error's location without pydantic's branch names."""
+    return [
+        part
+        for part in where
+        if not (
+            part in ("number", "full", "[key]", "int", "float", "str")
+            or (isinstance(part, str) and part.startswith(_BRANCH))
+        )
+    ]
+
+
+def _message(err: Any, kinds: AbstractSet[str] = frozenset()) -> str:
     kind = err["type"]
     got = err.get("input")
+    wanted = (
+        "a number"
+        if kinds & {"float_type", "float_parsing"}
+        else "a whole number"
+        if kinds & {"int_type", "int_parsing"}
+        else None
+    )
+    if wanted is not None and kind in _SCALAR_TYPES:
+        if isinstance(got, str):
+            quoted = ": write it without quotes" if _numeric(got) else ""
+            return f"should be {wanted}, not text (got {got!r}{quoted})"
+        if isinstance(got, bool):
+            return f"should be {wanted}, not {str(got).lower()}"
+        if wanted == "a whole number" and isinstance(got, float):
+            return f"should be a whole number (got {got!r})"
     if kind == "missing":
         return "required field is missing"
     if kind == "extra_forbidden":
@@ -95,6 +120,14 @@ def _message(err: Any) -> str:
     if kind == "literal_error":
         return f"{text} (got {got!r})"
     return text
+
+
+def _numeric(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _misspelt(errors: list[Any]) -> tuple[Any, str] | None:
