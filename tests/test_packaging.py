@@ -48,11 +48,8 @@ def test_every_imported_module_is_declared() -> None:
     missing = []
     for module, files in sorted(_imported().items()):
         dists = {re.sub(r"[-_.]+", "-", d).lower() for d in distributions.get(module, [module])}
-        if module in OPTIONAL:
-            ok = dists & _names(extras[OPTIONAL[module]])
-        else:
-            ok = dists & declared
-        if not ok:
+        allowed = _names(extras[OPTIONAL[module]]) if module in OPTIONAL else declared
+        if not dists & allowed:
             missing.append(f"{module} (imported by {', '.join(sorted(files))})")
     assert not missing, f"imported but not declared in pyproject.toml: {missing}"
 
