@@ -29,7 +29,7 @@ $(DEV): requirements/dev.txt pyproject.toml | $(BIN)/python
 venv: $(DEV)
 
 demo: $(RUNTIME)
-	$(BIN)/wtvib check turbines/wka-60.yaml --out demo/ || test $$? -eq 1
+	$(BIN)/wtvib check turbines/wka-60.yaml --out-dir demo/ || test $$? -eq 1
 	@echo "Campbell diagram written to demo/"
 
 lint: $(DEV)

@@ -41,7 +41,7 @@ def main() -> None:
         full = []
         for _ in range(3):
             shutil.rmtree(out, ignore_errors=True)
-            full += timed([WTVIB, "batch", str(ROOT / "turbines"), "--out", str(out)], 1)
+            full += timed([WTVIB, "batch", str(ROOT / "turbines"), "--out-dir", str(out)], 1)
         n = len(list((ROOT / "turbines").glob("*.yaml")))
         print(
             f"catalogue batch ({n} turbines, PNG+JSON+PDF): median "

@@ -101,7 +101,7 @@ def main() -> None:
             runs = []
             for _ in range(5):
                 t0 = time.perf_counter()
-                subprocess.run([WTVIB, "check", *args, "--out", tmp], capture_output=True)
+                subprocess.run([WTVIB, "check", *args, "--out-dir", tmp], capture_output=True)
                 runs.append(time.perf_counter() - t0)
             print(
                 f"wtvib check {name} with Campbell PNG (whole process): median "

@@ -23,7 +23,7 @@ def run(threads: str) -> float:
     env = {**os.environ, "OPENBLAS_NUM_THREADS": threads, "OMP_NUM_THREADS": threads}
     t0 = time.perf_counter()
     subprocess.run(
-        [str(ROOT / ".venv" / "bin" / "wtvib"), "check", str(DECK), "--no-plot", "-f", "json"],
+        [str(ROOT / ".venv" / "bin" / "wtvib"), "check", str(DECK), "--no-plots", "-f", "json"],
         env=env,
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,

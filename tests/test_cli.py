@@ -377,3 +377,75 @@ def test_check_draws_the_main_figures_and_the_detail_on_request(tmp_path):
     assert {"blade-flutter.png", "blade-stall.png"} <= {
         p.name.split(".", 1)[1] for p in every.iterdir()
     }
+
+
+# --- one vocabulary (issue 34) -------------------------------------------------------------
+
+COMMANDS = ("check", "batch", "report", "window", "size", "convert", "schema")
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_help_fits_a_screen_and_shows_no_bool_metavars(command):
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    out = CliRunner().invoke(app, [command, "--help"], env={"COLUMNS": "80"}).output
+    assert len(out.splitlines()) <= 30, out  # check's ran to 96 lines at 80 columns
+    assert "<bool>" not in out and "--no-strict" not in out and "--no-force" not in out
+    assert max(len(line) for line in out.splitlines()) <= 80
+
+
+def test_help_all_shows_every_option():
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    short = CliRunner().invoke(app, ["check", "--help"], env={"COLUMNS": "80"}).output
+    every = CliRunner().invoke(app, ["check", "--help-all"], env={"COLUMNS": "80"}).output
+    for hidden in ("--uncertainty", "--head-mass", "--rule", "--force", "--debug"):
+        assert hidden not in short and hidden in every
+    assert "--help-all" in short
+
+
+def test_one_spelling_per_idea_folders_files_and_figures():
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    def options(command):
+        return CliRunner().invoke(app, [command, "--help-all"], env={"COLUMNS": "80"}).output
+
+    for command in ("check", "window", "batch"):
+        text = options(command)
+        assert "--out-dir DIR" in text and "--no-plots" in text
+        assert "-o," not in text and "--no-plot " not in text
+    for command in ("report", "convert"):
+        assert "-o, --output FILE" in options(command)
+    convert = options("convert")
+    assert "Audit" not in convert and "audits" not in convert  # convert audits nothing
+
+
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [
+        (["-o", "d", "--no-plot"], ["--out-dir", "d", "--no-plots"]),
+        (["--out=d", "--plot"], ["--out-dir=d"]),
+        (["--no-plot", "--", "-o"], ["--no-plots", "--", "-o"]),
+    ],
+)
+def test_old_spellings_are_still_understood(old, new):
+    from wtvib.cli import ALIASES, _respell
+
+    assert _respell(old, ALIASES["check"]) == new
+
+
+def test_an_old_spelling_still_works_end_to_end(tmp_path):
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    spec = str(TURBINES / "mod-2.yaml")
+    result = CliRunner().invoke(app, ["check", spec, "-o", str(tmp_path), "-f", "json"])
+    assert result.exit_code in (0, 1), result.output
+    assert list(tmp_path.glob("mod-2.*.png"))

@@ -27,12 +27,56 @@ import typer
 for _threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_threads, "1")
 
+#: Old spellings of options, still understood but no longer shown (one spelling per idea:
+#: ``--out-dir`` is a folder, ``-o``/``--output`` a file, ``--no-plots`` writes no figures):
+#: command → {old token: today's (None: the old token is dropped, it only restated the
+#: default)}.
+_FOLDER_ALIASES: dict[str, str | None] = {"--out": "--out-dir", "-o": "--out-dir"}
+ALIASES: dict[str, dict[str, str | None]] = {
+    "check": {**_FOLDER_ALIASES, "--no-plot": "--no-plots", "--plot": None, "--plots": None},
+    "window": {**_FOLDER_ALIASES, "--no-plot": "--no-plots", "--plot": None, "--plots": None},
+    "batch": {**_FOLDER_ALIASES, "--plots": None},
+}
+
+
+def _respell(args: list[str], table: dict[str, str | None]) -> list[str]:
+    """The command line with old option spellings replaced by today's (up to ``--``)."""
+    out: list[str] = []
+    for i, arg in enumerate(args):
+        if arg == "--":
+            return [*out, *args[i:]]
+        key, sep, value = arg.partition("=") if arg.startswith("--") else (arg, "", "")
+        if key not in table:
+            out.append(arg)
+        elif table[key] is not None:
+            out.append(f"{table[key]}{sep}{value}")
+    return out
+
+
+def _help_all(ctx: typer.Context, value: bool) -> None:
+    """``--help-all``: the help with every option, the ones ``--help`` leaves out too."""
+    if not value or ctx.resilient_parsing:
+        return
+    for param in ctx.command.params:
+        param.hidden = False  # type: ignore[attr-defined]  # options have it, arguments too
+    typer.echo(ctx.get_help())
+    raise typer.Exit(EXIT_PASS)
+
+
+class _Command(typer.core.TyperCommand):
+    """A command that understands the old spellings of its options (:data:`ALIASES`)."""
+
+    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
+        return super().parse_args(ctx, _respell(args, ALIASES.get(self.name or "", {})))
+
+
 app = typer.Typer(
     help="Vibration audit of wind turbines: natural frequencies against rotor excitations, "
     "after Hau, Wind Turbines, ch. 7.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,  # click's plain help: fits 80 columns; usage errors on one line
 )
 
 EXIT_PASS, EXIT_FAIL, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
@@ -66,17 +110,27 @@ class PresetName(StrEnum):
 
 RpmOption = Annotated[
     str | None,
-    typer.Option(help="Operating range MIN:MAX \\[rpm] (or one fixed speed) for imports."),
+    typer.Option(
+        metavar="MIN:MAX",
+        help="Operating range [rpm] (or one fixed speed) for imports that do not give it.",
+    ),
 ]
-RatedOption = Annotated[float | None, typer.Option(help="Rated speed \\[rpm].")]
+RatedOption = Annotated[
+    float | None, typer.Option(metavar="RPM", hidden=True, help="Rated speed [rpm].")
+]
 HeadMassOption = Annotated[
     float | None,
-    typer.Option(help="Tower-head mass \\[kg] for windIO files (1.x hold no hub/nacelle)."),
+    typer.Option(
+        metavar="KG",
+        hidden=True,
+        help="Tower-head mass [kg] for windIO files (1.x hold no hub/nacelle).",
+    ),
 ]
 ClampedOption = Annotated[
     bool,
     typer.Option(
         "--clamped-base",
+        hidden=True,
         help="Audit a floating turbine's tower (windIO file or OpenFAST deck set) as if "
         "clamped at its base (said in the report's headline; platform and moorings are not "
         "modelled).",
@@ -84,17 +138,51 @@ ClampedOption = Annotated[
 ]
 SoilOption = Annotated[
     Path | None,
-    typer.Option(help="Soil profile (YAML: soil layers, bounds) for a windIO monopile."),
+    typer.Option(
+        metavar="FILE",
+        hidden=True,
+        help="Soil profile (YAML: soil layers, bounds) for a windIO monopile.",
+    ),
 ]
 BladesOption = Annotated[
     int | None,
-    typer.Option(min=1, max=10, help="Number of blades, for Campbell results that do not say."),
+    typer.Option(
+        min=1,
+        max=10,
+        metavar="N",
+        hidden=True,
+        help="Number of blades, for Campbell results that do not say.",
+    ),
 ]
 MarginOption = Annotated[
-    float | None, typer.Option(help="Margin m, e.g. 0.05 (overrides the spec).")
+    float | None, typer.Option(metavar="M", help="Margin, e.g. 0.05 (overrides the spec).")
 ]
-RuleOption = Annotated[RuleKind | None, typer.Option(help="Margin rule (overrides the spec).")]
+RuleOption = Annotated[
+    RuleKind | None, typer.Option(hidden=True, help="Margin rule (overrides the spec).")
+]
 PresetOption = Annotated[PresetName | None, typer.Option(help="Code preset for rule and margin.")]
+DebugOption = Annotated[
+    bool, typer.Option("--debug", hidden=True, help="Show tracebacks for errors.")
+]
+ForceOption = Annotated[
+    bool,
+    typer.Option(
+        "--force", hidden=True, help="Replace existing output files not written by wtvib."
+    ),
+]
+FormatOption = Annotated[Format, typer.Option("--format", "-f", help="Output format.")]
+NoPlotsOption = Annotated[bool, typer.Option("--no-plots", help="Write no figures.")]
+StrictOption = Annotated[bool, typer.Option("--strict", help="Exit 1 on warn as well as fail.")]
+HelpAllOption = Annotated[
+    bool,
+    typer.Option(
+        "--help-all",
+        is_eager=True,
+        expose_value=False,
+        callback=_help_all,
+        help="Show every option (import, rule, figure and study options too).",
+    ),
+]
 
 
 def _options(
@@ -137,6 +225,7 @@ RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
     ("margin", MarginOption, None),
     ("rule", RuleOption, None),
     ("preset", PresetOption, None),
+    ("help_all", HelpAllOption, False),  # --help shows the common options; this, every one
 )
 
 
@@ -157,7 +246,8 @@ def _run_options(command: F) -> F:
 
     @functools.wraps(command)
     def wrapper(*args: object, **kwargs: Any) -> None:
-        shared = [kwargs.pop(name) for name, _, _ in RUN_OPTIONS]
+        kwargs.pop("help_all", None)  # not exposed: its callback prints the help and exits
+        shared = [kwargs.pop(name) for name, _, _ in RUN_OPTIONS if name != "help_all"]
         command(*args, options=_options(*shared), **kwargs)
 
     wrapper.__signature__ = sig.replace(parameters=[*rest, *extra, *debug])  # type: ignore[attr-defined]
@@ -253,49 +343,70 @@ SPEC_HELP = (
 )
 
 
-@app.command()
+@app.command(cls=_Command)
 @_user_errors
 @_run_options
 def check(
-    spec_file: Annotated[Path, typer.Argument(help=SPEC_HELP)],
-    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    spec_file: Annotated[Path, typer.Argument(metavar="FILE", help=SPEC_HELP)],
+    format: FormatOption = Format.text,
     out: Annotated[
         Path | None,
-        typer.Option("--out", "-o", help="Folder for the PNGs (default: the current directory)."),
+        typer.Option(
+            "--out-dir",
+            "-d",
+            metavar="DIR",
+            help="Folder for the figures (default: the current directory).",
+        ),
     ] = None,
-    plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write Campbell PNGs.")] = True,
-    strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
-    force: Annotated[
-        bool, typer.Option(help="Replace existing output files not written by wtvib.")
-    ] = False,
-    show_all: Annotated[bool, typer.Option("--all", help="Show passing minor checks.")] = False,
+    no_plots: NoPlotsOption = False,
     detail: Annotated[
         bool, typer.Option("--detail", help="Print the tables of modes and checks too.")
     ] = False,
-    figures: Annotated[
-        Figures,
-        typer.Option(help="main: the Campbell diagrams and damping; all: the detail figures too."),
-    ] = Figures.main,
-    uncertainty: Annotated[
-        bool, typer.Option("--uncertainty", help="Propagate the spec's tolerances (Monte Carlo).")
-    ] = False,
-    samples: Annotated[int, typer.Option(min=10, help="Monte Carlo samples.")] = 2000,
-    seed: Annotated[int, typer.Option(help="Seed of the sampling (reproducible).")] = 0,
-    scheduler: Annotated[
-        str | None,
-        typer.Option(help="Sample on a Dask scheduler (tcp://host:8786); needs --uncertainty."),
-    ] = None,
+    strict: StrictOption = False,
     campbell_csv: Annotated[
         Path | None,
         typer.Option(
             "--campbell-csv",
+            metavar="FILE",
             help="Write the Campbell data (frequency and damping of every judged "
             "mode per operating point) as CSV.",
         ),
     ] = None,
+    force: ForceOption = False,
+    show_all: Annotated[
+        bool, typer.Option("--all", hidden=True, help="Show passing minor checks too.")
+    ] = False,
+    figures: Annotated[
+        Figures,
+        typer.Option(
+            hidden=True,
+            help="main: the Campbell diagrams and damping; all: the detail figures too.",
+        ),
+    ] = Figures.main,
+    uncertainty: Annotated[
+        bool,
+        typer.Option(
+            "--uncertainty", hidden=True, help="Propagate the spec's tolerances (Monte Carlo)."
+        ),
+    ] = False,
+    samples: Annotated[
+        int, typer.Option(min=10, metavar="N", hidden=True, help="Monte Carlo samples.")
+    ] = 2000,
+    seed: Annotated[
+        int,
+        typer.Option(metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
+    ] = 0,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(
+            metavar="ADDRESS",
+            hidden=True,
+            help="Sample on a Dask scheduler (tcp://host:8786); needs --uncertainty.",
+        ),
+    ] = None,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    debug: DebugOption = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
     from . import audit
@@ -305,6 +416,7 @@ def check(
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
     from .plots.render import Drawer
 
+    plot = not no_plots
     written: list[Path] = []
     with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
         turbine = options.load(spec_file)
@@ -358,18 +470,18 @@ def check(
     raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
 
 
-@app.command()
+@app.command(cls=_Command)
 @_user_errors
 @_run_options
 def report(
-    spec_file: Annotated[Path, typer.Argument(help=SPEC_HELP)],
-    output: Annotated[Path, typer.Option("--output", "-o", help="PDF file to write.")],
-    force: Annotated[
-        bool, typer.Option(help="Replace an existing file not written by wtvib.")
-    ] = False,
+    spec_file: Annotated[Path, typer.Argument(metavar="FILE", help=SPEC_HELP)],
+    output: Annotated[
+        Path, typer.Option("--output", "-o", metavar="FILE", help="PDF file to write.")
+    ],
+    force: ForceOption = False,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    debug: DebugOption = False,
 ) -> None:
     """Write the PDF audit report of one turbine."""
     from . import audit, batch, pdfreport  # audit: the models imported before the fork
@@ -397,33 +509,41 @@ def report(
     raise typer.Exit(EXIT_FAIL if item.report["verdict"] == "fail" else EXIT_PASS)
 
 
-@app.command("batch")
+@app.command("batch", cls=_Command)
 @_user_errors
 @_run_options
 def batch_command(
-    inputs: Annotated[list[Path], typer.Argument(help="Spec files or folders (searched).")],
+    inputs: Annotated[
+        list[Path], typer.Argument(metavar="FILE|FOLDER...", help="Spec files or folders.")
+    ],
     out: Annotated[
-        Path | None, typer.Option("--out", "-o", help="Folder for JSON, PNG, CSV and PDF.")
+        Path | None,
+        typer.Option(
+            "--out-dir", "-d", metavar="DIR", help="Folder for the JSON, CSV, PNG and PDF files."
+        ),
     ] = None,
-    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    format: FormatOption = Format.text,
     jobs: Annotated[
-        int | None, typer.Option("--jobs", "-j", min=1, help="Processes (default: all cores).")
+        int | None,
+        typer.Option("--jobs", "-j", min=1, metavar="N", help="Processes (default: all cores)."),
     ] = None,
-    plots: Annotated[
-        bool, typer.Option("--plots/--no-plots", help="Campbell PNGs and the PDF report.")
-    ] = True,
+    no_plots: Annotated[
+        bool, typer.Option("--no-plots", help="Write no figures and no PDF report.")
+    ] = False,
+    sort: Annotated[SortBy, typer.Option(help="Order of the summary table.")] = SortBy.file,
+    strict: StrictOption = False,
     scheduler: Annotated[
         str | None,
-        typer.Option(help="Audit on a Dask scheduler's workers (tcp://host:8786), not locally."),
+        typer.Option(
+            metavar="ADDRESS",
+            hidden=True,
+            help="Audit on a Dask scheduler's workers (tcp://host:8786), not locally.",
+        ),
     ] = None,
-    sort: Annotated[SortBy, typer.Option(help="Order of the summary table.")] = SortBy.file,
-    strict: Annotated[bool, typer.Option(help="Exit 1 on warn as well as fail.")] = False,
-    force: Annotated[
-        bool, typer.Option(help="Replace existing output files not written by wtvib.")
-    ] = False,
+    force: ForceOption = False,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    debug: DebugOption = False,
 ) -> None:
     """Audit a catalogue: every spec found, in parallel, with a summary and reports.
 
@@ -433,6 +553,7 @@ def batch_command(
     from . import batch
     from .report import batch_progress, batch_summary
 
+    plots = not no_plots
     paths = batch.discover(inputs)
     if not paths:
         from .errors import SpecError
@@ -583,21 +704,26 @@ class ScaleWhat(StrEnum):
     both = "both"
 
 
-@app.command()
+@app.command(cls=_Command)
 @_user_errors
 @_run_options
 def window(
-    spec_file: Annotated[Path, typer.Argument(help="Turbine spec, windIO or ElastoDyn file.")],
-    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    spec_file: Annotated[Path, typer.Argument(metavar="FILE", help=SPEC_HELP)],
+    format: FormatOption = Format.text,
     out: Annotated[
         Path | None,
-        typer.Option("--out", "-o", help="Folder for the PNG (default: the current directory)."),
+        typer.Option(
+            "--out-dir",
+            "-d",
+            metavar="DIR",
+            help="Folder for the figure (default: the current directory).",
+        ),
     ] = None,
-    plot: Annotated[bool, typer.Option("--plot/--no-plot", help="Write the windows PNG.")] = True,
-    force: Annotated[bool, typer.Option(help="Replace a file not written by wtvib.")] = False,
+    no_plots: NoPlotsOption = False,
+    force: ForceOption = False,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    debug: DebugOption = False,
 ) -> None:
     """Allowed frequency windows per subsystem, and where the design sits in them."""
     from . import audit, design
@@ -614,7 +740,7 @@ def window(
         from .report import windows_table
 
         windows_table(Console(), doc)
-    if plot:
+    if not no_plots:
         from .outputs import write_atomic
         from .plots import png_bytes
         from .plots.campbell import windows_plot
@@ -629,20 +755,23 @@ def window(
         typer.echo(f"wrote {path}", err=format is Format.json)
 
 
-@app.command("size")
+@app.command("size", cls=_Command)
 @_user_errors
 @_run_options
 def size_command(
-    spec_file: Annotated[Path, typer.Argument(help="Turbine spec with tower sections.")],
+    spec_file: Annotated[
+        Path, typer.Argument(metavar="FILE", help="Turbine spec with tower sections.")
+    ],
     target: Annotated[Target | None, typer.Option(help="Window to land in (its middle).")] = None,
     target_hz: Annotated[
-        float | None, typer.Option(min=0.0, help="Or a first bending frequency \\[Hz].")
+        float | None,
+        typer.Option(min=0.0, metavar="HZ", help="Or a first bending frequency [Hz]."),
     ] = None,
     scale: Annotated[ScaleWhat, typer.Option(help="What to scale.")] = ScaleWhat.wall,
-    format: Annotated[Format, typer.Option("--format", "-f", help="Output format.")] = Format.text,
+    format: FormatOption = Format.text,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    debug: DebugOption = False,
 ) -> None:
     """Scale the tower's wall (or diameter, or both) to put its first bending in a window
     (the windows of `window` under the same operating and rule options)."""
@@ -687,19 +816,46 @@ def _rpm_range(text: str | None) -> tuple[float, float] | None:
     return parts[0], parts[1]
 
 
-@app.command()
+@app.command(cls=_Command)
 @_user_errors
 def convert(
-    source: Annotated[Path, typer.Argument(help="windIO YAML or ElastoDyn deck to convert.")],
-    output: Annotated[Path, typer.Option("--output", "-o", help="wtvib spec to write.")],
+    source: Annotated[
+        Path,
+        typer.Argument(
+            metavar="FILE",
+            help="windIO YAML, OpenFAST deck (.fst or ElastoDyn .dat) or Campbell results "
+            "to convert.",
+        ),
+    ],
+    output: Annotated[
+        Path, typer.Option("--output", "-o", metavar="FILE", help="wtvib spec to write.")
+    ],
     rpm: Annotated[
-        str | None, typer.Option(help="Operating range MIN:MAX \\[rpm] to put in the spec.")
+        str | None,
+        typer.Option(metavar="MIN:MAX", help="Operating range [rpm] to put in the spec."),
     ] = None,
-    rated: RatedOption = None,
-    head_mass: HeadMassOption = None,
-    clamped_base: ClampedOption = False,
-    force: Annotated[bool, typer.Option(help="Replace an existing file.")] = False,
-    debug: Annotated[bool, typer.Option("--debug", help="Show tracebacks for errors.")] = False,
+    rated: Annotated[
+        float | None, typer.Option(metavar="RPM", help="Rated speed [rpm] to put in the spec.")
+    ] = None,
+    head_mass: Annotated[
+        float | None,
+        typer.Option(
+            metavar="KG",
+            help="Tower-head mass [kg] to put in the spec (windIO files: 1.x hold no hub/nacelle).",
+        ),
+    ] = None,
+    clamped_base: Annotated[
+        bool,
+        typer.Option(
+            "--clamped-base",
+            help="Convert a floating turbine's tower (windIO file or OpenFAST deck set) as "
+            "clamped at its base (the spec's assumptions say so; platform and moorings are "
+            "not converted).",
+        ),
+    ] = False,
+    force: Annotated[bool, typer.Option("--force", help="Replace an existing file.")] = False,
+    help_all: HelpAllOption = False,
+    debug: DebugOption = False,
 ) -> None:
     """Write an imported turbine as an editable wtvib spec (validated before writing)."""
     import yaml
@@ -723,12 +879,13 @@ def convert(
     typer.echo(f"wrote {output}")
 
 
-@app.command()
+@app.command(cls=_Command)
 @_user_errors
 def schema(
     report: Annotated[
         bool, typer.Option("--report", help="The report's schema (wtvib-report/1) instead.")
     ] = False,
+    help_all: HelpAllOption = False,
 ) -> None:
     """Print the JSON Schema of the turbine spec, or of the JSON report (--report)."""
     if report:
