@@ -58,6 +58,13 @@ install-check: $(DEV)
 	test -s $(INSTALL_CHECK)/out/mod-2.campbell.png
 	@echo "install-check: the bare wheel installs, starts and audits"
 
+# The README's figure: drawn by the code as it is (tests/test_docs_images.py fails when
+# the committed picture no longer matches what `check` draws).
+docs-images: $(RUNTIME)
+	rm -rf build/docs-images && mkdir -p build/docs-images
+	$(BIN)/wtvib check turbines/wka-60.yaml --out-dir build/docs-images > /dev/null || test $$? -eq 1
+	cp build/docs-images/wka-60.campbell.png docs/wka-60.campbell.png
+
 # Refresh the lock files from pyproject.toml (newest releases within its ranges), with
 # pip-tools in a throwaway environment; commit requirements/ afterwards.
 lock:

@@ -22,9 +22,10 @@ from . import (
     yaw,
 )
 from .analysis import Analysis, Context, Subsystem
-from .excitation import excitations, operating_range
+from .excitation import OperatingRange, excitations, operating_range
 from .modal import ModalError
-from .resonance import Finding, assess_all, resonance_checks
+from .resonance import Finding, Mark, assess_all, resonance_checks
+from .resonance import marks as resonance_marks
 from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
@@ -77,10 +78,21 @@ class Report:
         return "pass" if w == "info" else w
 
     @functools.cached_property
+    def operating_range(self) -> OperatingRange:
+        """The rotor speeds judged, in rad/s."""
+        return operating_range(self.spec.rotor.speed)
+
+    @functools.cached_property
     def campbell(self) -> "campbell.Campbell":
         """The sampled curves of every judged mode (README: the JSON contract's
         ``campbell``)."""
-        return campbell.build(self.modes, operating_range(self.spec.rotor.speed))
+        return campbell.build(self.modes, self.operating_range)
+
+    @functools.cached_property
+    def marks(self) -> tuple[Mark, ...]:
+        """Every resonance the findings hold, one mark each (what the Campbell diagrams
+        draw: :func:`wtvib.resonance.marks`)."""
+        return tuple(resonance_marks(self.findings, self.operating_range))
 
     @property
     def identity(self) -> str:

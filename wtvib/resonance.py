@@ -777,3 +777,127 @@ def _damped_by(f: Finding) -> str:
     if f.mode.origin == "imported" and f.mode.operating is not None:
         return f"in operation, from {f.mode.operating.source}"
     return "in operation, aerodynamic + structural"
+
+
+#: What a point of the Campbell diagram marks: the least margin of a resonance met in steady
+#: operation, a band where the margin is violated without the line meeting the mode, or a
+#: crossing of line and mode (in the order in which they stand for a resonance).
+MarkKind = str
+MARK_KINDS: tuple[MarkKind, ...] = ("least margin", "band violated", "crossing")
+
+
+@dataclass(frozen=True)
+class Mark:
+    """One physical resonance as the Campbell diagram marks it: where, how judged, and the
+    dynamic amplification there (``daf``: 1/(2ζ) at a crossing; ``damping``: that ζ)."""
+
+    rpm: float
+    hz: float
+    status: Status
+    kind: MarkKind
+    line: str
+    modes: tuple[str, ...]
+    daf: float | None = None
+    damping: float | None = None
+
+
+def marks(findings: Sequence[Finding], op: OperatingRange) -> list[Mark]:
+    """The resonances of some findings, one mark each.
+
+    Per mode and line: a resonance met in steady operation (warn or fail) is marked once, at
+    its least margin; the crossings and violated speeds joined to it (the same run of
+    violated speeds, into overspeed) are that resonance, not marked again. Other runs of
+    violated speeds are marked at their crossings, or — where the line never meets the mode
+    — at their middle. Other crossings (start-up, minor lines) are marked each. Marks of one
+    line at one place (two modes of one frequency: a round tower's fore-aft and side-side)
+    are one mark, in the worst status.
+    """
+    out: list[Mark] = []
+    for f in findings:
+        runs = _merge([iv for ivs in f.violations.values() for iv in ivs])
+        taken: list[Interval] = []
+        if f.regime in ("steady", "quick-pass") and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:
+            out.append(
+                Mark(
+                    float(rad_s_to_rpm(f.speed)),
+                    f.excitation_hz,
+                    f.status,
+                    "least margin",
+                    f.excitation.id,
+                    (f.mode.id,),
+                    f.daf,
+                    f.damping,
+                )
+            )
+            tol = 1e-6 * max(f.speed, 1e-9)
+            taken = [(a, b) for a, b in runs if a - tol <= f.speed <= b + tol] or [
+                (f.speed, f.speed)
+            ]
+        dafs = f.crossing_daf or (None,) * len(f.crossings)
+        for c, daf in zip(f.crossings, dafs, strict=True):
+            if any(a - 1e-6 * c <= c <= b + 1e-6 * c for a, b in taken):
+                continue
+            hz = float(f.excitation.frequency_hz(np.array([c]))[0])
+            zeta = 1.0 / (2.0 * daf) if daf is not None and daf > 0 else None
+            out.append(
+                Mark(
+                    float(rad_s_to_rpm(c)),
+                    hz,
+                    f.status_at(c, op),
+                    "crossing",
+                    f.excitation.id,
+                    (f.mode.id,),
+                    daf,
+                    zeta,
+                )
+            )
+        for a, b in runs:
+            if (a, b) in taken or any(a <= c <= b for c in f.crossings):
+                continue
+            mid = 0.5 * (a + b)
+            status = f.status_at(mid, op)
+            if STATUS_ORDER[status] < STATUS_ORDER["warn"]:
+                continue
+            hz = float(f.mode.frequency_at(np.array([mid]))[0])
+            out.append(
+                Mark(
+                    float(rad_s_to_rpm(mid)),
+                    hz,
+                    status,
+                    "band violated",
+                    f.excitation.id,
+                    (f.mode.id,),
+                )
+            )
+    return _one_per_place(out)
+
+
+def _one_per_place(found: list[Mark], rel: float = 0.02) -> list[Mark]:
+    """Marks of one line within ``rel`` of each other in speed and frequency as one: the
+    worst status (then the kind that stands for more), naming every mode."""
+    rank = {k: i for i, k in enumerate(MARK_KINDS)}
+    order = sorted(found, key=lambda m: (-STATUS_ORDER[m.status], rank[m.kind], m.rpm, m.hz))
+    kept: list[Mark] = []
+    for m in order:
+        same = next(
+            (
+                i
+                for i, k in enumerate(kept)
+                if k.line == m.line
+                and abs(k.rpm - m.rpm) <= rel * max(k.rpm, m.rpm, 1e-9)
+                and abs(k.hz - m.hz) <= rel * max(k.hz, m.hz, 1e-9)
+            ),
+            None,
+        )
+        if same is None:
+            kept.append(m)
+        elif m.modes[0] not in kept[same].modes:
+            k = kept[same]
+            # the resonance's amplification: the larger of the modes' (the less damped)
+            daf, zeta = (
+                (m.daf, m.damping) if (m.daf or 0.0) > (k.daf or 0.0) else (k.daf, k.damping)
+            )
+            kept[same] = Mark(
+                k.rpm, k.hz, k.status, k.kind, k.line, (*k.modes, *m.modes), daf, zeta
+            )
+    return sorted(kept, key=lambda m: (m.rpm, m.hz, m.line))

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import fixed_layout, plain_decades
+from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, plain_decades, title_height
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -21,9 +21,15 @@ def flutter_plot(report: Report) -> "Figure | None":
     if check is None or "worst" not in found:
         return None
     worst, required = found["worst"], found["required_speed_m_s"]
-    fig = Figure(figsize=(9, 6.4), dpi=150)
+    fig = Figure(figsize=(7.2, 5.1), dpi=FIGURE_DPI)
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
-    fixed_layout(fig, left=1.0, top=0.6, gap=0.15)  # two title lines, two ylabel lines
+    heading = fit(
+        f"{report.spec.turbine.name}\nblade flutter at r = {worst.radius_m:.3g} m, "
+        f"Theodorsen p-k ({check.status.upper()})",
+        6.0,
+        10,
+    )
+    fixed_layout(fig, left=1.0, top=0.2 + title_height(heading, 10), gap=0.15)
     colours = ("#1f77b4", "#d62728")
     names = ("bending branch", "torsion branch")
     for branch, colour, label in zip(worst.flutter.branches, colours, names, strict=False):
@@ -48,7 +54,7 @@ def flutter_plot(report: Report) -> "Figure | None":
         0.02,
         "where the curves merge or end, the other root is overdamped (not oscillating)",
         transform=ax_g.transAxes,
-        fontsize=7,
+        fontsize=SMALL_PT,
         ha="right",
         color="#616161",
     )
@@ -66,13 +72,7 @@ def flutter_plot(report: Report) -> "Figure | None":
     ax_f.set_ylabel("frequency [Hz]")
     ax_f.set_xlabel("section air speed [m/s]")
     ax_g.legend(fontsize=8, loc="best")
-    ax_g.set_title(
-        f"{report.spec.turbine.name}\nblade flutter at r = {worst.radius_m:.3g} m, "
-        f"Theodorsen p-k ({check.status.upper()})",
-        fontweight="bold",
-        fontsize=10,
-        y=1.0,
-    )
+    ax_g.set_title(heading, fontweight="bold", fontsize=10, y=1.0)
     return fig
 
 
@@ -90,9 +90,15 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     chart, speed, worst = found["chart"], found["required_speed_m_s"], found["worst"]
     x = 100 * chart.offset_chord
     kilo = 1e-3
-    fig = Figure(figsize=(9, 5.6), dpi=150)
+    fig = Figure(figsize=(7.2, 4.5), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    fixed_layout(fig, left=0.85, top=0.6)  # two title lines, log tick labels
+    heading = fit(
+        f"{report.spec.turbine.name}\nblade stability limits at {speed:.3g} m/s "
+        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
+        6.2,
+        10,
+    )
+    fixed_layout(fig, left=0.85, top=0.2 + title_height(heading, 10))  # log tick labels
     flutter_k = chart.flutter_k_theta * kilo
     top = 3 * max(
         np.nanmax(flutter_k, initial=0.0),
@@ -150,13 +156,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     ax.set_ylim(bottom, top)
     ax.set_xlabel("centre of mass behind the elastic axis [% chord]")
     ax.set_ylabel("torsional stiffness k_θ [kN·m/rad per m]")
-    ax.set_title(
-        f"{report.spec.turbine.name}\nblade stability limits at {speed:.3g} m/s "
-        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
-        fontweight="bold",
-        fontsize=10,
-        y=1.0,
-    )
+    ax.set_title(heading, fontweight="bold", fontsize=10, y=1.0)
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="lower right")
     return fig
@@ -171,9 +171,15 @@ def stall_damping_plot(report: Report) -> "Figure | None":
     curves = {name: by_id[f"blade.stall.{name}"] for name in found}
     if not curves:
         return None
-    fig = Figure(figsize=(9, 5.2), dpi=150)
+    fig = Figure(figsize=(7.2, 4.2), dpi=FIGURE_DPI)
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
-    fixed_layout(fig, top=0.8, gap=0.3)  # a two-line suptitle, each panel's own title
+    heading = fit(
+        f"{report.spec.turbine.name}\nstall-induced vibration: quasi-steady damping "
+        "(Hau ch. 7.2.3)",
+        7.0,
+        10,
+    )
+    fixed_layout(fig, top=0.47 + title_height(heading, 10), gap=0.3)  # each panel's title
     colours = {"pass": "#2e7d32", "warn": "#ef6c00", "fail": "#c62828", "info": "#1565c0"}
     for ax, (name, check) in zip(axes, curves.items(), strict=True):
         pts = found[name]
@@ -203,14 +209,9 @@ def stall_damping_plot(report: Report) -> "Figure | None":
             y=1.0,
         )
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=SMALL_PT, loc="best")
     axes[-1].set_xlabel("wind speed [m/s]")
-    fig.suptitle(
-        f"{report.spec.turbine.name}\nstall-induced vibration: quasi-steady damping "
-        "(Hau ch. 7.2.3)",
-        fontweight="bold",
-        fontsize=10,
-    )
+    fig.suptitle(heading, fontweight="bold", fontsize=10)
     return fig
 
 

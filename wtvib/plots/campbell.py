@@ -11,11 +11,25 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from ..excitation import operating_range
 from ..results import Sampled
 from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
-from .layout import TITLE_LINE_IN, legend_below, plain_decades, text_width
+from .layout import (
+    FIGURE_DPI,
+    SMALL_PT,
+    TITLE_LINE_IN,
+    fit,
+    legend_below,
+    plain_decades,
+    text_width,
+    title_height,
+)
+
+#: The Campbell diagram's size [in]: printed at the PDF's text width (6.85 in) its 8-pt
+#: labels stay above 7 pt.
+FIGURE_IN = (7.5, 5.6)
+#: matplotlib's "large" title at its default 10-pt base.
+TITLE_PT = 12
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -44,75 +58,141 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
 
     Shows the mode curves with their margin bands, the excitation lines (dominant thick,
     secondary medium, minor thin), the steady operating range shaded, overspeed hatched,
-    quick-pass bands, and each crossing marked in the colour of its status.
+    quick-pass bands, and each resonance (``Report.marks``) marked once in the colour of its
+    status. The title says what the diagram shows and how it is judged — its own modes'
+    worst finding, not the turbine's verdict.
     """
     from matplotlib.figure import Figure
 
     spec = report.spec
-    rule = report.rule
-    op = operating_range(spec.rotor.speed)
-    modes = [m for m in report.modes if m.subsystem in subsystems]
-    findings = [f for f in report.findings if f.mode.subsystem in subsystems]
-    rpm_top = float(rad_s_to_rpm(op.overspeed)) * 1.08
+    covered = [m for m in report.modes if m.subsystem in subsystems]
+    ids = {m.id for m in covered}
+    findings = [f for f in report.findings if f.mode.id in ids]
+    rpm_top = float(rad_s_to_rpm(report.operating_range.overspeed)) * 1.08
     rpm = np.linspace(0.0, rpm_top, 400)
     omega = rpm_to_rad_s(rpm)
+    f_top = _top_frequency(covered, findings, spec.rotor.blades, rpm_top, omega)
+    modes = [m for m in covered if m.frequency_hz <= f_top]
+    hidden = [m for m in covered if m.frequency_hz > f_top]
 
-    top_mode = max((float(m.frequency_at(omega).max()) for m in modes), default=1.0)
-    blade_pass = spec.rotor.blades * rpm_top / 60.0
-    top_line = max((f.excitation.order for f in findings), default=1.0) * rpm_top / 60.0
-    # Modes above every excitation line cannot resonate: the axis stops there.
-    f_top = max(min(top_mode * 1.18, top_line * 1.05), blade_pass * 1.1)
-    covered, hidden = modes, [m for m in modes if m.frequency_hz > f_top]
-    modes = [m for m in modes if m.frequency_hz <= f_top]
-
-    fig = Figure(figsize=(10, 7), dpi=150)
+    fig = Figure(figsize=FIGURE_IN, dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    for a, b in spec.rotor.speed.steady_rpm:
+    shown = _draw_operation(ax, spec.rotor.speed)
+    right = _draw_lines(ax, findings, rpm, omega, f_top, shown)
+    _draw_modes(ax, modes, report, rpm, omega, shown)
+    marks = [m for m in report.marks if set(m.modes) & ids and m.hz <= f_top]
+    _draw_marks(ax, marks, rpm_top, f_top, shown)
+
+    ax.set_xlim(0, rpm_top)
+    low = min((m.frequency_hz for m in modes), default=f_top)
+    shown_top = max((m.frequency_hz for m in modes), default=low)
+    if shown_top / low > 20:  # modes spanning decades (drive trains): log scale
+        ax.set_yscale("log")
+        plain_decades(ax.yaxis)
+        ax.set_ylim(low * 0.5, f_top)
+    else:
+        ax.set_ylim(0, f_top)
+    ax.set_xlabel("rotor speed [rpm]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.grid(True, alpha=0.3)
+    heading, status = _title(report, subsystems, covered, findings)
+    ax.set_title(heading, color=STATUS_COLOUR[status], fontweight="bold", y=1.0)
+    notes = []
+    if hidden:
+        low_hz, high_hz = (f"{g(m.frequency_hz for m in hidden):.3g}" for g in (min, max))
+        notes.append(
+            f"{len(hidden)} mode{'s' if len(hidden) > 1 else ''} above every excitation line "
+            f"not drawn ({low_hz if low_hz == high_hz else f'{low_hz}–{high_hz}'} Hz)"
+        )
+    if any(m.superseded_by for m in modes):
+        notes.append("dashed: isolated models, judged as coupled modes (system diagram)")
+    if any(not m.judged and not m.superseded_by for m in modes):
+        notes.append("not judged: a mode of a condition in no operating regime")
+    if notes:
+        ax.text(
+            0.99,
+            0.99,
+            "\n".join(notes),
+            transform=ax.transAxes,
+            ha="right",
+            va="top",
+            fontsize=SMALL_PT,
+            color="#616161",
+            bbox={"facecolor": "white", "alpha": 0.8, "edgecolor": "none", "pad": 1.5},
+        )
+    _legend(ax, report.rule.label, shown, title_lines=heading.count("\n") + 1, right=right)
+    return fig
+
+
+def _top_frequency(modes, findings, blades: int, rpm_top: float, omega) -> float:  # type: ignore[no-untyped-def]
+    """The top of the frequency axis: modes above every excitation line cannot resonate,
+    so the axis stops there (but always shows the blade-passing line at overspeed)."""
+    top_mode = max((float(m.frequency_at(omega).max()) for m in modes), default=1.0)
+    blade_pass = blades * rpm_top / 60.0
+    top_line = max((f.excitation.order for f in findings), default=1.0) * rpm_top / 60.0
+    return max(min(top_mode * 1.18, top_line * 1.05), blade_pass * 1.1)
+
+
+def _draw_operation(ax, speed) -> set[str]:  # type: ignore[no-untyped-def]
+    """Steady operation shaded, quick-pass bands and overspeed hatched; what was drawn."""
+    shown = {"steady"}
+    for a, b in speed.steady_rpm:
         if b > a:
             ax.axvspan(a, b, color="#c8e6c9", alpha=0.55, lw=0)
         else:
             ax.axvline(a, color="#66bb6a", lw=6, alpha=0.45)
-    for a, b in spec.rotor.speed.quick_pass_rpm:
+    for a, b in speed.quick_pass_rpm:
         ax.axvspan(a, b, facecolor="none", hatch="//", edgecolor="#81c784", lw=0)
-    shown: set[str] = set()  # what is drawn, for the legend to name (and nothing else)
-    if spec.rotor.speed.overspeed > spec.rotor.speed.top_rpm:
+        shown.add("quick-pass")
+    if speed.overspeed > speed.top_rpm:
         ax.axvspan(
-            spec.rotor.speed.top_rpm,
-            spec.rotor.speed.overspeed,
+            speed.top_rpm,
+            speed.overspeed,
             facecolor="#fff3e0",
             hatch="xx",
             edgecolor="#ffcc80",
             lw=0,
         )
         shown.add("overspeed")
-    if spec.rotor.speed.quick_pass_rpm:
-        shown.add("quick-pass")
+    return shown
 
-    excitations = {f.excitation.id: f.excitation for f in findings}
-    right = 0.3  # the right margin [in]: room for the line labels at the right edge
-    for exc in excitations.values():
-        style = {
-            "dominant": dict(color="#212121", lw=1.8, ls="-"),
-            "secondary": dict(color="#424242", lw=1.2, ls="--"),
-            "minor": dict(color="#9e9e9e", lw=0.8, ls=":"),
-        }[exc.energy]
+
+#: How each energy class of excitation line is drawn.
+LINE_STYLE = {
+    "dominant": dict(color="#212121", lw=1.8, ls="-"),
+    "secondary": dict(color="#424242", lw=1.2, ls="--"),
+    "minor": dict(color="#9e9e9e", lw=0.8, ls=":"),
+}
+
+
+def _draw_lines(ax, findings, rpm, omega, f_top: float, shown: set[str]) -> float:  # type: ignore[no-untyped-def]
+    """The excitation lines, each named where it leaves the axes; the right margin [in]
+    their names need."""
+    right = 0.3
+    for exc in {f.excitation.id: f.excitation for f in findings}.values():
+        style = LINE_STYLE[exc.energy]
         f_line = exc.frequency_hz(omega)
-        ax.plot(rpm, f_line, **style)  # type: ignore[arg-type]
+        ax.plot(rpm, f_line, **style)
         shown.add(exc.energy)
         right = max(right, _label_line(ax, exc.id, rpm, f_line, f_top, style["color"]))  # type: ignore[arg-type]
+    return right
 
-    colours = _palette(len(modes))
+
+def _draw_modes(ax, modes, report: Report, rpm, omega, shown: set[str]) -> None:  # type: ignore[no-untyped-def]
+    """The mode curves with their margin bands (judged modes), the modes another mode
+    stands for dashed, another tool's points, the sampled spread and the yaw play band."""
+    rule = report.rule
     drawn: list[np.ndarray] = []
-    for mode, colour in zip(modes, colours, strict=True):
+    for mode, colour in zip(modes, _palette(len(modes)), strict=True):
         f_n = mode.frequency_at(omega)
         label = f"{mode.id}  {mode.frequency_hz:.3g} Hz"
-        if spec.rotor.orientation == "vertical-axis":  # Darrieus modes need their names
+        if report.spec.rotor.orientation == "vertical-axis":  # Darrieus modes need names
             label += f" — {mode.description}"
         if not mode.judged:  # shown as what it is: no margin band, no crossings
             label += (
                 f" (isolated; judged as {mode.superseded_by})"
                 if mode.superseded_by
-                else " (reported only: exists in no operating regime)"
+                else " (not judged)"
             )
             ax.plot(rpm, f_n, color=colour, lw=1.0, ls="--", alpha=0.7, label=label)
             continue
@@ -129,7 +209,6 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             # as it is judged (linear between, held beyond); the points are the data
             pts = np.asarray(mode.curve.omega)
             ax.plot(pts * 30 / np.pi, mode.curve.hz, "o", color=colour, ms=4, mec="white")
-
     spread = (report.uncertainty or {}).get("modes", {})
     for mode in modes:
         if "p5_hz" in spread.get(mode.id, {}):  # the 5–95 % band of the sampled frequency
@@ -154,144 +233,95 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
             lw=0,
             label="yaw frequency range with gear play",
         )
-    labels: list[tuple[float, float, float, str]] = []  # rpm, Hz, DAF, colour
-    marks: dict[str, list[tuple[float, float]]] = {}  # the crossings by status: rpm, Hz
-    for f in findings:
-        for c, daf in zip(f.crossings, f.crossing_daf or [None] * len(f.crossings), strict=True):
-            f_c = float(f.excitation.frequency_hz(np.array([c]))[0])
-            if f_c > f_top:
-                continue
-            status = f.status_at(c, op)
-            marks.setdefault(status, []).append((float(rad_s_to_rpm(c)), f_c))
-            if status != "pass" and daf is not None:  # the crossing's amplification
-                labels.append((float(rad_s_to_rpm(c)), f_c, daf, STATUS_COLOUR[status]))
-    # a crossing under a worse one at the same place (two modes of one frequency, e.g. the
-    # drive train with the generator on the grid and free) cannot be seen: not drawn, so
-    # that the legend names only markers a reader can find
-    worse: list[tuple[float, float]] = []
-    for kind in sorted(marks, key=STATUS_ORDER.__getitem__, reverse=True):
-        seen = [
-            (x, y)
-            for x, y in marks[kind]
-            if not any(
-                abs(x - wx) < 0.005 * rpm_top and abs(y - wy) < 0.005 * f_top for wx, wy in worse
-            )
-        ]
-        worse += marks[kind]
-        marks[kind] = seen
-    marks = {kind: points for kind, points in marks.items() if points}
-    # one marker line per status (a line per crossing cost a millisecond each), the worse
-    # drawn over the milder where crossings coincide
-    for kind in sorted(marks, key=STATUS_ORDER.__getitem__):
-        big = STATUS_ORDER[kind] >= STATUS_ORDER["warn"]
-        at_rpm, at_hz = zip(*marks[kind], strict=True)
+
+
+#: The marker of each kind of mark: (marker, size [pt]) for warn/fail and milder.
+MARKER = {"least margin": ("D", 9), "band violated": ("s", 8)}
+
+
+def _draw_marks(ax, marks, rpm_top: float, f_top: float, shown: set[str]) -> None:  # type: ignore[no-untyped-def]
+    """One marker per resonance (``Report.marks``), grouped by kind and status, the worse
+    drawn over the milder; the dynamic amplification beside the ones that warn or fail
+    (with ζ where it is below 1: damped so heavily that the line meets it unamplified)."""
+    groups: dict[tuple[str, str], list[tuple[float, float]]] = {}
+    for m in marks:
+        groups.setdefault((m.kind, m.status), []).append((m.rpm, m.hz))
+    for kind, status in sorted(groups, key=lambda k: STATUS_ORDER[k[1]]):
+        big = STATUS_ORDER[status] >= STATUS_ORDER["warn"]
+        marker, size = MARKER.get(kind, ("X", 11) if big else ("o", 6))
+        at_rpm, at_hz = zip(*groups[(kind, status)], strict=True)
         ax.plot(
             at_rpm,
             at_hz,
             ls="",
-            marker="X" if big else "o",
-            ms=11 if big else 6,
-            color=STATUS_COLOUR[kind],
-            mec="white",
+            marker=marker,
+            ms=size,
+            color=STATUS_COLOUR[status],
+            mec="black" if kind in MARKER else "white",
             mew=0.8,
-            zorder=5,
+            zorder=6 if kind in MARKER else 5,
         )
-        shown.add(f"crossing: {kind}")
-    # each crossing's DAF, the largest first; one label where several crossings coincide
+        shown.add(kind if kind in MARKER else f"crossing: {status}")
+    # each resonance's DAF, the largest first; one label where several stand together
     placed: list[tuple[float, float]] = []
-    for x, y, daf, colour in sorted(labels, key=lambda t: -t[2]):
-        if any(abs(x - px) < 0.04 * rpm_top and abs(y - py) < 0.04 * f_top for px, py in placed):
+    for m in sorted(marks, key=lambda m: -(m.daf or 0.0)):
+        if STATUS_ORDER[m.status] < STATUS_ORDER["warn"] or m.daf is None:
             continue
-        placed.append((x, y))
+        if any(abs(m.rpm - x) < 0.04 * rpm_top and abs(m.hz - y) < 0.04 * f_top for x, y in placed):
+            continue
+        placed.append((m.rpm, m.hz))
         ax.annotate(
-            f"DAF {daf:.3g}" if np.isfinite(daf) else "DAF ∞",
-            (x, y),
-            xytext=(5, -10),
+            _daf_label(m.daf, m.damping),
+            (m.rpm, m.hz),
+            xytext=(5, -11),
             textcoords="offset points",
-            fontsize=7,
-            color=colour,
-            zorder=6,
+            fontsize=SMALL_PT,
+            color=STATUS_COLOUR[m.status],
+            zorder=7,
         )
 
-    # a band violated with no crossing in it (the line runs inside the margin, never meets
-    # the mode: the Darrieus flap at 2P in overspeed) gets a square mid-band in the colour
-    # of its status — else a warning or failure would have nothing drawn
-    for f in findings:
-        for a, b in (band for bands in f.violations.values() for band in bands):
-            mid = 0.5 * (a + b)
-            status = f.status_at(mid, op)
-            if STATUS_ORDER[status] < STATUS_ORDER["warn"] or any(a <= c <= b for c in f.crossings):
-                continue
-            f_mid = float(f.mode.frequency_at(np.array([mid]))[0])
-            if f_mid > f_top:  # a mode above the axis (noted, not drawn)
-                continue
-            ax.plot(
-                float(rad_s_to_rpm(mid)),
-                f_mid,
-                marker="s",
-                ms=8,
-                ls="",
-                color=STATUS_COLOUR[status],
-                mec="black",
-                mew=0.8,
-                zorder=6,
-            )
-            shown.add("band violated")
-    for f in findings:
-        if f.regime in ("steady", "quick-pass") and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:
-            ax.plot(
-                float(rad_s_to_rpm(f.speed)),
-                f.excitation_hz,
-                marker="D",
-                ms=9,
-                color=STATUS_COLOUR[f.status],
-                mec="black",
-                mew=0.8,
-                zorder=6,
-            )
-            shown.add("least margin")
 
-    ax.set_xlim(0, rpm_top)
-    low = min((m.frequency_hz for m in modes), default=f_top)
-    shown_top = max((m.frequency_hz for m in modes), default=low)
-    if shown_top / low > 20:  # modes spanning decades (drive trains): log scale
-        ax.set_yscale("log")
-        plain_decades(ax.yaxis)
-        ax.set_ylim(low * 0.5, f_top)
-    else:
-        ax.set_ylim(0, f_top)
-    ax.set_xlabel("rotor speed [rpm]")
-    ax.set_ylabel("frequency [Hz]")
-    ax.grid(True, alpha=0.3)
-    verdict = report.verdict.upper()
-    cls = f", {report.tower_class} tower" if report.tower_class and "tower" in subsystems else ""
-    # the parts whose modes the diagram holds, drawn or noted above the lines (MOD-2's has
-    # no blade model: "tower")
+def _daf_label(daf: float, damping: float | None) -> str:
+    """``DAF 95.4``; below 1 with the damping that explains it (ζ > 0.5 at resonance)."""
+    if not np.isfinite(daf):
+        return "DAF ∞"
+    if daf < 1 and damping is not None:
+        return f"DAF {daf:.2g} (ζ {damping:.0%})"
+    return f"DAF {daf:.3g}"
+
+
+def _title(report: Report, subsystems: Sequence[str], covered, findings) -> tuple[str, str]:  # type: ignore[no-untyped-def]
+    """What the diagram shows, and its own judgement: the worst finding of the modes it
+    judges (with the line and mode behind it), or where its modes are judged instead."""
+    spec = report.spec
     held = [SUBSYSTEM_TITLE[s] for s in subsystems if any(m.subsystem == s for m in covered)]
-    title = " and ".join(held or [SUBSYSTEM_TITLE[s] for s in subsystems])
+    what = " and ".join(held or [SUBSYSTEM_TITLE[s] for s in subsystems])
     if spec.results is not None and "system" in subsystems:
-        title = f"whole turbine as {spec.results.tool} computed it"
+        what = f"whole turbine as {spec.results.tool} computed it"
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
-        title = "Darrieus rotor"
-    heading = f"{spec.turbine.name} — Campbell diagram, {title} — verdict {verdict}{cls}"
-    if len(heading) > 90:  # a long turbine name on a line of its own, not cut off
-        heading = f"{spec.turbine.name}\nCampbell diagram, {title} — verdict {verdict}{cls}"
-    ax.set_title(heading, color=STATUS_COLOUR[report.verdict], fontweight="bold", y=1.0)
-    if hidden:
-        low_hz, high_hz = (f"{g(m.frequency_hz for m in hidden):.3g}" for g in (min, max))
-        ax.text(
-            0.99,
-            0.99,
-            f"{len(hidden)} mode{'s' if len(hidden) > 1 else ''} above every excitation line "
-            f"not drawn ({low_hz if low_hz == high_hz else f'{low_hz}–{high_hz}'} Hz)",
-            transform=ax.transAxes,
-            ha="right",
-            va="top",
-            fontsize=8,
-            color="#616161",
+        what = "Darrieus rotor"
+    judged = [f for f in findings if f.mode.judged]
+    tower = report.results.get("tower", {}).get("class")
+    cls = (
+        f"; tower {tower.tower_class}"
+        if tower is not None and any(m.id == tower.mode_id for m in covered)
+        else ""
+    )
+    if judged:
+        # the worst, the least margin among equals (the first mode where both are equal)
+        worst_finding = max(judged, key=lambda f: (STATUS_ORDER[f.status], -f.margin))
+        status = worst_finding.status
+        judgement = (
+            f"{status.upper()}: {worst_finding.excitation.id} on {worst_finding.mode.id}"
+            if STATUS_ORDER[status] >= STATUS_ORDER["warn"]
+            else "PASS: no resonance in operation"
         )
-    _legend(ax, rule.label, shown, title_lines=heading.count("\n") + 1, right=right)
-    return fig
+    else:
+        status, judgement = "info", "nothing judged here"
+    first = f"{spec.turbine.name} — Campbell diagram, {what}"
+    if text_width(first, TITLE_PT, bold=True) > FIGURE_IN[0] - 0.4:  # the name alone
+        first = f"{spec.turbine.name}\nCampbell diagram, {what}"
+    return f"{first}\n{judgement}{cls}", ("pass" if status == "info" and judged else status)
 
 
 def _palette(n: int) -> list[str]:
@@ -367,12 +397,12 @@ def _legend(  # type: ignore[no-untyped-def]
         (
             "least margin",
             Line2D([], [], marker="D", ls="", color="#9e9e9e", mec="black"),
-            "least margin in operation",
+            "resonance in operation, at its least margin",
         ),
         (
             "band violated",
             Line2D([], [], marker="s", ls="", color="#9e9e9e", mec="black"),
-            "margin violated, no crossing (warn/fail)",
+            "margin violated, line and mode never meet",
         ),
         *(
             (
@@ -393,9 +423,23 @@ def _legend(  # type: ignore[no-untyped-def]
         if kind == "steady" or kind in shown:
             handles.append(h)
             labels.append(label)
-    ncol = 2 if max(len(t) for t in labels) > 40 else 4
+    ncol = _columns(labels, FIGURE_IN[0] - 0.3)
     top = 0.25 + TITLE_LINE_IN * title_lines
-    legend_below(ax.figure, ax, handles, labels, columns=ncol, fontsize=8, top=top, right=right)
+    legend_below(
+        ax.figure, ax, handles, labels, columns=ncol, fontsize=SMALL_PT, top=top, right=right
+    )
+
+
+def _columns(labels: Sequence[str], width: float, most: int = 3) -> int:
+    """The most legend columns (up to ``most``) whose entries fit ``width`` [in] side by
+    side: matplotlib fills the columns top to bottom, each as wide as its widest entry
+    (its text and the 0.55 in of its handle and padding)."""
+    for n in range(most, 1, -1):
+        rows = -(-len(labels) // n)
+        columns = [labels[i : i + rows] for i in range(0, len(labels), rows)]
+        if sum(max(text_width(t, SMALL_PT) for t in c) + 0.55 for c in columns) <= width:
+            return n
+    return 1
 
 
 def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
@@ -434,7 +478,7 @@ def damping_plot(report: Report) -> "Figure | None":
         return None
     from matplotlib import colormaps
 
-    fig = Figure(figsize=(10, 6.5), dpi=150)
+    fig = Figure(figsize=(7.5, 4.9), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
     cmap = colormaps["tab10" if len(modes) <= 10 else "tab20"]  # distinct hues while they last
     colours = [cmap(i % cmap.N) for i in range(len(modes))]
@@ -487,16 +531,17 @@ def damping_plot(report: Report) -> "Figure | None":
     low = min(100 * min(m.operating.total) for m in modes)  # type: ignore[union-attr]
     ax.set_ylim(min(-0.2, low * 1.3), 150)
     ax.set_xlabel("rotor speed [rpm]" if tool else "wind speed [m/s]")
-    ax.set_ylabel(
-        f"damping ratio ζ [% of critical], as {tool} gives it"
-        if tool
-        else "damping ratio ζ [% of critical], aerodynamic + structural"
-    )
+    ax.set_ylabel("damping ratio ζ [% of critical]")
     ax.grid(True, which="both", alpha=0.3)
-    how = f"as computed by {tool}" if tool else "quasi-steady, frozen wake"
-    ax.set_title(
-        f"{report.spec.turbine.name} — damping in operation ({how})", fontweight="bold", y=1.0
+    how = (
+        f"total, as computed by {tool}"
+        if tool
+        else "aerodynamic + structural; quasi-steady, frozen wake"
     )
+    heading = fit(f"{report.spec.turbine.name} — damping in operation ({how})", 7.1)
+    ax.set_title(heading, fontweight="bold", y=1.0)
     handles, labels = ax.get_legend_handles_labels()
-    legend_below(fig, ax, handles, labels, columns=3, fontsize=8, top=0.25 + TITLE_LINE_IN)
+    legend_below(
+        fig, ax, handles, labels, columns=3, fontsize=SMALL_PT, top=0.2 + title_height(heading)
+    )
     return fig

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import fixed_layout
+from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -20,10 +20,15 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     if not modes:
         return None
     conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
-    fig = Figure(figsize=(10, 2.6 * len(conditions) + 0.8), dpi=150)
+    fig = Figure(figsize=(7.5, 1.95 * len(conditions) + 0.6), dpi=FIGURE_DPI)
     axes = fig.subplots(len(conditions), 1, squeeze=False)[:, 0]
+    heading = fit(
+        f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
+        f"{report.spec.drivetrain.reference_shaft} shaft)",
+        7.3,
+    )
     # the suptitle and each panel's title above it; the mass names under each panel
-    fixed_layout(fig, top=0.7, bottom=0.4, gap=0.6)
+    fixed_layout(fig, top=0.4 + title_height(heading), bottom=0.4, gap=0.6)
     for ax, condition in zip(axes, conditions, strict=True):
         for m in (m for m in modes if m.id.split(".")[1] == condition):
             assert m.shape is not None
@@ -37,16 +42,13 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
                 f"{m.description.split(': ', 1)[-1].replace(' (computed)', '')}",
             )
             ax.set_xticks(x, m.shape.labels or [str(i) for i in x])
+            ax.set_xlim(-0.5, x[-1] + 0.5)  # room for the end masses' names
         ax.axhline(0, color="#9e9e9e", lw=0.8)
         ax.set_ylabel("twist amplitude")
         ax.set_title(f"condition: {condition}", loc="left", fontsize=10, y=1.0)
-        ax.legend(fontsize=7, loc="best")
+        ax.legend(fontsize=SMALL_PT, loc="best")
         ax.grid(True, alpha=0.3)
-    fig.suptitle(
-        f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
-        f"{report.spec.drivetrain.reference_shaft} shaft)",
-        fontweight="bold",
-    )
+    fig.suptitle(heading, fontweight="bold")
     return fig
 
 
@@ -59,9 +61,8 @@ def power_curve_plot(report: Report) -> "Figure | None":
     if check is None or curve is None:
         return None
     power = 100 * np.asarray(curve.power_fraction)
-    fig = Figure(figsize=(8, 4.5), dpi=150)
+    fig = Figure(figsize=(7.0, 3.95), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    fixed_layout(fig)
     ax.plot(power, curve.frequency_hz, lw=2.2, color="#1f77b4", label="1st grid mode")
     lo, hi = report.rule.natural_band(1.0)
     for label, f_e in curve.lines:
@@ -77,12 +78,13 @@ def power_curve_plot(report: Report) -> "Figure | None":
         )
     ax.set_xlabel("electrical power [% of rated]")
     ax.set_ylabel("frequency [Hz]")
-    ax.set_title(
+    heading = fit(
         f"{report.spec.turbine.name} — drive train on the grid: frequency vs power "
         f"({check.status.upper()})",
-        fontweight="bold",
-        y=1.0,
+        6.6,
     )
+    fixed_layout(fig, top=0.2 + title_height(heading))
+    ax.set_title(heading, fontweight="bold", y=1.0)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
     return fig

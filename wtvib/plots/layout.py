@@ -15,6 +15,15 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
+#: Every figure's resolution, and its smallest text [pt]. Figures are at most 7.5 in wide,
+#: so that the PDF, which prints them at its text width (A4 less 36 mm: 6.85 in), keeps
+#: their smallest text at 7 pt or more; 200 dpi gives a 7.5-in figure the 1,500 pixels the
+#: PNGs had at 10 in and 150 dpi.
+FIGURE_DPI = 200
+SMALL_PT = 8
+#: The widest figure [in] and the width the PDF prints figures at [in].
+MAX_FIGURE_IN, PDF_FIGURE_IN = 7.5, 6.85
+
 #: The least height [in] an axes keeps; margins that would leave less make the figure taller.
 MIN_AXES_IN = 1.5
 
@@ -30,6 +39,28 @@ def text_width(text: str, fontsize: float, bold: bool = False) -> float:
     """The width [in] a label of this text takes, estimated from its length (margins are
     set before anything is drawn)."""
     return len(text) * fontsize * (BOLD_CHAR_EM if bold else CHAR_EM) / 72.0
+
+
+def fit(text: str, width: float, fontsize: float = 12, bold: bool = True) -> str:
+    """``text`` broken into lines (at its own line breaks, then between words) so that
+    each fits ``width`` [in] at ``fontsize`` [pt]: titles stay inside their figure."""
+    lines: list[str] = []
+    for paragraph in text.split("\n"):
+        line = ""
+        for word in paragraph.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and text_width(trial, fontsize, bold) > width:
+                lines.append(line)
+                line = word
+            else:
+                line = trial
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def title_height(text: str, fontsize: float = 12) -> float:
+    """The height [in] of a title of these lines (1.2 line spacing)."""
+    return (text.count("\n") + 1) * fontsize * 1.2 / 72.0
 
 
 def fixed_layout(

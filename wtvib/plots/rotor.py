@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import fixed_layout
+from .layout import FIGURE_DPI, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -21,9 +21,15 @@ def floquet_plot(report: Report) -> "Figure | None":
         return None
     rpm, rho = smap.speeds_rpm, smap.largest
     speed = report.spec.rotor.speed
-    fig = Figure(figsize=(9, 4.8), dpi=150)
+    fig = Figure(figsize=(7.2, 3.85), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    fixed_layout(fig, top=0.4)
+    heading = fit(
+        f"{report.spec.turbine.name} — {check.numbers['hub']} two-bladed rotor on the "
+        f"tower head: stability map ({check.status.upper()})",
+        6.8,
+        10,
+    )
+    fixed_layout(fig, top=0.2 + title_height(heading, 10))
     for a, b in speed.steady_rpm:
         if b > a:
             ax.axvspan(a, b, color="#c8e6c9", alpha=0.6, lw=0, label="steady operation")
@@ -43,13 +49,7 @@ def floquet_plot(report: Report) -> "Figure | None":
     ax.axhline(1.0, color="#212121", lw=1, ls="--", label="stability limit |ρ| = 1")
     ax.set_xlabel("rotor speed [rpm]")
     ax.set_ylabel("largest Floquet multiplier |ρ|")
-    ax.set_title(
-        f"{report.spec.turbine.name} — {check.numbers['hub']} two-bladed rotor on the "
-        f"tower head: stability map ({check.status.upper()})",
-        fontweight="bold",
-        fontsize=10,
-        y=1.0,
-    )
+    ax.set_title(heading, fontweight="bold", fontsize=10, y=1.0)
     ax.grid(True, alpha=0.3)
     handles, labels = ax.get_legend_handles_labels()
     unique = dict(zip(labels, handles, strict=True))

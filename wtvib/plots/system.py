@@ -5,7 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import legend_below, text_width
+from .layout import FIGURE_DPI, SMALL_PT, fit, legend_below, text_width, title_height
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -35,7 +35,7 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     groups = list(dict.fromkeys(g for r in rows for g in r["energy"]))
     blade_groups = [g for g in groups if g.startswith("blade.")]
     colour = {**_GROUP_COLOUR, **dict(zip(blade_groups, _BLADE_COLOURS * 3, strict=False))}
-    fig = Figure(figsize=(10, 0.32 * len(rows) + 1.8), dpi=150)
+    fig = Figure(figsize=(7.5, 0.3 * len(rows) + 1.5), dpi=FIGURE_DPI)
     ax = fig.subplots()
     y = np.arange(len(rows))[::-1]
     for g in groups:
@@ -44,17 +44,26 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
         ax.barh(y, width, left=left, color=colour.get(g, "#cccccc"), label=g, height=0.7)
     names = [f"{r['id'].removeprefix('system.')}  {r['coupled_hz']:.3g} Hz" for r in rows]
     ax.set_yticks(y, names)
-    ax.tick_params(axis="y", labelsize=7)
+    ax.tick_params(axis="y", labelsize=SMALL_PT)
     ax.set_xlim(0, 1)
     ax.set_xlabel("share of the mode's kinetic energy")
     handles, labels = ax.get_legend_handles_labels()
-    margin = 0.3 + max(text_width(t, 7) for t in names)  # the tick labels' width
-    legend_below(fig, ax, handles, labels, columns=4, fontsize=7, top=0.45, left=margin)
-    ax.set_title(
+    margin = 0.3 + max(text_width(t, SMALL_PT) for t in names)  # the tick labels' width
+    heading = fit(
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
         "where the energy is",
-        fontweight="bold",
-        fontsize=10,
-        y=1.0,
+        7.5 - margin + 0.3,
+        10,
     )
+    legend_below(
+        fig,
+        ax,
+        handles,
+        labels,
+        columns=3,
+        fontsize=SMALL_PT,
+        top=0.2 + title_height(heading, 10),
+        left=margin,
+    )
+    ax.set_title(heading, fontweight="bold", fontsize=10, y=1.0)
     return fig
