@@ -3,6 +3,7 @@ edges and sizing are in tests/validation/test_design.py)."""
 
 import pytest
 
+from tests.conftest import TURBINES
 from wtvib import audit, design, spec
 
 
@@ -66,3 +67,16 @@ def test_size_takes_the_windows_of_window_under_the_same_options():
         )
         assert out.exit_code == 0, out.stdout
         assert json.loads(out.stdout)["frequency_hz"] == pytest.approx(goal, rel=1e-3)
+
+
+def test_a_forbidden_mode_names_only_the_line_whose_band_holds_it():
+    """WKA-60's tower (0.767 Hz) sits in 2P's band (0.69–0.843 Hz at 17.5–23 rpm); 3P's
+    band (0.79–1.27 Hz) overlaps 2P's and the merged band was named "2P+3P": the window
+    said "FORBIDDEN by 2P+3P" where only 2P forbids it (issue 34)."""
+    s = spec.load(TURBINES / "wka-60.yaml")
+    report = audit.run(s)
+    tower = next(w for w in design.all_windows(s, report.modes) if w.subsystem == "tower")
+    placed = dict(tower.modes)
+    assert placed["tower.fa1"].blocked_by is not None
+    assert placed["tower.fa1"].blocked_by.name == "2P"
+    assert any(b.name == "2P+3P" for b in tower.forbidden)  # the merged band keeps both

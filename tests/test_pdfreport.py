@@ -218,3 +218,16 @@ def test_ids_break_after_a_dot_and_headings_do_not_empty_a_page():
         assert c.id in text or broken, c.id
     second = pages[1].extract_text()
     assert "Verdict" in second and "Summary of checks" in second
+
+
+def test_pdf_of_an_uncertainty_run_has_its_spread_and_sensitivities(tmp_path):
+    out = tmp_path / "u.pdf"
+    result = CliRunner().invoke(
+        app,
+        ["report", str(TURBINES / "wka-60.yaml"), "-o", str(out), "--uncertainty",
+         "--samples", "200"],
+    )  # fmt: skip
+    assert result.exit_code == 1, result.output  # WKA-60 fails: the PDF is written
+    text = "".join(page.extract_text() for page in PdfReader(out).pages)
+    assert "Uncertainty (200 samples, seed 0)" in text
+    assert "youngs_modulus_pa" in text.replace("\n", "") and "(∂f/∂p)·(p/f)" in text

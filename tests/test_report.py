@@ -134,3 +134,39 @@ def test_the_batch_summary_breaks_a_long_check_id_after_a_dot_only():
     assert any("drivetrain.grid.power" in ln for ln in lines)
     assert any("drivetrain.resonance.2P" in ln for ln in lines)
     assert "…" not in out.getvalue()
+
+
+def _text(report, width=80, **kw) -> str:  # type: ignore[no-untyped-def]
+    console = Console(width=width, record=True, file=io.StringIO(), color_system=None)
+    terminal(report, console, **kw)
+    return console.export_text()
+
+
+def test_wrapped_findings_and_assumptions_hang_under_their_first_line():
+    """Issue 34: a finding wrapped at 80 columns continued at column 0."""
+    text = _text(audit.run(spec.load(TURBINES / "wka-60.yaml")))
+    body = text.split("Findings\n", 1)[1].split("\n14 modes", 1)[0]
+    lines = body.splitlines()
+    assert lines[0].startswith("  FAIL ") and len(lines) > 3
+    for line in lines:
+        assert line.startswith("  "), repr(line)  # nothing back at the margin
+    bullets = text.split("Assumptions\n", 1)[1].splitlines()
+    assert all(line.startswith(("  • ", "    ")) for line in bullets if line.strip())
+
+
+def test_the_overspeed_reads_the_same_in_headline_and_assumptions():
+    # the headline gave 26.45 rpm, the assumption 26.4 rpm (issue 34)
+    text = _text(audit.run(spec.load(TURBINES / "wka-60.yaml")), width=200)
+    assert "overspeed 26.45 rpm" in text and "(26.45 rpm) is checked" in text
+
+
+def test_detail_prints_the_sensitivities_of_an_uncertainty_run():
+    """The README promises a sensitivity table with --uncertainty; it was only in the JSON.
+    WKA-60's tower: f ∝ √E, so ∂f/∂E·E/f ≈ +0.5 (a beam: exactly 0.5; the head's share is
+    stiffness-free)."""
+    report = audit.run(spec.load(TURBINES / "wka-60.yaml"), samples=200, seed=1)
+    text = _text(report, width=120, detail=True)
+    assert "Sensitivities" in text
+    row = next(line for line in text.splitlines() if "youngs_modulus_pa" in line)
+    assert "+0.50" in row or "+0.51" in row
+    assert "Sensitivities" not in _text(report, width=120)  # --detail only

@@ -576,7 +576,7 @@ def _assumptions(
     if speed.overspeed_rpm is None and speed.overspeed_factor is None:
         out.append(
             f"No overspeed given: a transient overspeed of {DEFAULT_OVERSPEED_FACTOR:.0%} of "
-            f"the highest steady speed ({speed.overspeed:.3g} rpm) is checked."
+            f"the highest steady speed ({speed.overspeed:.4g} rpm) is checked."
         )
     for sub in SUBSYSTEMS:
         damping = sub.default_damping(spec)

@@ -41,8 +41,8 @@ EXIT_INTERNAL = 3
 class Options:
     """What ``check``, ``report`` and ``batch`` share: the operating range for imports
     (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg],
-    ``clamped_base`` for a floating windIO turbine, and the audit overrides ``margin``,
-    ``rule``, ``preset``."""
+    ``clamped_base`` for a floating windIO turbine, the audit overrides ``margin``,
+    ``rule``, ``preset``, and the uncertainty study (``samples``, ``seed``)."""
 
     rpm: tuple[float, float] | None = None
     rated: float | None = None
@@ -53,6 +53,8 @@ class Options:
     margin: float | None = None
     rule: str | None = None
     preset: str | None = None
+    samples: int | None = None  # Monte Carlo samples of the spec's tolerances (None: none)
+    seed: int = 0
 
     def load(self, path: str | Path) -> Any:
         """The turbine at ``path`` with the import options applied."""
@@ -207,7 +209,9 @@ def _audit_one(
     t0 = time.perf_counter()
     turbine = options.load(path)
     t1 = time.perf_counter()
-    report = audit.run(turbine, options.settings(turbine))
+    report = audit.run(
+        turbine, options.settings(turbine), samples=options.samples, seed=options.seed
+    )
     t2 = time.perf_counter()
     pngs: dict[str, bytes] = {}
     if plots:

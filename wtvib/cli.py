@@ -479,12 +479,32 @@ def report(
         Path, typer.Option("--output", "-o", metavar="FILE", help="PDF file to write.")
     ],
     force: ForceOption = False,
+    uncertainty: Annotated[
+        bool,
+        typer.Option(
+            "--uncertainty",
+            hidden=True,
+            help="Propagate the spec's tolerances (Monte Carlo) and report them.",
+        ),
+    ] = False,
+    samples: Annotated[
+        int, typer.Option(min=10, metavar="N", hidden=True, help="Monte Carlo samples.")
+    ] = 2000,
+    seed: Annotated[
+        int,
+        typer.Option(metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
+    ] = 0,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: DebugOption = False,
 ) -> None:
     """Write the PDF audit report of one turbine."""
+    import dataclasses
+
     from . import audit, batch, pdfreport  # audit: the models imported before the fork
+
+    if uncertainty:
+        options = dataclasses.replace(options, samples=samples, seed=seed)
     from .outputs import write_atomic
     from .plots.render import Drawer
 

@@ -54,7 +54,15 @@ def forbidden_bands(
     lines: Sequence[Excitation], op: OperatingRange, rule: MarginRule, subsystem: str
 ) -> list[Band]:
     """Natural-frequency bands that dominant (and dwelt-at secondary) lines forbid in steady
-    operation; quick-pass bands are not steady operation."""
+    operation, overlapping ones merged (named after every line: ``2P+3P``)."""
+    return _merge(line_bands(lines, op, rule, subsystem))
+
+
+def line_bands(
+    lines: Sequence[Excitation], op: OperatingRange, rule: MarginRule, subsystem: str
+) -> list[Band]:
+    """The band each dominant (and dwelt-at secondary) line forbids in steady operation,
+    one per line and steady piece; quick-pass bands are not steady operation."""
     pieces = _steady_pieces(op)
     out = []
     for e in lines:
@@ -65,7 +73,7 @@ def forbidden_bands(
             lo = rule.natural_band(float(e.frequency_hz(a)))[0]
             hi = rule.natural_band(float(e.frequency_hz(b)))[1]
             out.append(Band(e.id, lo, hi))
-    return _merge(out)
+    return out
 
 
 def _steady_pieces(op: OperatingRange) -> list[tuple[float, float]]:
@@ -140,9 +148,18 @@ class Position:
         }
 
 
-def position(f: float, allowed: Sequence[Band], forbidden: Sequence[Band]) -> Position:
+def position(
+    f: float, allowed: Sequence[Band], forbidden: Sequence[Band], by_line: Sequence[Band] = ()
+) -> Position:
+    """Where ``f`` [Hz] sits: its window, or the forbidden band that holds it — named after
+    the lines whose own bands hold it (``by_line``; a merged band "2P+3P" forbids a mode
+    that only 2P's band reaches in the name of 2P), and the nearest edge of a forbidden
+    band."""
     inside = next((w for w in allowed if w.low <= f <= w.high), None)
     blocked = next((b for b in forbidden if b.contains(f)), None)
+    holding = [b.name for b in by_line if b.contains(f)]
+    if blocked is not None and holding:
+        blocked = Band("+".join(dict.fromkeys(holding)), blocked.low, blocked.high)
     edges = [x for b in forbidden for x in (b.low, b.high)]
     edge = min(edges, key=lambda x: abs(x - f)) if edges else math.inf
     return Position(f, inside, blocked, edge, abs(edge - f))
@@ -205,10 +222,11 @@ def all_windows(
         ]
         if not judged:
             continue
-        forbidden = forbidden_bands(lines, op, rule, sub)
+        by_line = line_bands(lines, op, rule, sub)
+        forbidden = _merge(by_line)
         allowed = windows(forbidden, spec.rotor.blades, tower_names=(sub == "tower"))
         placed = tuple(
-            (m.id, position(steady_frequency(m, op), allowed, forbidden)) for m in judged
+            (m.id, position(steady_frequency(m, op), allowed, forbidden, by_line)) for m in judged
         )
         first = [p for p in placed if p[1].blocked_by is not None]
         first += [p for i in FIRST_MODES.get(sub, ()) for p in placed if p[0] == i]

@@ -328,6 +328,8 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         else:  # a table of no rows says nothing: say where its modes are judged
             out.append(k.p(_judged_elsewhere(modes), "BodyText"))
 
+    if r.get("uncertainty"):
+        out += _uncertainty(k, r["uncertainty"])
     out += k.heading("Inputs and their provenance")
     if r["inputs"]:
         rows = [k.header("field", "value", "provenance", "source and note")]
@@ -347,6 +349,38 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         )
     out += k.heading("Assumptions")
     out += [k.p(f"• {a}", "BodyText") for a in r["assumptions"]]
+    return out
+
+
+def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
+    """The sampled spread of each uncertain mode, its chance of a resonance, and the
+    sensitivities of the frequencies to the inputs."""
+    out = k.heading(f"Uncertainty ({u['samples']:,} samples, seed {u['seed']})")
+    rows = [k.header("mode", "p5 [Hz]", "p50 [Hz]", "p95 [Hz]", "probability in a margin band")]
+    for mode, s in u["modes"].items():
+        risks = [
+            f"{line} {v['probability']:.1%} [{v['ci95'][0]:.1%}–{v['ci95'][1]:.1%}]"
+            for line, v in sorted(s.get("in_margin_band", {}).items())
+            if v["probability"] > 0
+        ]
+        if "unstable" in s:
+            risks.insert(0, f"buckles {s['unstable']['probability']:.1%}")
+        spread = [_num(s.get(q)) for q in ("p5_hz", "p50_hz", "p95_hz")]
+        rows.append([k.ident(mode, 0.25), *map(k.p, spread), k.p(", ".join(risks) or "none")])
+    out.append(k.table(rows, [0.25, 0.11, 0.11, 0.11, 0.42]))
+    if u.get("sensitivities"):
+        out.append(
+            k.p(
+                "Sensitivities (∂f/∂p)·(p/f): the per-cent change of a frequency per "
+                "per cent of the input.",
+                "BodyText",
+            )
+        )
+        rows = [k.header("input", "mode", "(∂f/∂p)·(p/f)")]
+        for path, per_mode in u["sensitivities"].items():
+            for mode, s in sorted(per_mode.items(), key=lambda kv: -abs(kv[1])):
+                rows.append([k.ident(path, 0.45), k.ident(mode, 0.35), k.p(f"{s:+.3f}")])
+        out.append(k.table(rows, [0.45, 0.35, 0.2]))
     return out
 
 

@@ -66,9 +66,11 @@ def terminal(
         )
     if data.get("uncertainty"):
         console.print(_uncertainty(data["uncertainty"]))
+        if detail and data["uncertainty"].get("sensitivities"):
+            console.print(_sensitivities(data["uncertainty"]["sensitivities"]))
     console.print(Text("Assumptions", style="bold"))
     for line in data["assumptions"]:
-        console.print(_t(f"  • {line}"))
+        console.print(_hanging("•", _t(line), width=3))
     wrote(console, written)
 
 
@@ -152,27 +154,37 @@ def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
     return table
 
 
+def _hanging(label: Text | str, text: Text | str, width: int = 6) -> Table:
+    """``label`` then ``text``, the text's wrapped lines indented under its first (a
+    hanging indent), two spaces in from the margin; the label column ``width`` wide."""
+    grid = Table.grid(padding=(0, 1))
+    grid.add_column(no_wrap=True, min_width=width)
+    grid.add_column(overflow="fold")
+    grid.add_row(Text("  ").append_text(label if isinstance(label, Text) else Text(label)), text)
+    return grid
+
+
 def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
     """Every failing and warning check, worst first, one entry each: status, id (whole), its
     margin and DAF where it has them, the finding; then the info checks by id, and how many
     pass."""
     order = {"fail": 0, "warn": 1}
     shown = sorted((c for c in checks if c["status"] in order), key=lambda c: order[c["status"]])
-    lines: list[Text] = [Text("Findings", style="bold")]
+    lines: list[Any] = [Text("Findings", style="bold")]
     for c in shown:
-        line = Text("  ")
-        line.append(f"{c['status'].upper():4}", style=STYLE[c["status"]])
-        line.append(f"  {c['id']}", style="bold")
+        line = Text(c["id"], style="bold")
         numbers = [f"margin {c['margin']:.1%}"] if c.get("margin") is not None else []
         if c.get("daf") is not None:
             numbers.append(f"DAF {c['daf']:.2g}")
         if numbers:
             line.append(f"  ({', '.join(numbers)})")
         line.append(f" — {c['message']}")
-        lines.append(line)
+        lines.append(_hanging(Text(c["status"].upper(), style=STYLE[c["status"]]), line))
     infos = [c["id"] for c in checks if c["status"] not in order and c["status"] != "pass"]
     if infos:
-        lines.append(Text(f"  info: {', '.join(infos)}", style=STYLE["info"]))
+        lines.append(
+            _hanging(Text("info", style=STYLE["info"]), _t(", ".join(infos), STYLE["info"]))
+        )
     passed = sum(1 for c in checks if c["status"] == "pass")
     lines.append(Text(f"  {passed} checks pass.", style="green" if passed else "dim"))
     return Group(*lines)
@@ -236,8 +248,8 @@ def batch_summary(console: Console, items: Sequence[Any], written: Sequence[Path
     """The batch summary table: verdict, turbine, tower class, worst check, margin."""
     table = Table(title="Batch summary", title_justify="left")
     table.add_column("verdict", no_wrap=True)
-    table.add_column("turbine")
-    table.add_column("tower class", no_wrap=True)
+    table.add_column("turbine", min_width=8)  # never squeezed out on a narrow terminal
+    table.add_column("tower class")
     rows = [it.row() for it in items]
     failed = ("input-error", "internal-error")
     worst = [
@@ -320,7 +332,7 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
                 Text(
                     f"  {pos['id']} = {pos['frequency_hz']:.4g} Hz: {where}; nearest "
                     f"edge {pos['nearest_edge_hz']:.4g} Hz ({pos['distance_hz']:.3g} Hz, "
-                    f"{pos['distance_percent']:.1f} %)",
+                    f"{pos['distance_percent']:.1f}%)",  # no space: "10.0" and "%" on one line
                     style="bold red" if pos["forbidden_by"] else "",
                 )
             )
@@ -385,6 +397,21 @@ def _coupling(checks: list[dict[str, Any]]) -> Table | None:
             "—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}",
             Text("—" if shift is None else f"{shift:+.1%}", style=style),
         )
+    return table
+
+
+def _sensitivities(found: dict[str, dict[str, float]]) -> Table:
+    """The normalised sensitivities (∂f/∂p)·(p/f): one row per uncertain input and mode."""
+    table = Table(
+        title="Sensitivities: (∂f/∂p)·(p/f), the % change of f per % of the input",
+        title_justify="left",
+    )
+    table.add_column("input")
+    table.add_column("mode")
+    table.add_column("(∂f/∂p)·(p/f)", justify="right")
+    for path, per_mode in found.items():
+        for i, (mode, s) in enumerate(sorted(per_mode.items(), key=lambda kv: -abs(kv[1]))):
+            table.add_row(_t(path) if i == 0 else "", _t(mode), f"{s:+.3f}")
     return table
 
 
