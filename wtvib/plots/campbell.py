@@ -464,7 +464,8 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
             fontweight="bold",
             va="top",
         )
-    ax.set_title(ax.get_title() + " — allowed tower windows", fontsize=10, y=1.0)
+    heading = ax.get_title().replace("Campbell diagram,", "allowed tower windows,", 1)
+    ax.set_title(heading, color=ax.title.get_color(), fontweight="bold", y=1.0)
     return fig
 
 
