@@ -147,7 +147,7 @@ def test_azimuths_too_few_or_uneven_for_mbc3_are_a_warning(tmp_path):
     def warnings(folder: Path) -> list[str]:
         return [w for w in importers.load(folder).warnings if "azimuths" in w]
 
-    assert len(warnings(src)) == 1 and "ws03.0 (3 at 6.97 rpm)" in warnings(src)[0]
+    assert len(warnings(src)) == 1 and "ws03.0 (3 at 6.972 rpm)" in warnings(src)[0]
     even = tmp_path / "even"
     even.mkdir()
     for f in files:

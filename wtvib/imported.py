@@ -17,6 +17,10 @@ from .results import Check, Mode, OperatingDamping, Rule, Sampled, Whirl
 from .spec import Spec
 from .spec.results import ResultMode
 
+#: A damping ratio counts as negative below −this: the tools write a mode without any
+#: damping (a platform yaw with no hydrodynamic damping) as −0.000000…, rounding's sign.
+NEGATIVE = 1e-6
+
 #: The subsystem each frame's modes belong to.
 SUBSYSTEM = {"fixed": "system", "rotating": "blade"}
 
@@ -70,7 +74,7 @@ def stability(spec: Spec, ctx: Context) -> Analysis:
         for name, m in r.modes.items()
         if m.damping_ratio is not None
         for z, rpm in zip(m.damping_ratio, m.rpm, strict=True)
-        if z < 0 and low <= rpm <= high
+        if z < -NEGATIVE and low <= rpm <= high
     ]
     damped = [m for m in r.modes.values() if m.damping_ratio is not None]
     statements = (

@@ -407,3 +407,38 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
         v = v * np.exp(-1j * np.angle(v[np.argmax(np.abs(v))]))  # align the phase
         shapes[:, j] = v.real / np.max(np.abs(v.real))
     return DampedModes(np.abs(lam) / (2 * np.pi), -lam.real / np.abs(lam), shapes, n - len(lam))
+
+
+@dataclass(frozen=True)
+class StateModes:
+    """The roots of a first-order system ẋ = A x (Im λ ≥ 0), their right eigenvectors
+    (columns) and participation factors (rows: states, columns: roots; each column sums
+    to 1)."""
+
+    roots: NDArray[np.complex128]
+    vectors: NDArray[np.complex128]
+    participation: Array
+
+
+def state_modes(a: Array) -> StateModes:
+    """Every root of ẋ = A x with Im λ ≥ 0, with the participation of each state in it.
+
+    The participation factor of state k in root i is |φ_ki·ψ_ik| normalised over k, φ the
+    right and ψ the left eigenvectors (ψ = Φ⁻¹): invariant under the scaling of each
+    state, so that states in metres, radians and metres per second weigh alike (Pérez-
+    Arriaga, Verghese and Schweppe 1982).
+
+    References
+    ----------
+    I. J. Pérez-Arriaga, G. C. Verghese, F. C. Schweppe, "Selective modal analysis with
+    applications to electric power systems, part I", IEEE Trans. PAS-101(9), 1982.
+    """
+    lam, vec = np.linalg.eig(a)
+    keep = lam.imag >= -1e-12 * max(1.0, float(np.abs(lam).max(initial=0.0)))
+    try:
+        left = np.linalg.inv(vec)
+    except np.linalg.LinAlgError:
+        raise ModalError("the state matrix is defective: its eigenvectors do not span") from None
+    weight = np.abs(vec * left.T)[:, keep]
+    total = weight.sum(axis=0)
+    return StateModes(lam[keep], vec[:, keep], weight / np.where(total > 0, total, 1.0))

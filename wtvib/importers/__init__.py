@@ -124,15 +124,15 @@ def to_data(
     if kind == "openfast-lin":
         from . import openfast_lin
 
-        data = openfast_lin.to_spec_data(p, blades)
+        data = openfast_lin.to_spec_data(p, blades, rpm)
     elif kind == "hawcstab2":
         from . import hawcstab2
 
-        data = hawcstab2.to_spec_data(p, text, blades)
+        data = hawcstab2.to_spec_data(p, text, blades, rpm)
     elif kind == "campbell-table":
         from . import campbell_table
 
-        data = campbell_table.to_spec_data(p, text, blades)
+        data = campbell_table.to_spec_data(p, text, blades, rpm)
     elif kind == "elastodyn":
         from . import elastodyn
 

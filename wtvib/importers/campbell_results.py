@@ -15,10 +15,12 @@ def results_spec(
     files: list[str],
     name: str,
     blades_found: int | None = None,
+    rpm: tuple[float, float] | None = None,
 ) -> dict[str, Any]:
     """The wtvib-format dictionary of another tool's Campbell results: the modes, the
-    operating range their points span, the number of blades (the file's, the option's, or
-    three, said), and what was assumed."""
+    operating range their points span (or ``rpm``, the command line's [rpm], which the
+    importer puts in afterwards), the number of blades (the file's, the option's, or three,
+    said), and what was assumed."""
     assumptions: list[str] = []
     warnings: list[str] = []
     spread = max(merge_speeds(m) for m in modes.values())
@@ -41,11 +43,19 @@ def results_spec(
         )
     speeds = sorted({round(r, 4) for m in modes.values() for r in m["rpm"]})
     running = [r for r in speeds if r > 0]
-    if not running:
+    if not running and rpm is None:
         raise SpecError(
             "the results hold standstill points only; give the operating range with --rpm MIN:MAX",
             source=str(path),
         )
+    if not running:
+        assert rpm is not None
+        warnings.append(
+            "rotor.speed: the results are of a parked rotor (0 rpm): each mode's frequency "
+            f"is held over the {rpm[0]:g}–{rpm[1]:g} rpm given — the rotor's stiffening and the "
+            "cyclic modes' split into whirls (±1P) in operation are not in it"
+        )
+        running = [rpm[0], rpm[1]] if rpm[1] > rpm[0] else [rpm[0]]
     speed = (
         {"fixed_rpm": running[0]}
         if len(running) == 1

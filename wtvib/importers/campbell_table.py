@@ -34,7 +34,9 @@ def looks_like(text: str) -> bool:
     return all(c in cols for c in REQUIRED)
 
 
-def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
+def to_spec_data(
+    path: Path, text: str, blades: int | None, rpm: tuple[float, float] | None = None
+) -> dict[str, Any]:
     """The wtvib-format dictionary of a Campbell table."""
     rows = list(csv.reader(io.StringIO(text)))
     header = [c.strip().lower() for c in rows[0]]
@@ -111,6 +113,7 @@ def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
         blades,
         [str(path)],
         f"Campbell table {path.name}",
+        rpm=rpm,
     )
 
 

@@ -27,7 +27,10 @@ import numpy as np
 from ..errors import SpecError
 from ..results import ordinal
 from .campbell_results import results_spec
-from .openfast_lin import ROTATION_ARM_M
+
+#: A rotation amplitude [rad] is weighed as the motion it gives this far away [m] (about a
+#: blade length of the turbines HAWCStab2 models); only the naming of modes depends on it.
+ROTATION_ARM_M = 50.0
 
 #: The turbine .amp's 15 sensors: (kind of motion, coordinate), in file order.
 TURBINE_SENSORS = (
@@ -203,7 +206,9 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
     )
 
 
-def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
+def to_spec_data(
+    path: Path, text: str, blades: int | None, given: tuple[float, float] | None = None
+) -> dict[str, Any]:
     """The wtvib-format dictionary of a HAWCStab2 .cmb with its .amp and .opt/.pwr."""
     label, points, freq, damp = read_cmb(path)
     rpm, wind, side = rotor_speeds(path, label, points)
@@ -252,6 +257,8 @@ def to_spec_data(path: Path, text: str, blades: int | None) -> dict[str, Any]:
         if wind is not None:
             m["wind_m_s"] = [float(v) for v in wind[sort]]
         modes[name] = m
-    data = results_spec(path, "HAWCStab2", modes, blades, files, f"HAWCStab2 {path.stem}")
+    data = results_spec(
+        path, "HAWCStab2", modes, blades, files, f"HAWCStab2 {path.stem}", rpm=given
+    )
     data["warnings"] += warnings
     return data

@@ -1,25 +1,43 @@
 """OpenFAST linearisation output (``*.lin``): the whole turbine's modes at each operating point.
 
 OpenFAST with ``Linearize = True`` writes, per operating point, the state matrix A at several
-rotor azimuths (``root.1.lin`` … ``root.N.lin``). Rotating-frame states (the blades') make A
-periodic; the multi-blade coordinate transformation (MBC3, Bir 2008, NREL/CP-500-42553) —
-here :func:`wtvib.multiblade.coleman`, the project's one Coleman transformation — turns each
-into fixed-frame coordinates, A_NR = T⁻¹(A·T − Ṫ), averaged over the azimuths. Its eigenvalues
-give the frequencies |λ|/2π and damping ratios −Re λ/|λ|; each mode is named by the state
-group (tower fore-aft / side-side, drive train, yaw, each blade DOF's collective or cyclic
-coordinates) where its displacement sits, and a cyclic blade mode's whirl by the phase of its
-cos and sin coordinates. Modes are named at the slowest point and followed from point to point
-by shape (MAC of the multi-blade displacements, one optimal assignment per step; a weak
-match is a warning).
+rotor azimuths (``root.1.lin`` … ``root.N.lin``). The states come module by module —
+ElastoDyn's displacements then its rates, BeamDyn's, SubDyn's, AeroDyn's inflow and
+unsteady-aerodynamics states, HydroDyn's, ServoDyn's structural control — each with its
+description, frame (rotating or not) and, in newer files, derivative order. This reader:
 
-Reading: only the files of one root (a named ``.lin`` file's siblings ``root.<k>.lin``) or the
-``.lin`` files of a named folder, each listed in the report.
+1. classifies every state from its own row: a displacement and its "First time derivative
+   of" rate are a second-order pair (matched by description, module by module, however the
+   modules interleave), every other state is first-order; a rotating state belongs to the
+   blade its description names (``blade 2``, ``BD_2``);
+2. takes the azimuth files of each point into multi-blade coordinates (MBC3, Bir 2008,
+   NREL/CP-500-42553: A_NR = T⁻¹(A·T − Ṫ) with the project's one Coleman transformation,
+   :func:`wtvib.multiblade.coleman`) and averages them;
+3. solves the averaged system once (:func:`wtvib.modal.state_modes`) and keeps the
+   oscillating roots in which the structural states (ElastoDyn, BeamDyn, SubDyn, structural
+   control) take part most — by participation factors, which do not depend on the units of
+   the states — listing the others (inflow, unsteady aerodynamics, radiation) as
+   non-structural, however many there are;
+4. names each structural mode by the states that take part in it (tower fore-aft and
+   side-side, platform, drive train, yaw, each blade DOF's collective and cyclic
+   coordinates), with the share of the largest and the next where the mode is mixed; a
+   cyclic mode's whirl comes from the phase of its cos and sin coordinates (forward where
+   the sin coordinate lags the cos coordinate by a quarter period: the deflection pattern
+   turns with the rotor; proven on a rotor of uncoupled blades, whose forward mode is the
+   one at f + Ω);
+5. follows each mode from point to point by shape (the participation of the structural
+   coordinates, the whirl kept), naming a curve after its first point.
+
+Reading: only the files of one root (a named ``.lin`` file's siblings ``root.<k>.lin``) or
+the ``.lin`` files of a named folder, each read through the same guards as any input (a
+regular file, a size limit); OpenFAST's per-module files (``root.1.ED.lin``) are not the
+whole system and are left out (and refused where named).
 """
 
 import math
 import re
 from collections import defaultdict
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -27,34 +45,79 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
-from ..modal import assign, mac
+from ..modal import ModalError, assign, mac, state_modes
 from ..multiblade import coleman
+from ..spec import read_bytes
+from ..spec.load import MAX_FILE_BYTES
 from .campbell_results import results_spec
 
 Array = NDArray[np.float64]
 
-#: A rotation state [rad] is weighed as the motion it gives this far away [m] (about a blade
-#: length of the turbines OpenFAST linearises); only the naming of modes depends on it.
-ROTATION_ARM_M = 50.0
-#: A tower displacement state [m] is weighed this many times a blade's tip displacement: the
-#: .lin file holds no mass matrix, and a tower mode carries the whole tower head — the square
-#: root of the ratio of modal masses, tower with head to three blades' flap (NREL 5-MW:
-#: (350 t + ¼·347 t)/(3·¼·17.7 t) ≈ 33, √33 ≈ 6; wtvib's choice). Only the naming depends on it.
-TOWER_WEIGHT = 6.0
-#: Modes reported per operating point: the lowest oscillatory ones.
-MODES_KEPT = 20
+#: A linearisation's files are large (A alone is n² numbers): the size limit for them,
+#: unless WTVIB_MAX_BYTES sets one.
+LIN_MAX_BYTES = 64 * MAX_FILE_BYTES
+#: At most this many continuous states (the dense eigen-solution of A grows with n³).
+MAX_STATES = 10_000
+#: A mode is structural where the structural states hold at least this share of it.
+STRUCTURAL_SHARE = 0.5
+#: A mode whose largest coordinate group holds less than this share is called mixed.
+MIXED_SHARE = 0.6
+#: A cyclic mode whirls where |Im(c̄·s)| is at least this fraction of (|c|² + |s|²)/2
+#: (a standing pattern — parked, or a degenerate pair — has none).
+WHIRL_FRACTION = 0.2
 
 _ROOT = re.compile(r"^(?P<root>.+)\.(?P<k>\d+)\.lin$", re.IGNORECASE)
-_BLADE = re.compile(r"\bblade (\d+)\b", re.IGNORECASE)
+#: OpenFAST's per-module linearisation files (LinOutMod): root.1.ED.lin, root.1.BD1.lin
+_MODULE_FILE = re.compile(r"^.+\.\d+\.[A-Za-z]+\d*\.lin$", re.IGNORECASE)
+_BLADE = re.compile(r"\b[Bb]lade (\d+)\b")
+_BD = re.compile(r"^BD_(\d+)$")
 #: ElastoDyn's "(internal DOF index = DOF_BF(1,1))": blade-specific, not part of the DOF.
-_INTERNAL = re.compile(r"\(internal DOF index = [^()]*(\([^()]*\))?\)")
+_INTERNAL = re.compile(r"\s*\(internal DOF index = [^()]*(\([^()]*\))?\)")
+_RATE = "First time derivative of "
+#: Modules whose states are the structure's (the rest: inflow, aerodynamics, hydrodynamic
+#: radiation and excitation, mooring lines, controllers).
+STRUCTURAL = frozenset({"ED", "BD", "SD", "ExtPtfm", "SrvD"})
+#: DOFs free to move without a restoring force: where their own stiffness term
+#: −A[q̇ᵢ, qᵢ] = ωᵢ² puts them under this frequency [Hz] (a yaw, furl or teeter DOF without
+#: its spring; a platform without moorings). A root held at least half by them and the
+#: generator azimuth — a quarter by them — is rigid-body motion (the rotor turning with a
+#: free nacelle), which one azimuth's periodic terms turn into a spurious root (OpenFAST
+#: r-test 5MW_OC3Mnpl_Linear: 0.02 Hz, ζ = ±0.76); the generator azimuth alone is no
+#: sign (it carries the drive-train torsion of a BeamDyn rotor).
+FREE_BELOW_HZ = (("nacelle yaw", 0.05), ("furl", 0.05), ("teeter", 0.05), ("platform", 0.001))
+RIGID_SHARE, FREE_SHARE, TURNING_SHARE = 0.5, 0.25, 0.05
+#: The modules of the non-structural states, as a reader knows them.
+MODULE_WORDS = {
+    "AD": "AeroDyn (inflow, unsteady aerodynamics)",
+    "HD": "HydroDyn (radiation, excitation)",
+    "MD": "MoorDyn (mooring lines)",
+    "IfW": "InflowWind",
+    "rigid": "rigid-body motion (the rotor turning, a free nacelle yaw)",
+}
+
+
+# ------------------------------------------------------------------------------------------
+# Reading one file
 
 
 @dataclass(frozen=True)
 class State:
+    """One continuous state: its module (``BD`` for ``BD_2``), frame, derivative order as
+    the file gives it (None: an older file without the column), its description, and the
+    blade it belongs to."""
+
+    module: str
     rotating: bool
-    order: int
+    order: int | None
     description: str
+    blade: int | None
+    line: int
+
+    @property
+    def text(self) -> str:
+        """The description without the module token and the unit."""
+        body = self.description.split(" ", 1)[1] if " " in self.description else ""
+        return body.rsplit(",", 1)[0].strip() if "," in body else body.strip()
 
 
 @dataclass(frozen=True)
@@ -65,93 +128,238 @@ class LinFile:
     wind: float | None  # m/s
     states: tuple[State, ...]
     a: Array
+    rates: Array | None = None  # the operating point's state derivatives ẋ_op (where given)
+
+    def speed(self, lay: "Layout") -> tuple[float, float]:
+        """Rotor speed Ω [rad/s] and its rate Ω̇ [rad/s²] at this azimuth, as MBC3 takes
+        them (NREL's MBC3 and openfast_toolbox's ``get_Mats``): the operating point's rate
+        of ElastoDyn's generator azimuth (else the header's speed) plus that of its
+        drive-train twist — the rotor's own speed at this instant, which a point not
+        trimmed to steady state makes differ from the header's mean."""
+        if self.rates is None:
+            return self.rotor_speed, 0.0
+        omega, omega_dot = self.rotor_speed, 0.0
+        if lay.generator >= 0:
+            omega = float(self.rates[lay.q[lay.generator]])
+            omega_dot = float(self.rates[lay.qd[lay.generator]])
+        if lay.twist >= 0:
+            omega += float(self.rates[lay.q[lay.twist]])
+            omega_dot += float(self.rates[lay.qd[lay.twist]])
+        return omega, omega_dot
+
+
+def lin_max_bytes() -> int:
+    """The size limit of a linearisation file: WTVIB_MAX_BYTES if set, else
+    :data:`LIN_MAX_BYTES`."""
+    import os
+
+    from ..spec.load import max_file_bytes
+
+    return max_file_bytes() if os.environ.get("WTVIB_MAX_BYTES") else LIN_MAX_BYTES
 
 
 def read(path: Path) -> LinFile:
     """One ``.lin`` file: the operating point, the continuous states and A."""
-    try:
-        lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
-    except OSError as exc:
-        raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(path)) from None
+    if _MODULE_FILE.match(path.name):
+        root = _MODULE_FILE.sub("", path.name)
+        whole = re.sub(r"\.[A-Za-z]+\d*\.lin$", ".lin", path.name, flags=re.IGNORECASE)
+        raise SpecError(
+            f"one module's own linearisation, not the whole system's{root}: give {whole}",
+            source=str(path),
+        )
+    raw = read_bytes(path, max_bytes=lin_max_bytes())
+    if b"\x00" in raw:
+        raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
+    marker = re.search(rb"^[ \t]*A:[ \t]*(\S+)[ \t]*x[ \t]*(\S+)", raw, re.MULTILINE)
+    head = raw[: marker.start() if marker else len(raw)].decode("utf-8", errors="replace")
+    lines = head.splitlines()
 
     def fail(message: str, line: int | None = None) -> SpecError:
         return SpecError(message, line=line, source=str(path))
 
-    def value(label: str) -> tuple[float, int]:
-        for i, ln in enumerate(lines):
+    def value(label: str, required: bool = True) -> tuple[float | None, int]:
+        for i, ln in enumerate(lines[:200]):
             if ln.strip().startswith(label):
-                token = ln.split(":", 1)[1].split()[0]
+                tokens = ln.split(":", 1)[1].split()
+                if not tokens:
+                    raise fail(f"'{label}' gives no value", i + 1)
                 try:
-                    v = float(token)
+                    v = float(tokens[0])
                 except ValueError:
-                    raise fail(f"{label} {token!r} is not a number", i + 1) from None
+                    raise fail(f"{label} {tokens[0][:40]!r} is not a number", i + 1) from None
                 if not math.isfinite(v):
-                    raise fail(f"{label} {token} is not a finite number", i + 1)
+                    raise fail(f"{label} {tokens[0]} is not a finite number", i + 1)
                 return v, i + 1
-        raise fail(f"no '{label}' line: not an OpenFAST linearisation file")
+        if required:
+            raise fail(f"no '{label}' line: not an OpenFAST linearisation file")
+        return None, 0
 
-    speed, _ = value("Rotor Speed:")
+    speed, speed_line = value("Rotor Speed:")
     azimuth, _ = value("Azimuth:")
-    wind = value("Wind Speed:")[0] if any("Wind Speed:" in ln for ln in lines) else None
-    n, n_line = value("Number of continuous states:")
-    if n != int(n) or not 0 < n <= 5000:
-        raise fail(f"Number of continuous states {n:g} is not a count", n_line)
-    n = int(n)
+    wind, wind_line = value("Wind Speed:", required=False)
+    count, n_line = value("Number of continuous states:")
+    assert speed is not None and azimuth is not None and count is not None
+    if not 0 <= speed <= 1000:  # rad/s: 0 … ~9,500 rpm, as the spec bounds rotor speeds
+        raise fail(
+            f"Rotor Speed {speed:g} rad/s is not a rotor speed (0 to 1000 rad/s)", speed_line
+        )
+    if wind is not None and not 0 <= wind <= 100:
+        raise fail(f"Wind Speed {wind:g} m/s is not a wind speed (0 to 100 m/s)", wind_line)
+    if count != int(count) or not 0 <= count <= MAX_STATES:
+        raise fail(
+            f"Number of continuous states {count:g} is not a count of at most {MAX_STATES:,}",
+            n_line,
+        )
+    n = int(count)
+    if n == 0:
+        raise fail("the file holds no continuous states: no modes to find", n_line)
+    states = _states(lines, n, fail)
+    rates = _rates(lines, n)
+    if marker is None:
+        raise fail("no state matrix 'A:' (linearise with continuous states)")
+    a = _matrix(raw, marker, n, fail)
+    return LinFile(path, speed, azimuth, wind, states, a, rates)
+
+
+def _rates(lines: list[str], n: int) -> Array | None:
+    """The operating point's state derivatives (the "Order of continuous state derivatives"
+    table's values), or None where the table is missing or not numbers."""
     start = next(
-        (i for i, ln in enumerate(lines) if ln.startswith("Order of continuous states:")), None
+        (
+            i
+            for i, ln in enumerate(lines)
+            if ln.strip().startswith("Order of continuous state derivatives")
+        ),
+        None,
+    )
+    if start is None or start + 3 + n > len(lines):
+        return None
+    out = np.empty(n)
+    for k in range(n):
+        cells = lines[start + 3 + k].split()
+        try:
+            out[k] = float(cells[1].rstrip(","))
+        except (IndexError, ValueError):
+            return None
+    return out if np.all(np.isfinite(out)) else None
+
+
+def _states(lines: list[str], n: int, fail: Any) -> tuple[State, ...]:
+    """The table of continuous states (module, frame, order, description, blade)."""
+    start = next(
+        (i for i, ln in enumerate(lines) if ln.strip().startswith("Order of continuous states")),
+        None,
     )
     if start is None:
         raise fail("no 'Order of continuous states:' table")
-    states = []
+    header = lines[start + 1] if start + 1 < len(lines) else ""
+    has_order = "Derivative Order" in header
+    out = []
     for k in range(n):
         i = start + 3 + k
         cells = lines[i].split() if i < len(lines) else []
-        if len(cells) < 5 or cells[0] != str(k + 1) or cells[2] not in ("T", "F"):
+        j = 1
+        while j < len(cells) and cells[j].endswith(","):  # an orientation: three values
+            j += 1
+        if len(cells) < j + 3 or cells[j + 1] not in ("T", "F"):
             raise fail(f"state {k + 1} of {n} missing or malformed in the table", i + 1)
+        order: int | None = None
+        rest = cells[j + 2 :]
+        if has_order:
+            if rest[0] not in ("1", "2"):
+                raise fail(f"state {k + 1}: derivative order {rest[0][:20]!r} is not 1 or 2", i + 1)
+            order, rest = int(rest[0]), rest[1:]
+        if not rest:
+            raise fail(f"state {k + 1} has no description", i + 1)
+        description = " ".join(rest)
+        token = rest[0]
+        bd = _BD.match(token)
+        module = "BD" if bd else token
+        blade = int(bd.group(1)) if bd else None
+        if blade is None and (m := _BLADE.search(description)) is not None:
+            blade = int(m.group(1))
+        out.append(State(module, cells[j + 1] == "T", order, description, blade, i + 1))
+    return tuple(out)
+
+
+def _matrix(raw: bytes, marker: "re.Match[bytes]", n: int, fail: Any) -> Array:
+    """A, read as one block of numbers (no Python loop per number)."""
+    line = raw[: marker.start()].count(b"\n") + 1
+    if marker.group(1) != str(n).encode() or marker.group(2) != str(n).encode():
+        raise fail(
+            f"A is {marker.group(1)[:20]!r} x {marker.group(2)[:20]!r}, expected {n} x {n}", line
+        )
+    body_start = raw.find(b"\n", marker.end())
+    if body_start < 0:
+        raise fail("A has no rows", line)
+    nxt = re.search(rb"^[ \t]*[A-Za-z]", raw[body_start + 1 :], re.MULTILINE)
+    body = raw[body_start + 1 : body_start + 1 + nxt.start() if nxt else len(raw)]
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # numpy says where parsing stopped; we say which row
         try:
-            order = int(cells[3])
-        except ValueError:
-            raise fail(
-                f"state {k + 1}: derivative order {cells[3]!r} is not 1 or 2", i + 1
-            ) from None
-        states.append(State(cells[2] == "T", order, " ".join(cells[4:])))
-    at = next((i for i, ln in enumerate(lines) if ln.strip().startswith("A:")), None)
-    if at is None:
-        raise fail("no state matrix 'A:' (linearise with continuous states and no Jacobians only)")
-    rows = []
-    for k in range(n):
-        i = at + 1 + k
-        try:
-            row = [float(t) for t in lines[i].split()]
-        except (IndexError, ValueError):
-            raise fail(
-                f"row {k + 1} of A is missing or holds a cell that is not a number", i + 1
-            ) from None
-        if len(row) != n:
-            raise fail(f"row {k + 1} of A has {len(row)} numbers, expected {n}", i + 1)
-        rows.append(row)
-    a = np.array(rows)
-    if not np.all(np.isfinite(a)):
-        raise fail("A holds numbers that are not finite")
-    return LinFile(path, speed, azimuth, wind, tuple(states), a)
+            values = np.fromstring(body.decode("ascii", errors="replace"), sep=" ")
+        except ValueError:  # numpy ≥ 2.3 raises where older ones warned and stopped
+            values = np.zeros(0)
+    if values.size != n * n or not np.all(np.isfinite(values)):
+        rows = body.decode("ascii", errors="replace").splitlines()
+        for r in range(n):
+            cells = rows[r].split() if r < len(rows) else []
+            try:
+                numbers = [float(c) for c in cells]
+            except ValueError:
+                bad = next(c for c in cells if not _is_number(c))
+                raise fail(
+                    f"row {r + 1} of A holds {bad[:20]!r}, not a number", line + 1 + r
+                ) from None
+            if len(numbers) != n:
+                raise fail(
+                    f"row {r + 1} of A has {len(numbers)} numbers, expected {n}", line + 1 + r
+                )
+            if not all(math.isfinite(x) for x in numbers):
+                raise fail(f"row {r + 1} of A holds numbers that are not finite", line + 1 + r)
+        raise fail(f"A holds {values.size} numbers, expected {n} x {n}", line)
+    return values.reshape(n, n)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def files_of(path: Path) -> dict[str, list[Path]]:
     """The ``.lin`` files to read, by operating point (root): a named file's siblings, or a
-    folder's files."""
+    folder's files (OpenFAST's per-module files left out)."""
     if path.is_dir():
-        found = sorted(p for p in path.iterdir() if p.suffix.lower() == ".lin")
+        try:
+            names = sorted(p for p in path.iterdir() if p.suffix.lower() == ".lin")
+        except OSError as exc:
+            raise SpecError(
+                f"cannot list the folder: {exc.strerror or exc}", source=str(path)
+            ) from None
+        found = [p for p in names if not _MODULE_FILE.match(p.name)]
         if not found:
             decks = sorted(p.name for p in path.iterdir() if p.suffix.lower() == ".fst")
             hint = f"; to audit its deck set, give {' or '.join(decks)}" if decks else ""
-            raise SpecError(f"the folder holds no .lin files{hint}", source=str(path))
+            what = "only per-module .lin files" if names else "no .lin files"
+            raise SpecError(f"the folder holds {what}{hint}", source=str(path))
     else:
         m = _ROOT.match(path.name)
-        if m is None:
+        if m is None or _MODULE_FILE.match(path.name):
             found = [path]
         else:
             pattern = re.compile(rf"^{re.escape(m['root'])}\.\d+\.lin$", re.IGNORECASE)
-            found = sorted(p for p in path.parent.iterdir() if pattern.match(p.name))
+            try:
+                found = sorted(p for p in path.parent.iterdir() if pattern.match(p.name))
+            except OSError as exc:
+                raise SpecError(
+                    f"cannot list its folder: {exc.strerror or exc}", source=str(path)
+                ) from None
+            found = found or [path]
     groups: dict[str, list[Path]] = defaultdict(list)
     for p in found:
         m = _ROOT.match(p.name)
@@ -159,30 +367,299 @@ def files_of(path: Path) -> dict[str, list[Path]]:
     return dict(groups)
 
 
+# ------------------------------------------------------------------------------------------
+# The states' layout: second-order pairs, first-order states, blade triplets
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Where each state goes: the displacements ``q`` (indices into the file's states), their
+    rates ``qd`` (aligned), the first-order states; per blade DOF, the positions (within
+    q, and within the first-order states) of blade 1 … N; the number of blades."""
+
+    q: NDArray[np.intp]
+    qd: NDArray[np.intp]
+    first: NDArray[np.intp]
+    triplets_q: NDArray[np.intp]  # (DOFs, blades)
+    triplets_1: NDArray[np.intp]
+    blades: int
+    dofs: tuple[str, ...]  # per q position: the DOF (blade number replaced), for naming
+    q_modules: tuple[str, ...]
+    first_modules: tuple[str, ...]
+    free: NDArray[np.bool_]  # per q position: free to move (FREE_BELOW_HZ)
+    azimuth: NDArray[np.bool_]  # per q position: ElastoDyn's generator azimuth
+    generator: int  # q position of ElastoDyn's generator azimuth (−1: none)
+    twist: int  # q position of its drive-train twist (−1: none)
+
+    @property
+    def order(self) -> NDArray[np.intp]:
+        return np.concatenate([self.q, self.qd, self.first])
+
+
+def layout(
+    states: tuple[State, ...], path: Path, rotor_speed: float, a: Array | None = None
+) -> Layout:
+    """Second-order pairs by description ("X" and "First time derivative of X", module by
+    module), the rest first-order; blade triplets by DOF; the DOFs free to move (from A's
+    own stiffness terms, where A is given)."""
+    q: list[int] = []
+    qd: list[int] = []
+    first: list[int] = []
+    for run in _runs(states):
+        tokens = states[run[0]].description.split(" ", 1)[0]
+        order = states[run[0]].order
+        half = len(run) // 2
+        rates = [states[i].text.startswith(_RATE) for i in run[half:]]
+        if order is None:  # an older file without the column: the rates' names tell
+            order = 2 if len(run) % 2 == 0 and all(rates) and half else 1
+        if order == 1:
+            first += run
+            continue
+        if len(run) % 2:
+            s = states[run[-1]]
+            raise SpecError(
+                f"{tokens}'s {len(run)} second-order states (to line {s.line}) are not "
+                "displacements and their rates in two halves",
+                line=s.line,
+                source=str(path),
+            )
+        q += run[:half]
+        qd += run[half:]
+    trip_q, nb_q = _triplets([states[i] for i in q], path)
+    trip_1, nb_1 = _triplets([states[i] for i in first], path)
+    if nb_q and nb_1 and nb_q != nb_1:
+        raise SpecError(
+            f"the structural states have {nb_q} blades, the others {nb_1}", source=str(path)
+        )
+    nb = nb_q or nb_1
+    if nb == 2 and rotor_speed > 0:
+        raise SpecError(
+            "2 blades: the multi-blade transformation needs three or more (a two-bladed "
+            "rotor's equations stay periodic in the fixed frame)",
+            source=str(path),
+        )
+    dofs = tuple(_dof(states[i]) for i in q)
+    free = np.zeros(len(q), dtype=bool)
+    azimuth = np.zeros(len(q), dtype=bool)
+    for pos, (i, j) in enumerate(zip(q, qd, strict=True)):
+        if states[i].module != "ED":
+            continue
+        azimuth[pos] = "variable speed generator" in dofs[pos].lower()
+        limit = next((hz for key, hz in FREE_BELOW_HZ if key in dofs[pos].lower()), None)
+        free[pos] = limit is not None and a is not None and -a[j, i] < (2 * math.pi * limit) ** 2
+    return Layout(
+        np.asarray(q, dtype=np.intp),
+        np.asarray(qd, dtype=np.intp),
+        np.asarray(first, dtype=np.intp),
+        trip_q,
+        trip_1,
+        nb,
+        dofs,
+        tuple(states[i].module for i in q),
+        tuple(states[i].module for i in first),
+        free,
+        azimuth,
+        next((p for p, i in enumerate(q) if "DOF_GeAz" in states[i].description), -1),
+        next((p for p, i in enumerate(q) if "DOF_DrTr" in states[i].description), -1),
+    )
+
+
+def _runs(states: tuple[State, ...]) -> list[list[int]]:
+    """The states in runs of one module (``BD_1`` and ``BD_2`` apart) and one derivative
+    order: OpenFAST writes each module's displacements, then their rates, then its
+    first-order states."""
+    out: list[list[int]] = []
+    key = None
+    for i, s in enumerate(states):
+        k = (s.description.split(" ", 1)[0], s.order)
+        if k != key:
+            out.append([])
+            key = k
+        out[-1].append(i)
+    return out
+
+
+def _dof(s: State) -> str:
+    """A state's DOF with its blade number and ElastoDyn's internal index taken out."""
+    text = _INTERNAL.sub("", s.text)
+    return f"{s.module} {_BLADE.sub('blade #', text)}"
+
+
+def _triplets(states: list[State], path: Path) -> tuple[NDArray[np.intp], int]:
+    """For each rotating DOF, the positions of its blade 1 … N states; N."""
+    by_dof: dict[tuple[str, int], dict[int, int]] = defaultdict(dict)
+    count: dict[tuple[int, str], int] = defaultdict(int)
+    for i, s in enumerate(states):
+        if not s.rotating:
+            continue
+        if s.blade is None:
+            raise SpecError(
+                f"rotating state ({s.description[:70]}) names no blade",
+                line=s.line,
+                source=str(path),
+            )
+        dof = _dof(s)
+        k = count[(s.blade, dof)]  # BeamDyn writes its three rotations alike: by order
+        count[(s.blade, dof)] += 1
+        by_dof[(dof, k)][s.blade] = i
+    if not by_dof:
+        return np.zeros((0, 0), dtype=np.intp), 0
+    blades = sorted({b for v in by_dof.values() for b in v})
+    nb = len(blades)
+    if blades != list(range(1, nb + 1)):
+        raise SpecError(f"the rotating states name blades {blades}, not 1 … {nb}", source=str(path))
+    for (dof, _), v in by_dof.items():
+        missing = [b for b in blades if b not in v]
+        if missing:
+            raise SpecError(
+                f"the rotating DOF '{dof[:60]}' has no state for blade {missing[0]}",
+                source=str(path),
+            )
+    rows = [[v[b] for b in blades] for v in by_dof.values()]
+    return np.asarray(rows, dtype=np.intp), nb
+
+
+# ------------------------------------------------------------------------------------------
+# Multi-blade coordinates
+
+
+def mbc_average(files: list[LinFile], lay: Layout) -> Array:
+    """A in multi-blade coordinates (displacements, rates, first-order states), averaged over
+    the azimuths (Bir 2008): with q = T·z, q̇ = T·ż + Ω·T′·z, x₁ = T·y,
+    ż = T⁻¹(A·L·X − Ω·T′·z) and z̈ = T⁻¹(A·L·X − (Ω²·T″ + Ω̇·T′)·z − 2Ω·T′·ż) row block by
+    row block, only the rotating rows and columns changed; Ω and Ω̇ at each azimuth as
+    :meth:`LinFile.speed` gives them."""
+    order = lay.order
+    n2 = len(lay.q)
+    gq = lay.triplets_q  # positions in the reordered state: q block
+    gd = gq + n2  # their rates
+    g1 = lay.triplets_1 + 2 * n2  # first-order
+    total = np.zeros((len(order), len(order)))
+    for f in files:
+        a = f.a[np.ix_(order, order)]
+        if lay.blades < 3:
+            total += a
+            continue
+        omega, omega_dot = f.speed(lay)
+        b, db, d2b, _ = coleman(lay.blades, f.azimuth)
+        binv = np.linalg.inv(b)
+        m = a.copy()
+        # columns: A·L
+        if gq.size:
+            m[:, gq] = a[:, gq] @ b + omega * (a[:, gd] @ db)
+            m[:, gd] = a[:, gd] @ b
+        if g1.size:
+            m[:, g1] = a[:, g1] @ b
+        # − Ṫ terms, block by block on each DOF's own blades
+        if gq.size:
+            m[gq[:, :, None], gq[:, None, :]] -= omega * db
+            m[gd[:, :, None], gq[:, None, :]] -= omega**2 * d2b + omega_dot * db
+            m[gd[:, :, None], gd[:, None, :]] -= 2 * omega * db
+        if g1.size:
+            m[g1[:, :, None], g1[:, None, :]] -= omega * db
+        # rows: T⁻¹
+        for g in (gq, gd, g1):
+            if g.size:
+                m[g] = np.einsum("ab,mbn->man", binv, m[g])
+        total += m
+    return total / len(files)
+
+
+def coordinates(lay: Layout) -> tuple[str, ...]:
+    """The multi-blade coordinate of each q position: fixed, collective, cos1, sin1, …"""
+    out = ["fixed"] * len(lay.q)
+    if lay.blades >= 3 and lay.triplets_q.size:
+        _, _, _, names = coleman(lay.blades, 0.0)
+        for row in lay.triplets_q:
+            for pos, name in zip(row, names, strict=True):
+                out[pos] = name
+    elif lay.triplets_q.size:  # one blade (or a parked pair): its own coordinates
+        for row in lay.triplets_q:
+            for b, pos in enumerate(row, start=1):
+                out[pos] = f"blade{b}"
+    return tuple(out)
+
+
+# ------------------------------------------------------------------------------------------
+# Modes at one operating point
+
+
+#: Name stems of ElastoDyn's DOFs: (words in its description, stem, words for people).
+_ED_KINDS = (
+    ("1st tower fore-aft", "tower.fa1", "1st tower fore-aft bending"),
+    ("2nd tower fore-aft", "tower.fa2", "2nd tower fore-aft bending"),
+    ("1st tower side-to-side", "tower.ss1", "1st tower side-side bending"),
+    ("2nd tower side-to-side", "tower.ss2", "2nd tower side-side bending"),
+    ("nacelle yaw", "yaw1", "nacelle yaw"),
+    ("variable speed generator", "drivetrain1", "drive-train torsion"),
+    ("drivetrain rotational-flexibility", "drivetrain1", "drive-train torsion"),
+    ("1st flapwise", "blade.flap1", "1st blade flapwise bending"),
+    ("2nd flapwise", "blade.flap2", "2nd blade flapwise bending"),
+    ("1st edgewise", "blade.edge1", "1st blade edgewise bending"),
+    ("platform horizontal surge", "platform.surge", "platform surge"),
+    ("platform horizontal sway", "platform.sway", "platform sway"),
+    ("platform vertical heave", "platform.heave", "platform heave"),
+    ("platform roll", "platform.roll", "platform roll"),
+    ("platform pitch", "platform.pitch", "platform pitch"),
+    ("platform yaw", "platform.yaw", "platform yaw"),
+    ("rotor-furl", "rotor.furl1", "rotor furl"),
+    ("tail-furl", "tail.furl1", "tail furl"),
+    ("teeter", "rotor.teeter1", "rotor teeter"),
+)
+#: BeamDyn node states: translation in X (flapwise, toward the suction side), Y (edgewise,
+#: toward the trailing edge), Z (along the pitch axis); rotation about X (the slope of edge
+#: bending), Y (of flap bending), Z (torsion) — BeamDyn's blade frame (Wang et al. 2016,
+#: NREL/TP-5000-66909, Fig. 1).
+_BD_TRANSLATION = {"X": ("blade.flap", "blade flapwise"), "Y": ("blade.edge", "blade edgewise"),
+                   "Z": ("blade.axial", "blade axial")}  # fmt: skip
+_BD_ROTATION = {"X": ("blade.edge", "blade edgewise"), "Y": ("blade.flap", "blade flapwise"),
+                "Z": ("blade.torsion", "blade torsion")}  # fmt: skip
+
+
+def _stem(module: str, dof: str, rotation_index: int) -> tuple[str, str]:
+    """The name stem of a structural DOF and its words (families without an ordinal — a
+    BeamDyn, SubDyn or structural-control state's — get theirs by frequency)."""
+    low = dof.lower()
+    if module == "ED":
+        return next(((s, w) for key, s, w in _ED_KINDS if key in low), ("other", dof[3:60]))
+    if module == "BD":
+        if "rotational" in low:
+            axis = re.search(r"rotational displacement in ([XYZ])", dof)
+            letter = "XYZ"[rotation_index % 3] if axis is None or rotation_index else axis[1]
+            return _BD_ROTATION[letter]
+        axis = re.search(r"displacement in ([XYZ])", dof)
+        return _BD_TRANSLATION[axis[1]] if axis else ("blade.other", "blade")
+    if module == "SD":
+        return "support.mode", "support structure (SubDyn)"
+    if module == "ExtPtfm":
+        return "support.mode", "support structure (ExtPtfm)"
+    if module == "SrvD":
+        where = re.search(r"(Nacelle|Tower|Blade|Substructure|Platform)", dof, re.IGNORECASE)
+        place = where[1].lower() if where else "structure"
+        return f"damper.{place}", f"structural control ({place})"
+    return "other", dof[:60]
+
+
 @dataclass(frozen=True)
 class PointModes:
+    """The structural modes of one operating point, and what was left out."""
+
     rpm: float
     wind: float | None
-    frequency_hz: Array
+    frequency_hz: Array  # natural frequency |λ|/2π
+    damped_hz: Array  # Im λ/2π
     damping_ratio: Array
     names: tuple[str, ...]
     descriptions: tuple[str, ...]
     whirl: tuple[str, ...]
-    shapes: NDArray[np.complex128]  # weighted displacements, multi-blade coordinates
-
-
-def _even(files: list[LinFile]) -> bool:
-    """Whether an operating point's azimuths are at least three and evenly spaced round the
-    rotor (no gap more than half again the even spacing)."""
-    if len(files) < 3:
-        return False
-    psi = np.sort(np.mod([f.azimuth for f in files], 2 * np.pi))
-    gaps = np.diff(np.append(psi, psi[0] + 2 * np.pi))
-    return bool(gaps.max() <= 1.5 * 2 * np.pi / len(files))
+    share: Array  # the share of the coordinate group the mode is named after
+    shapes: Array  # participation of each q coordinate (columns: modes)
+    frame: str  # fixed (multi-blade coordinates) or rotating (one blade, its own frame)
+    left_out: dict[str, Any] = field(default_factory=dict)
 
 
 def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
-    """MBC3 over the azimuths of one point, the modes and the number of blades."""
+    """MBC3 over the azimuths of one point, its structural modes and the number of blades."""
     first = files[0]
     for f in files[1:]:
         if [s.description for s in f.states] != [s.description for s in first.states]:
@@ -196,176 +673,218 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
                 f"{first.rotor_speed:g}: not one operating point",
                 source=str(f.path),
             )
-    states = first.states
-    n = len(states)
-    second = [i for i, s in enumerate(states) if s.order == 2]
-    n2 = len(second) // 2
-    if len(second) % 2 or second != list(range(2 * n2)):
+    lay = layout(first.states, first.path, first.rotor_speed, first.a)
+    if (
+        lay.blades == 1
+        and first.rotor_speed > 0
+        and any(not first.states[i].rotating for i in lay.q)
+    ):
         raise SpecError(
-            "the second-order states are not the displacements followed by their rates",
+            "one blade on a structure in the fixed frame: neither frame is time-invariant, "
+            "and the multi-blade transformation needs three or more blades",
             source=str(first.path),
         )
-    groups, blades = _triplets(states[:n2], first.path)
-    first_order = list(range(2 * n2, n))
-    groups1, blades1 = _triplets(states[2 * n2 :], first.path, offset=2 * n2)
-    if blades1 and blades and blades1 != blades:
-        raise SpecError(
-            "first- and second-order states disagree on the blades", source=str(first.path)
-        )
-    nb = blades or blades1 or 3
-    omega = first.rotor_speed
-    a_nr = np.zeros((n, n))
-    for f in files:
-        t1, t2, t3 = _transform(n2, groups, nb, f.azimuth)
-        f1, f2, _ = _transform(
-            len(first_order), [[g - 2 * n2 for g in grp] for grp in groups1], nb, f.azimuth
-        )
-        t = np.zeros((n, n))
-        tdot = np.zeros((n, n))
-        t[:n2, :n2] = t1
-        t[n2 : 2 * n2, n2 : 2 * n2] = t1
-        t[n2 : 2 * n2, :n2] = omega * t2
-        tdot[:n2, :n2] = omega * t2
-        tdot[n2 : 2 * n2, n2 : 2 * n2] = omega * t2
-        tdot[n2 : 2 * n2, :n2] = omega**2 * t3
-        t[2 * n2 :, 2 * n2 :] = f1
-        tdot[2 * n2 :, 2 * n2 :] = omega * f2
-        a_nr += np.linalg.solve(t, f.a @ t - tdot)
-    a_nr /= len(files)
-    lam, vec = np.linalg.eig(a_nr)
-    keep = np.where(lam.imag > 1e-6)[0]
-    keep = keep[np.argsort(np.abs(lam[keep]))][:MODES_KEPT]
-    lam, vec = lam[keep], vec[:, keep]
-    labels = _labels(states[:n2], groups)
-    names: list[str] = []
-    texts: list[str] = []
-    whirls: list[str] = []
-    weight = np.array([_weight(s.description) for s in states[:n2]])
-    shapes = vec[:n2, :] * weight[:, None]
-    for j in range(len(lam)):
-        x = shapes[:, j]
-        name, text, whirl = _name(x, labels)
-        k = 2
-        base = name
-        while name in names:
-            name, k = f"{base}_{k}", k + 1
-        names.append(name)
-        texts.append(text)
-        whirls.append(whirl)
-    f_hz = np.abs(lam) / (2 * math.pi)
-    zeta = -lam.real / np.abs(lam)
-    rpm = omega * 30 / math.pi
-    point = PointModes(
-        rpm, first.wind, f_hz, zeta, tuple(names), tuple(texts), tuple(whirls), shapes
+    a_nr = mbc_average(files, lay)
+    try:
+        found = state_modes(a_nr)
+    except ModalError as exc:
+        raise SpecError(str(exc), source=str(first.path)) from None
+    lam, vec, part = found.roots, found.vectors, found.participation
+    n2 = len(lay.q)
+    structural_q = np.array([m in STRUCTURAL for m in lay.q_modules], dtype=bool)
+    s_q = part[:n2] + part[n2 : 2 * n2]  # a coordinate's displacement and rate together
+    structural = (s_q * structural_q[:, None]).sum(axis=0)
+    oscillating = _oscillating(lam)
+    rigid = _rigid(s_q, lay, lam)
+    elastic = (structural >= STRUCTURAL_SHARE) & ~rigid
+    keep = np.where(oscillating & elastic)[0]
+    keep = keep[np.argsort(np.abs(lam[keep]))]
+    left_out = _left_out(lam, part, oscillating & ~elastic, lay, n2)
+    coords = coordinates(lay)
+    rows = [_name_one(lam[j], vec[:, j], s_q[:, j], structural_q, lay, coords, first) for j in keep]
+    names = _ordinals([r[0] for r in rows], np.abs(lam[keep]))
+    frame = (
+        "rotating"
+        if lay.blades == 1 and not any(not first.states[i].rotating for i in lay.q)
+        else "fixed"
     )
-    return point, nb
+    shapes = s_q[:, keep] * structural_q[:, None]
+    point = PointModes(
+        first.rotor_speed * 30 / math.pi,
+        first.wind,
+        np.abs(lam[keep]) / (2 * math.pi),
+        lam[keep].imag / (2 * math.pi),
+        -lam[keep].real / np.abs(lam[keep]),
+        names,
+        tuple(r[1] for r in rows),
+        tuple(r[2] for r in rows),
+        np.array([r[3] for r in rows]),
+        shapes / np.maximum(shapes.sum(axis=0), 1e-300),
+        frame,
+        left_out,
+    )
+    return point, lay.blades
 
 
-def _triplets(
-    states: tuple[State, ...], path: Path, offset: int = 0
-) -> tuple[list[list[int]], int]:
-    """Indices (blade 1, 2, …) of each rotating DOF, and the number of blades."""
-    by_dof: dict[str, dict[int, int]] = defaultdict(dict)
-    for i, s in enumerate(states):
-        if not s.rotating:
+def _group(stem: str, coord: str) -> tuple[str, str]:
+    kind = "cyclic" if coord.startswith(("cos", "sin")) else coord
+    return stem, kind
+
+
+def _name_one(
+    lam: complex,
+    v: NDArray[np.complex128],
+    share: Array,
+    structural: NDArray[np.bool_],
+    lay: Layout,
+    coords: tuple[str, ...],
+    lin: LinFile,
+) -> tuple[str, str, str, float]:
+    """(name stem with coordinate and whirl, description, whirl, share) of one mode from the
+    participation of its structural coordinates."""
+    groups: dict[tuple[str, str], float] = defaultdict(float)
+    words: dict[str, str] = {}
+    rotation_seen: dict[tuple[int, str], int] = defaultdict(int)
+    stems = []
+    for pos in range(len(lay.q)):
+        state = lin.states[lay.q[pos]]
+        key = (state.blade or 0, re.sub(r"rotational displacement in [XYZ]", "rot", lay.dofs[pos]))
+        idx = rotation_seen[key]
+        if "rotational" in lay.dofs[pos]:
+            rotation_seen[key] += 1
+        stem, word = _stem(lay.q_modules[pos], lay.dofs[pos], idx)
+        stems.append(stem)
+        words.setdefault(stem, word)
+        if structural[pos]:
+            groups[_group(stem, coords[pos])] += float(share[pos])
+    total = sum(groups.values()) or 1.0
+    ranked = sorted(groups.items(), key=lambda kv: -kv[1])
+    (stem, kind), best = ranked[0]
+    best /= total
+    whirl = "fixed"
+    name = stem
+    text = words[stem]
+    if kind == "collective":
+        name, text, whirl = f"{stem}.collective", f"{text}, collective", "collective"
+    elif kind == "alternating":
+        name, text = f"{stem}.alternating", f"{text}, alternating"
+    elif kind == "cyclic":
+        whirl = _whirl(v, share, stems, stem, lay.triplets_q, lin.rotor_speed)
+        name = f"{stem}.{whirl}"
+        text = f"{text}, cyclic" + (f", {whirl} whirl" if whirl != "cyclic" else "")
+    elif kind.startswith("blade"):  # one blade, in its own (rotating) frame
+        whirl = "fixed"
+    if best < MIXED_SHARE and len(ranked) > 1:
+        (s2, k2), second = ranked[1]
+        text = (
+            f"mixed: {text} {best:.0%}, {words[s2]}"
+            + (f" ({k2})" if k2 not in ("fixed",) else "")
+            + f" {second / total:.0%}"
+        )
+    else:
+        text = f"{text} ({best:.0%} of the mode)"
+    return name, text, whirl, best
+
+
+def _whirl(
+    v: NDArray[np.complex128],
+    share: Array,
+    stems: list[str],
+    stem: str,
+    triplets: NDArray[np.intp],
+    rotor_speed: float,
+) -> str:
+    """Forward, backward or (a standing pattern) cyclic, from the cos and sin coordinates of
+    the mode's strongest cyclic DOF of ``stem``.
+
+    With q_b = q_c·cos ψ_b + q_s·sin ψ_b and q_s = −i·q_c, the deflection over the rotor
+    disk is |q_c|·cos(ψ − ωt): its peak turns with the rotor — forward whirl, where
+    Im(q̄_c·q_s) < 0.
+    """
+    if rotor_speed <= 0 or triplets.shape[1] < 3:
+        return "cyclic"
+    rows = [r for r in triplets if stems[r[1]] == stem]
+    if not rows:
+        return "cyclic"
+    row = max(rows, key=lambda r: share[r[1]] + share[r[2]])
+    qc, qs = v[row[1]], v[row[2]]
+    turn = float(np.imag(np.conj(qc) * qs)) / max((abs(qc) ** 2 + abs(qs) ** 2) / 2, 1e-300)
+    if abs(turn) < WHIRL_FRACTION:
+        return "cyclic"
+    return "forward" if turn < 0 else "backward"
+
+
+def _ordinals(names: list[str], omega: Array) -> tuple[str, ...]:
+    """Number the families without an ordinal (``blade.flap.collective`` →
+    ``blade.flap1.collective``, by frequency within each coordinate and whirl) and make
+    every name unique."""
+    out = list(names)
+    counters: dict[str, int] = defaultdict(int)
+    for j in np.argsort(omega, kind="stable"):
+        parts = out[j].split(".")
+        if parts[0] not in ("blade", "support", "damper") or parts[1][-1].isdigit():
             continue
-        m = _BLADE.search(s.description)
-        if m is None:
-            raise SpecError(
-                f"rotating state {offset + i + 1} ({s.description[:60]}) names no blade",
-                source=str(path),
-            )
-        by_dof[_BLADE.sub("blade #", _INTERNAL.sub("", s.description))][int(m.group(1))] = (
-            offset + i
-        )
-    counts = {len(v) for v in by_dof.values()}
-    if len(counts) > 1:
-        raise SpecError(
-            "the rotating states do not hold every DOF for every blade", source=str(path)
-        )
-    nb = counts.pop() if counts else 0
-    if nb and nb < 3:
-        raise SpecError(
-            f"{nb} blades: the multi-blade transformation needs three or more (a two-bladed "
-            "rotor stays periodic)",
-            source=str(path),
-        )
-    return [[v[b] - offset for b in sorted(v)] for v in by_dof.values()], nb
+        family, rest = ".".join(parts[:2]), ".".join(parts[2:])
+        counters[f"{family}.{rest}"] += 1
+        out[j] = f"{family}{counters[f'{family}.{rest}']}" + (f".{rest}" if rest else "")
+    seen: dict[str, int] = defaultdict(int)
+    unique = []
+    for name in out:
+        seen[name] += 1
+        unique.append(name if seen[name] == 1 else f"{name}_{seen[name]}")
+    return tuple(unique)
 
 
-def _transform(
-    size: int, groups: list[list[int]], blades: int, psi: float
-) -> tuple[Array, Array, Array]:
-    """T1, dT1/dψ, d²T1/dψ² of the multi-blade transformation of ``size`` states."""
-    t1, t2, t3 = np.eye(size), np.zeros((size, size)), np.zeros((size, size))
-    if not groups:
-        return t1, t2, t3
-    b, db, d2b, _ = coleman(blades, psi)
-    for grp in groups:
-        idx = np.asarray(grp)
-        t1[np.ix_(idx, idx)] = b
-        t2[np.ix_(idx, idx)] = db
-        t3[np.ix_(idx, idx)] = d2b
-    return t1, t2, t3
+def _oscillating(lam: NDArray[np.complex128]) -> NDArray[np.bool_]:
+    """The roots that oscillate: Im λ above rounding, |λ| above the near-zero roots of
+    rigid-body motion (which rounding moves off zero by ~√ε of the largest root)."""
+    scale = max(float(np.abs(lam).max(initial=0.0)), 1.0)
+    return np.asarray((lam.imag > 1e-9 * scale) & (np.abs(lam) > 1e-8 * scale))
 
 
-def _weight(description: str) -> float:
-    """How much one unit of a displacement state weighs in naming (see the constants)."""
-    if description.rstrip().endswith(("rad", "rad/s")) or "yaw" in description.lower():
-        return ROTATION_ARM_M
-    return TOWER_WEIGHT if "tower" in description.lower() else 1.0
+def _rigid(s_q: Array, lay: Layout, lam: NDArray[np.complex128]) -> NDArray[np.bool_]:
+    """Which roots are rigid-body motion: held mostly by free DOFs and the generator
+    azimuth (:data:`FREE_BELOW_HZ`), or undamped with the generator azimuth taking part —
+    the rotor turning, which no structural damping resists (r-test 5MW_Land_BD_Linear:
+    0.19 Hz, ζ = 0, BeamDyn's collective edgewise states and the azimuth)."""
+    free = (s_q * lay.free[:, None]).sum(axis=0)
+    turning = (s_q * lay.azimuth[:, None]).sum(axis=0)
+    undamped = np.abs(lam.real) <= 1e-5 * np.abs(lam)
+    return np.asarray(
+        ((free >= FREE_SHARE) & (free + turning >= RIGID_SHARE))
+        | (undamped & (turning >= TURNING_SHARE))
+    )
 
 
-#: Name stems of ElastoDyn's DOF descriptions.
-_KINDS = (
-    ("1st tower fore-aft", "tower.fa1", "1st tower fore-aft"),
-    ("2nd tower fore-aft", "tower.fa2", "2nd tower fore-aft"),
-    ("1st tower side-to-side", "tower.ss1", "1st tower side-side"),
-    ("2nd tower side-to-side", "tower.ss2", "2nd tower side-side"),
-    ("nacelle yaw", "yaw1", "nacelle yaw"),
-    ("drivetrain", "drivetrain1", "drive-train torsion"),
-    ("generator", "drivetrain1", "drive-train torsion"),
-    ("1st flapwise", "blade.flap1", "1st blade flapwise"),
-    ("2nd flapwise", "blade.flap2", "2nd blade flapwise"),
-    ("1st edgewise", "blade.edge1", "1st blade edgewise"),
-)
+def _left_out(
+    lam: NDArray[np.complex128], part: Array, mask: NDArray[np.bool_], lay: Layout, n2: int
+) -> dict[str, Any]:
+    """The oscillating roots that are not structural: how many, their frequency range, and
+    the modules holding them."""
+    idx = np.where(mask)[0]
+    if idx.size == 0:
+        return {}
+    modules = [*lay.q_modules, *lay.q_modules, *lay.first_modules]
+    rigid = _rigid(part[:n2] + part[n2 : 2 * n2], lay, lam)
+    owners: dict[str, int] = defaultdict(int)
+    for j in idx:
+        if rigid[j]:
+            owners["rigid"] += 1  # the rotor turning with a free nacelle: no vibration
+            continue
+        k = int(np.argmax(part[:, j]))
+        owners[modules[k]] += 1
+    f = np.abs(lam[idx]) / (2 * math.pi)
+    return {
+        "count": int(idx.size),
+        "low_hz": float(f.min()),
+        "high_hz": float(f.max()),
+        "modules": dict(sorted(owners.items())),
+        "roots": lam[idx],
+    }
 
 
-def _labels(states: tuple[State, ...], groups: list[list[int]]) -> list[tuple[str, str, str]]:
-    """(name stem, words, coordinate) per displacement state in multi-blade coordinates."""
-    _, _, _, coords = coleman(max((len(g) for g in groups), default=3), 0.0)
-    out: list[tuple[str, str, str]] = []
-    member = {i: (gi, k) for gi, grp in enumerate(groups) for k, i in enumerate(grp)}
-    for i, s in enumerate(states):
-        low = s.description.lower()
-        stem, words = next(
-            ((n, w) for key, n, w in _KINDS if key in low), ("other", s.description[:40])
-        )
-        coord = coords[member[i][1]] if i in member else "fixed"
-        out.append((stem, words, coord))
-    return out
-
-
-def _name(x: NDArray[np.complex128], labels: list[tuple[str, str, str]]) -> tuple[str, str, str]:
-    """Name, description and whirl of a mode from its displacement in multi-blade
-    coordinates."""
-    energy = np.abs(x) ** 2
-    share: dict[tuple[str, str], float] = defaultdict(float)
-    for e, (stem, _, coord) in zip(energy, labels, strict=True):
-        share[(stem, "cyclic" if coord.startswith(("cos", "sin")) else coord)] += float(e)
-    stem, coord = max(share, key=lambda k: share[k])
-    words = next(w for s, w, _ in labels if s == stem)
-    if coord == "fixed":
-        return stem, words, "fixed"
-    if coord == "collective":
-        return f"{stem}.collective", f"{words}, collective", "collective"
-    if coord == "alternating":
-        return f"{stem}.alternating", f"{words}, alternating", "fixed"
-    c = next(x[i] for i, lab in enumerate(labels) if lab[0] == stem and lab[2] == "cos1")
-    s = next(x[i] for i, lab in enumerate(labels) if lab[0] == stem and lab[2] == "sin1")
-    whirl = float(np.imag(np.conj(c) * s))
-    turn = "forward" if whirl < 0 else "backward"
-    return f"{stem}.{turn}", f"{words}, cyclic, {turn} whirl", turn
+# ------------------------------------------------------------------------------------------
+# From point to point
 
 
 #: A mode followed from one operating point to the next with a MAC under this is flagged.
@@ -376,29 +895,40 @@ def _followed(
     points: list[PointModes],
 ) -> tuple[dict[str, dict[str, Any]], tuple[float, str, float] | None]:
     """Each mode of the first (slowest) point followed point by point by shape (MAC of the
-    multi-blade displacements, one optimal assignment per step), with the weakest match."""
+    participation of the structural coordinates; forward turned backward, or back, halves
+    it), one optimal assignment per step, with the weakest match."""
     modes: dict[str, dict[str, Any]] = {}
     first = points[0]
     for j, name in enumerate(first.names):
         modes[name] = {
             "description": first.descriptions[j],
-            "frame": "fixed",
-            "rpm": [],
-            "frequency_hz": [],
-            "damping_ratio": [],
-            "whirl": [],
-            "wind_m_s": [],
+            "frame": first.frame,
+            **{
+                k: []
+                for k in (
+                    "rpm",
+                    "frequency_hz",
+                    "damped_frequency_hz",
+                    "damping_ratio",
+                    "whirl",
+                    "wind_m_s",
+                    "share",
+                )
+            },
         }
     current = {name: j for j, name in enumerate(first.names)}  # name → column at this point
     prev = first
     weakest: tuple[float, str, float] | None = None
     for k, pm in enumerate(points):
-        if k:
+        if k and current and len(pm.names):
             names = list(current)
-            score = mac(prev.shapes[:, [current[n] for n in names]], pm.shapes)
+            cols = [current[n] for n in names]
+            score = mac(prev.shapes[:, cols], pm.shapes)
+            turns = ("forward", "backward")
+            flipped = np.array([[{prev.whirl[c], w} == set(turns) for w in pm.whirl] for c in cols])
+            score = np.where(flipped, 0.5 * score, score)
             if score.shape[0] <= score.shape[1]:
-                cols = assign(score, optimal=True)
-                pairs = list(zip(range(len(names)), cols, strict=True))
+                pairs = list(enumerate(assign(score, optimal=True)))
             else:  # fewer modes here: each of them finds its predecessor
                 rows = assign(score.T, optimal=True)
                 pairs = [(int(r), c) for c, r in enumerate(rows)]
@@ -407,33 +937,53 @@ def _followed(
                 if weakest is None or score[r, c] < weakest[0]:
                     weakest = (float(score[r, c]), names[r], pm.rpm)
             prev = pm
+        elif k:
+            current = {}
         for name, j in current.items():
             m = modes[name]
             m["rpm"].append(round(pm.rpm, 6))
             m["frequency_hz"].append(float(pm.frequency_hz[j]))
+            m["damped_frequency_hz"].append(float(pm.damped_hz[j]))
             m["damping_ratio"].append(max(-1.0, min(1.0, float(pm.damping_ratio[j]))))
             m["whirl"].append(pm.whirl[j])
             m["wind_m_s"].append(pm.wind)
+            m["share"].append(round(float(pm.share[j]), 4))
     return modes, weakest
 
 
-def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
+def to_spec_data(
+    path: Path, blades: int | None, rpm: tuple[float, float] | None = None
+) -> dict[str, Any]:
     """The wtvib-format dictionary of one or more operating points' ``.lin`` files."""
     groups = files_of(path)
     points = []
     nbs = set()
     read_files: list[str] = []
     uneven: list[str] = []
+    left: list[str] = []
     for root, paths in sorted(groups.items()):
         lins = [read(p) for p in paths]
         read_files += [str(p) for p in paths]
         pm, nb = operating_point(lins)
         points.append(pm)
         nbs.add(nb)
-        if lins[0].rotor_speed > 0 and not _even(lins):
-            uneven.append(f"{root} ({len(lins)} at {pm.rpm:.3g} rpm)")
-    points.sort(key=lambda p: p.rpm)
-    modes, weakest = _followed(points)
+        if lins[0].rotor_speed > 0 and nb >= 3 and not _even(lins):
+            uneven.append(f"{root} ({len(lins)} at {pm.rpm:.4g} rpm)")
+        if pm.left_out:
+            lo = pm.left_out
+            owners = ", ".join(f"{MODULE_WORDS.get(m, m)} {c}" for m, c in lo["modules"].items())
+            left.append(
+                f"{root}: {lo['count']} ({lo['low_hz']:.3g}–{lo['high_hz']:.3g} Hz; {owners})"
+            )
+    if not any(len(p.names) for p in points):
+        what = "; ".join(left) if left else "no oscillating root"
+        raise SpecError(
+            "the linearisation holds no structural mode to judge — no oscillating root in which "
+            f"ElastoDyn, BeamDyn, SubDyn or structural-control states take part most ({what})",
+            source=str(path),
+        )
+    points.sort(key=lambda p: (p.rpm, p.wind if p.wind is not None else 0.0))
+    modes, weakest = _followed([p for p in points if len(p.names)])
     for m in modes.values():
         if any(w is None for w in m["wind_m_s"]):
             del m["wind_m_s"]
@@ -446,7 +996,25 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
         read_files,
         f"OpenFAST linearisation {path.name}",
         blades_found=found or None,
+        rpm=rpm,
     )
+    data["assumptions"].append(
+        "Modes: the oscillating roots of the azimuth-averaged multi-blade state matrix in "
+        f"which the structural states (ElastoDyn, BeamDyn, SubDyn, structural control) take "
+        f"part {STRUCTURAL_SHARE:.0%} or more (participation factors); each named after the "
+        "coordinate group that takes part most, with its share."
+    )
+    if left:
+        data["assumptions"].append(
+            "Roots left out, no structural vibration (inflow, unsteady aerodynamics, "
+            "radiation, mooring lines, rigid-body motion): " + "; ".join(left) + "."
+        )
+    mixed = sorted({n for n, m in modes.items() if m["description"].startswith("mixed")})
+    if mixed:
+        data["assumptions"].append(
+            f"Mixed modes (no coordinate group holds {MIXED_SHARE:.0%}): {', '.join(mixed)} — "
+            "each named after its largest group."
+        )
     if weakest is not None and weakest[0] < TRACK_MAC:
         data["warnings"].append(
             f"{weakest[1]}: followed to {weakest[2]:.4g} rpm with a MAC of only "
@@ -462,3 +1030,13 @@ def to_spec_data(path: Path, blades: int | None) -> dict[str, Any]:
     if outside:
         data["warnings"].append(f"files read outside the named folder: {', '.join(outside)}")
     return data
+
+
+def _even(files: list[LinFile]) -> bool:
+    """Whether an operating point's azimuths are at least three and evenly spaced round the
+    rotor (no gap more than half again the even spacing)."""
+    if len(files) < 3:
+        return False
+    psi = np.sort(np.mod([f.azimuth for f in files], 2 * np.pi))
+    gaps = np.diff(np.append(psi, psi[0] + 2 * np.pi))
+    return bool(gaps.max() <= 1.5 * 2 * np.pi / len(files))

@@ -58,6 +58,7 @@ from .load import (
     from_document,
     load,
     load_document,
+    read_bytes,
     read_text,
 )
 from .rotor import DEFAULT_OVERSPEED_FACTOR, Rotor, RotorSpeed, TurbineInfo
@@ -125,5 +126,6 @@ __all__ = [
     "json_schema",
     "load",
     "load_document",
+    "read_bytes",
     "read_text",
 ]

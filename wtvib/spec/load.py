@@ -64,6 +64,21 @@ def fingerprint(text: str) -> str:
 def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
     """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
     p = FsPath(path)
+    raw = read_bytes(p, max_bytes=max_bytes)
+    if b"\x00" in raw:
+        raise SpecError("binary file, not a YAML text file", source=str(p))
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw[: exc.start].count(b"\n") + 1
+        raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
+
+
+def read_bytes(path: str | FsPath, *, max_bytes: int | None = None) -> bytes:
+    """A file's bytes: only a regular file (not a device, pipe or socket), at most
+    ``max_bytes`` (default: :func:`max_file_bytes`) — every file wtvib reads comes through
+    here, the files a deck or a folder names too."""
+    p = FsPath(path)
     max_bytes = max_bytes if max_bytes is not None else max_file_bytes()
     try:
         info = p.stat()
@@ -87,14 +102,8 @@ def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
     except FileNotFoundError:
         raise SpecError("no such file", source=str(p)) from None
     except OSError as exc:
-        raise SpecError(f"cannot read: {exc.strerror}", source=str(p)) from None
-    if b"\x00" in raw:
-        raise SpecError("binary file, not a YAML text file", source=str(p))
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        line = raw[: exc.start].count(b"\n") + 1
-        raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
+        raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(p)) from None
+    return raw
 
 
 def load_document(path: str | FsPath, text: str) -> Document:

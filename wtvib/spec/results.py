@@ -33,13 +33,28 @@ class ResultMode(_Strict):
     wind_m_s: list[Annotated[float, Field(ge=0, le=100)]] | None = Field(
         None, description="Wind speed of each point. [m/s]"
     )
+    damped_frequency_hz: list[Annotated[float, Field(ge=0)]] | None = Field(
+        None, description="Damped frequency (imaginary part of the root) at each point. [Hz]"
+    )
+    share: list[Annotated[float, Field(ge=0, le=1)]] | None = Field(
+        None,
+        description="The share of the mode held by the coordinate group it is named after, "
+        "at each point (the name's confidence). [-]",
+    )
 
     @model_validator(mode="after")
     def _consistent(self) -> "ResultMode":
         n = len(self.rpm)
         if n > 1:
             _increasing("rpm", self.rpm)
-        for name in ("frequency_hz", "damping_ratio", "whirl", "wind_m_s"):
+        for name in (
+            "frequency_hz",
+            "damping_ratio",
+            "whirl",
+            "wind_m_s",
+            "damped_frequency_hz",
+            "share",
+        ):
             values = getattr(self, name)
             if values is not None and len(values) != n:
                 raise ValueError(f"{name} has {len(values)} values but rpm has {n}")
