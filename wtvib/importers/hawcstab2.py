@@ -26,11 +26,23 @@ import numpy as np
 
 from ..errors import SpecError
 from ..results import ordinal
+from ..spec import read_bytes
 from .campbell_results import results_spec
 
-#: A rotation amplitude [rad] is weighed as the motion it gives this far away [m] (about a
-#: blade length of the turbines HAWCStab2 models); only the naming of modes depends on it.
-ROTATION_ARM_M = 50.0
+#: A rotation amplitude [rad] is weighed as the motion it gives this far away [m]: a yaw or
+#: shaft torsion turns the rotor, whose blades are tens of metres long; a blade's torsion
+#: turns a section of a few metres' chord (weighed like a flap or edge deflection of the
+#: tip it would be 25 times too heavy: the IEA-15's first flap modes, their tips twisting
+#: with the bend-twist coupling, were named torsion). Only the naming depends on them.
+ROTOR_ARM_M, CHORD_ARM_M = 50.0, 2.0
+#: A tower-top or shaft-end deflection [m] is weighed this many times a blade tip's: the
+#: square root of the ratio of the masses they move (the tower head against the blades'
+#: modal mass, ~20 for today's turbines; the IEA-15's tower fore-aft mode, whose tilting
+#: rotor swings the blade tips twice the tower top's amplitude, was named a flap mode).
+TOWER_WEIGHT = 5.0
+
+#: A point where HAWCStab2 gives this damping ratio or more is no oscillation.
+OVERDAMPED = 0.999
 
 #: The turbine .amp's 15 sensors: (kind of motion, coordinate), in file order.
 TURBINE_SENSORS = (
@@ -50,7 +62,20 @@ TURBINE_SENSORS = (
     ("blade.tor", "backward"),
     ("blade.tor", "forward"),
 )
-_ROTATIONS = {2, 5, 12, 13, 14}  # yaw, shaft torsion, blade torsion [rad]
+#: The weight of each sensor: the arm [m] of each rotation (yaw, shaft torsion, blade
+#: torsion in its three whirls), TOWER_WEIGHT for the tower top's and the shaft end's
+#: deflections, 1 for the blade tips'.
+_WEIGHTS = {
+    0: TOWER_WEIGHT,
+    1: TOWER_WEIGHT,
+    2: ROTOR_ARM_M,
+    3: TOWER_WEIGHT,
+    4: TOWER_WEIGHT,
+    5: ROTOR_ARM_M,
+    12: CHORD_ARM_M,
+    13: CHORD_ARM_M,
+    14: CHORD_ARM_M,
+}
 _WORDS = {
     "tower.ss": "tower side-side",
     "tower.fa": "tower fore-aft",
@@ -65,11 +90,12 @@ _WORDS = {
 
 def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray, list[int]]:
     """Header lines ('#' or the first ``skip``), the numeric rows of a whitespace table, and
-    each row's line in the file."""
-    try:
-        lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
-    except OSError as exc:
-        raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(path)) from None
+    each row's line in the file — read through the guards every input passes (a regular
+    file, the size limit), the files found beside the .cmb too."""
+    raw = read_bytes(path)
+    if b"\x00" in raw:
+        raise SpecError("binary file, not a HAWCStab2 table", source=str(path))
+    lines = raw.decode("utf-8-sig", errors="replace").splitlines()
     header: list[str] = []
     rows: list[list[float]] = []
     at: list[int] = []
@@ -113,15 +139,17 @@ def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
             line=1,
             source=str(path),
         )
-    freq = data[:, 1 : 1 + n]
-    bad = np.argwhere(freq <= 0)
+    freq = data[:, 1 : 1 + n].copy()
+    bad = np.argwhere(freq < 0)
     if bad.size:
         row, mode = (int(x) for x in bad[0])
         raise SpecError(
-            f"mode {mode + 1}: frequency {freq[row, mode]:g} Hz — a natural frequency is positive",
+            f"mode {mode + 1}: frequency {freq[row, mode]:g} Hz — a natural frequency is not "
+            "negative",
             line=at[row],
             source=str(path),
         )
+    freq[freq == 0] = np.nan  # HAWCStab2 writes 0 where it found no such mode: no data
     damp = data[:, 1 + n : 1 + 2 * n] / 100 if cols // n >= 2 else np.full_like(freq, np.nan)
     return label, data[:, 0], freq, damp
 
@@ -142,8 +170,8 @@ def rotor_speeds(
             source=str(cmb),
         )
     for suffix, column, skip in ((".opt", 2, 1), (".pwr", 9, 0)):
-        side = cmb.with_suffix(suffix)
-        if side.is_file():
+        side = _beside(cmb, suffix)
+        if side is not None:
             _, table, _ = _table(side, skip)
             if table.shape[1] <= column:
                 raise SpecError(f"no rotor-speed column {column + 1}", source=str(side))
@@ -159,9 +187,26 @@ def rotor_speeds(
             return rpm, points, [str(side)]
     raise SpecError(
         f"the points are wind speeds, and neither {cmb.with_suffix('.opt').name} nor "
-        f"{cmb.with_suffix('.pwr').name} gives the rotor speed at them",
+        f"{cmb.with_suffix('.pwr').name} (nor a folder's only .opt) gives the rotor speed at "
+        "them",
         source=str(cmb),
     )
+
+
+def _beside(cmb: Path, suffix: str) -> Path | None:
+    """The file of this suffix that goes with a .cmb: the one of its own name, else — for
+    the operational data, which HAWCStab2 runs name as they please
+    (``operation_1_25_windspeed.opt``) — the folder's only one."""
+    own = cmb.with_suffix(suffix)
+    if own.exists():
+        return own
+    if suffix != ".opt":
+        return None
+    try:
+        found = sorted(p for p in cmb.parent.iterdir() if p.suffix.lower() == ".opt")
+    except OSError:
+        return None
+    return found[0] if len(found) == 1 else None
 
 
 def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
@@ -178,9 +223,7 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
         out = []
         for j in range(modes):
             amps = data[:, 1 + j * per : 1 + (j + 1) * per : 2].mean(axis=0)
-            amps = np.array(
-                [a * (ROTATION_ARM_M if i in _ROTATIONS else 1.0) for i, a in enumerate(amps)]
-            )
+            amps = np.array([a * _WEIGHTS.get(i, 1.0) for i, a in enumerate(amps)])
             out.append(TURBINE_SENSORS[int(np.argmax(amps))])
         return out, "fixed"
     if "u_x" in text or "u_y" in text:
@@ -209,14 +252,19 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
 def to_spec_data(
     path: Path, text: str, blades: int | None, given: tuple[float, float] | None = None
 ) -> dict[str, Any]:
-    """The wtvib-format dictionary of a HAWCStab2 .cmb with its .amp and .opt/.pwr."""
+    """The wtvib-format dictionary of a HAWCStab2 .cmb with its .amp and .opt/.pwr.
+
+    A mode HAWCStab2 did not find at a point (frequency 0 or NaN) has no data there, and a
+    root damped at or past critical (ζ ≥ 99.9 %) does not oscillate there: those points
+    are left out of the mode; a mode with no point left is left out, said.
+    """
     label, points, freq, damp = read_cmb(path)
     rpm, wind, side = rotor_speeds(path, label, points)
     files = [str(path), *side]
     n = freq.shape[1]
     amp = path.with_suffix(".amp")
     warnings = []
-    if amp.is_file():
+    if amp.exists():
         kinds, frame = names_from_amp(amp, n)
         files.append(str(amp))
     else:
@@ -225,10 +273,23 @@ def to_spec_data(
             f"no {amp.name} beside {path.name}: the modes are not named (mode1, mode2 …) and "
             "are judged as whole-turbine modes without whirl"
         )
-    order = np.argsort(freq[0])
+    valid = np.isfinite(freq) & ~(np.nan_to_num(damp, nan=0.0) >= OVERDAMPED)
+    typical = np.array([np.median(freq[valid[:, j], j]) if valid[:, j].any() else np.inf
+                        for j in range(n)])  # fmt: skip
+    order = np.argsort(typical, kind="stable")
+    sort = np.argsort(rpm, kind="stable")
     count: dict[str, int] = defaultdict(int)
     modes: dict[str, dict[str, Any]] = {}
+    dropped: list[str] = []
+    partial: list[str] = []
     for j in order:
+        ok = sort[valid[sort, j]]
+        if ok.size == 0:
+            why = "no frequency" if not np.isfinite(freq[:, j]).any() else "damped past critical"
+            dropped.append(f"mode {j + 1} ({why} at every point)")
+            continue
+        if ok.size < len(sort):
+            partial.append(f"mode {j + 1} ({len(sort) - ok.size} of {len(sort)} points)")
         kind, coord = kinds[j]
         key = kind if coord in ("fixed", "rotating") else f"{kind}.{coord}"
         count[key] += 1
@@ -243,22 +304,38 @@ def to_spec_data(
             name = f"{kind}{k}.{coord}"
             how = "symmetric" if coord == "collective" else f"{coord} whirl"
             words = f"{ordinal(k)} {_WORDS[kind]}, {how}"
-        sort = np.argsort(rpm)
         m: dict[str, Any] = {
             "description": f"{words} (mode {j + 1})",
             "frame": frame,
-            "rpm": [round(float(v), 6) for v in rpm[sort]],
-            "frequency_hz": [float(v) for v in freq[sort, j]],
+            "rpm": [round(float(v), 6) for v in rpm[ok]],
+            "frequency_hz": [float(v) for v in freq[ok, j]],
         }
-        if np.all(np.isfinite(damp[:, j])):
-            m["damping_ratio"] = [max(-1.0, min(1.0, float(v))) for v in damp[sort, j]]
+        if np.all(np.isfinite(damp[ok, j])):
+            m["damping_ratio"] = [max(-1.0, min(1.0, float(v))) for v in damp[ok, j]]
         if frame == "fixed" and coord not in ("fixed", "rotating"):
-            m["whirl"] = [coord] * len(rpm)
+            m["whirl"] = [coord] * int(ok.size)
         if wind is not None:
-            m["wind_m_s"] = [float(v) for v in wind[sort]]
+            m["wind_m_s"] = [float(v) for v in wind[ok]]
         modes[name] = m
+    if not modes:
+        raise SpecError(
+            f"no mode of {path.name} oscillates at any point ({'; '.join(dropped[:3])})",
+            source=str(path),
+        )
     data = results_spec(
         path, "HAWCStab2", modes, blades, files, f"HAWCStab2 {path.stem}", rpm=given
     )
+    if dropped:
+        data["assumptions"].append(
+            "Left out: " + ", ".join(dropped) + " — HAWCStab2 writes 0 where it found no mode "
+            "(a rigid-body mode, the drive train turning freely, has none), and a root damped "
+            "past critical does not oscillate."
+        )
+    if partial:
+        data["assumptions"].append(
+            "Points without data (no frequency, or damped past critical) left out of "
+            + ", ".join(partial)
+            + "; the curve is linear between the points it has."
+        )
     data["warnings"] += warnings
     return data
