@@ -1,7 +1,9 @@
 """The orchestrator: assumptions stated only when made, warnings for missing inputs that
 change a frequency by a factor, the damping each mode is judged with."""
 
-from tests.conftest import spec_text
+import pytest
+
+from tests.conftest import TURBINES, spec_text
 from wtvib import audit, importers, spec
 
 HEAD = """
@@ -171,3 +173,16 @@ def test_a_table_station_far_from_both_neighbours_is_a_warning(shared, tmp_path)
     assert len(warned) == 1
     assert warned[0].startswith("tower.distributed.ei_fa_nm2[5]: 2.91e-09 at 43.8 m")
     assert "below both its neighbours" in warned[0]
+
+
+def test_a_verdict_resting_on_no_judged_mode_is_an_error_not_a_pass(monkeypatch):
+    """A verdict that judged nothing is not a pass (issue 35: a linearisation whose
+    structural modes were all dropped passed): with no finding on any judged mode the audit
+    stops with one line naming the input."""
+    from wtvib import audit as audit_module
+    from wtvib.errors import SpecError
+
+    monkeypatch.setattr(audit_module, "assess_all", lambda *a, **k: [])
+    s = spec.load(TURBINES / "mod-2.yaml")
+    with pytest.raises(SpecError, match="no natural frequency to judge"):
+        audit_module.run(s)

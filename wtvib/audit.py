@@ -22,6 +22,7 @@ from . import (
     yaw,
 )
 from .analysis import Analysis, Context, Subsystem
+from .errors import SpecError
 from .excitation import OperatingRange, excitations, operating_range
 from .modal import ModalError
 from .resonance import Finding, Mark, assess_all, resonance_checks
@@ -212,7 +213,6 @@ def override(
     preset: str | None = None,
 ) -> AuditSettings:
     """Audit settings with command-line overrides on top of the spec's ``audit`` section."""
-    from .errors import SpecError
 
     update: dict[str, Any] = {}
     if preset is not None:
@@ -299,6 +299,14 @@ def _run(
             results[sub.NAME] = analysis.results
         assumptions += analysis.assumptions
     _assert_finite(all_modes)
+    if not any(f.mode.judged for f in findings):
+        # a verdict on nothing is no pass (every mode in no operating regime, or none)
+        raise SpecError(
+            f"no natural frequency to judge: of {len(all_modes)} mode(s), none exists in an "
+            "operating regime the audit judges — give the modes (or the structure they come "
+            "from) that a verdict could rest on",
+            source=spec.source_file,
+        )
     spread = _uncertainty(spec, samples, seed, all_modes, rule, client) if samples else None
     return Report(
         spec=spec,
