@@ -244,8 +244,9 @@ def test_two_batches_never_write_into_one_folder(folder, tmp_path):
 
 
 def test_a_verdict_resting_on_a_warning_is_marked_in_every_summary(shared, tmp_path):
-    """WindPACT's deck set gives no operating range: it is audited at its initial RotSpeed,
-    which its report warns of — and the batch summary said only WARN (others only PASS).
+    """WindPACT's deck set gives no lowest speed (ServoDyn's simple variable-speed law names
+    only the rated one): it is audited from its initial RotSpeed, which its report warns of
+    — and the batch summary said only WARN (others only PASS).
     The row carries the warnings (JSON: the list; CSV: joined), the table marks the verdict
     and lists them below it, the PDF's cover marks it and the turbine's page lists them."""
     import io
@@ -256,12 +257,12 @@ def test_a_verdict_resting_on_a_warning_is_marked_in_every_summary(shared, tmp_p
     out = tmp_path / "audit"
     result = runner.invoke(app, ["batch", str(deck), "--out", str(out), "-j", "1"])
     assert "WARN*" in result.stdout and "* with warnings" in result.stdout
-    assert "no operating range in the deck set" in result.stdout
+    assert "names no lowest" in result.stdout
     row = json.loads((out / "summary.json").read_text())["turbines"][0]
-    assert row["warnings"] and row["warnings"][0].startswith("rotor.speed: no operating range")
+    assert row["warnings"] and row["warnings"][0].startswith("rotor.speed: ServoDyn's simple")
     csv_text = (out / "summary.csv").read_text()
     assert csv_text.splitlines()[0].endswith(",warnings")
-    assert "no operating range in the deck set" in csv_text
+    assert "names no lowest speed" in csv_text
     pdf = PdfReader(io.BytesIO((out / "audit.pdf").read_bytes()))
     text = "\n".join(p.extract_text() for p in pdf.pages)
-    assert "WARN*" in text and "Warnings" in text and "no operating range in the deck" in text
+    assert "WARN*" in text and "Warnings" in text and "names no lowest" in text

@@ -1,10 +1,11 @@
 """ElastoDyn decks at unit level: values and tables, the operating range from the deck set."""
 
+import math
 from pathlib import Path
 
 import pytest
 
-from wtvib.importers import elastodyn
+from wtvib.importers import elastodyn, servodyn
 
 DECK = """------- ELASTODYN -------
           3   NumBl       - Number of blades (-)
@@ -30,14 +31,41 @@ def test_fixed_speed_from_an_induction_generator(tmp_path):
     # (the AWT-27 deck, ../shared/reference/AWT27/Test01.fst)
     text = "0 VSContrl -\n1 GenModel -\n1.5125 SIG_SlPc -\n1200.0 SIG_SySp -\n22.5 GBRatio -\n"
     deck = elastodyn.parse(tmp_path / "t.fst", text)
-    speed, note = elastodyn.operating_speed(deck, deck)  # type: ignore[misc]
-    assert speed["fixed_rpm"] == pytest.approx(1200 * 1.015125 / 22.5)
-    assert "synchronous speed 1200 rpm" in note
+    found = servodyn.operation(deck, deck)
+    assert found.speed is not None
+    assert found.speed["fixed_rpm"] == pytest.approx(1200 * 1.015125 / 22.5)
+    assert "synchronous speed 1200 rpm" in found.note
+    assert found.generator["generator"] == "induction"
 
 
-def test_no_controller_inputs_give_no_range(tmp_path):
+def test_no_servodyn_is_audited_at_the_initial_speed_and_said(tmp_path):
     deck = elastodyn.parse(tmp_path / "d.dat", DECK)
-    assert elastodyn.operating_speed(deck, None) is None
+    found = servodyn.operation(deck, None)
+    assert found.speed == {"fixed_rpm": 12.1, "source": "the initial RotSpeed of d.dat"}
+    assert "no ServoDyn" in found.warnings[0] and "--rpm" in found.warnings[0]
+
+
+def test_a_parked_deck_without_servodyn_has_no_speed(tmp_path):
+    deck = elastodyn.parse(tmp_path / "d.dat", DECK.replace("12.1     RotSpeed", "0 RotSpeed"))
+    assert servodyn.operation(deck, None).speed is None
+
+
+def test_simple_variable_speed_gives_rated_speed_and_power(tmp_path):
+    # the NREL 5-MW's generator (Jonkman 2009, NREL/TP-500-38060, Table 6-1 and §7):
+    # rated 1173.7 rpm, 43093.55 N·m, gearbox 97, efficiency 94.4 % → 12.1 rpm, 5 MW
+    servo = elastodyn.parse(
+        tmp_path / "s.dat",
+        "1 VSContrl -\n1 PCMode -\n94.4 GenEff -\n1173.7 VS_RtGnSp -\n43093.55 VS_RtTq -\n",
+    )
+    main = elastodyn.parse(tmp_path / "d.dat", DECK.replace("12.1     RotSpeed", "7 RotSpeed"))
+    found = servodyn.operation(main, servo)
+    assert found.speed is not None
+    assert found.speed["min_rpm"] == 7 and found.speed["max_rpm"] == pytest.approx(1173.7 / 97)
+    # P = T·ω·η = 43093.55 · 1173.7·π/30 · 0.944 = 5.0 MW
+    power = 43093.55 * 1173.7 * math.pi / 30 * 0.944 / 1e3
+    assert found.control["rated_power_kw"] == pytest.approx(power)
+    assert found.control["regulation"] == "pitch"
+    assert "names no lowest speed" in found.warnings[0]
 
 
 def test_rosco_discon_values(tmp_path):
@@ -46,7 +74,7 @@ def test_rosco_discon_values(tmp_path):
         "34.64286   ! VS_MinOMSpd - Minimum generator speed [rad/s]\n"
         "122.90967  ! VS_RefSpd - Rated generator speed [rad/s]\n"
     )
-    assert elastodyn._discon(p) == {"VS_MinOMSpd": (34.64286, 1), "VS_RefSpd": (122.90967, 2)}
+    assert servodyn.discon(p) == {"VS_MinOMSpd": (34.64286, 1), "VS_RefSpd": (122.90967, 2)}
 
 
 @pytest.mark.parametrize(
@@ -62,7 +90,7 @@ def test_a_bad_controller_input_is_one_line_with_file_and_line(tmp_path, discon,
     servo = elastodyn.parse(tmp_path / "s.dat", '5 VSContrl -\n"DISCON.IN" DLL_InFile -\n')
     main = elastodyn.parse(tmp_path / "d.dat", DECK)
     with pytest.raises(elastodyn.SpecError, match=message) as err:
-        elastodyn.operating_speed(main, servo)
+        servodyn.operation(main, servo)
     assert err.value.line == line and str(err.value.source).endswith("DISCON.IN")
 
 
@@ -70,7 +98,7 @@ def test_a_switch_must_be_a_whole_number(tmp_path):
     servo = elastodyn.parse(tmp_path / "s.dat", "2.7 VSContrl - mode\n")
     main = elastodyn.parse(tmp_path / "d.dat", DECK)
     with pytest.raises(elastodyn.SpecError, match="VSContrl is a switch") as err:
-        elastodyn.operating_speed(main, servo)
+        servodyn.operation(main, servo)
     assert err.value.line == 1
 
 

@@ -136,7 +136,7 @@ def to_data(
     elif kind == "elastodyn":
         from . import elastodyn
 
-        data = elastodyn.to_spec_data(p, text, clamped_base)
+        data = elastodyn.to_spec_data(p, text, clamped_base, speed_given=rpm is not None)
     elif kind == "windio":
         from . import windio
 

@@ -133,6 +133,21 @@ def polar(path: Path) -> dict[str, list[float]]:
     }
 
 
+def negative_drag(name: str, table: dict[str, list[float]]) -> str | None:
+    """A polar's drag coefficients below 0 (a fit's or an extrapolation's artefact in
+    published files: the SWRT's and the IEA land-based RWT's aerofoils) taken as 0, and the
+    warning that says so; None where there are none."""
+    low = [(cd, a) for cd, a in zip(table["cd"], table["alpha_deg"], strict=True) if cd < 0]
+    if not low:
+        return None
+    table["cd"] = [max(cd, 0.0) for cd in table["cd"]]
+    worst = min(low)
+    return (
+        f"aerodynamics.airfoils.{name}: C_D below 0 at {len(low)} angle(s) of attack (lowest "
+        f"{worst[0]:.3g} at α = {worst[1]:g}°) — a drag coefficient is not negative: taken as 0"
+    )
+
+
 def _airfoil_files(deck: Deck) -> list[Path]:
     """AFNames: the first on its key's line, the rest on the lines after it."""
     n = _count(deck, "NumAFfiles", MAX_AIRFOILS)
@@ -160,17 +175,33 @@ def _airfoil_files(deck: Deck) -> list[Path]:
     return out
 
 
+#: The .fst's environment block (OpenFAST ≥ 3.0), which a module's "default" air and water
+#: properties stand for (OpenFAST input-file documentation, glue-code "ENVIRONMENTAL
+#: CONDITIONS").
+ENVIRONMENT = ("Gravity", "AirDens", "WtrDens", "KinVisc", "SpdSound", "Patm", "Pvap", "WtrDpth")
+
+
+def environment(fst: Deck | None) -> dict[str, tuple[float, str]]:
+    """What a "default" environmental input stands for: the .fst's own value."""
+    if fst is None:
+        return {}
+    return {
+        key: (fst.num(key), f"the .fst's {key}, {fst.path.name} line {fst.values[key][1]}")
+        for key in ENVIRONMENT
+        if key in fst.values and not fst.is_default(key)
+    }
+
+
 def aerodynamics(
-    fst: Deck | None,
-    hub_radius: float,
-    servo: Deck | None,
-    controller: dict[str, tuple[float, int]],
-) -> tuple[dict[str, Any], list[str]] | None:
-    """The ``aerodynamics`` block and the files read, or None where the deck set has no
-    AeroDyn 15 input."""
+    fst: Deck | None, hub_radius: float, control: dict[str, Any]
+) -> tuple[dict[str, Any], list[str], list[str], list[str]] | None:
+    """The ``aerodynamics`` block (its ``control`` as the deck set's ServoDyn gives it:
+    :func:`wtvib.importers.servodyn.operation`), the files read, what "default" inputs were
+    taken as, and warnings; None where the deck set has no AeroDyn 15 input."""
     if fst is None or "AeroFile" not in fst.values or fst.num("CompAero", default=0) != 2:
         return None
     ad = parse(_file(fst, "AeroFile"))
+    ad.inherited.update(environment(fst))
     blade = _file(ad, "ADBlFile(1)", "ADBlFile1")
     stations = blade_stations(blade, hub_radius)
     files = _airfoil_files(ad)
@@ -179,30 +210,24 @@ def aerodynamics(
         raise SpecError(f"BlAFID {max(ids)} exceeds NumAFfiles {len(files)}", source=str(blade))
     used = sorted(set(ids))
     airfoils = {files[i - 1].stem: polar(files[i - 1]) for i in used}
+    warnings = [w for name, table in airfoils.items() if (w := negative_drag(name, table))]
     stations["airfoil"] = [files[i - 1].stem for i in ids]
-    control: dict[str, Any] = {"regulation": "pitch"}
-    if "VS_TSRopt" in controller:
-        control["tip_speed_ratio"] = controller["VS_TSRopt"][0]
-    if "VS_RtPwr" in controller:
-        control["rated_power_kw"] = controller["VS_RtPwr"][0] / 1e3
-    if "PC_FinePit" in controller:
-        control["fine_pitch_deg"] = math.degrees(controller["PC_FinePit"][0])
-    if servo is not None and "GenEff" in servo.values:
-        eff = servo.num("GenEff")
-        if not 0 < eff <= 100:
-            raise SpecError(
-                f"GenEff must lie in (0, 100] % (got {eff:g})",
-                line=servo.values["GenEff"][1],
-                source=str(servo.path),
-            )
-        control["generator_efficiency"] = eff / 100
+    rho = ad.num("AirDens", "AirDens(1)", default=1.225)
+    key = next((k for k in ("AirDens", "AirDens(1)") if k in ad.values), None)
     block = {
-        "air_density_kg_m3": ad.num("AirDens", "AirDens(1)", default=1.225),
+        "air_density_kg_m3": {
+            "value": rho,
+            "provenance": "published" if key is not None else "representative",
+            "source": "deck",
+            "note": ad.defaulted.get(key, f"{key} in {ad.path.name}")
+            if key is not None
+            else "no AirDens in the AeroDyn file: 1.225 kg/m³ (sea level, 15 °C)",
+        },
         "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
         "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
         "stations": stations,
         "airfoils": airfoils,
-        "control": control,
+        "control": dict(control),
     }
     read = [ad.path.name, blade.name, *(files[i - 1].name for i in used)]
-    return block, read
+    return block, read, list(ad.defaulted.values()), warnings

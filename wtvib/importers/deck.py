@@ -65,6 +65,15 @@ class Deck:
     values: dict[str, tuple[str, int]]
     tables: dict[str, tuple[list[str], np.ndarray]]
     table_lines: dict[str, int] = field(default_factory=dict)  # header line of each table
+    #: what "default" stands for where the deck set says where (AeroDyn's AirDens: the
+    #: .fst's environment block): key → (value, where it came from)
+    inherited: dict[str, tuple[float, str]] = field(default_factory=dict)
+    #: the inputs read as "default", and what they were taken as (for the assumptions)
+    defaulted: dict[str, str] = field(default_factory=dict)
+
+    def is_default(self, key: str) -> bool:
+        """Whether the input is OpenFAST's "default" keyword (quoted or not)."""
+        return key in self.values and self.values[key][0].strip('"').lower() == "default"
 
     def text(self, *keys: str) -> str:
         for key in keys:
@@ -73,7 +82,24 @@ class Deck:
         raise SpecError(f"{keys[0]} is missing from the deck", source=str(self.path))
 
     def num(self, *keys: str, default: float | None = None) -> float:
+        """A number; OpenFAST's "default" keyword takes what the deck set says it stands for
+        (:attr:`inherited`), else ``default`` (OpenFAST's documented default, which the
+        caller gives), each noted in :attr:`defaulted`."""
         for key in keys:
+            if key in self.values and self.is_default(key):
+                if key in self.inherited:
+                    value, where = self.inherited[key]
+                elif default is not None:
+                    value, where = default, "OpenFAST's documented default"
+                else:
+                    raise SpecError(
+                        f'{key} is "default", and the deck set does not say what that stands '
+                        "for here: give its number",
+                        line=self.values[key][1],
+                        source=str(self.path),
+                    )
+                self.defaulted[key] = f'{key} "default" → {value:g} ({where})'
+                return value
             if key in self.values:
                 raw, line = self.values[key]
                 try:

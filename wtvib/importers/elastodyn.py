@@ -18,9 +18,10 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..spec import read_text
-from .deck import _NUMBER, Deck, _file, parse
+from ..rigid import rotor_points
+from .deck import Deck, _file, parse
 from .floating import refusal
+from .servodyn import operation
 
 
 def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
@@ -48,120 +49,13 @@ def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
                         break
     servo = None
     if fst is not None and "ServoFile" in fst.values and fst.num("CompServo", default=1) > 0:
-        servo = parse(_file(fst, "ServoFile"))
+        named = (fst.path.parent / fst.text("ServoFile")).resolve()
+        # a ServoDyn the .fst names but the deck set does not hold (OpenFAST's aero-map
+        # case runs without it): none, which the operation then says
+        servo = parse(_file(fst, "ServoFile")) if named.exists() else None
     elif "VSContrl" in main.values:  # FAST v7: the controls are in the deck itself
         servo = main
     return main, fst, servo
-
-
-def operating_speed(main: Deck, servo: Deck | None) -> tuple[dict[str, Any], str] | None:
-    """The rotor's operating speeds [rpm] from the deck set's controller inputs, with a
-    sentence saying where they came from; None where the deck set does not give them.
-
-    Notes
-    -----
-    * Bladed-style DLL (ServoDyn ``VSContrl`` = 5, ROSCO): ``DLL_InFile``'s VS_MinOMSpd (the
-      minimum generator speed, rad/s) and VS_RefSpd (rated; else PC_RefSpd), over
-      WE_GearboxRatio (else GBRatio) — ROSCO input definitions.
-    * Simple variable speed (``VSContrl`` = 1): VS_RtGnSp (rated generator speed, rpm) gives
-      the rated rotor speed; the law holds no lowest speed, so the range is not complete.
-    * Fixed speed (``VSContrl`` = 0): the induction generator's synchronous speed SIG_SySp
-      (``GenModel`` 1) or 120·TEC_Freq/TEC_NPol (``GenModel`` 2) plus the rated slip
-      SIG_SlPc, over GBRatio.
-    FAST User's Guide (NREL/EL-500-38230) and ServoDyn input definitions.
-    """
-    if servo is None or "VSContrl" not in servo.values:
-        return None
-    gb = main.num("GBRatio", default=1.0)
-    mode = _switch(servo, "VSContrl")
-    rpm_of = 30 / math.pi
-    if mode == 5 and "DLL_InFile" in servo.values:
-        dll = _file(servo, "DLL_InFile")
-        ctrl = _discon(dll)
-        ratio = ctrl.get("WE_GearboxRatio", (gb, 0))[0]
-        low = ctrl.get("VS_MinOMSpd")
-        rated = ctrl.get("VS_RefSpd", ctrl.get("PC_RefSpd"))
-        if low is None or rated is None:
-            return None
-        if not (0 < low[0] < rated[0] and ratio > 0):
-            raise SpecError(
-                f"VS_MinOMSpd {low[0]:g} rad/s must lie between 0 and the rated generator "
-                f"speed {rated[0]:g} rad/s (and the gearbox ratio {ratio:g} above 0)",
-                line=low[1],
-                source=str(dll),
-            )
-        speed: dict[str, Any] = {
-            "min_rpm": low[0] / ratio * rpm_of,
-            "max_rpm": rated[0] / ratio * rpm_of,
-            "source": f"{dll.name} (VS_MinOMSpd, VS_RefSpd)",
-        }
-        return speed, (
-            f"Operating range {speed['min_rpm']:.3g}–{speed['max_rpm']:.3g} rpm from "
-            f"{dll.name} (VS_MinOMSpd {low[0]:g}, VS_RefSpd {rated[0]:g} rad/s, gearbox "
-            f"{ratio:g}), named by {servo.path.name}."
-        )
-    if mode == 0:
-        model = _switch(servo, "GenModel", default=1)
-        sync = (
-            servo.num("SIG_SySp", default=0.0)
-            if model == 1
-            else 120
-            * servo.num("TEC_Freq", default=0.0)
-            / max(servo.num("TEC_NPol", default=1.0), 1.0)
-        )
-        slip = servo.num("SIG_SlPc", default=0.0) if model == 1 else 0.0
-        if 0 < sync < 9999 and 0 <= slip < 50:
-            fixed = sync * (1 + slip / 100) / gb
-            source = f"the induction generator in {servo.path.name} (synchronous speed + slip)"
-            return {"fixed_rpm": fixed, "source": source}, (
-                f"Fixed operating speed {fixed:.4g} rpm: the induction generator's synchronous "
-                f"speed {sync:g} rpm plus rated slip {slip:g} % over the gearbox ratio {gb:g} "
-                f"({servo.path.name})."
-            )
-    return None
-
-
-#: The controller inputs the operating range is read from (ROSCO's names).
-DISCON_KEYS = (
-    "VS_MinOMSpd",
-    "VS_RefSpd",
-    "PC_RefSpd",
-    "WE_GearboxRatio",
-    "VS_TSRopt",
-    "VS_RtPwr",
-    "PC_FinePit",
-)
-
-
-def _discon(path: Path) -> dict[str, tuple[float, int]]:
-    """The operating-range inputs of a ROSCO / Bladed-style controller file (``value ! Name``
-    lines): value and line. One of them that is not a finite number is a SpecError naming
-    file and line."""
-    out: dict[str, tuple[float, int]] = {}
-    for number, line in enumerate(read_text(path).splitlines(), start=1):
-        value, _, rest = line.partition("!")
-        names, parts = rest.split(), value.split()
-        if len(parts) != 1 or not names or names[0] not in DISCON_KEYS:
-            continue
-        if not _NUMBER.match(parts[0]):
-            raise SpecError(
-                f"{names[0]} must be a number (got {parts[0]!r})", line=number, source=str(path)
-            )
-        out.setdefault(names[0], (float(parts[0].replace("D", "E")), number))
-    return out
-
-
-def _switch(deck: Deck, key: str, default: int | None = None) -> int:
-    """An integer switch of a deck (``VSContrl``, ``GenModel``): 2.7 is an error, not 2."""
-    value = deck.num(key, default=None if default is None else float(default))
-    if value != int(value):
-        line = deck.values[key][1] if key in deck.values else None
-        raise SpecError(
-            f"{key} is a switch and must be a whole number (got {value:g})",
-            line=line,
-            source=str(deck.path),
-        )
-    return int(value)
 
 
 #: ElastoDyn's platform degrees of freedom: any of them on, the tower's base moves.
@@ -227,12 +121,16 @@ def _blades_differ(main: Deck, first: Deck, blades: int) -> list[str]:
     ]
 
 
-def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str, Any]:
+def to_spec_data(
+    path: Path, text: str, clamped_base: bool = False, speed_given: bool = False
+) -> dict[str, Any]:
     """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst.
 
     A deck set whose tower stands on a platform (its platform degrees of freedom, SubDyn,
     HydroDyn or moorings) is audited with the tower clamped at its base, which the report's
-    headline says; a floating one is refused unless ``clamped_base`` asks for that."""
+    headline says; a floating one is refused unless ``clamped_base`` asks for that. A
+    parked deck (no controller, RotSpeed 0) needs the operating range (``speed_given``:
+    the command line gives it)."""
     main, fst, servo = deck_set(path, text)
     path = main.path
     below = platform(main, fst)
@@ -267,12 +165,19 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
     edge = blade.column("BlFract", "EdgStff") * blade.num("AdjEdSt", default=1.0)
     twist = blade.optional_column("BlFract", "StrcTwst")
 
-    head, breakdown = tower_head(main, span, bmass, hub_r, n_blades)
-    operating = _operating(main, servo)
+    q = _quantity(source)
+    hub = _hub_inertia(main, hub_r, q)
+    head, breakdown = tower_head(main, span, bmass, hub_r, n_blades, hub["inertia_kgm2"]["value"])
+    operating = operation(main, servo, fst)
+    if operating.speed is None and not speed_given:
+        raise SpecError(
+            f"{operating.note.removesuffix('.')}; give the operating range with --rpm MIN:MAX",
+            source=str(path),
+        )
     read = [d.path for d in (fst, main, servo) if d is not None]
     from .aerodyn import aerodynamics
 
-    aero = aerodynamics(fst, hub_r, servo, controller(servo))
+    aero = aerodynamics(fst, hub_r, operating.control)
     files = (
         "Files read: "
         + ", ".join(str(p) if p.parent != main.path.parent else p.name for p in dict.fromkeys(read))
@@ -292,7 +197,6 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
     tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
     if tip_mass > 0:  # tip brakes: on the blade model too, not only in the head's mass
         structure["tip_mass_kg"] = tip_mass
-    q = _quantity(source)
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -309,7 +213,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
             "blades": n_blades,
             "orientation": "upwind" if main.num("OverHang") < 0 else "downwind",
             "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
-            "speed": operating["speed"],
+            "speed": _speed_block(operating.speed),
         },
         "tower": {
             "height_m": q(tower_height, "TowerHt − TowerBsHt", "derived"),
@@ -358,7 +262,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
                     "name": "blades",
                     "inertia_kgm2": q(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
                 },
-                {"name": "hub", "inertia_kgm2": q(main.num("HubIner"), "HubIner")},
+                hub,
                 {
                     "name": "generator",
                     "inertia_kgm2": q(main.num("GenIner"), "GenIner (HSS)"),
@@ -391,11 +295,11 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
             "Tower head assembled from its parts: " + breakdown + ".",
             "Precone and shaft tilt are neglected in the head inertia; the tower is clamped at "
             "its base (ElastoDyn's platform and foundation are not read).",
-            operating["note"],
+            operating.note,
             files,
         ],
     }
-    warnings = [operating["warning"]] if operating.get("warning") else []
+    warnings = list(operating.warnings) + (aero[3] if aero else [])
     warnings += _blades_differ(main, blade, n_blades)
     if below is not None:
         base = main.num("TowerBsHt", default=0.0)
@@ -410,6 +314,7 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
                 "published on its monopile)"
             )
         )
+    data["drivetrain"].update(operating.generator)
     if warnings:
         data["warnings"] = warnings
     if torsion is not None:
@@ -418,7 +323,10 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
         data["aerodynamics"] = aero[0]
         rated = aero[0]["control"].get("rated_power_kw")
         if rated is not None:
-            data["turbine"]["rated_power_kw"] = q(rated, "VS_RtPwr (DISCON)")
+            data["turbine"]["rated_power_kw"] = q(
+                rated, f"VS_RtPwr ({operating.controller_file})"
+                if operating.controller_file else "VS_RtTq·VS_RtGnSp·GenEff (ServoDyn)",
+            )  # fmt: skip
         control = aero[0]["control"]
         given = [
             f"{key} {control[field]:.6g}{unit}"
@@ -434,10 +342,11 @@ def to_spec_data(path: Path, text: str, clamped_base: bool = False) -> dict[str,
             "first table of each aerofoil file); cut-in and cut-out wind not in the deck set: "
             "3 and 25 m/s assumed."
             + (
-                f" From the controller ({_controller_file(servo)}): {', '.join(given)}."
-                if given
+                f" From the controller ({operating.controller_file}): {', '.join(given)}."
+                if given and operating.controller_file
                 else ""
             )
+            + "".join(f" {note}." for note in aero[2])
         )
     return data
 
@@ -491,22 +400,16 @@ def _tower_torsion(
     )
 
 
-def _controller_file(servo: "Deck | None") -> str:
-    """The name of the controller's input file (ServoDyn's DLL_InFile)."""
-    return _file(servo, "DLL_InFile").name if servo is not None else "DLL_InFile"
-
-
-def controller(servo: "Deck | None") -> dict[str, tuple[float, int]]:
-    """The ROSCO controller inputs of the deck set's DLL_InFile (empty without one)."""
-    if servo is None or "DLL_InFile" not in servo.values or _switch(servo, "VSContrl") != 5:
-        return {}
-    return _discon(_file(servo, "DLL_InFile"))
-
-
 def tower_head(
-    main: Deck, span: np.ndarray, bmass: np.ndarray, hub_r: float, n_blades: int
+    main: Deck,
+    span: np.ndarray,
+    bmass: np.ndarray,
+    hub_r: float,
+    n_blades: int,
+    hub_iner: float | None = None,
 ) -> tuple[dict[str, float], str]:
-    """The tower head as one rigid body: mass, CM and inertias about the CM (tower-top axes).
+    """The tower head as one rigid body: mass, CM and inertias about the CM (tower-top axes);
+    ``hub_iner`` the hub's polar inertia the drive train takes (default HubIner).
 
     Notes
     -----
@@ -520,11 +423,14 @@ def tower_head(
     over = main.num("OverHang")
     x_apex = over * math.cos(tilt)
     z_apex = main.num("Twr2Shft") + over * math.sin(tilt)
-    m_blade = float(np.trapezoid(bmass, span)) + main.num("TipMass(1)", "TipMass1", default=0.0)
-    radius = hub_r + span
+    # the blade's mass and polar inertia on the points the blade and coupled models use
+    # (the spec's own check of the head takes them so: the same numbers, never 3 % apart)
+    points = rotor_points(hub_r, span, bmass)
     tip = main.num("TipMass(1)", "TipMass1", default=0.0)
-    j_blades = n_blades * (float(np.trapezoid(bmass * radius**2, span)) + tip * radius[-1] ** 2)
-    hub_iner = main.num("HubIner", default=0.0)
+    m_blade = float(points.mass.sum()) + tip
+    j_blades = n_blades * (points.polar() + tip * (hub_r + float(span[-1])) ** 2)
+    if hub_iner is None:
+        hub_iner = main.num("HubIner", default=0.0)
     parts = [  # name, mass, x, z
         (
             "nacelle",
@@ -532,7 +438,9 @@ def tower_head(
             main.num("NacCMxn", default=0.0),
             main.num("NacCMzn", default=0.0),
         ),
-        ("hub", main.num("HubMass"), x_apex + main.num("HubCM", default=0.0), z_apex),
+        # at the apex, as the coupled model places it (HubCM, a few per cent of the
+        # overhang, neglected — said in the breakdown)
+        ("hub", main.num("HubMass"), x_apex, z_apex),
         (f"{n_blades} blades", n_blades * m_blade, x_apex, z_apex),
         ("yaw bearing", main.num("YawBrMass", default=0.0), 0.0, 0.0),
     ]
@@ -553,6 +461,8 @@ def tower_head(
         f"{name} {m:,.0f} kg at x = {px:.2f} m, z = {pz:.2f} m" for name, m, px, pz in parts
     )
     text += f"; total {mass:,.0f} kg; rotor polar inertia {j_polar:,.0f} kg·m²"
+    if main.num("HubCM", default=0.0):
+        text += f" (the hub at the apex: HubCM {main.num('HubCM'):g} m neglected)"
     return {
         "mass": mass,
         "x": x,
@@ -565,25 +475,35 @@ def tower_head(
     }, text
 
 
-def _operating(main: Deck, servo: Deck | None) -> dict[str, Any]:
-    """The spec's speed block, the sentence saying where it came from, and a warning where
-    the deck set does not give the operating range."""
-    found = operating_speed(main, servo)
-    if found is not None:
-        speed, note = found
-        out: dict[str, Any] = {
-            k: v if k == "source" else float(f"{v:.6g}") for k, v in speed.items()
-        }
-        return {"speed": out, "note": note}
-    rot = main.num("RotSpeed")
+def _hub_inertia(main: Deck, hub_radius: float, q: Any) -> dict[str, Any]:
+    """The hub in the drive train: HubIner; where a deck gives 0 (OpenFAST's rigid test
+    turbines), a disc of HubMass and HubRad, ½·m·r², said — a chain mass of no inertia
+    would leave its shafts without a mass between them."""
+    given = main.num("HubIner", default=0.0)
+    if given > 0:
+        return {"name": "hub", "inertia_kgm2": q(given, "HubIner")}
+    mass = main.num("HubMass", default=0.0)
+    disc = 0.5 * mass * hub_radius**2
+    if disc <= 0:
+        raise SpecError(
+            "HubIner is 0 and HubMass or HubRad too: the drive train's hub has no inertia",
+            line=main.values["HubIner"][1] if "HubIner" in main.values else None,
+            source=str(main.path),
+        )
     return {
-        "speed": {"fixed_rpm": rot, "source": f"the initial RotSpeed of {main.path.name}"},
-        "note": f"The deck set gives no operating range: its initial RotSpeed = {rot:g} rpm is "
-        "taken as a fixed operating speed.",
-        "warning": f"rotor.speed: no operating range in the deck set — audited at the initial "
-        f"RotSpeed {rot:g} rpm as a fixed-speed turbine; give the range with --rpm MIN:MAX "
-        "(and --rated)",
+        "name": "hub",
+        "inertia_kgm2": q(
+            disc, "HubIner = 0 in the deck: a disc of HubMass and HubRad, ½·m·r²", "representative"
+        ),
     }
+
+
+def _speed_block(speed: dict[str, Any] | None) -> dict[str, Any]:
+    """The spec's speed block (six digits); a parked deck's placeholder, which the command
+    line's range replaces."""
+    if speed is None:
+        return {"fixed_rpm": 0.0, "source": "parked: the command line gives the range"}
+    return {k: v if k == "source" else float(f"{v:.6g}") for k, v in speed.items()}
 
 
 def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:
