@@ -8,6 +8,7 @@ import pytest
 from wtvib.importers import elastodyn, servodyn
 
 DECK = """------- ELASTODYN -------
+A deck for the tests (line 2 is the title, as OpenFAST reads it)
           3   NumBl       - Number of blades (-)
      12.1     RotSpeed    - Initial or fixed rotor speed (rpm)
      97.0     GBRatio     - Gearbox ratio (-)
@@ -23,7 +24,7 @@ def test_values_and_tables_are_read(tmp_path):
     deck = elastodyn.parse(tmp_path / "d.dat", DECK)
     assert deck.num("NumBl") == 3 and deck.num("RotSpeed") == 12.1
     assert list(deck.column("HtFract", "TMassDen")) == [5590.87, 3235.34]
-    assert deck.values["GBRatio"][1] == 4  # the line, for messages
+    assert deck.values["GBRatio"][1] == 5  # the line, for messages
 
 
 def test_fixed_speed_from_an_induction_generator(tmp_path):
@@ -105,11 +106,11 @@ def test_a_switch_must_be_a_whole_number(tmp_path):
 @pytest.mark.parametrize(
     ("edit", "message", "line"),
     [
-        (("5590.87", "abc"), "column TMassDen: 'abc' is not a finite number", 8),
-        (("1.87E+11       1.87E+11", "1.87E+11       1.87E+"), r"column TwSSStif: '1\.87E\+'", 9),
-        (("5590.87", "nan"), "column TMassDen: 'nan' is not a finite number", 8),
-        (("          3   NumBl", "        2.7   NumBl"), "NumBl must be a whole number ≥ 1", 2),
-        (("          3   NumBl", "        nan   NumBl"), "NumBl must be a finite number", 2),
+        (("5590.87", "abc"), "column TMassDen: 'abc' is not a finite number", 9),
+        (("1.87E+11       1.87E+11", "1.87E+11       1.87E+"), r"column TwSSStif: '1\.87E\+'", 10),
+        (("5590.87", "nan"), "column TMassDen: 'nan' is not a finite number", 9),
+        (("          3   NumBl", "        2.7   NumBl"), "NumBl must be a whole number ≥ 1", 3),
+        (("          3   NumBl", "        nan   NumBl"), "NumBl must be a finite number", 3),
     ],
 )
 def test_a_hostile_deck_is_one_line_with_file_and_line(tmp_path, edit, message, line):
@@ -128,3 +129,19 @@ def test_a_table_cut_short_is_refused():
     deck = elastodyn.parse(Path("d.dat"), DECK.replace(" 1.0            3235.34", " 0.2 3235.34"))
     with pytest.raises(elastodyn.SpecError, match="must increase from 0 to 1"):
         deck.fractions("HtFract")
+
+
+def test_rosco_tower_resonance_avoidance_is_a_quick_pass_band(tmp_path):
+    """ROSCO's TRA_ExclSpeed ± TRA_ExclBand/2 (rad/s, rotor side): the controller passes the
+    band quickly — the spec's quick-pass band, in rpm. 0.32 ± 0.04 rad/s = 2.67–3.44 rpm."""
+    (tmp_path / "DISCON.IN").write_text(
+        "0.19331 ! VS_MinOMSpd\n0.73944 ! VS_RefSpd\n1 ! WE_GearboxRatio\n"
+        "0.32 ! TRA_ExclSpeed\n0.08 ! TRA_ExclBand\n"
+    )
+    servo = elastodyn.parse(tmp_path / "s.dat", '5 VSContrl -\n"DISCON.IN" DLL_InFile -\n')
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    found = servodyn.operation(main, servo)
+    assert found.speed is not None
+    (low, high), *_ = found.speed["quick_pass_rpm"]
+    assert (low, high) == (pytest.approx(0.28 * 30 / math.pi), pytest.approx(0.36 * 30 / math.pi))
+    assert "passed quickly" in found.note

@@ -206,6 +206,13 @@ class Beam:
     ei_ss: Array
     gj: Array | None
     polar: Array | None
+    #: mass per length moving in bending only (water around and inside a submerged pile)
+    added: Array | None = None
+
+    @property
+    def bending_mass(self) -> Array:
+        """Mass per length in bending: the tower's own and the water moving with it."""
+        return self.mass if self.added is None else self.mass + self.added
 
     @functools.cached_property
     def basis(self) -> beam.Basis:
@@ -233,6 +240,8 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
     between stations; mass per length ρ·A·(outfitting factor), polar mass inertia ρ·J·factor.
     """
     extra = np.array([pm.height_m for pm in t.point_masses], dtype=float)
+    if t.added_mass is not None:
+        extra = np.concatenate([extra, t.added_mass.height_m])
     if t.sections is not None:
         sec, mat = t.sections, t.material
         assert mat is not None
@@ -251,6 +260,7 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
             mat.youngs_modulus_pa * second,
             mat.shear * 2 * second,
             mat.density_kg_m3 * 2 * second * mat.mass_factor,
+            _added(t, x),
         )
     dist = t.distributed
     assert dist is not None
@@ -268,7 +278,16 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
         at(dist.ei_ss_nm2),
         at(dist.gj_nm2) if dist.gj_nm2 is not None else None,
         at(dist.polar_inertia_kgm) if dist.polar_inertia_kgm is not None else None,
+        _added(t, x),
     )
+
+
+def _added(t: "spec_mod.Tower", x: Array) -> Array | None:
+    """The added mass per length at the Gauss points (zero outside its stations)."""
+    a = t.added_mass
+    if a is None:
+        return None
+    return np.interp(x, a.height_m, a.mass_per_length_kg_m, left=0.0, right=0.0)
 
 
 def bending_modes(
@@ -338,7 +357,7 @@ def bending_system(
         xg = b.basis.x
         pm_above = sum((p.mass_kg * (xg < p.height_m) for p in point_masses), np.zeros_like(xg))
         axial = -G * (b.mass_above + pm_above + m_head)
-    k, m = beam.assemble_bending(b.basis, ei, b.mass, axial)
+    k, m = beam.assemble_bending(b.basis, ei, b.bending_mass, axial)
     for p in point_masses:
         i = 2 * int(np.argmin(np.abs(b.nodes - p.height_m)))
         m[i, i] += p.mass_kg

@@ -19,7 +19,7 @@ from typing import Any
 from ..errors import SpecError
 from ..spec import read_text
 from ..spec.aerodynamics import MAX_AIRFOILS, MAX_POLAR_POINTS, MAX_STATIONS
-from .deck import _NUMBER, Deck, _file, parse
+from .deck import _NUMBER, Deck, _file, environment, parse
 
 
 def _number(cell: str, what: str, line: int, path: Path) -> float:
@@ -173,23 +173,6 @@ def _airfoil_files(deck: Deck) -> list[Path]:
             )
         out.append(p)
     return out
-
-
-#: The .fst's environment block (OpenFAST ≥ 3.0), which a module's "default" air and water
-#: properties stand for (OpenFAST input-file documentation, glue-code "ENVIRONMENTAL
-#: CONDITIONS").
-ENVIRONMENT = ("Gravity", "AirDens", "WtrDens", "KinVisc", "SpdSound", "Patm", "Pvap", "WtrDpth")
-
-
-def environment(fst: Deck | None) -> dict[str, tuple[float, str]]:
-    """What a "default" environmental input stands for: the .fst's own value."""
-    if fst is None:
-        return {}
-    return {
-        key: (fst.num(key), f"the .fst's {key}, {fst.path.name} line {fst.values[key][1]}")
-        for key in ENVIRONMENT
-        if key in fst.values and not fst.is_default(key)
-    }
 
 
 def aerodynamics(

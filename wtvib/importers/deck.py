@@ -198,10 +198,18 @@ def parse(path: Path, text: str | None = None) -> Deck:
     tables: dict[str, tuple[list[str], np.ndarray]] = {}
     table_lines: dict[str, int] = {}
     lines = text.splitlines()
+    # an OpenFAST input file opens with a rule line and a free-text title ("Fixed MHK
+    # turbine, based on …" is not the value "Fixed" of a key "MHK")
+    title = 1 if lines and lines[0].lstrip().startswith(("-", "=")) else -1
     i = 0
     while i < len(lines):
         tokens = lines[i].split()
-        if len(tokens) >= 2 and tokens[1][:1].isalpha() and not tokens[0].startswith("--"):
+        if (
+            i != title
+            and len(tokens) >= 2
+            and tokens[1][:1].isalpha()
+            and not tokens[0].startswith("--")
+        ):
             values.setdefault(tokens[1], (tokens[0], i + 1))
         if (
             len(tokens) >= 3
@@ -249,3 +257,142 @@ def _file(deck: Deck, *keys: str) -> Path:
             f"{keys[0]} names {name!r}, which does not exist", line=line, source=str(deck.path)
         )
     return path
+
+
+#: The .fst's environment block (OpenFAST ≥ 3.0), which a module's "default" air and water
+#: properties stand for (OpenFAST input-file documentation, glue-code "ENVIRONMENTAL
+#: CONDITIONS").
+ENVIRONMENT = (
+    "Gravity",
+    "AirDens",
+    "WtrDens",
+    "KinVisc",
+    "SpdSound",
+    "Patm",
+    "Pvap",
+    "WtrDpth",
+    "MSL2SWL",
+)
+
+
+def environment(fst: Deck | None) -> dict[str, tuple[float, str]]:
+    """What a "default" environmental input stands for: the .fst's own value."""
+    if fst is None:
+        return {}
+    return {
+        key: (fst.num(key), f"the .fst's {key}, {fst.path.name} line {fst.values[key][1]}")
+        for key in ENVIRONMENT
+        if key in fst.values and not fst.is_default(key)
+    }
+
+
+@dataclass(frozen=True)
+class Table:
+    """A counted table of a SubDyn / HydroDyn file: its header's column names, its rows
+    as text cells, and each row's line (for messages)."""
+
+    path: Path
+    header: list[str]
+    rows: list[list[str]]
+    lines: list[int]
+
+    def has(self, name: str) -> bool:
+        return name in self.header
+
+    def numbers(self, name: str, default: float | None = None) -> np.ndarray:
+        """A column as finite numbers; a missing column takes ``default`` (else SpecError),
+        a cell that is not a number names file, line and column."""
+        if name not in self.header:
+            if default is not None:
+                return np.full(len(self.rows), default)
+            raise SpecError(
+                f"the table headed {' '.join(self.header[:3])} … has no {name} column",
+                line=self.lines[0] - 2 if self.lines else None,
+                source=str(self.path),
+            )
+        col = self.header.index(name)
+        out = []
+        for row, line in zip(self.rows, self.lines, strict=True):
+            cell = row[col] if col < len(row) else ""
+            if not _NUMBER.match(cell) or not math.isfinite(value := float(_fortran(cell))):
+                raise SpecError(
+                    f"column {name}: {cell!r} is not a finite number"
+                    if cell
+                    else f"column {name} is missing from the row",
+                    line=line,
+                    source=str(self.path),
+                )
+            out.append(value)
+        return np.asarray(out, dtype=float)
+
+    def ids(self, name: str) -> list[int]:
+        """An ID column (joint, member, property set): whole numbers."""
+        values = self.numbers(name)
+        for value, line in zip(values, self.lines, strict=True):
+            if value != int(value):
+                raise SpecError(
+                    f"column {name}: {value:g} is not a whole-number ID",
+                    line=line,
+                    source=str(self.path),
+                )
+        return [int(v) for v in values]
+
+    def texts(self, name: str) -> list[str]:
+        col = self.header.index(name)
+        return [row[col].strip('"') if col < len(row) else "" for row in self.rows]
+
+
+def _fortran(cell: str) -> str:
+    return cell.replace("D", "E").replace("d", "e")
+
+
+#: The most rows a counted table may declare (a count of 1e9 in a corrupt file must not
+#: make the reader walk the file for a billion rows).
+MAX_TABLE_ROWS = 100_000
+
+
+def counted(deck: Deck, text: str, keys: tuple[str, ...], column: str) -> Table | None:
+    """The counted table whose count line has one of ``keys`` (``NJoints``, ``NPropSets``)
+    and whose header has ``column`` — files read by key, never by line number (SubDyn and
+    HydroDyn add, drop and rename sections between versions; a key used twice, such as
+    SubDyn's NPropSets for circular and rectangular sections, is told apart by the
+    header). The header is the next line, units lines in parentheses are skipped. None:
+    no such count line; fewer rows than counted is a SpecError naming the line."""
+    lines = text.splitlines()
+    for i, line in enumerate(lines):
+        tokens = line.split()
+        if len(tokens) < 2 or tokens[1] not in keys or i + 1 >= len(lines):
+            continue
+        header = lines[i + 1].replace("!", " ").split()
+        if column not in header:
+            continue
+        count_text = tokens[0]
+        try:
+            count = float(_fortran(count_text))
+        except ValueError:
+            count = math.nan
+        if not (count == int(count) and 0 <= count <= MAX_TABLE_ROWS):
+            raise SpecError(
+                f"{tokens[1]} must be a whole number of rows from 0 to {MAX_TABLE_ROWS:,} "
+                f"(got {count_text!r})",
+                line=i + 1,
+                source=str(deck.path),
+            )
+        j = i + 2
+        while j < len(lines) and lines[j].strip().startswith("("):
+            j += 1
+        rows: list[list[str]] = []
+        numbers: list[int] = []
+        while len(rows) < int(count):
+            cells = lines[j].split() if j < len(lines) else []
+            if not cells or (cells[0].startswith("-") and not _NUMBER.match(cells[0])):
+                raise SpecError(
+                    f"{tokens[1]} = {int(count)}, but the table has {len(rows)} rows",
+                    line=j + 1 if j < len(lines) else i + 1,
+                    source=str(deck.path),
+                )
+            rows.append(cells)
+            numbers.append(j + 1)
+            j += 1
+        return Table(deck.path, header, rows, numbers)
+    return None

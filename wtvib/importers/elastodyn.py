@@ -12,6 +12,7 @@ OpenFAST ElastoDyn input-file documentation (same keys).
 """
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -19,9 +20,11 @@ import numpy as np
 
 from ..errors import SpecError
 from ..rigid import rotor_points
+from . import beamdyn
 from .deck import Deck, _file, parse
 from .floating import refusal
 from .servodyn import operation
+from .subdyn import STEP_M, Monopile, monopile, water
 
 
 def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
@@ -82,6 +85,22 @@ def platform(main: Deck, fst: Deck | None) -> tuple[str, bool] | None:
     return (", ".join(found), floating) if found else None
 
 
+#: ElastoDyn's degrees of freedom (its "DEGREES OF FREEDOM" switches).
+DOFS = (
+    "FlapDOF1",
+    "FlapDOF2",
+    "EdgeDOF",
+    "TeetDOF",
+    "DrTrDOF",
+    "GenDOF",
+    "YawDOF",
+    "TwFADOF1",
+    "TwFADOF2",
+    "TwSSDOF1",
+    "TwSSDOF2",
+    *PLATFORM_DOFS,
+)
+
 #: ElastoDyn models one to three blades (NumBl; its blade inputs are BldFile(1..3)).
 MAX_BLADES = 3
 
@@ -132,12 +151,19 @@ def to_spec_data(
     parked deck (no controller, RotSpeed 0) needs the operating range (``speed_given``:
     the command line gives it)."""
     main, fst, servo = deck_set(path, text)
+    if fst is not None and fst.num("MHK", default=0) > 0:
+        raise SpecError(
+            f"a marine hydrokinetic (tidal) turbine (MHK = {fst.num('MHK'):g}): wtvib audits "
+            "wind turbines — the water's loads and buoyancy on the tower and rotor are not "
+            "modelled",
+            line=fst.values["MHK"][1],
+            source=str(fst.path),
+        )
     path = main.path
     below = platform(main, fst)
     if below is not None and below[1] and not clamped_base:
         raise refusal(below[0], str(path))
     tower = parse(_file(main, "TwrFile"))
-    blade = parse(_file(main, "BldFile(1)", "BldFile1"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
@@ -157,13 +183,23 @@ def to_spec_data(
             else (np.repeat(torsion[0], 2), np.repeat(torsion[1], 2), torsion[2])
         )
 
+    ed_base = main.num("TowerBsHt", default=0.0)
+    heights = frac * tower_height
+    pile = _monopile(main, fst, below)
+    support_notes: list[str] = []
+    support_warnings: list[str] = []
+    tower_block: dict[str, Any] = {}
+    if isinstance(pile, Monopile):
+        heights, mass, ei_fa, ei_ss, torsion, tower_block = _on_pile(
+            pile, fst, ed_base, heights, mass, ei_fa, ei_ss, torsion
+        )
+        tower_height = heights[-1]
+        support_notes, support_warnings = pile.notes, pile.warnings
+
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
-    span = blade.fractions("BlFract") * length
-    bmass = blade.column("BlFract", "BMassDen") * blade.num("AdjBlMs", default=1.0)
-    flap = blade.column("BlFract", "FlpStff") * blade.num("AdjFlSt", default=1.0)
-    edge = blade.column("BlFract", "EdgStff") * blade.num("AdjEdSt", default=1.0)
-    twist = blade.optional_column("BlFract", "StrcTwst")
+    bl = _blade(main, fst, length, n_blades)
+    span, bmass = bl.span, bl.mass
 
     q = _quantity(source)
     hub = _hub_inertia(main, hub_r, q)
@@ -185,15 +221,7 @@ def to_spec_data(
         + (f"; AeroDyn: {', '.join(aero[1])}" if aero else "")
         + ")."
     )
-    structure: dict[str, Any] = {
-        "hub_radius_m": hub_r,
-        "span_m": _list(span),
-        "mass_per_length_kg_m": _list(bmass),
-        "ei_flap_nm2": _list(flap),
-        "ei_edge_nm2": _list(edge),
-    }
-    if twist is not None:
-        structure["twist_deg"] = _list(twist)
+    structure: dict[str, Any] = {"hub_radius_m": hub_r, **bl.structure}
     tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
     if tip_mass > 0:  # tip brakes: on the blade model too, not only in the head's mass
         structure["tip_mass_kg"] = tip_mass
@@ -216,10 +244,15 @@ def to_spec_data(
             "speed": _speed_block(operating.speed),
         },
         "tower": {
-            "height_m": q(tower_height, "TowerHt − TowerBsHt", "derived"),
+            "height_m": q(
+                tower_height,
+                "TowerHt − the SubDyn reaction joint's z" if tower_block else "TowerHt − TowerBsHt",
+                "derived",
+            ),
             "damping_ratio": main_damping(tower, "TwrFADmp(1)"),
+            **tower_block,
             "distributed": {
-                "height_m": _list(frac * tower_height),
+                "height_m": _list(heights),
                 "mass_per_length_kg_m": _list(mass),
                 "ei_fa_nm2": _list(ei_fa),
                 "ei_ss_nm2": _list(ei_ss),
@@ -251,8 +284,8 @@ def to_spec_data(
         },
         "blade": {
             "length_m": q(length, "TipRad − HubRad", "derived"),
-            "mass_kg": q(float(np.trapezoid(bmass, span)), "∫ BMassDen·AdjBlMs", "derived"),
-            "damping_ratio": main_damping(blade, "BldFlDmp(1)"),
+            "mass_kg": q(float(np.trapezoid(bmass, span)), bl.mass_source, "derived"),
+            "damping_ratio": bl.damping,
             "structure": structure,
         },
         "drivetrain": {
@@ -293,25 +326,32 @@ def to_spec_data(
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",
             "Tower head assembled from its parts: " + breakdown + ".",
-            "Precone and shaft tilt are neglected in the head inertia; the tower is clamped at "
-            "its base (ElastoDyn's platform and foundation are not read).",
+            "Precone and shaft tilt are neglected in the head inertia"
+            + (
+                "; the tower stands on its SubDyn monopile (ElastoDyn's platform DOFs are the "
+                "transition piece's motion on it)."
+                if tower_block
+                else "; the tower is clamped at its base (ElastoDyn's platform and foundation "
+                "are not read)."
+            ),
+            *bl.notes,
+            *support_notes,
             operating.note,
             files,
         ],
     }
     warnings = list(operating.warnings) + (aero[3] if aero else [])
-    warnings += _blades_differ(main, blade, n_blades)
-    if below is not None:
-        base = main.num("TowerBsHt", default=0.0)
+    warnings += bl.warnings + support_warnings
+    if below is not None and not tower_block:
+        why = f": {pile}" if isinstance(pile, str) else ""
         warnings.append(
-            f"tower.foundation: the deck set's tower stands on a platform ({below[0]}), "
-            f"which wtvib does not read: the tower is clamped at its base (TowerBsHt = "
-            f"{base:g} m), so its bending frequencies are upper bounds"
+            f"tower.foundation: the deck set's tower stands on a platform ({below[0]}{why}), "
+            "which wtvib does not model: the tower is clamped at its base (TowerBsHt = "
+            f"{ed_base:g} m), so its bending frequencies are upper bounds"
             + (
                 " and the platform's and moorings' own modes are missing"
                 if below[1]
-                else " (the IEA-15 monopile deck: first fore-aft 0.23 Hz clamped, 0.17–0.18 Hz "
-                "published on its monopile)"
+                else " (the substructure's own flexibility lowers them)"
             )
         )
     data["drivetrain"].update(operating.generator)
@@ -475,6 +515,183 @@ def tower_head(
     }, text
 
 
+@dataclass
+class _BladeTable:
+    """Blade 1 as the deck set models it (ElastoDyn's table or BeamDyn's matrices)."""
+
+    span: np.ndarray
+    mass: np.ndarray
+    structure: dict[str, Any]
+    damping: float
+    mass_source: str
+    notes: list[str]
+    warnings: list[str]
+
+
+def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _BladeTable:
+    """ElastoDyn's blade file, or BeamDyn's blade where the deck set runs BeamDyn
+    (``CompElast`` = 2: ElastoDyn's blade files are then unused — said, with how the two
+    differ where both are there)."""
+    ed_keys = ("BldFile(1)", "BldFile1")
+    ed_path = next(
+        ((main.path.parent / main.text(k)).resolve() for k in ed_keys if k in main.values),
+        None,
+    )
+    ed = parse(_file(main, *ed_keys)) if ed_path is not None and ed_path.is_file() else None
+    uses_bd = fst is not None and fst.num("CompElast", default=1) == 2
+    if not uses_bd:
+        if ed is None:
+            _file(main, *ed_keys)  # the one-line error naming the key
+        assert ed is not None
+        span = ed.fractions("BlFract") * length
+        mass = ed.column("BlFract", "BMassDen") * ed.num("AdjBlMs", default=1.0)
+        structure: dict[str, Any] = {
+            "span_m": _list(span),
+            "mass_per_length_kg_m": _list(mass),
+            "ei_flap_nm2": _list(ed.column("BlFract", "FlpStff") * ed.num("AdjFlSt", default=1.0)),
+            "ei_edge_nm2": _list(ed.column("BlFract", "EdgStff") * ed.num("AdjEdSt", default=1.0)),
+        }
+        twist = ed.optional_column("BlFract", "StrcTwst")
+        if twist is not None:
+            structure["twist_deg"] = _list(twist)
+        return _BladeTable(
+            span, mass, structure, main_damping(ed, "BldFlDmp(1)"), "∫ BMassDen·AdjBlMs", [],
+            _blades_differ(main, ed, n_blades),
+        )  # fmt: skip
+    assert fst is not None
+    bd = beamdyn.blade(fst)
+    notes, warnings = list(bd.notes), []
+    if abs(bd.length_m - length) > 0.01 * length:
+        warnings.append(
+            f"blade: BeamDyn's blade is {bd.length_m:.4g} m long but TipRad − HubRad is "
+            f"{length:.4g} m: the blade is modelled at BeamDyn's length"
+        )
+    damping, how = _bd_damping(bd, ed)
+    notes.append(how)
+    if ed is not None:
+        notes.append(_compare(ed, bd, length))
+    return _BladeTable(bd.span, bd.mass, bd.structure, damping, "∫ M11 (BeamDyn)", notes, warnings)
+
+
+def _bd_damping(bd: beamdyn.Blade, ed: Deck | None) -> tuple[float, str]:
+    """The blade's damping ratio: BeamDyn's stiffness-proportional μ at the first flapwise
+    and edgewise frequencies of the blade (ζ = π·μ·f, the lower taken); without μ,
+    ElastoDyn's BldFlDmp, else 1 %."""
+    if bd.mu is None:
+        if ed is not None:
+            return main_damping(ed, "BldFlDmp(1)"), (
+                "Blade damping: BeamDyn has none (damp_type 0); ElastoDyn's BldFlDmp(1) taken."
+            )
+        return 0.01, "Blade damping: BeamDyn has none (damp_type 0); 1 % of critical assumed."
+    from ..blade import rotating_modes
+    from ..spec.blade import BladeStructure
+
+    names, freqs, _, _ = rotating_modes(
+        BladeStructure.model_validate(bd.structure), np.array([0.0]), count=4
+    )
+    first = {n: float(f) for n, f in zip(names, freqs[0], strict=True)}
+    zeta_f = math.pi * bd.mu[0] * first.get("flap1", 0.0)
+    zeta_e = math.pi * bd.mu[1] * first.get("edge1", 0.0)
+    zeta = min(z for z in (zeta_f, zeta_e) if z > 0) if max(zeta_f, zeta_e) > 0 else 0.0
+    return zeta, (
+        f"Blade damping from BeamDyn's stiffness-proportional μ (ζ = π·μ·f): flapwise "
+        f"{100 * zeta_f:.3g} % at {first.get('flap1', 0):.3g} Hz, edgewise {100 * zeta_e:.3g} % "
+        f"at {first.get('edge1', 0):.3g} Hz; the lower, {100 * zeta:.3g} %, for every blade mode."
+    )
+
+
+def _compare(ed: Deck, bd: beamdyn.Blade, length: float) -> str:
+    """How ElastoDyn's (unused) blade file differs from the BeamDyn blade used."""
+    span = ed.fractions("BlFract") * length
+    ed_mass = float(np.trapezoid(ed.column("BlFract", "BMassDen"), span))
+    out = []
+    for key, field in (("FlpStff", "ei_flap_nm2"), ("EdgStff", "ei_edge_nm2")):
+        theirs = np.interp(span, bd.span, bd.structure[field])
+        diff = np.abs(ed.column("BlFract", key) / theirs - 1)
+        out.append(
+            f"{key} within {100 * float(np.max(diff)):.2g} % "
+            f"(mean {100 * float(np.mean(diff)):.2g} %)"
+        )
+    return (
+        f"ElastoDyn's blade file {ed.path.name} is unused with BeamDyn (CompElast = 2); "
+        f"against the BeamDyn blade: mass {ed_mass:,.0f} vs {bd.mass_kg:,.0f} kg, "
+        + ", ".join(out)
+        + "."
+    )
+
+
+def _monopile(
+    main: Deck, fst: Deck | None, below: tuple[str, bool] | None
+) -> Monopile | str | None:
+    """The deck set's SubDyn monopile; a sentence where its substructure is something
+    else; None where the tower stands on no SubDyn substructure."""
+    if below is None or below[1] or fst is None or "SubFile" not in fst.values:
+        return None
+    if fst.num("CompSub", default=0) != 1:
+        return None
+    return monopile(fst, main.num("TowerBsHt", default=0.0))
+
+
+def _on_pile(
+    pile: Monopile,
+    fst: Deck | None,
+    ed_base: float,
+    heights: np.ndarray,
+    mass: np.ndarray,
+    ei_fa: np.ndarray,
+    ei_ss: np.ndarray,
+    torsion: tuple[np.ndarray, np.ndarray, str] | None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, Any, dict[str, Any]]:
+    """The ElastoDyn tower (``heights`` above TowerBsHt) on its pile: one table from the
+    reaction joint up (the pile's stations below TowerBsHt, its top section carried up to
+    a step just below it), the pile's point masses and foundation, the water moving with
+    it (HydroDyn), heights above the reaction joint."""
+    keep = pile.z < ed_base - STEP_M / 2
+    z = np.append(pile.z[keep], ed_base - STEP_M)
+    top = int(np.flatnonzero(keep)[-1]) if keep.any() else 0
+
+    def joined(below: np.ndarray, above: np.ndarray) -> np.ndarray:
+        return np.concatenate([below[keep], [below[top]], above])
+
+    out_heights = np.concatenate([z - pile.base, heights + ed_base - pile.base])
+    out_torsion = (
+        None
+        if torsion is None
+        else (joined(pile.gj, torsion[0]), joined(pile.polar, torsion[1]), torsion[2])
+    )
+    foundation = dict(pile.foundation)
+    note = foundation.pop("_note", None)
+    if note:
+        pile.notes.append(note)
+    block: dict[str, Any] = {"foundation": foundation}
+    masses = [
+        {"height_m": float(zm - pile.base), "mass_kg": m}
+        for zm, m in pile.point_masses
+        if pile.base <= zm <= ed_base + 1e-6
+    ]
+    if masses:
+        block["point_masses"] = masses
+    if fst is not None:
+        wet = water(fst, pile)
+        if isinstance(wet, str):
+            pile.notes.append(wet + ".")
+        else:
+            pile.notes.append(wet.note)
+            block["added_mass"] = {
+                "height_m": _list(wet.z - pile.base),
+                "mass_per_length_kg_m": _list(wet.mass),
+                "source": wet.note,
+            }
+    return (
+        out_heights,
+        joined(pile.mass, mass),
+        joined(pile.ei, ei_fa),
+        joined(pile.ei, ei_ss),
+        out_torsion,
+        block,
+    )
+
+
 def _hub_inertia(main: Deck, hub_radius: float, q: Any) -> dict[str, Any]:
     """The hub in the drive train: HubIner; where a deck gives 0 (OpenFAST's rigid test
     turbines), a disc of HubMass and HubRad, ½·m·r², said — a chain mass of no inertia
@@ -485,8 +702,12 @@ def _hub_inertia(main: Deck, hub_radius: float, q: Any) -> dict[str, Any]:
     mass = main.num("HubMass", default=0.0)
     disc = 0.5 * mass * hub_radius**2
     if disc <= 0:
+        rigid = not any(main.flag(k) for k in DOFS)
         raise SpecError(
-            "HubIner is 0 and HubMass or HubRad too: the drive train's hub has no inertia",
+            "the deck set is a rigid test turbine: every ElastoDyn DOF is off and the hub has "
+            "no mass or inertia (HubIner, HubMass 0) — there is no structure to audit"
+            if rigid
+            else "HubIner is 0 and HubMass or HubRad too: the drive train's hub has no inertia",
             line=main.values["HubIner"][1] if "HubIner" in main.values else None,
             source=str(main.path),
         )
@@ -503,7 +724,10 @@ def _speed_block(speed: dict[str, Any] | None) -> dict[str, Any]:
     line's range replaces."""
     if speed is None:
         return {"fixed_rpm": 0.0, "source": "parked: the command line gives the range"}
-    return {k: v if k == "source" else float(f"{v:.6g}") for k, v in speed.items()}
+    def six(v: Any) -> Any:
+        return [six(x) for x in v] if isinstance(v, list) else float(f"{v:.6g}")
+
+    return {k: v if k == "source" else six(v) for k, v in speed.items()}
 
 
 def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:

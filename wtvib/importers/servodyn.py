@@ -153,7 +153,26 @@ def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
         f"{dll.name} (VS_MinOMSpd {low[0]:g}, VS_RefSpd {rated[0]:g} rad/s, gearbox "
         f"{ratio:g}), named by {servo.path.name}."
     )
+    _exclusion(found, ctrl, dll.name)
     return found
+
+
+def _exclusion(found: Operation, ctrl: dict[str, tuple[float, int]], name: str) -> None:
+    """ROSCO's tower-resonance avoidance (TRA_ExclSpeed ± TRA_ExclBand/2, rotor speed in
+    rad/s): a band the torque controller passes quickly — the spec's quick-pass band."""
+    centre, band = ctrl.get("TRA_ExclSpeed", (0.0, 0))[0], ctrl.get("TRA_ExclBand", (0.0, 0))[0]
+    speed = found.speed
+    if speed is None or centre <= 0 or band <= 0:
+        return
+    rpm_of = 30 / math.pi
+    low = max((centre - band / 2) * rpm_of, speed["min_rpm"])
+    high = min((centre + band / 2) * rpm_of, speed["max_rpm"])
+    if low < high:
+        speed["quick_pass_rpm"] = [[low, high]]
+        found.note += (
+            f" Tower-resonance avoidance (TRA_ExclSpeed {centre:g}, TRA_ExclBand {band:g} "
+            f"rad/s in {name}): {low:.3g}–{high:.3g} rpm passed quickly, not dwelt in."
+        )
 
 
 def _simple_variable_speed(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
@@ -290,6 +309,8 @@ DISCON_KEYS = (
     "VS_TSRopt",
     "VS_RtPwr",
     "PC_FinePit",
+    "TRA_ExclSpeed",
+    "TRA_ExclBand",
 )
 
 

@@ -83,6 +83,29 @@ class PointMass(_Strict):
     mass_kg: Positive = Field(description="Mass. [kg]")
 
 
+class AddedMass(_Strict):
+    """Mass per length that moves with the tower in bending but is not the tower's own: the
+    water a submerged monopile accelerates (hydrodynamic added mass, Ca·ρ_w·πD²/4), the
+    water inside a flooded pile, marine growth. Its weight is not counted (the water's is
+    carried by buoyancy). Zero between stations outside the given range."""
+
+    height_m: list[Height] = Field(description="Station heights above the tower base. [m]")
+    mass_per_length_kg_m: list[Annotated[float, Field(ge=0, le=1e7)]] = Field(
+        description="Added mass per length. [kg/m]"
+    )
+    source: str | None = Field(None, max_length=2000, description="Where it comes from.")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "AddedMass":
+        _increasing("added_mass.height_m", self.height_m)
+        if len(self.mass_per_length_kg_m) != len(self.height_m):
+            raise ValueError(
+                f"mass_per_length_kg_m has {len(self.mass_per_length_kg_m)} values but "
+                f"height_m has {len(self.height_m)}"
+            )
+        return self
+
+
 class Pile(_Strict):
     """The embedded part of a monopile, below the mudline (the tower's base)."""
 
@@ -253,6 +276,9 @@ class Tower(_Strict):
         None, description="Distributed properties (instead of sections)."
     )
     point_masses: list[PointMass] = Field(default_factory=list)
+    added_mass: AddedMass | None = Field(
+        None, description="Water moving with a submerged monopile (bending only)."
+    )
     foundation: Foundation = Field(default_factory=Foundation)
     gravity: bool = Field(
         True, description="Include the softening of the tower by its own and the head's weight."
