@@ -724,6 +724,7 @@ def _speed_block(speed: dict[str, Any] | None) -> dict[str, Any]:
     line's range replaces."""
     if speed is None:
         return {"fixed_rpm": 0.0, "source": "parked: the command line gives the range"}
+
     def six(v: Any) -> Any:
         return [six(x) for x in v] if isinstance(v, list) else float(f"{v:.6g}")
 
