@@ -28,8 +28,9 @@ def test_structural_campbell_samples_standstill_to_overspeed(write_spec):
 def test_campbell_csv_has_a_row_per_mode_and_sample(write_spec):
     report = audit.run(load(write_spec(extra="blade: {modes: {flap1: 1.2, edge1: 2.0}}\n")))
     csv = report.campbell.to_csv().splitlines()
-    assert (
-        csv[0] == "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio"
+    assert csv[0] == (
+        "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
+        "aeroelastic_frequency_hz,damped_frequency_hz,method"
     )
     assert len(csv) == 1 + 3 * 30  # tower.fa1, blade.flap1, blade.edge1 × 30 speeds
     assert any(line.startswith("blade.flap1,0.0000,,,") for line in csv)
@@ -41,6 +42,19 @@ def test_aeroelastic_campbell_follows_the_operating_points(shared):
     report = audit.run(load_any(shared / "reference/NREL5MW/NREL-5MW.fst"))
     data = report.to_dict()["campbell"]
     assert data["damping"].startswith("in operation")
+    # issue 37: each point says how it was obtained, with the aeroelastic root's natural and
+    # damped frequencies; no oscillating point carries ζ > 1, an overdamped one none
+    for mid, mode in data["modes"].items():
+        if "method" not in mode:
+            continue
+        for z, how, fd in zip(
+            mode["damping_ratio"], mode["method"], mode.get("damped_frequency_hz", []), strict=False
+        ):
+            assert how in ("eigenvalue", "overdamped", "first-order", "isolated"), mid
+            assert z <= 1.0 and (how != "overdamped" or (z == 1.0 and fd == 0.0)), mid
+    flap = data["modes"]["system.blade.flap1.collective"]
+    assert set(flap["method"]) <= {"eigenvalue", "overdamped", "first-order"}
+    assert len(flap["aeroelastic_frequency_hz"]) == len(flap["damping_ratio"])
     n = len(data["wind_m_s"])
     assert n == len(data["rpm"]) == len(data["pitch_deg"]) >= 25
     fa = data["modes"]["system.tower.fa1"]

@@ -125,22 +125,45 @@ def _sections(spec: Spec) -> Sections:
     return Sections(sch, r.radius, c)
 
 
+#: A damped root at or above this damping ratio is no oscillation (overdamped: its two
+#: roots real, or within rounding of it); its damping is reported as 1.
+OVERDAMPED = 0.999
+
+
 def _operating(
     sch: bem.Schedule,
     aero: Array,
     structural: float,
     source: str,
     part: tuple[str, ...] | None = None,
+    roots: tuple[Array, Array, NDArray[np.bool_]] | None = None,
 ) -> OperatingDamping:
+    """The mode's damping at the operating points; ``roots``: the matched damped roots'
+    natural frequency and eigenvalue damping, and where they are first-order estimates —
+    a root damped past critical reports ζ = 1 and is marked overdamped."""
     sol = sch.solution
+    total = np.asarray(aero, float) + structural
+    if roots is None:
+        natural, method = None, tuple("isolated" for _ in total)
+    else:
+        freq, zeta, first = roots
+        over = (np.asarray(zeta) >= OVERDAMPED) | (total >= OVERDAMPED)
+        total = np.where(over, 1.0, np.minimum(total, 1.0))
+        natural = tuple(float(f) for f in freq)
+        method = tuple(
+            "first-order" if f else "overdamped" if o else "eigenvalue"
+            for f, o in zip(first, over, strict=True)
+        )
     return OperatingDamping(
         tuple(float(v) for v in sol.wind),
         tuple(float(o) for o in sol.omega),
         tuple(float(p) for p in np.degrees(sol.pitch)),
         tuple(float(a) for a in aero),
-        tuple(float(a) + structural for a in aero),
+        tuple(float(t) for t in total),
         source,
         part,
+        natural,
+        method,
     )
 
 
@@ -176,7 +199,8 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # the structural modes at each operating speed, continued from the rotating sweep's
     # nearest speed: the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
-    path = at_speeds(model, coupled_model.rotating_sweep(spec), speeds, reduced)
+    sw = coupled_model.rotating_sweep(spec)
+    path = at_speeds(model, sw, speeds, reduced)
     at = {w: i for i, w in enumerate(speeds)}
     where = [at[round(float(om), 12)] for om in sol.omega]  # each point's speed in the path
     kept = path.kept
@@ -206,7 +230,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
             unresolved[k] = poor
     assert path.first.damping_ratio is not None
     return Coupled(
-        tuple(f"system.{n}" for n in path.first.names),
+        tuple(f"system.{n}" for n in sw.names),
         freq,
         zeta,
         np.asarray(path.first.damping_ratio),
@@ -338,10 +362,14 @@ def in_operation(
                     rel = np.abs(cpl.frequency_hz[ok, index[m.id]] / f_struct[ok] - 1)
                     shift = max(shift, float(rel.max()))
             structural = m.damping_ratio or 0.0
-            part = None
+            part, roots = None, None
             if m.id in index and cpl is not None:
-                part = tuple(row[index[m.id]] for row in cpl.parts)
-            done.append(replace(m, operating=_operating(sch, aero, structural, source, part)))
+                j = index[m.id]
+                part = tuple(row[j] for row in cpl.parts)
+                roots = (cpl.frequency_hz[:, j], cpl.damping_ratio[:, j], cpl.first_order[:, j])
+            done.append(
+                replace(m, operating=_operating(sch, aero, structural, source, part, roots))
+            )
         out[sub] = done
     notes = [*sch.assumptions, _statement(spec, sch)]
     notes.append(

@@ -9,7 +9,7 @@ ones (the mode's curve), so each id has one frequency everywhere in the report.
 import csv
 import io
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -31,6 +31,11 @@ class Campbell:
     pitch_deg: tuple[float, ...] | None
     modes: dict[str, tuple[tuple[float, ...], tuple[float, ...]]]  # id → (f [Hz], ζ)
     aero: dict[str, tuple[float, ...]]  # id → aerodynamic part of ζ (modes in operation)
+    #: id → the aeroelastic root at each point: natural and damped frequency [Hz] and how
+    #: the point was obtained (results.OperatingDamping.method); modes in operation
+    roots: dict[str, tuple[tuple[float, ...] | None, tuple[float, ...] | None, tuple[str, ...]]] = (
+        field(default_factory=dict)
+    )
 
     def to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
@@ -49,9 +54,20 @@ class Campbell:
                     if mid in self.aero
                     else {}
                 ),
+                **self._roots(mid),
             }
             for mid, (f, z) in self.modes.items()
         }
+        return out
+
+    def _roots(self, mid: str) -> dict[str, Any]:
+        if mid not in self.roots:
+            return {}
+        natural, damped, method = self.roots[mid]
+        out: dict[str, Any] = {"method": list(method)}
+        if natural is not None and damped is not None:
+            out["aeroelastic_frequency_hz"] = [round(v, 6) for v in natural]
+            out["damped_frequency_hz"] = [round(v, 6) for v in damped]
         return out
 
     def to_csv(self, identity: str | None = None) -> str:
@@ -64,11 +80,20 @@ class Campbell:
         w = csv.writer(buf, lineterminator="\n")
         w.writerow(CAMPBELL_HEADER.decode().split(","))
         for mid, (f, z) in self.modes.items():
+            natural, damped, method = self.roots.get(mid, (None, None, ()))
             for i, n in enumerate(self.rpm):
                 wind = f"{self.wind[i]:.4f}" if self.wind else ""
                 pitch = f"{self.pitch_deg[i]:.4f}" if self.pitch_deg else ""
                 aero = f"{self.aero[mid][i]:.6f}" if mid in self.aero else ""
-                w.writerow([mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero])
+                root = (
+                    [f"{natural[i]:.6f}", f"{damped[i]:.6f}"]
+                    if natural is not None and damped is not None
+                    else ["", ""]
+                )
+                how = method[i] if method else ""
+                w.writerow(
+                    [mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero, *root, how]
+                )
         return buf.getvalue()
 
 
@@ -92,12 +117,15 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
     rpm = tuple(float(v) for v in omega * 30 / np.pi)
     out: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {}
     aero: dict[str, tuple[float, ...]] = {}
+    roots = {}
     for m in picked:
         f = tuple(float(v) for v in m.frequency_at(omega))
         if m.operating is not None and m.operating.omega == tuple(float(v) for v in omega):
             z = m.operating.total
             aero[m.id] = m.operating.aero
+            if m.operating.method is not None:
+                roots[m.id] = (m.operating.natural_hz, m.operating.damped_hz, m.operating.method)
         else:
             z = tuple(m.damping_at(float(o), float(m.damping_ratio or 0.0)) for o in omega)
         out[m.id] = (f, z)
-    return Campbell(rpm, wind, pitch, out, aero)
+    return Campbell(rpm, wind, pitch, out, aero, roots)

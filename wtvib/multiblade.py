@@ -467,21 +467,49 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
         raise ValueError("the rotating sweep needs three or more blades (MBC)")
     path = track(model, [(float(om), None) for om in speeds], count, reduced=True)
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
-    texts = tuple(
-        f"{a} (coupled)" if a == b else f"{a}; at {rpm}: {b} (coupled)"
-        for a, b in zip(path.first.descriptions, path.last, strict=True)
-    )
     assert path.first.damping_ratio is not None
     by_mode = tuple(tuple(row[j] for row in path.whirl) for j in range(path.kept))
+    names = _in_operation(path.first.names, by_mode)
+    texts = tuple(
+        f"{a} (coupled)"
+        if a == b
+        else f"{b} (coupled; at standstill: {a})"
+        if n != n0
+        else f"{a}; at {rpm}: {b} (coupled)"
+        for a, b, n, n0 in zip(
+            path.first.descriptions, path.last, names, path.first.names, strict=True
+        )
+    )
     return Sweep(
         np.asarray(speeds, float),
         path.frequency_hz,
-        path.first.names,
+        names,
         texts,
         path.first.damping_ratio,
         by_mode,
         path,
     )
+
+
+def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -> tuple[str, ...]:
+    """The sweep's curves named for what they are in operation: a cyclic rotor mode, named
+    at standstill by the axis it turns the rotor about (``blade.flap1.cyclic_yaw``), is in
+    the fixed frame a backward or a forward whirl once the rotor turns — named so
+    (``blade.flap1.backward``; ``backward2`` for the second cyclic harmonic) where that is
+    its whirl at most of the rotating speeds. A pair both of one whirl keeps its names."""
+    out = list(names)
+    for j, name in enumerate(names):
+        base, _, coord = name.rpartition(".")
+        if not coord.startswith("cyclic"):
+            continue
+        turning = list(whirl[j][1:])
+        for kind in ("backward", "forward"):
+            if turning and turning.count(kind) > len(turning) / 2:
+                harmonic = coord.split("_")[0].removeprefix("cyclic")
+                new = f"{base}.{kind}{harmonic}"
+                if new not in out:
+                    out[j] = new
+    return tuple(out)
 
 
 def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool = True) -> "Path":
@@ -551,19 +579,48 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     m = model.multiblade[0]
+    part = list(parts(model, m, shapes))
     found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
     for i, cur in enumerate(found, start=1):
-        order = modal.track(weight * shapes, weight * cur.shapes)
+        kinds = whirls(model, m, cur.shapes)
+        where = parts(model, m, cur.shapes)
+        score = (
+            modal.mac(weight * shapes, weight * cur.shapes)
+            + KIND_WEIGHT * _same_kind(whirl[-1], kinds)
+            + KIND_WEIGHT
+            * np.equal.outer(np.array(part, dtype=object), np.array(where, dtype=object))
+        )
+        order = modal.assign(score, optimal=True)
+        part = [where[o] for o in order]
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
         zetas[i] = cur.damping_ratio[order]
         shapes = cur.shapes[:, order]
         every.append(shapes)
-        whirl.append(list(whirls(model, m, shapes)))
+        whirl.append([kinds[o] for o in order])
         if i == len(points) - 1:  # named with every candidate, so that "2nd" counts the
             texts = _name(model, m, cur.shapes)[1]  # same modes wherever it is asked
             last = tuple(texts[o] for o in order)
     return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every), basis)
+
+
+#: How much a mode keeping its kind (collective, backward or forward whirl, not a rotor
+#: mode) weighs against its shape's MAC when a path follows it to the next speed: a
+#: collective and a cyclic mode that cross in frequency are orthogonal in shape, and the
+#: optimal assignment must not swap them where the crossing blurs their MAC (the NREL
+#: 5-MW's flap forward whirl crosses its collective near 2 rpm).
+KIND_WEIGHT = 1.0
+
+
+def _same_kind(before: Sequence[str | None], now: Sequence[str | None]) -> Array:
+    """1 where a mode of kind ``before[i]`` may continue as candidate ``now[j]``: the same
+    kind, or a standing cyclic mode (standstill) turning into a whirl (and back)."""
+    cyclic = {"cyclic", "backward", "forward"}
+
+    def fits(a: str | None, b: str | None) -> bool:
+        return a == b or (a in cyclic and b in cyclic and "cyclic" in (a, b))
+
+    return np.array([[1.0 if fits(a, b) else 0.0 for b in now] for a in before])
 
 
 def _candidates(
@@ -616,23 +673,44 @@ def matched(
     """At each (Ω, extra matrices) point, |λ|/2π and ζ of the modes with the extra matrices,
     each matched to a column of that point's reference (the structural modes at the same
     speed) by shape and by where its energy sits (:func:`_overlap`): one assignment per
-    point, so a heavily damped mode cannot hand its name along a chain. The third array is
-    each match's score (0 … 2: MAC + overlap). All points solved as one stack."""
+    point, so a heavily damped mode cannot hand its name along a chain. The points are in
+    wind order: a damped mode also continues the one matched at the point before
+    (:data:`CONTINUED` of MAC), so that where two damped modes resemble one structural mode
+    alike (a lightly damped edgewise mode beside a flap mode damped tens of per cent, both
+    near 0.6 Hz) the curve keeps the mode it had. The third array is each match's score:
+    MAC + overlap with the reference (0 … 2), or — where the damped mode continues the one
+    before it with a MAC of at least :data:`CONTINUED` — that continuity's 2·MAC. All
+    points solved as one stack."""
     kept = references[0].shape[1]
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     out = []
     found = _candidates(model, points, kept + spare, reduced, kept)
+    before: NDArray[np.complex128] | None = None
     for reference, cur in zip(references, found, strict=True):
         # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
         # (blind to phase: keeps an overdamped, standing form with its whirling origin)
         score = modal.mac(weight * reference, weight * cur.shapes) + _overlap(
             model, reference, cur.shapes
         )
-        order = modal.assign(score, optimal=True)
+        kin = (
+            modal.mac(weight * before, weight * cur.shapes)
+            if before is not None and before.shape[0] == cur.shapes.shape[0]
+            else np.zeros_like(score)
+        )
+        order = modal.assign(score + kin, optimal=True)
         assert cur.damping_ratio is not None
-        best = score[np.arange(kept), order]
+        rows = np.arange(kept)
+        best = np.maximum(
+            score[rows, order], np.where(kin[rows, order] >= CONTINUED, 2 * kin[rows, order], 0.0)
+        )
+        before = cur.shapes[:, order]
         out.append((cur.frequency_hz[order], cur.damping_ratio[order], best))
     return out
+
+
+#: A damped mode whose shape continues the one matched at the wind before with at least
+#: this MAC is the same mode, however little it resembles the structural one there.
+CONTINUED = 0.9
 
 
 def perturbed(

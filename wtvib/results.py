@@ -108,6 +108,25 @@ class OperatingDamping:
     # where the mode's energy sits at each point (coupled modes: ``blade.flap1``,
     # ``tower.fa`` … — a mode followed through a veering changes part); None: not known
     part: tuple[str, ...] | None = None
+    #: the aeroelastic root's natural frequency |λ|/2π at each point [Hz] (coupled modes;
+    #: None: no damped eigenvalue, the judged structural curve only)
+    natural_hz: tuple[float, ...] | None = None
+    #: how each point's damping was obtained: "eigenvalue" (the damped root matched to the
+    #: mode), "overdamped" (that root is damped past critical: no oscillation there, ζ held
+    #: at 1), "first-order" (no damped root resembled the mode: the structural mode's
+    #: first-order estimate), "isolated" (an isolated subsystem estimate)
+    method: tuple[str, ...] | None = None
+
+    @property
+    def damped_hz(self) -> tuple[float, ...] | None:
+        """The aeroelastic root's damped frequency ω_n·√(1 − ζ²)/2π at each point [Hz]: 0
+        where overdamped (no oscillation)."""
+        if self.natural_hz is None:
+            return None
+        return tuple(
+            f * math.sqrt(max(1.0 - z * z, 0.0)) if m != "overdamped" else 0.0
+            for f, z, m in zip(self.natural_hz, self.total, self.method or (), strict=False)
+        )
 
     def at(self, omega: float) -> float:
         """The lowest total damping of the operating points at rotor speed Ω [rad/s]

@@ -345,12 +345,12 @@ def test_nrel_flap_backward_whirl_on_3p_is_the_blades_4p(nrel):
     f = next(
         f
         for f in r.findings
-        if f.mode.id == "system.blade.flap1.cyclic_yaw" and f.excitation.id == "3P"
+        if f.mode.id == "system.blade.flap1.backward" and f.excitation.id == "3P"
     )
     assert f.driven_by == "4P" and f.energy == "minor" and f.status == "info"
     assert not [x for x in r.findings if x.mode.id == "blade.flap1"]
     ids = {m.id: m for m in r.modes}
-    assert ids["blade.flap1"].superseded_by == "system.blade.flap1.cyclic_yaw"
+    assert ids["blade.flap1"].superseded_by == "system.blade.flap1.backward"
 
 
 WINDPACT = "reference/WindPACT1.5/Test13.fst"

@@ -379,7 +379,12 @@ def test_a_deck_without_torsion_or_yaw_spring_no_longer_holds_the_nacelle(shared
     )
     f = {m.id: m.frequency_hz for m in audit.run(spec).modes}
     f_held = {m.id: m.frequency_hz for m in audit.run(held).modes}
-    drop = f["system.blade.flap1.cyclic_yaw"] / f_held["system.blade.flap1.cyclic_yaw"] - 1
+    # the cyclic flap pair at standstill (named backward and forward after their whirl in
+    # operation): the one that yaws the rotor drops
+    drop = min(
+        f[f"system.blade.flap1.{w}"] / f_held[f"system.blade.flap1.{w}"] - 1
+        for w in ("backward", "forward")
+    )
     assert -0.12 < drop < -0.03
 
 
