@@ -636,9 +636,11 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         ]
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
-    material = default_damping(spec)
+    weighted = strain_weighted(spec, model, sw.path.shapes[0])
+    lower = default_damping(spec)
     out = []
     for j, name in enumerate(sw.names):
+        material = weighted[j]
         curve = Sampled(omega, tuple(sw.frequency_hz[:, j].tolist()))
         # the drive train's dampers (the eigenvalue damping at standstill) add to the
         # parts' own material damping: a tower mode that moves the gearbox a little must
@@ -647,6 +649,8 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         ratio, source = material.with_dampers(
             float(sw.damping_ratio[j]), DAMPERS_FLOOR, "the drive train's dampers"
         )
+        if ratio is None and material is not lower:  # no dampers: the weighted material
+            ratio, source = material.ratio, material.source
         labels = sw.whirl[j]
         whirl = (
             Whirl(omega, tuple(w or "fixed" for w in labels))
@@ -781,6 +785,46 @@ def _statements(model: Model) -> tuple[str, ...]:
 # The subsystem protocol (wtvib.analysis)
 
 NAME = "system"
+
+
+def strain_weighted(spec: Spec, model: Model, shapes: NDArray[np.complex128]) -> list[Damping]:
+    """Each coupled mode's material damping: the tower's and the blades' ratios weighed by
+    the strain energy the mode puts in each (modal strain energy: ζ = Σ ζ_p·E_p / Σ E_p,
+    E_p = Re x̄_pᵀ(K x)_p over the part's coordinates at standstill) — a second tower mode
+    that hardly bends the blades takes the tower's ratio, not the lower of the two. A mode
+    that strains neither (drive train, yaw) takes the lower (:func:`default_damping`)."""
+    tower_d = section_damping(spec.tower, "tower")
+    blade_d = section_damping(spec.blade, "blade")
+    k = model.multiblade[3]
+    energy = np.abs(np.real(np.conj(shapes) * (k @ shapes)))
+    parts = {"tower": np.zeros(shapes.shape[1]), "blade": np.zeros(shapes.shape[1])}
+    for group, index in model.groups.items():
+        kind = group.split(".")[0]
+        if kind in parts and len(index):
+            parts[kind] += energy[index].sum(axis=0)
+    total = energy.sum(axis=0)
+    lower = default_damping(spec)
+    if tower_d.ratio == blade_d.ratio:
+        return [lower] * shapes.shape[1]
+    assumed = tower_d.assumed or blade_d.assumed
+    out = []
+    for j in range(shapes.shape[1]):
+        e_t, e_b = parts["tower"][j], parts["blade"][j]
+        if e_t + e_b < 0.5 * total[j] or total[j] <= 0:
+            out.append(lower)
+            continue
+        zeta = (tower_d.ratio * e_t + blade_d.ratio * e_b) / (e_t + e_b)
+        share = e_t / (e_t + e_b)
+        out.append(
+            Damping(
+                zeta,
+                f"tower.damping_ratio and blade.damping_ratio by the mode's strain energy "
+                f"({share:.0%} tower, {1 - share:.0%} blades; "
+                f"{'assumed: not all given' if assumed else 'given'})",
+                assumed,
+            )
+        )
+    return out
 
 
 def default_damping(spec: Spec) -> Damping:
