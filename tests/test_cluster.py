@@ -18,9 +18,15 @@ distributed = pytest.importorskip(
 
 @pytest.fixture(scope="module")
 def scheduler():  # type: ignore[no-untyped-def]
-    """A local cluster (two worker threads in this process) and its scheduler's address."""
+    """A local cluster (two worker threads in this process, on tcp://127.0.0.1: wtvib
+    connects over tcp only) and its scheduler's address."""
     with distributed.LocalCluster(
-        n_workers=1, threads_per_worker=2, processes=False, dashboard_address=None
+        n_workers=1,
+        threads_per_worker=2,
+        processes=False,
+        dashboard_address=None,
+        protocol="tcp",
+        host="127.0.0.1",
     ) as cluster:
         yield cluster.scheduler_address
 

@@ -131,17 +131,19 @@ def discover(paths: Iterable[Path]) -> list[Path]:
     """Input files: files as given; folders searched recursively for specs, windIO files and
     ElastoDyn main decks (``.dat``/``.fst`` files that name a ``TwrFile``)."""
     found: list[Path] = []
-    from .importers import is_main_input
 
     for p in paths:
         if p.is_dir():
-            found += sorted(q for q in p.rglob("*") if q.is_file() and is_main_input(q))
+            found += _search(p)
         else:
             found.append(p)
     seen: set[Path] = set()
     unique = []
     for p in found:
-        r = p.resolve()
+        try:
+            r = p.resolve()
+        except (OSError, RuntimeError):  # a symlink loop: its audit says what it is
+            r = p.absolute()
         if r not in seen:
             seen.add(r)
             unique.append(p)
@@ -153,6 +155,32 @@ def discover(paths: Iterable[Path]) -> list[Path]:
 RESERVED = frozenset({"summary", "run-metadata", "audit"})
 
 
+def _search(folder: Path) -> list[Path]:
+    """The main inputs in a folder and its subfolders; a subfolder that cannot be searched
+    (no permission) is itself an input, whose audit says why — never skipped silently."""
+    from .importers import is_main_input
+
+    out: list[Path] = []
+    unreadable: list[Path] = []
+
+    def refused(exc: OSError) -> None:
+        unreadable.append(Path(exc.filename) if exc.filename else folder)
+
+    for root, dirs, files in os.walk(folder, onerror=refused):
+        dirs.sort()
+        out += sorted(
+            q for q in (Path(root) / f for f in files) if q.is_file() and is_main_input(q)
+        )
+    return sorted(out) + unreadable
+
+
+def _resolved(p: Path) -> Path:
+    try:
+        return p.resolve()
+    except (OSError, RuntimeError):  # a symlink loop
+        return p.absolute()
+
+
 def output_keys(paths: Sequence[Path]) -> list[str]:
     """File stems for the outputs, one per input and never one of the batch's own.
 
@@ -160,7 +188,7 @@ def output_keys(paths: Sequence[Path]) -> list[str]:
     takes as many parent folders as make it unique (``a/t/x`` and ``b/t/x`` →
     ``a__t__x`` and ``b__t__x``), then its suffix; a reserved stem is prefixed ``input__``.
     """
-    parts = [p.resolve().with_suffix("").parts for p in paths]
+    parts = [_resolved(p).with_suffix("").parts for p in paths]
     keys = []
     for p, mine in zip(paths, parts, strict=True):
         others = {q for q in parts if q != mine}
@@ -229,6 +257,11 @@ def _audit_one(
     )
 
 
+#: How long a batch waits on a cluster without workers, and how often it looks.
+WORKERLESS_S = 60
+POLL_S = 2.0
+
+
 def run(
     paths: Sequence[Path],
     *,
@@ -237,11 +270,14 @@ def run(
     on_done: Callable[[Item], None] | None = None,
     options: Options | None = None,
     executor: Executor | None = None,
+    alive: Callable[[], bool] | None = None,
 ) -> list[Item]:
     """Audit every input, in parallel on ``jobs`` processes (or on ``executor``: a Dask
     cluster's, :mod:`wtvib.cluster`); results in input order.
 
     ``on_done`` is called in the parent process as each item completes (progress, writes).
+    ``alive`` (a cluster's: whether it has a worker) bounds the wait: with no worker for
+    :data:`WORKERLESS_S` the items left are reported as not audited, the rest stands.
     ``KeyboardInterrupt`` propagates after cancelling what has not started.
     """
     keys = output_keys(paths)
@@ -263,22 +299,45 @@ def run(
             for i, (p, k) in enumerate(zip(paths, keys, strict=True))
         }
         try:
-            from concurrent.futures import as_completed
+            from concurrent.futures import FIRST_COMPLETED, wait
 
-            for fut in as_completed(futures):
-                i = futures[fut]
-                try:
-                    item = fut.result()
-                except Exception as exc:  # a worker died (memory, signal): that row only
-                    item = Item(
+            pending = set(futures)
+            since: float | None = None
+            while pending:
+                done, pending = wait(pending, timeout=POLL_S, return_when=FIRST_COMPLETED)
+                for fut in done:
+                    i = futures[fut]
+                    try:
+                        item = fut.result()
+                    except Exception as exc:  # a worker died (memory, signal): that row only
+                        item = Item(
+                            str(paths[i]),
+                            keys[i],
+                            error=internal_message(str(paths[i]), exc),
+                            internal=True,
+                        )
+                    results[i] = item
+                    if on_done:
+                        on_done(item)
+                if done or alive is None or alive():
+                    since = None
+                    continue
+                since = since or time.monotonic()
+                if time.monotonic() - since < WORKERLESS_S:
+                    continue
+                for fut in pending:  # a cluster without workers: the rest fail, said
+                    fut.cancel()
+                    i = futures[fut]
+                    results[i] = Item(
                         str(paths[i]),
                         keys[i],
-                        error=internal_message(str(paths[i]), exc),
+                        error=f"{paths[i]}: not audited — the cluster had no worker for "
+                        f"{WORKERLESS_S} s (its workers were lost); run it again",
                         internal=True,
                     )
-                results[i] = item
-                if on_done:
-                    on_done(item)
+                    if on_done:
+                        on_done(results[i])
+                break
         except BaseException:
             # stop now: pending work is cancelled and running workers are ended (their
             # results would be thrown away), so Ctrl-C or SIGTERM returns at once
@@ -314,6 +373,11 @@ class FolderLock:
             try:
                 fd = os.open(self.path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
             except FileExistsError:
+                if self.path.is_symlink() or not self.path.is_file():
+                    raise OutputError(
+                        f"{self.path} is not a wtvib lock file (a symbolic link, a folder or "
+                        "a device): remove it, or give another --out-dir"
+                    ) from None
                 if self._stale():
                     self.path.unlink(missing_ok=True)
                     continue

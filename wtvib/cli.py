@@ -70,6 +70,10 @@ class _Command(typer.core.TyperCommand):
         return super().parse_args(ctx, _respell(args, ALIASES.get(self.name or "", {})))
 
 
+#: The most Monte Carlo samples a run may ask for: 2,000 give the spread to a few per cent;
+#: a million take minutes; more would only run without end.
+MAX_SAMPLES = 1_000_000
+
 app = typer.Typer(
     help="Vibration audit of wind turbines: natural frequencies against rotor excitations, "
     "after Hau, Wind Turbines, ch. 7.",
@@ -390,11 +394,14 @@ def check(
         ),
     ] = False,
     samples: Annotated[
-        int, typer.Option(min=10, metavar="N", hidden=True, help="Monte Carlo samples.")
+        int,
+        typer.Option(
+            min=10, max=MAX_SAMPLES, metavar="N", hidden=True, help="Monte Carlo samples."
+        ),
     ] = 2000,
     seed: Annotated[
         int,
-        typer.Option(metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
+        typer.Option(min=0, metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
     ] = 0,
     scheduler: Annotated[
         str | None,
@@ -488,11 +495,14 @@ def report(
         ),
     ] = False,
     samples: Annotated[
-        int, typer.Option(min=10, metavar="N", hidden=True, help="Monte Carlo samples.")
+        int,
+        typer.Option(
+            min=10, max=MAX_SAMPLES, metavar="N", hidden=True, help="Monte Carlo samples."
+        ),
     ] = 2000,
     seed: Annotated[
         int,
-        typer.Option(metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
+        typer.Option(min=0, metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
     ] = 0,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
@@ -605,7 +615,10 @@ def batch_command(
                     on_done=on_done,
                     options=options,
                     executor=executor,
+                    alive=_alive(client),
                 )
+                if writer is not None:  # a turbine whose files could not be written
+                    items = writer.failed(items)
             except KeyboardInterrupt:
                 if writer is not None:  # the summaries of what was completed
                     writer.finish(done, plots=False, interrupted=True)
@@ -638,19 +651,28 @@ def _working(what: str) -> Iterator[None]:
         yield
 
 
+def _alive(client: Any) -> Any:
+    """Whether the cluster still has a worker (None: a local run, always alive)."""
+    if client is None:
+        return None
+    from .cluster import has_workers
+
+    return lambda: has_workers(client)
+
+
 @contextlib.contextmanager
 def _cluster(address: str | None) -> Iterator[Any]:
     """A Dask client on ``address`` for the command's duration (None: run locally)."""
     if address is None:
         yield None
         return
-    from .cluster import connect
+    from .cluster import close, connect
 
     client = connect(address)
     try:
         yield client
     finally:
-        client.close()
+        close(client)
 
 
 class _BatchWriter:
@@ -661,6 +683,8 @@ class _BatchWriter:
         self.force = force
         self.written: list[Path] = []
         self.timings: dict[str, dict[str, float]] = {}
+        self.unwritten: dict[str, str] = {}  # item key → why its files were not written
+        self.pdf_error: str | None = None
 
     def _write(self, name: str, data: bytes) -> None:
         import time
@@ -674,6 +698,30 @@ class _BatchWriter:
         self.timings[key]["write"] += time.perf_counter() - t0
 
     def item(self, item: "batch.Item") -> None:  # type: ignore[name-defined]  # noqa: F821
+        """The item's files; one that cannot be written (a name too long for the file
+        system, a full disk) fails that item alone: the others and the summaries go on."""
+        from .errors import OutputError
+
+        try:
+            self._item(item)
+        except OutputError as exc:
+            self.unwritten[item.key] = str(exc)
+
+    def failed(self, items: list) -> list:  # type: ignore[type-arg]
+        """The items with those whose files could not be written turned into errors."""
+        import dataclasses
+
+        return [
+            dataclasses.replace(
+                it, report=None, pngs={}, campbell_csv=None,
+                error=f"audited, but its files could not be written: {self.unwritten[it.key]}",
+            )
+            if it.key in self.unwritten
+            else it
+            for it in items
+        ]  # fmt: skip
+
+    def _item(self, item: "batch.Item") -> None:  # type: ignore[name-defined]  # noqa: F821
         if item.report is not None:
             text = json.dumps(item.report, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
             self._write(f"{item.key}.json", text.encode())
@@ -697,10 +745,19 @@ class _BatchWriter:
             entries = [(it.report, it.pngs) for it in items if it.report is not None]
             errors = [(it.path, str(it.error), it.outcome) for it in items if it.report is None]
             t0 = time.perf_counter()
-            with _working(f"writing audit.pdf ({len(entries)} turbines)"):
-                pdf = pdfreport.build(entries, errors=errors)
-            self.timings["audit"] = {"build": time.perf_counter() - t0}
-            self._write("audit.pdf", pdf)
+            try:
+                with _working(f"writing audit.pdf ({len(entries)} turbines)"):
+                    pdf = pdfreport.build(entries, errors=errors)
+            except Exception as exc:  # the PDF is lost, not the run's other files
+                self.pdf_error = f"audit.pdf could not be laid out ({type(exc).__name__})"
+                from rich.console import Console
+
+                Console(stderr=True).print(
+                    f"warning: {self.pdf_error}; the other files are written"
+                )
+            else:
+                self.timings["audit"] = {"build": time.perf_counter() - t0}
+                self._write("audit.pdf", pdf)
         meta = {
             "schema": "wtvib-run/1",
             "wtvib": __version__,
@@ -708,6 +765,8 @@ class _BatchWriter:
             "machine": platform.machine(),
             "timings_s": self.timings,
             **({"interrupted": True} if interrupted else {}),
+            **({"audit_pdf": self.pdf_error} if self.pdf_error else {}),
+            **({"unwritten": self.unwritten} if self.unwritten else {}),
         }
         self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
 

@@ -35,12 +35,25 @@ class SpecError(WtvibError, ValueError):
         super().__init__(self.one_line())
 
     def one_line(self) -> str:
-        where = self.source or ""
+        """``file:line: field: message``, each part at most :data:`LONGEST` characters (a
+        100 kB mode id quoted in a message stays a line a terminal can show)."""
+        where = _short(self.source or "")
         if self.line is not None:
             where = f"{where}:{self.line}" if where else f"line {self.line}"
-        field = f"{self.path}: " if self.path else ""
+        field = f"{_short(self.path)}: " if self.path else ""
         prefix = f"{where}: " if where else ""
-        return f"{prefix}{field}{self.message}"
+        return f"{prefix}{field}{_short(self.message)}"
+
+
+#: The longest part of an error line (file, field, message), characters.
+LONGEST = 1000
+
+
+def _short(text: str) -> str:
+    if len(text) <= LONGEST:
+        return text
+    half = LONGEST // 2
+    return f"{text[:half]}… ({len(text) - LONGEST:,} characters left out) …{text[-half:]}"
 
 
 class OutputError(WtvibError, OSError):

@@ -82,15 +82,19 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         ``force`` is false.
     """
     path = Path(path)
-    if path.exists() and not path.is_file():  # a device, pipe or folder: never replaced
+    try:
+        exists = path.exists()
+    except OSError as exc:  # a name the file system cannot hold (over 255 bytes)
+        raise OutputError(f"cannot write {str(path)[:300]}: {exc.strerror}") from None
+    if exists and not path.is_file():  # a device, pipe or folder: never replaced
         raise OutputError(f"{path} is not a regular file; give a file name to write")
-    if path.exists() and not force and not is_ours(path):
+    if exists and not force and not is_ours(path):
         raise OutputError(f"{path} exists and was not written by wtvib; use --force to replace it")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
-        raise OutputError(unwritable(path.parent, exc)) from None
+        raise OutputError(unwritable(path.parent, exc)[:500]) from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)

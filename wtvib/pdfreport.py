@@ -103,8 +103,12 @@ class _Kit:
         self.tallest = 230 * mm
 
     def p(self, text: Any, style: str | None = None) -> Any:
-        """A paragraph of plain text (escaped)."""
-        return self.raw(_esc(str(text)), style)
+        """A paragraph of plain text (escaped), at most :data:`MAX_TEXT` characters (a
+        longer one is cut, and says how much is left out)."""
+        text = str(text)
+        if len(text) > MAX_TEXT:
+            text = f"{text[:MAX_TEXT]}… ({len(text) - MAX_TEXT:,} characters more)"
+        return self.raw(_esc(text), style)
 
     def raw(self, markup: str, style: str | None = None) -> Any:
         """A paragraph of reportlab mini-markup."""
@@ -131,7 +135,9 @@ class _Kit:
         return self.raw(f'<font color="{STATUS_HEX[s]}"><b>{label}</b></font>')
 
     def table(self, rows: list[list[Any]], widths: list[float]) -> Any:
-        t = self.Table(rows, colWidths=[w * self.width for w in widths], repeatRows=1)
+        # splitInRow: a row taller than a page (a 4,000-character name, an 800-word note)
+        # continues on the next page instead of failing the layout
+        t = self.Table(rows, colWidths=[w * self.width for w in widths], repeatRows=1, splitInRow=1)
         t.setStyle(
             self.TableStyle(
                 [
@@ -145,6 +151,11 @@ class _Kit:
 
     def header(self, *names: str) -> list[Any]:
         return [self.raw(f"<b>{_esc(n)}</b>") for n in names]
+
+
+#: The longest text one paragraph of the PDF shows (a page holds about 6,000 characters of
+#: its small type): a longer name or note is cut there, saying so.
+MAX_TEXT = 2000
 
 
 def build(

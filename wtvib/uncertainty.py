@@ -508,5 +508,7 @@ def sample_distributed(
     """:func:`sample` on a Dask cluster (``client``: a ``distributed.Client``): the same
     chunks and seeds, so the same samples as a local run (optional extra ``distributed``)."""
     calls = _chunks(spec, n, seed, chunk, nominal)
+    from .cluster import gather
+
     futures = client.map(sample_chunk, *zip(*calls, strict=True), pure=False)
-    return combine(client.gather(futures))
+    return combine(gather(client, futures))

@@ -7,6 +7,7 @@ it out as an editable spec.
 
 import math
 import re
+import stat
 from pathlib import Path
 from typing import Any
 
@@ -219,8 +220,12 @@ def is_main_input(path: Path) -> bool:
     if suffix in (".yaml", ".yml"):
         return True
     if suffix in (".dat", ".fst"):
-        try:
-            head = path.read_bytes()[:200_000]
+        try:  # the head only, of a regular file only: a sparse 8 GB .dat or a FIFO in a
+            # folder must not cost its size or block discovery
+            if not stat.S_ISREG(path.stat().st_mode):
+                return True  # let the audit report what it is
+            with path.open("rb") as fh:
+                head = fh.read(200_000)
         except OSError:
             return True  # let the audit report the read error
         return b"TwrFile" in head or (suffix == ".fst" and b"EDFile" in head)

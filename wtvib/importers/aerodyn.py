@@ -19,7 +19,7 @@ from typing import Any
 from ..errors import SpecError
 from ..spec import read_text
 from ..spec.aerodynamics import MAX_AIRFOILS, MAX_POLAR_POINTS, MAX_STATIONS
-from .deck import _NUMBER, Deck, _file, environment, parse
+from .deck import _NUMBER, Deck, _file, beside, environment, parse, present
 
 
 def _number(cell: str, what: str, line: int, path: Path) -> float:
@@ -164,8 +164,8 @@ def _airfoil_files(deck: Deck) -> list[Path]:
             names.append(cells[0])
     out = []
     for k, name in enumerate(names, start=1):
-        p = (deck.path.parent / name.strip('"')).resolve()
-        if not p.is_file():
+        p = beside(deck.path, name.strip('"'))
+        if not present(p):
             raise SpecError(
                 f"AFNames entry {k} names {name!r}, which does not exist",
                 line=line + k - 1,

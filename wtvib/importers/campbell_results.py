@@ -6,6 +6,11 @@ from typing import Any
 
 from ..errors import SpecError
 
+#: The most modes wtvib reads from another tool's results (a .cmb, a Campbell table): a
+#: whole-turbine Campbell diagram has tens; beyond this a file is not one, and reading on
+#: would only cost memory (about 0.3 MB per mode in the audit) and time.
+MAX_MODES = 1000
+
 
 def results_spec(
     path: Path,
@@ -21,6 +26,12 @@ def results_spec(
     operating range their points span (or ``rpm``, the command line's [rpm], which the
     importer puts in afterwards), the number of blades (the file's, the option's, or three,
     said), and what was assumed."""
+    if len(modes) > MAX_MODES:
+        raise SpecError(
+            f"{len(modes)} modes: a whole-turbine Campbell diagram has tens; wtvib reads at "
+            f"most {MAX_MODES}",
+            source=str(path),
+        )
     assumptions: list[str] = []
     warnings: list[str] = []
     spread = max(merge_speeds(m) for m in modes.values())

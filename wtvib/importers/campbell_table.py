@@ -13,23 +13,35 @@ critical (not %), ``whirl`` backward | forward | collective | cyclic | fixed, ``
 """
 
 import csv
-import io
 import math
 import re
 from pathlib import Path
 from typing import Any
 
 from ..errors import SpecError
-from .campbell_results import results_spec
+from .campbell_results import MAX_MODES, results_spec
 
 REQUIRED = ("mode", "rpm", "frequency_hz")
 OPTIONAL = ("damping_ratio", "whirl", "frame", "wind_m_s", "description")
+#: Columns of wtvib's own Campbell CSV (``check --campbell-csv``) that a table may carry and
+#: that are not read (the pitch, the damping's aerodynamic part, the aeroelastic root): a
+#: file wtvib wrote reads back.
+IGNORED = (
+    "pitch_deg",
+    "aerodynamic_damping_ratio",
+    "aeroelastic_frequency_hz",
+    "damped_frequency_hz",
+    "method",
+)
 _ID = re.compile(r"^[a-z][a-z0-9_]*(\.[a-z0-9_]+)*$")
 
 
 def looks_like(text: str) -> bool:
-    """A CSV whose header names the required columns."""
-    first = next((ln for ln in text.splitlines() if ln.strip()), "")
+    """A CSV whose header (the first line that is not blank or a ``#`` comment) names the
+    required columns."""
+    first = next(
+        (ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")), ""
+    )
     cols = {c.strip().lower() for c in first.split(",")}
     return all(c in cols for c in REQUIRED)
 
@@ -38,18 +50,26 @@ def to_spec_data(
     path: Path, text: str, blades: int | None, rpm: tuple[float, float] | None = None
 ) -> dict[str, Any]:
     """The wtvib-format dictionary of a Campbell table."""
-    rows = list(csv.reader(io.StringIO(text)))
-    header = [c.strip().lower() for c in rows[0]]
-    unknown = [c for c in header if c not in REQUIRED + OPTIONAL]
+    numbered = _rows(path, text)
+    first, rows = numbered[0], numbered[1:]
+    header = [c.strip().lower() for c in first[1]]
+    unknown = [c for c in header if c not in REQUIRED + OPTIONAL + IGNORED]
     if unknown:
         raise SpecError(
             f"unknown column(s) {', '.join(unknown)}; expected {', '.join(REQUIRED + OPTIONAL)}",
-            line=1,
+            line=first[0],
+            source=str(path),
+        )
+    twice = sorted({c for c in header if header.count(c) > 1})
+    if twice:
+        raise SpecError(
+            f"column(s) {', '.join(twice)} given twice: which is meant?",
+            line=first[0],
             source=str(path),
         )
     col = {name: header.index(name) for name in header}
     modes: dict[str, dict[str, Any]] = {}
-    for line, row in enumerate(rows[1:], start=2):
+    for line, row in rows:
         if not any(c.strip() for c in row):
             continue
         if len(row) != len(header):
@@ -62,6 +82,13 @@ def to_spec_data(
             raise SpecError(
                 f"column mode: {name!r} is not a mode id (lower-case words joined by dots, "
                 "e.g. tower.fa1, blade.flap1.backward)",
+                line=line,
+                source=str(path),
+            )
+        if name not in modes and len(modes) >= MAX_MODES:
+            raise SpecError(
+                f"more than {MAX_MODES} modes: a whole-turbine Campbell diagram has tens; "
+                "wtvib reads at most that many",
                 line=line,
                 source=str(path),
             )
@@ -115,6 +142,43 @@ def to_spec_data(
         f"Campbell table {path.name}",
         rpm=rpm,
     )
+
+
+#: The longest cell (Python's csv limit).
+MAX_CELL = 131_072
+
+
+def _rows(path: Path, text: str) -> list[tuple[int, list[str]]]:
+    """The table's non-blank rows with their lines, any line ending (CR, LF, CR LF). A row
+    may not run over lines: a quote left open would otherwise swallow the rows after it."""
+    lines = text.splitlines()
+    reader = csv.reader(lines)
+    out: list[tuple[int, list[str]]] = []
+    before = 0
+    while True:
+        try:
+            row = next(reader)
+        except StopIteration:
+            break
+        except csv.Error as exc:
+            raise SpecError(
+                f"not a CSV row ({exc}; a cell over {MAX_CELL:,} characters, or a stray quote?)",
+                line=reader.line_num,
+                source=str(path),
+            ) from None
+        start = before + 1
+        if reader.line_num > start:
+            raise SpecError(
+                f"a quoted cell runs from line {start} to {reader.line_num}: a quote left open?",
+                line=start,
+                source=str(path),
+            )
+        before = reader.line_num
+        if any(c.strip() for c in row) and not row[0].lstrip().startswith("#"):
+            out.append((start, row))
+    if not out:
+        raise SpecError("the file is empty", source=str(path))
+    return out
 
 
 def _number(text: str, line: int, column: str, path: Path) -> float:

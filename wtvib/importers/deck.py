@@ -248,14 +248,41 @@ def _row(path: Path, header: list[str], cells: list[str], line: int) -> list[flo
     return out
 
 
+def beside(base: Path, name: str) -> Path:
+    """A file a deck names, resolved beside it (symlinks followed); a name that cannot be
+    resolved (a symlink loop, a name too long) as given, for the reader to refuse."""
+    path = base.parent / name
+    try:
+        return path.resolve()
+    except (OSError, RuntimeError):  # RuntimeError: a symlink loop (Python < 3.13)
+        return path
+
+
+def present(path: Path) -> bool:
+    """Whether a named file is there (a name the file system cannot hold is not)."""
+    try:
+        return path.is_file()
+    except OSError:
+        return False
+
+
 def _file(deck: Deck, *keys: str) -> Path:
     name = deck.text(*keys)
-    path = (deck.path.parent / name).resolve()
-    if not path.is_file():
-        line = next((deck.values[k][1] for k in keys if k in deck.values), None)
+    path = beside(deck.path, name)
+    line = next((deck.values[k][1] for k in keys if k in deck.values), None)
+    try:
+        found = path.is_file()
+    except OSError as exc:  # a name too long for the file system
         raise SpecError(
-            f"{keys[0]} names {name!r}, which does not exist", line=line, source=str(deck.path)
+            f"{keys[0]} names {name[:80]!r}: {exc.strerror}", line=line, source=str(deck.path)
+        ) from None
+    if not found:
+        why = (
+            "a symbolic link that leads nowhere (a loop, or a missing target)"
+            if path.is_symlink()
+            else "which does not exist"
         )
+        raise SpecError(f"{keys[0]} names {name[:200]!r}, {why}", line=line, source=str(deck.path))
     return path
 
 

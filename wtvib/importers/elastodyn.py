@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import SpecError
 from ..rigid import rotor_points
 from . import beamdyn
-from .deck import Deck, _file, parse
+from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
 from .servodyn import operation
 from .subdyn import STEP_M, Monopile, monopile, water
@@ -46,16 +46,16 @@ def deck_set(path: Path, text: str) -> tuple[Deck, Deck | None, Deck | None]:
             for cand in sorted(path.parent.glob("*.fst")):
                 deck = parse(cand)
                 if "EDFile" in deck.values:
-                    named = (cand.parent / deck.text("EDFile")).resolve()
+                    named = beside(cand, deck.text("EDFile"))
                     if named == path.resolve():
                         fst = deck
                         break
     servo = None
     if fst is not None and "ServoFile" in fst.values and fst.num("CompServo", default=1) > 0:
-        named = (fst.path.parent / fst.text("ServoFile")).resolve()
+        named = beside(fst.path, fst.text("ServoFile"))
         # a ServoDyn the .fst names but the deck set does not hold (OpenFAST's aero-map
         # case runs without it): none, which the operation then says
-        servo = parse(_file(fst, "ServoFile")) if named.exists() else None
+        servo = parse(_file(fst, "ServoFile")) if present(named) else None
     elif "VSContrl" in main.values:  # FAST v7: the controls are in the deck itself
         servo = main
     return main, fst, servo
@@ -534,10 +534,10 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
     differ where both are there)."""
     ed_keys = ("BldFile(1)", "BldFile1")
     ed_path = next(
-        ((main.path.parent / main.text(k)).resolve() for k in ed_keys if k in main.values),
+        (beside(main.path, main.text(k)) for k in ed_keys if k in main.values),
         None,
     )
-    ed = parse(_file(main, *ed_keys)) if ed_path is not None and ed_path.is_file() else None
+    ed = parse(_file(main, *ed_keys)) if ed_path is not None and present(ed_path) else None
     uses_bd = fst is not None and fst.num("CompElast", default=1) == 2
     if not uses_bd:
         if ed is None:

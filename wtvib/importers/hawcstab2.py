@@ -27,7 +27,7 @@ import numpy as np
 from ..errors import SpecError
 from ..results import ordinal
 from ..spec import read_bytes
-from .campbell_results import results_spec
+from .campbell_results import MAX_MODES, results_spec
 
 #: A rotation amplitude [rad] is weighed as the motion it gives this far away [m]: a yaw or
 #: shaft torsion turns the rotor, whose blades are tens of metres long; a blade's torsion
@@ -132,6 +132,13 @@ def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
     label = " ".join(t for t in tokens if not t.isdigit())
     n = max(numbers) if numbers else 0
     cols = data.shape[1] - 1
+    if n > MAX_MODES:
+        raise SpecError(
+            f"{n} modes: a whole-turbine Campbell diagram has tens; wtvib reads at most "
+            f"{MAX_MODES}",
+            line=1,
+            source=str(path),
+        )
     if n == 0 or cols % n or cols // n not in (1, 2, 3):
         raise SpecError(
             f"{cols} value columns for {n} modes: expected 1, 2 or 3 blocks (frequency, "

@@ -32,7 +32,7 @@ from typing import Any
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import _NUMBER, Deck, _file
+from .deck import _NUMBER, Deck, _file, beside, present
 
 #: OpenFAST's decks mark an input they do not use with 9999.9 (or 9998/9999).
 UNUSED = 9998.0
@@ -110,8 +110,8 @@ def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
     if "DLL_InFile" not in servo.values:
         return _initial(main, "its DLL controller names no input file (DLL_InFile)", fixed)
     name = servo.text("DLL_InFile")
-    dll = (servo.path.parent / name).resolve()
-    if not dll.exists():
+    dll = beside(servo.path, name)
+    if not present(dll):
         return _initial(
             main,
             f"its controller's input file {name!r} (DLL_InFile) is not in the deck set",

@@ -34,7 +34,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import Deck, Table, _file, counted, environment, parse
+from .deck import Deck, Table, _file, beside, counted, environment, parse
 
 #: Joints closer than this [m] (horizontally) lie on one vertical axis.
 AXIS_TOLERANCE_M = 0.01
@@ -276,7 +276,7 @@ def _reaction(sd: Deck, react: Table, notes: list[str]) -> dict[str, Any]:
     ssi = react.texts("SSIfile")[0] if react.has("SSIfile") else ""
     line = react.lines[0]
     if ssi and ssi.lower() not in ("", "none", "unused"):
-        path = (sd.path.parent / ssi).resolve()
+        path = beside(sd.path, ssi)
         if not path.is_file():
             raise SpecError(f"SSIfile names {ssi!r}, which does not exist", line=line,
                             source=str(sd.path))  # fmt: skip

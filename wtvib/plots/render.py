@@ -60,6 +60,33 @@ def inline(report: "Report", detail: bool) -> dict[str, bytes]:
     return {name: png_bytes(fig) for name, fig in diagrams(report, detail).items()}
 
 
+def _config_home() -> None:
+    """Where matplotlib keeps its font cache: its own choice (MPLCONFIGDIR, else the user's
+    cache directory, ``$XDG_CACHE_HOME/matplotlib`` or ``~/.cache/matplotlib``) where that
+    can be written; else wtvib's folder in the user's cache directory. matplotlib would
+    otherwise make a ``/tmp/matplotlib-*`` folder for every run and leave it behind."""
+    from pathlib import Path
+
+    def writable(folder: Path) -> bool:
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            return os.access(folder, os.W_OK | os.X_OK)
+        except OSError:
+            return False
+
+    given = os.environ.get("MPLCONFIGDIR")
+    cache = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
+    if given is not None:
+        if writable(Path(given)):
+            return
+    elif writable(cache / "matplotlib"):
+        return
+    for folder in (cache / "wtvib" / "matplotlib", Path.cwd() / ".wtvib-matplotlib"):
+        if writable(folder):
+            os.environ["MPLCONFIGDIR"] = str(folder)
+            return
+
+
 def _lean_matplotlib() -> None:
     """Import matplotlib without its help text.
 
@@ -72,6 +99,7 @@ def _lean_matplotlib() -> None:
     imported it), nothing changes; nor where a matplotlib no longer has the two hooks.
     """
     if "matplotlib" not in sys.modules:
+        _config_home()
         import matplotlib.artist as artist
 
         if hasattr(artist.Artist, "_update_set_signature_and_docstring") and hasattr(

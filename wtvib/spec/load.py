@@ -41,7 +41,12 @@ def max_file_bytes() -> int:
         value = -1
     if value <= 0:
         raise SpecError(f"WTVIB_MAX_BYTES must be a whole number of bytes above 0 (got {raw!r})")
-    return value
+    # a read allocates the limit plus one byte: more than memory can hold is no limit at all
+    return min(value, MAX_SETTABLE_BYTES)
+
+
+#: The largest WTVIB_MAX_BYTES taken as given (1 TiB): a 30-digit setting is read as this.
+MAX_SETTABLE_BYTES = 1 << 40
 
 
 def load(path: str | FsPath, *, max_bytes: int | None = None) -> Spec:
@@ -94,9 +99,13 @@ def read_bytes(path: str | FsPath, *, max_bytes: int | None = None) -> bytes:
                 source=str(p),
             )
         with p.open("rb") as fh:
-            raw = fh.read(max_bytes + 1)  # a file that grows while read stops at the limit
+            # no more than the file holds (a read allocates what it is asked for) and one
+            # byte over: a file that grows while read is caught, not cut short
+            raw = fh.read(min(max_bytes, info.st_size) + 1)
         if len(raw) > max_bytes:
             raise SpecError(f"file is over the {max_bytes:,}-byte limit", source=str(p))
+        if len(raw) > info.st_size:
+            raise SpecError("the file grew while it was read; read it again", source=str(p))
     except IsADirectoryError:
         raise SpecError("is a folder, not a file", source=str(p)) from None
     except FileNotFoundError:
