@@ -79,13 +79,15 @@ lock:
 	rm -rf build/lock-venv
 
 # A long fuzzing campaign (>= 100,000 cases: 3 spec properties x 40,000 examples, 2
-# importer properties x 2,000); the outcome is recorded by hand in tests/FUZZ.md. CI runs
+# importer properties x 2,000, 5 reader properties x 25,000: .lin, HAWCStab2, Campbell
+# tables, output paths, batch discovery); the outcome is recorded by hand in tests/FUZZ.md. CI runs
 # the short profile inside `make test`. The invariant's bounds: 30 s per example (the
 # profile's deadline) and 2 GB of address space per process (ulimit -v: a MemoryError is a
 # failure like any other exception).
 fuzz: $(DEV)
 	ulimit -v 2000000 && OPENBLAS_NUM_THREADS=1 HYPOTHESIS_PROFILE=fuzz $(BIN)/pytest -q tests/test_fuzz.py \
-		tests/test_fuzz_importers.py -p no:cacheprovider --hypothesis-show-statistics
+		tests/test_fuzz_importers.py tests/test_fuzz_readers.py -p no:cacheprovider \
+		--hypothesis-show-statistics
 
 clean:
 	rm -rf $(VENV) demo build .pytest_cache .mypy_cache .ruff_cache

@@ -66,8 +66,17 @@ def _umask() -> int:
 def unwritable(folder: Path, exc: OSError) -> str:
     """Why a folder cannot take an output: a file where the folder should be (``--out``
     naming a file) is said as such, not as the system's "File exists"."""
-    blocker = next((p for p in (folder, *folder.parents) if p.exists()), None)
-    if blocker is not None and not blocker.is_dir():
+
+    def there(p: Path) -> bool:
+        try:
+            return p.exists()
+        except OSError:  # a name the file system cannot hold
+            return False
+
+    blocker = next((p for p in (folder, *folder.parents) if there(p)), None)
+    if blocker is not None and blocker != folder and not blocker.is_dir():
+        return f"cannot write to {folder}: {blocker} is a file, not a folder"
+    if blocker == folder and not folder.is_dir():
         return f"cannot write to {folder}: {blocker} is a file, not a folder"
     return f"cannot write to {folder}: {exc.strerror}"
 
@@ -86,6 +95,8 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         exists = path.exists()
     except OSError as exc:  # a name the file system cannot hold (over 255 bytes)
         raise OutputError(f"cannot write {str(path)[:300]}: {exc.strerror}") from None
+    except UnicodeError:  # a name no file system encoding holds (a lone surrogate)
+        raise OutputError(f"cannot write {path!a}: the name is not valid text") from None
     if exists and not path.is_file():  # a device, pipe or folder: never replaced
         raise OutputError(f"{path} is not a regular file; give a file name to write")
     if exists and not force and not is_ours(path):
@@ -95,6 +106,8 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
         raise OutputError(unwritable(path.parent, exc)[:500]) from None
+    except UnicodeError:
+        raise OutputError(f"cannot write {path!a}: the name is not valid text") from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)

@@ -128,8 +128,9 @@ def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
     if not header:
         raise SpecError("no header line: not a HAWCStab2 .cmb file", source=str(path))
     tokens = header[0].lstrip("# ").split()
-    numbers = [int(t) for t in tokens if t.isdigit()]
-    label = " ".join(t for t in tokens if not t.isdigit())
+    # ASCII digits only: "²" (in "[m²]") is a digit to str.isdigit, not to int()
+    numbers = [int(t) for t in tokens if t.isascii() and t.isdigit()]
+    label = " ".join(t for t in tokens if not (t.isascii() and t.isdigit()))
     n = max(numbers) if numbers else 0
     cols = data.shape[1] - 1
     if n > MAX_MODES:

@@ -12,7 +12,7 @@ from ..yamlio import Document, Path, format_path
 def _split(dotted: str) -> Path:
     parts: list[str | int] = []
     for piece in dotted.replace("]", "").replace("[", ".").split("."):
-        parts.append(int(piece) if piece.isdigit() else piece)
+        parts.append(int(piece) if piece.isascii() and piece.isdigit() else piece)
     return tuple(parts)
 
 
