@@ -266,8 +266,12 @@ def _soil_profile(path: Path | None) -> dict[str, Any] | None:
     from ..spec.load import _extract_quantities
     from ..spec.messages import _spec_error
     from ..spec.tower import SoilProfile
+    from . import hawc2_soil
 
-    doc = load_document(Path(path), read_text(Path(path)))
+    text = read_text(Path(path))
+    if hawc2_soil.looks_like(text):  # HAWC2's distributed springs (its soil data file)
+        return hawc2_soil.profile(Path(path))
+    doc = load_document(Path(path), text)
     data = doc.data
     if not isinstance(data, dict) or "soil" not in data or set(data) - {"soil", "bounds"}:
         raise SpecError(
