@@ -53,6 +53,9 @@ from .campbell_results import results_spec
 
 Array = NDArray[np.float64]
 
+#: The largest azimuth a header may give [rad] (OpenFAST writes it within one turn).
+MAX_AZIMUTH = 1e6
+
 #: A linearisation's files are large (A alone is n² numbers): the size limit for them,
 #: unless WTVIB_MAX_BYTES sets one.
 LIN_MAX_BYTES = 64 * MAX_FILE_BYTES
@@ -195,7 +198,7 @@ def read(path: Path) -> LinFile:
         return None, 0
 
     speed, speed_line = value("Rotor Speed:")
-    azimuth, _ = value("Azimuth:")
+    azimuth, azimuth_line = value("Azimuth:")
     wind, wind_line = value("Wind Speed:", required=False)
     count, n_line = value("Number of continuous states:")
     assert speed is not None and azimuth is not None and count is not None
@@ -203,6 +206,12 @@ def read(path: Path) -> LinFile:
         raise fail(
             f"Rotor Speed {speed:g} rad/s is not a rotor speed (0 to 1000 rad/s)", speed_line
         )
+    if abs(azimuth) > MAX_AZIMUTH:  # a rotor turned a million radians is a broken header
+        raise fail(
+            f"Azimuth {azimuth:g} rad is not a rotor azimuth (|ψ| ≤ {MAX_AZIMUTH:g} rad)",
+            azimuth_line,
+        )
+    azimuth = math.remainder(azimuth, 2 * math.pi)
     if wind is not None and not 0 <= wind <= 100:
         raise fail(f"Wind Speed {wind:g} m/s is not a wind speed (0 to 100 m/s)", wind_line)
     if count != int(count) or not 0 <= count <= MAX_STATES:
