@@ -92,3 +92,34 @@ def test_the_dampers_add_to_the_trains_material_damping():
     assert third.damping_ratio is not None and default < third.damping_ratio < default + 1e-3
     assert third.damping_source is not None and "dampers" in third.damping_source
     assert modes["drivetrain.grid.1"].damping_ratio > 0.25  # type: ignore[operator]
+
+
+def test_modal_damping_gives_every_elastic_mode_its_ratio():
+    """D = (MΦ)·diag(2ζω)·(MΦ)ᵀ: the damped roots of (M, D, K) have ζ exactly, a rigid
+    mode none (a free train's turning)."""
+    import numpy as np
+
+    from wtvib import modal
+    from wtvib.drivetrain import modal_damping
+
+    m = np.diag([3.0, 1.0, 2.0])
+    k = np.array([[2.0, -2.0, 0.0], [-2.0, 5.0, -3.0], [0.0, -3.0, 3.0]])  # free: singular
+    d = modal_damping(m, k, 0.02)
+    roots = modal.damped(k, m, d)
+    elastic = roots.frequency_hz > 1e-6
+    assert np.allclose(roots.damping_ratio[elastic], 0.02, atol=1e-9)
+
+
+def test_shaft_torque_amplification_is_bounded_by_the_modal_damping():
+    """Issue 39: Aeroman's train has no damper: at its 5P resonance the forced response
+    gave 9.02·10⁵. With the drive train's modal damping (2 %, the DAF's) it stays below
+    the resonance's 1/(2ζ) = 25."""
+    from wtvib import audit
+    from wtvib.spec import load
+
+    from .conftest import TURBINES
+
+    report = audit.run(load(TURBINES / "aeroman.yaml"))
+    check = next(c for c in report.checks if c.id == "drivetrain.resonance.5P")
+    amp = check.numbers["torque_amplification"]
+    assert 1.0 < amp < 1 / (2 * 0.02)

@@ -458,9 +458,13 @@ def torque_amplification(
     -----
     Steady harmonic response (K − ω²M + iωD)·q = F with F = e_at; shaft torque
     k_j·(q_j − q_{j+1}) + iω·d_j·(q_j − q_{j+1}). Below the first mode a grid-coupled train
-    passes the torque on (≈1); at a lightly damped resonance it is amplified.
+    passes the torque on (≈1); at a lightly damped resonance it is amplified. D holds the
+    chain's dampers and the modal damping the DAF uses (:func:`modal_damping`, the drive
+    train's damping ratio): at resonance the amplification is bounded by about 1/(2ζ), not
+    by the dampers alone (Aeroman's undamped train gave 9·10⁵ at 5P).
     """
     m, k, d = system(chain, spec, condition)
+    d = d + modal_damping(m, k, default_damping(spec).ratio)
     w = 2 * math.pi * f_hz
     force = np.zeros(m.shape[0], dtype=complex)
     force[min(at, m.shape[0] - 1)] = 1.0
@@ -474,6 +478,17 @@ def torque_amplification(
     if condition == "locked":
         torques = np.append(torques, (chain.stiffness[-1] + 1j * w * chain.damping[-1]) * q[-1])
     return float(np.max(np.abs(torques)))
+
+
+def modal_damping(m: Array, k: Array, zeta: float) -> Array:
+    """The damping matrix that gives every elastic mode of (K, M) the ratio ζ:
+    D = (MΦ)·diag(2ζωᵢ)·(MΦ)ᵀ with Φ mass-normalised (a rigid-body mode, ω = 0, gets none)."""
+    from scipy.linalg import eigh
+
+    w2, phi = eigh(k, m)
+    omega = np.sqrt(np.clip(w2, 0.0, None))
+    mp = m @ phi
+    return np.asarray((mp * (2 * zeta * omega)) @ mp.T)
 
 
 # ---------------------------------------------------------------------------------------
