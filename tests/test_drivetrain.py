@@ -123,3 +123,39 @@ def test_shaft_torque_amplification_is_bounded_by_the_modal_damping():
     check = next(c for c in report.checks if c.id == "drivetrain.resonance.5P")
     amp = check.numbers["torque_amplification"]
     assert 1.0 < amp < 1 / (2 * 0.02)
+
+
+@pytest.mark.parametrize(
+    ("turbine", "table"),
+    [("aeroman", (87, 2, 9, 2)), ("wka-60", (91, 1, 7, 1)), ("growian", (85, 8, 5, 2))],
+)
+def test_inertia_shares_are_table_7_8(turbine, table):
+    """Hau Table 7.8: the shares of the drive train's inertia on the rotor shaft (blades,
+    hub, generator, rest) — reported for every chain; the book's three trains give the
+    table's numbers to the percent (their chains are built from the book's inertias)."""
+    from wtvib import audit, drivetrain
+    from wtvib.spec import load
+
+    from .conftest import TURBINES
+
+    spec = load(TURBINES / f"{turbine}.yaml")
+    shares = drivetrain.inertia_shares(spec)
+    assert shares is not None
+    assert [round(100 * shares[k]) for k in ("blades", "hub", "generator", "rest")] == list(table)
+    assert any("Table 7.8" in a for a in audit.run(spec).assumptions)
+
+
+def test_inertia_shares_reduce_each_mass_by_its_speed_squared(write_spec):
+    """J·i²: a 10 kg·m² generator on a 50:1 shaft counts 25,000 kg·m² on the rotor's."""
+    from wtvib import drivetrain
+    from wtvib.spec import load
+
+    chain = (
+        "drivetrain:\n  chain:\n"
+        "    - {name: blades, inertia_kgm2: 70000}\n"
+        "    - {name: hub, inertia_kgm2: 5000}\n"
+        "    - {name: generator, inertia_kgm2: 10, speed_ratio: 50}\n"
+        "  shafts:\n    - {stiffness_nm_rad: null}\n    - {stiffness_nm_rad: 1.0e9}\n"
+    )
+    shares = drivetrain.inertia_shares(load(write_spec(extra=chain)))
+    assert shares == pytest.approx({"blades": 0.7, "hub": 0.05, "generator": 0.25, "rest": 0.0})

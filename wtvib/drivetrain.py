@@ -516,8 +516,37 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         if curve is not None
         else ()
     )
+    shares = inertia_shares(spec)
     return Analysis(
         checks=checks,
         refine=torque_refiner(spec, ctx.modes),
         results={"power": curve} if curve is not None else {},
+        assumptions=(shares_statement(shares),) if shares else (),
+    )
+
+
+def inertia_shares(spec: Spec) -> dict[str, float] | None:
+    """The chain's inertia on the rotor shaft (J·i², i its speed over the rotor's) in Hau's
+    four shares (Table 7.8): blades, hub, generator, the rest (gearbox, brake, shafts) —
+    each mass by its name; None without a chain."""
+    chain = spec.drivetrain.chain
+    if not chain:
+        return None
+    out = {"blades": 0.0, "hub": 0.0, "generator": 0.0, "rest": 0.0}
+    for mass in chain:
+        name = mass.name.lower()
+        part = next((k for k in ("blade", "hub", "generator") if k in name), "rest")
+        out["blades" if part == "blade" else part] += mass.inertia_kgm2 * mass.speed_ratio**2
+    total = sum(out.values())
+    return {k: v / total for k, v in out.items()} if total > 0 else None
+
+
+def shares_statement(shares: dict[str, float]) -> str:
+    """The inertia shares as the report states them, beside the book's examples."""
+    parts = ", ".join(f"{k} {100 * v:.0f} %" for k, v in shares.items())
+    return (
+        f"Drive-train inertia on the rotor shaft (Hau Table 7.8): {parts} — the book's "
+        "examples: Aeroman 87/2/9/2, WKA-60 91/1/7/1, Growian 85/8/5/2 (blades/hub/"
+        "generator/rest); the blades dominate, the generator's share grows with the gear "
+        "ratio squared."
     )
