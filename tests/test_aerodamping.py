@@ -125,3 +125,20 @@ def test_a_rotor_that_draws_no_power_is_a_warning_not_a_crash(write_spec):
     check = next(c for c in report.checks if c.id == "aerodynamics.operation")
     assert check.status == "warn" and "draws no power" in check.message
     assert f"C_p up to {cp.max():.3f}" in check.message
+
+
+def test_a_structural_audit_says_which_aeroelastic_checks_it_made():
+    """Issue 39: Euros 44 m's report said 'no aeroelastic instability looked for' beside its
+    own divergence, flutter and stall checks; MOD-2 has no section data and says so."""
+    from wtvib import audit
+    from wtvib.spec import load
+
+    from .conftest import TURBINES
+
+    def operation(name: str) -> str:
+        report = audit.run(load(TURBINES / f"{name}.yaml"))
+        return next(c.message for c in report.checks if c.id == "aerodynamics.operation")
+
+    assert "blade.flutter" in operation("euros-44m")
+    assert "looked for" not in operation("euros-44m")
+    assert "no aeroelastic instability looked for" in operation("mod-2")

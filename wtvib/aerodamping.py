@@ -533,8 +533,14 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             f"not analysed: the modes and their damping are {spec.results.tool}'s "
             "(system.stability judges that damping)"
             if spec.results is not None
-            else "not analysed: no aerodynamics — a structural audit (modes judged with "
-            "their structural damping only; no aeroelastic instability looked for)"
+            else "not analysed: no aerodynamics block — the modes are judged with their "
+            "structural damping only"
+            + (
+                "; the blades' divergence, flutter and stall-induced vibration are checked "
+                "from their section data (blade.divergence, blade.flutter, blade.stall.*)"
+                if spec.blade.aeroelastic is not None
+                else "; no aeroelastic instability looked for (no section data either)"
+            )
         )
         return Analysis(checks=(Check(f"{NAME}.operation", NAME, "info", text, _rule_operation()),))
     sec = sections(spec)
