@@ -24,7 +24,7 @@ def folder(tmp_path):
     (d / "corrupt.yaml").write_bytes(b"wtvib: 1\nturbine: {name: [unclosed\n")
     (d / "sub").mkdir()
     (d / "sub" / "other.yml").write_text(
-        spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
+        spec_text(blades=3, speed="fixed_rpm: 30", modes="fa1: 0.75")
     )
     return d
 

@@ -136,3 +136,35 @@ def test_the_class_gives_the_modes_frequency_where_its_separation_is_measured(sh
     c = next(c for c in r.checks if c.id == "tower.class")
     assert "first bending 0.401 Hz" in c.message
     assert "2P = 0.392 Hz at 11.8 rpm, the mode at 0.399 Hz: separation 1.8%" in c.message
+
+
+@pytest.mark.parametrize(
+    ("turbine", "hub", "status"),
+    [
+        ("mod-2", "teetered", None),  # the book's soft tower under a teetering hub: no check
+        ("mod-2", "hingeless", "fail"),  # the same tower under a hingeless hub
+        ("mod-0", "hingeless", "pass"),  # hingeless on a stiff lattice tower
+        ("wts-75", "hingeless", "pass"),
+    ],
+)
+def test_a_hingeless_two_bladed_rotor_needs_a_stiff_tower(tmp_path, turbine, hub, status):
+    """Issue 39, Hau 7.5.1: "a turbine with a hingeless rotor and flexible tower design would
+    be an extremely hazardous concept" — MOD-2 with a hingeless hub audited PASS."""
+    import re
+
+    from wtvib import audit
+    from wtvib.spec import load
+
+    from .conftest import TURBINES
+
+    text = (TURBINES / f"{turbine}.yaml").read_text()
+    path = tmp_path / "t.yaml"
+    path.write_text(re.sub(r"hub: \w+", f"hub: {hub}", text, count=1))
+    report = audit.run(load(path))
+    checks = {c.id: c for c in report.checks}
+    if status is None:
+        assert "tower.concept" not in checks
+    else:
+        assert checks["tower.concept"].status == status
+    if status == "fail":
+        assert report.verdict == "fail"

@@ -515,7 +515,45 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     ratio = default_damping(spec).ratio
     c = classify(first, harmonics, spec.rotor.blades, ctx.op, ctx.rule, ratio)
     check = class_check(c, spec.rotor.blades, ctx.op, ctx.rule)
-    return Analysis(lead=(check,), results={"class": c}, assumptions=statements)
+    concept = concept_check(c, spec)
+    lead = (check,) if concept is None else (check, concept)
+    return Analysis(lead=lead, results={"class": c}, assumptions=statements)
+
+
+def concept_check(c: Classification, spec: Spec) -> Check | None:
+    """``tower.concept``: a two-bladed rotor with a hingeless hub on a flexible tower (soft or
+    soft-soft). Its yaw and tilt moments alternate at 2P with the rotor's changing inertia
+    (a parametric excitation) and its aerodynamic asymmetry, and reach the tower head
+    undiminished — Hau 7.5.1: "a turbine with a hingeless rotor and flexible tower design
+    would be an extremely hazardous concept"; a teetering hub decouples them (MOD-2, WTS-3),
+    a stiff tower keeps the resonance out of the start-up (MOD-0, MOD-1, WTS-75). None for
+    any other rotor."""
+    if spec.rotor.blades != 2 or spec.rotor.hub in ("teetered", "hinged"):
+        return None
+    flexible = c.tower_class in ("soft", "soft-soft", "resonant")
+    text = (
+        f"hingeless two-bladed rotor on a {c.tower_class} tower (first bending "
+        f"{c.frequency_hz:.3g} Hz): its 2P yaw and tilt moments reach the tower head "
+        "undiminished and its first bending is met at start-up — an extremely hazardous "
+        "concept (Hau 7.5.1); a teetering hub or a stiff tower is the book's remedy"
+        if flexible
+        else f"hingeless two-bladed rotor on a stiff tower (first bending {c.frequency_hz:.3g} "
+        "Hz above 2P): the 2P yaw and tilt moments meet no tower resonance (the MOD-0 and "
+        "WTS-75 concept, Hau 7.5.2)"
+    )
+    return Check(
+        id="tower.concept",
+        subsystem="tower",
+        status="fail" if flexible else "pass",
+        message=text,
+        rule=Rule(
+            "a two-bladed rotor with a hingeless hub needs a stiff tower (first bending above "
+            "2P); soft and soft-soft towers need a teetering hub",
+            "Hau, Wind Turbines, ch. 7.5.1 (tower torsion and bending under the two-bladed "
+            "rotor's yaw moment) and 7.5.2 (MOD-0/1, MOD-2, WTS-3/4, WTS-75)",
+        ),
+        numbers={"tower_class": c.tower_class, "frequency_hz": c.frequency_hz},
+    )
 
 
 def _statements(spec: Spec) -> tuple[str, ...]:
