@@ -63,14 +63,16 @@ def test_a_deck_on_a_platform_says_its_tower_is_clamped_at_its_base(shared):
 
 
 def test_a_floating_deck_set_is_refused_unless_clamped(shared, tmp_path):
-    """Moorings in the .fst (CompMooring > 0): a floating turbine, whose tower modes its
-    platform sets — refused as a floating windIO file is, and audited clamped on request
-    with the headline saying the platform's modes are missing."""
+    """Moorings in the .fst (CompMooring > 0) but no HydroDyn: a floating turbine whose
+    platform nothing describes — refused naming what is missing, as a floating windIO file
+    is, and audited clamped on request with the headline saying the platform's modes are
+    missing."""
     from tests.conftest import edited_reference
 
     mooring = "          0   CompMooring", "          3   CompMooring"
     fst = edited_reference(shared, tmp_path, "NREL5MW", "NREL-5MW.fst", *mooring) / "NREL-5MW.fst"
-    with pytest.raises(SpecError, match=r"floating turbine \(moorings \(CompMooring\)\)"):
+    refused = r"floating turbine \(moorings \(CompMooring\)\) whose platform wtvib cannot model"
+    with pytest.raises(SpecError, match=refused + ": no HydroDyn"):
         importers.load(fst)
     spec = importers.load(fst, clamped_base=True)
     said = [w for w in spec.warnings if w.startswith("tower.foundation")]

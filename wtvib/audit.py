@@ -30,6 +30,7 @@ from .resonance import marks as resonance_marks
 from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
+from .tower import PLATFORM_MODE
 
 REPORT_SCHEMA = "wtvib-report/1"
 
@@ -411,6 +412,10 @@ SLOW_RANGE = 0.15
 #: reference turbines are the IEA-22 windIO example's coupled tower (0.126 Hz) and, outside
 #: the tower, Growian's drive train with the rotor locked (0.188 Hz).
 SLOWEST_MODE_HZ = 0.01
+#: A floating platform's rigid-body mode below this [Hz] (a period over 500 s) is
+#: suspicious: the slowest are surge and sway on slack catenary moorings, 0.008 Hz for the
+#: OC3-Hywind spar (Jonkman 2010, NREL/TP-500-47535), a period of 125 s.
+SLOWEST_PLATFORM_HZ = 0.002
 #: Any mode above this [Hz] is suspicious: the fastest of the catalogue and the reference
 #: turbines is the Aeroman's second gear-mesh mode (470 Hz). A stiffness typed far too large
 #: lands here — and where it spans more orders of magnitude than double precision resolves,
@@ -463,6 +468,7 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             "highest steady speed"
         )
     for m in modes:
+        slowest = SLOWEST_PLATFORM_HZ if m.id.startswith(PLATFORM_MODE) else SLOWEST_MODE_HZ
         if m.subsystem == "tower" and m.id.endswith(("fa1", "ss1")):
             if m.frequency_hz > 20:
                 out.append(
@@ -481,10 +487,10 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                 "stiffness typed far too large? units?); the slow modes of the same model lose "
                 "precision beside it"
             )
-        elif m.frequency_hz < SLOWEST_MODE_HZ:
+        elif m.frequency_hz < slowest:
             out.append(
                 f"{m.id}: {m.frequency_hz:.3g} Hz — a natural frequency under "
-                f"{SLOWEST_MODE_HZ:g} Hz (a period over {1 / SLOWEST_MODE_HZ:.0f} s) is "
+                f"{slowest:g} Hz (a period over {1 / slowest:.0f} s) is "
                 "implausible for a wind turbine's structure (units? a typing slip?)"
             )
     out += _missing_yaw_inertia(spec, modes)

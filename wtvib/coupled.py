@@ -562,6 +562,7 @@ def applies(spec: Spec) -> bool:
         and spec.tower_head is not None
         and spec.tower.has_structure
         and spec.rotor.orientation != "vertical-axis"
+        and spec.tower.foundation.kind != "platform"  # a floater: the isolated models
     )
 
 

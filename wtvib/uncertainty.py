@@ -189,18 +189,20 @@ def sample_chunk(
     nominal = nominal if nominal is not None else nominal_of(spec)
     tower_paths = [p for p in factors if p.startswith(LINEAR_TOWER)]
     soil_paths = [p for p in factors if p.startswith(SOIL)]
-    if soil_paths and spec.tower.has_structure:  # not linear: every sample solved anew
-        tower_paths += soil_paths
-        out.update(_tower_samples_direct(spec, {p: factors[p] for p in tower_paths}))
-    elif tower_paths and spec.tower.has_structure:
+    sampled: list[str] = []  # the tower inputs its samples were solved with
+    if soil_paths and _sampled_tower(spec):  # not linear: every sample solved anew
+        sampled = tower_paths + soil_paths
+        out.update(_tower_samples_direct(spec, {p: factors[p] for p in sampled}))
+    elif tower_paths and _sampled_tower(spec):
         ritz = ritz if ritz is not None else tower_ritz(spec)
         assert ritz is not None and ritz.paths == tuple(tower_paths)
         out.update(ritz.frequencies(np.stack([factors[p] for p in ritz.paths], axis=1)))
+        sampled = tower_paths
     for p, f in factors.items():
         mode = _path_of_mode(p)
         if mode is not None and mode in nominal and mode not in out:
             out[mode] = nominal[mode] * f
-        elif mode is None and p not in tower_paths:
+        elif mode is None and p not in sampled:
             skipped.append(p)
     return Samples(out, tuple(skipped), truncated)
 
@@ -235,6 +237,13 @@ def _tower_samples_direct(spec: Spec, factors: dict[str, Array]) -> dict[str, Ar
             f = modal.frequencies_stacked(stiff[None], mass[None], 1, unstable_as_nan=True)
             out[name].append(float(f[0, 0]))
     return {k: np.asarray(v) for k, v in out.items()}
+
+
+def _sampled_tower(spec: Spec) -> bool:
+    """Whether the tower's fa1 and ss1 are sampled from its structure: a tower with
+    structure on a fixed base (on a floating platform the platform's modes come first, and
+    its inputs are left unpropagated, listed as such)."""
+    return spec.tower.has_structure and spec.tower.foundation.kind != "platform"
 
 
 def _scale(data: Any, path: str, factor: float) -> None:
@@ -290,7 +299,7 @@ def tower_ritz(spec: Spec) -> TowerRitz | None:
     inputs = sorted(uncertain(spec))
     paths = tuple(p for p in inputs if p.startswith(LINEAR_TOWER))
     soil = any(p.startswith(SOIL) for p in inputs)
-    if not paths or soil or not spec.tower.has_structure:
+    if not paths or soil or not _sampled_tower(spec):
         return None
 
     def systems(s: Spec) -> list[tuple[Array, Array]]:

@@ -161,8 +161,14 @@ def to_spec_data(
         )
     path = main.path
     below = platform(main, fst)
+    floater: tuple[dict[str, Any], list[str]] | None = None
     if below is not None and below[1] and not clamped_base:
-        raise refusal(below[0], str(path))
+        from .hydrodyn import platform as floating_platform
+
+        found = floating_platform(main, fst) if fst is not None else "no .fst names its modules"
+        if isinstance(found, str):
+            raise refusal(below[0], found, str(path))
+        floater = found
     tower = parse(_file(main, "TwrFile"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
@@ -195,6 +201,9 @@ def to_spec_data(
         )
         tower_height = heights[-1]
         support_notes, support_warnings = pile.notes, pile.warnings
+    if floater is not None:
+        tower_block = {"foundation": {"kind": "platform", "platform": floater[0]}}
+        support_notes = floater[1]
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
@@ -246,7 +255,9 @@ def to_spec_data(
         "tower": {
             "height_m": q(
                 tower_height,
-                "TowerHt − the SubDyn reaction joint's z" if tower_block else "TowerHt − TowerBsHt",
+                "TowerHt − the SubDyn reaction joint's z"
+                if tower_block and floater is None
+                else "TowerHt − TowerBsHt",
                 "derived",
             ),
             "damping_ratio": main_damping(tower, "TwrFADmp(1)"),
@@ -328,8 +339,10 @@ def to_spec_data(
             "Tower head assembled from its parts: " + breakdown + ".",
             "Precone and shaft tilt are neglected in the head inertia"
             + (
-                "; the tower stands on its SubDyn monopile (ElastoDyn's platform DOFs are the "
-                "transition piece's motion on it)."
+                "; the tower stands on its floating platform (ElastoDyn's platform DOFs)."
+                if floater is not None
+                else "; the tower stands on its SubDyn monopile (ElastoDyn's platform DOFs are "
+                "the transition piece's motion on it)."
                 if tower_block
                 else "; the tower is clamped at its base (ElastoDyn's platform and foundation "
                 "are not read)."

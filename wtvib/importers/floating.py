@@ -1,9 +1,11 @@
-"""The one refusal both importers give a floating turbine.
+"""The one refusal both importers give a floating turbine they cannot model.
 
-wtvib has no platform or mooring model, so a floating turbine's tower modes (and the
-platform's own rigid-body modes) cannot be computed. The windIO and ElastoDyn importers
-detect a floating system in their own way and refuse it with the same sentence, unless the
-user asks, with ``--clamped-base``, for the tower to be audited as if clamped at its base.
+wtvib models a floating platform from an OpenFAST deck set: ElastoDyn's platform mass,
+HydroDyn's WAMIT added mass and hydrostatics and MAP++ or MoorDyn moorings
+(:mod:`.hydrodyn`, :mod:`.mooring`). A floating turbine described otherwise — windIO's
+``floating_platform``, a deck set without HydroDyn's potential-flow files — is refused with
+the same sentence naming what is missing, unless the user asks, with ``--clamped-base``,
+for the tower to be audited as if clamped at its base.
 """
 
 from __future__ import annotations
@@ -11,12 +13,13 @@ from __future__ import annotations
 from ..errors import SpecError
 
 
-def refusal(what: str, source: str, path: str | None = None) -> SpecError:
-    """The error for a floating turbine: ``what`` names the parts that make it floating."""
+def refusal(what: str, why: str, source: str, path: str | None = None) -> SpecError:
+    """The error for a floating turbine: ``what`` names the parts that make it floating,
+    ``why`` what keeps wtvib from modelling its platform."""
     return SpecError(
-        f"a floating turbine ({what}): wtvib has no platform or mooring model, so its tower "
-        "modes cannot be computed; --clamped-base audits the tower as if clamped at its base "
-        "(not the floating system's modes)",
+        f"a floating turbine ({what}) whose platform wtvib cannot model: {why}; its tower "
+        "modes depend on it, so --clamped-base is needed to audit the tower as if clamped at "
+        "its base (not the floating system's modes)",
         path=path,
         source=source,
     )

@@ -79,7 +79,8 @@ def _to_spec_data(
     """wtvib spec data from a windIO turbine file.
 
     A floating turbine (``floating_platform``/``mooring`` components) is refused: its tower
-    modes are set by the platform and moorings, which wtvib does not model. With
+    modes are set by the platform and moorings, which wtvib reads from OpenFAST deck sets
+    only (windIO's floating_platform members and their coefficients are not read yet). With
     ``clamped_base`` the tower is audited as if clamped at its base, and the report says so
     in its headline.
     """
@@ -91,6 +92,8 @@ def _to_spec_data(
     if floating and not clamped_base:
         raise refusal(
             "components." + " and components.".join(floating),
+            "wtvib reads a floating platform from an OpenFAST deck set (ElastoDyn, HydroDyn's "
+            "WAMIT files, MAP++ or MoorDyn), not from windIO",
             str(path),
             path="components." + floating[0],
         )

@@ -1,6 +1,7 @@
 """The tower: given modes or its structure (tube sections or distributed properties),
 head and foundation."""
 
+import itertools
 from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
@@ -193,11 +194,91 @@ class SoilProfile(_Strict):
     bounds: SoilBounds | None = Field(None, description="Lower- and upper-bound soil.")
 
 
+Matrix6 = Annotated[
+    list[
+        Annotated[
+            list[Annotated[float, Field(ge=-1e16, le=1e16)]], Field(min_length=6, max_length=6)
+        ]
+    ],
+    Field(min_length=6, max_length=6),
+]
+
+
+class AddedMassPoint(_Strict):
+    """The platform's added mass at one frequency (a row set of a WAMIT .1 file)."""
+
+    frequency_hz: float = Field(
+        ge=0, le=1e3, description="Frequency (0: the zero-frequency limit). [Hz]"
+    )
+    matrix: Matrix6 = Field(
+        description="Added mass at the PRP at this frequency. [kg, kg·m, kg·m²]"
+    )
+
+
+class Platform(_Strict):
+    """A floating platform under the tower: a rigid body with six degrees of freedom (surge,
+    sway, heave, roll, pitch, yaw) about its reference point (PRP, on the still-water line
+    below the tower axis), its matrices in that order (OpenFAST's)."""
+
+    tower_base_m: Annotated[float, Field(ge=-200, le=500)] = Field(
+        description="Height of the tower base above the PRP. [m]"
+    )
+    mass_kg: Positive = Field(description="Platform mass (structure and ballast). [kg]")
+    cm_m: Annotated[float, Field(ge=-1000, le=500)] = Field(
+        description="Height of the platform's centre of mass above the PRP (negative: below). [m]"
+    )
+    inertia_roll_kgm2: float = Field(ge=0, le=1e15, description="About the CM. [kg·m²]")
+    inertia_pitch_kgm2: float = Field(ge=0, le=1e15, description="About the CM. [kg·m²]")
+    inertia_yaw_kgm2: float = Field(ge=0, le=1e15, description="About the CM. [kg·m²]")
+    added_mass: Matrix6 = Field(
+        description="Hydrodynamic added mass at the PRP (infinite-frequency A∞, or strip "
+        "theory). [kg, kg·m, kg·m²]"
+    )
+    added_mass_by_frequency: list[AddedMassPoint] = Field(
+        default_factory=list,
+        max_length=1000,
+        description="Added mass A(f) at rising frequencies: each mode takes it at its own "
+        "frequency, interpolated (beyond the table: its nearest end); empty: added_mass at "
+        "every frequency.",
+    )
+    stiffness: Matrix6 = Field(
+        description="Restoring stiffness at the PRP: hydrostatics and moorings (the "
+        "platform's own weight term is added by wtvib from its mass and CM). [N/m, N/rad, "
+        "N·m/rad]"
+    )
+    source: str | None = Field(None, max_length=2000, description="Where the matrices come from.")
+
+    @model_validator(mode="after")
+    def _symmetric(self) -> "Platform":
+        matrices = [("added_mass", self.added_mass), ("stiffness", self.stiffness)]
+        matrices += [
+            (f"added_mass_by_frequency[{n}].matrix", point.matrix)
+            for n, point in enumerate(self.added_mass_by_frequency)
+        ]
+        for name, m in matrices:
+            if any(m[i][i] < 0 for i in range(6)) and name != "stiffness":
+                raise ValueError(f"{name}: an added mass on the diagonal is negative")
+            for i in range(6):
+                for j in range(i):
+                    a, b = m[i][j], m[j][i]
+                    if abs(a - b) > 1e-6 * max(abs(a), abs(b), 1.0) + 1e-9:
+                        raise ValueError(
+                            f"{name} must be symmetric: [{i + 1}][{j + 1}] = {a:g} but "
+                            f"[{j + 1}][{i + 1}] = {b:g}"
+                        )
+        f = [point.frequency_hz for point in self.added_mass_by_frequency]
+        if any(b <= a for a, b in itertools.pairwise(f)):
+            raise ValueError("added_mass_by_frequency must be at rising frequencies")
+        return self
+
+
 class Foundation(_Strict):
     """How the tower base is held: clamped, on springs, or a monopile in soil (the tower's
     base is then the mudline)."""
 
-    kind: Literal["clamped", "springs", "soil"] = Field("clamped", description="Base condition.")
+    kind: Literal["clamped", "springs", "soil", "platform"] = Field(
+        "clamped", description="Base condition."
+    )
     lateral_n_m: Positive | None = Field(None, description="Lateral spring. [N/m]")
     rocking_nm_rad: Positive | None = Field(None, description="Rocking spring. [N·m/rad]")
     coupling_n: float | None = Field(
@@ -209,6 +290,7 @@ class Foundation(_Strict):
     )
     torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
     pile: Pile | None = Field(None, description="The embedded pile (kind soil).")
+    platform: Platform | None = Field(None, description="The floating platform (kind platform).")
     soil: list[SoilLayer] = Field(
         default_factory=list, max_length=50, description="Soil layers, top down (kind soil)."
     )
@@ -225,6 +307,8 @@ class Foundation(_Strict):
                     "coupling_n needs lateral_n_m and rocking_nm_rad with K_LR² < K_L·K_R "
                     "(a stable spring)"
                 )
+        if (self.kind == "platform") != (self.platform is not None):
+            raise ValueError("a 'platform' foundation needs platform, and only it has one")
         if self.kind == "soil":
             if self.pile is None or not self.soil:
                 raise ValueError("a 'soil' foundation needs pile and soil")

@@ -1,0 +1,233 @@
+"""A floating deck set's moorings: their stiffness at the platform's undisplaced position,
+from NREL's MoorPy (quasi-static catenary lines; Hall et al., MoorPy documentation).
+
+MAP++ (``CompMooring`` = 1) input: its LINE DICTIONARY (diameter, mass per length in air,
+EA), NODE PROPERTIES (``fix`` anchors, ``vessel`` fairleads, ``connect`` nodes; ``depth``
+for the seabed) and LINE PROPERTIES (type, unstretched length, anchor and fairlead node),
+and ``repeat`` angles in its SOLVER OPTIONS (the system copied about the vertical axis).
+MoorDyn (``CompMooring`` = 3) input: read by MoorPy itself, its ``vessel``/``coupled`` points
+attached to the platform. The water depth is the deck set's (SeaState, HydroDyn or the
+.fst: ``WtrDpth``). Lines are wet: their weight in water w = (m − ρ·πd²/4)·g.
+
+MoorPy is wtvib's one dependency for floating platforms (its catenary solver does the job
+better than a hand-written one: it is NREL's, and RAFT's). Jonkman 2010 (NREL/TP-500-47535)
+Table 5-1 gives the OC3-Hywind mooring stiffness this reproduces (K₁₁ 41,180 N/m,
+K₁₅ −2.821·10⁶ N, K₃₃ 11,940 N/m, K₄₄ 311.1·10⁶ N·m/rad, K₆₆ 11.56·10⁶ N·m/rad).
+"""
+
+import contextlib
+import io
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import SpecError
+from ..spec import read_text
+from .deck import Deck, _file, environment, parse
+
+#: At most this many mooring lines (a platform has a handful; the bound keeps a hostile
+#: file's repeat angles from building millions).
+MAX_LINES = 1000
+
+#: How MAP++ names its node types.
+ANCHOR, FAIRLEAD, CONNECT = "fix", "vessel", "connect"
+
+
+def stiffness(fst: Deck, rho: float, g: float) -> tuple[np.ndarray, str]:
+    """The moorings' 6×6 stiffness at the PRP, and what it came from."""
+    mode = fst.num("CompMooring", default=0)
+    if mode == 0:
+        return np.zeros((6, 6)), "no moorings (CompMooring = 0)"
+    if mode not in (1, 3) or "MooringFile" not in fst.values:
+        raise SpecError(
+            f"CompMooring = {mode:g}: wtvib reads MAP++ (1) and MoorDyn (3) moorings",
+            line=fst.values.get("CompMooring", ("", None))[1],
+            source=str(fst.path),
+        )
+    path = _file(fst, "MooringFile")
+    depth = _depth(fst)
+    try:
+        import moorpy  # noqa: F401
+    except ImportError:
+        raise SpecError(
+            "a floating platform's moorings need MoorPy: pip install moorpy", source=str(path)
+        ) from None
+    with contextlib.redirect_stdout(io.StringIO()):  # MoorPy prints its progress
+        system = _map_system(path, depth, rho, g) if mode == 1 else _moordyn_system(path, depth)
+        k = _body_stiffness(system, path)
+    kind = "MAP++" if mode == 1 else "MoorDyn"
+    return k, f"{kind} moorings {path.name} (MoorPy, depth {depth:g} m)"
+
+
+def _depth(fst: Deck) -> float:
+    """The water depth: SeaState's, HydroDyn's, else the .fst's WtrDpth."""
+    env = environment(fst)
+    for key in ("SeaStFile", "HydroFile"):
+        if key in fst.values and fst.text(key).lower() != "unused":
+            try:
+                deck = parse(_file(fst, key))
+            except SpecError:
+                continue
+            deck.inherited.update(env)
+            if "WtrDpth" in deck.values:
+                return deck.num("WtrDpth", default=env.get("WtrDpth", (0.0, ""))[0])
+    if "WtrDpth" in env:
+        return env["WtrDpth"][0]
+    raise SpecError("the deck set gives no water depth (WtrDpth)", source=str(fst.path))
+
+
+def _section(lines: list[str], title: str) -> tuple[list[str], list[tuple[list[str], int]]]:
+    """A MAP++ section's header and rows (after the units line, to the next rule)."""
+    start = next((i for i, line in enumerate(lines) if title in line.upper()), None)
+    if start is None:
+        return [], []
+    header = lines[start + 1].split() if start + 1 < len(lines) else []
+    rows = []
+    for n in range(start + 3, len(lines)):
+        if lines[n].lstrip().startswith("-"):
+            break
+        if lines[n].split():
+            rows.append((lines[n].split(), n + 1))
+    return header, rows
+
+
+def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
+    import moorpy as mp
+
+    lines = read_text(path).splitlines()
+
+    def number(text: str, line: int) -> float:
+        if text.lower() == "depth":
+            return -depth
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            raise SpecError(f"{text!r} is not a number", line=line, source=str(path))
+        return value
+
+    def row(cells: list[str], n: int, width: int, what: str) -> list[str]:
+        if len(cells) < width:
+            raise SpecError(
+                f"a {what} row needs {width} columns, this has {len(cells)}",
+                line=n,
+                source=str(path),
+            )
+        return cells
+
+    _, types = _section(lines, "LINE DICTIONARY")
+    _, nodes = _section(lines, "NODE PROPERTIES")
+    _, line_rows = _section(lines, "LINE PROPERTIES")
+    _, options = _section(lines, "SOLVER OPTIONS")
+    if not types or not nodes or not line_rows:
+        raise SpecError(
+            "a MAP++ file needs LINE DICTIONARY, NODE PROPERTIES and LINE PROPERTIES rows",
+            source=str(path),
+        )
+    kinds = {}
+    for cells, n in types:
+        d, m, ea = (number(c, n) for c in row(cells, n, 4, "LINE DICTIONARY")[1:4])
+        if not (d > 0 and m > 0 and ea > 0):
+            raise SpecError(
+                "a line type needs a positive Diam, MassDenInAir and EA", line=n, source=str(path)
+            )
+        weight = (m - rho * math.pi / 4 * d**2) * g  # per metre, submerged
+        kinds[cells[0]] = {
+            "name": cells[0],
+            "d_vol": d,
+            "m": m,
+            "EA": ea,
+            "w": weight,
+            "MBL": 0.0,
+            "cost": 0.0,
+            "input_d": d,
+            "material": cells[0],
+        }
+    angles = [0.0]
+    for cells, n in options:
+        if cells[0].lower() == "repeat":
+            angles += [number(c, n) for c in cells[1:]]
+    if len(angles) * len(line_rows) > MAX_LINES:
+        raise SpecError(
+            f"{len(angles) * len(line_rows)} mooring lines: wtvib reads at most {MAX_LINES}",
+            source=str(path),
+        )
+    system = mp.System(depth=depth)
+    system.lineTypes.update(kinds)
+    system.addBody(-1, np.zeros(6))
+    body = system.bodyList[0]
+    for angle in angles:
+        c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+        ids = {}
+        for cells, n in nodes:
+            kind = row(cells, n, 5, "NODE PROPERTIES")[1].lower()
+            x, y, z = (number(v, n) for v in cells[2:5])
+            r = [c * x - s * y, s * x + c * y, z]
+            if kind == FAIRLEAD:
+                system.addPoint(1, r)
+                body.attachPoint(len(system.pointList), r)
+            elif kind in (ANCHOR, CONNECT):
+                system.addPoint(1 if kind == ANCHOR else 0, r)
+            else:
+                raise SpecError(
+                    f"node type {cells[1]!r} is not fix, vessel or connect",
+                    line=n,
+                    source=str(path),
+                )
+            ids[cells[0]] = len(system.pointList)
+        for cells, n in line_rows:
+            row(cells, n, 5, "LINE PROPERTIES")
+            if cells[1] not in kinds or cells[3] not in ids or cells[4] not in ids:
+                raise SpecError(
+                    "a line names a type or node the file does not have", line=n, source=str(path)
+                )
+            length = number(cells[2], n)
+            if not length > 0:
+                raise SpecError("a line needs a positive length", line=n, source=str(path))
+            system.addLine(length, cells[1], pointA=ids[cells[3]], pointB=ids[cells[4]])
+    return system
+
+
+def _moordyn_system(path: Path, depth: float) -> Any:
+    import moorpy as mp
+
+    read_text(path)  # its size and encoding checked as every input's
+    try:
+        system = mp.System(file=str(path), depth=depth)
+    except Exception as exc:  # MoorPy's own reader: any failure is the file's
+        raise SpecError(
+            f"MoorPy cannot read this MoorDyn file ({type(exc).__name__}: {str(exc)[:200]})",
+            source=str(path),
+        ) from None
+    if len(system.lineList) > MAX_LINES:
+        raise SpecError(
+            f"{len(system.lineList)} mooring lines: wtvib reads at most {MAX_LINES}",
+            source=str(path),
+        )
+    if not system.bodyList:
+        system.addBody(-1, np.zeros(6))
+        body = system.bodyList[0]
+        for point in system.pointList:
+            if point.type == -1:
+                point.type = 1
+                body.attachPoint(point.number, point.r)
+    return system
+
+
+def _body_stiffness(system: Any, path: Path) -> np.ndarray:
+    try:
+        system.initialize()
+        system.solveEquilibrium()
+        k = np.asarray(system.bodyList[0].getStiffnessA(lines_only=True), dtype=float)
+    except Exception as exc:  # a line too short to reach, a solver that does not converge
+        raise SpecError(
+            f"the moorings have no equilibrium at the platform's undisplaced position "
+            f"({type(exc).__name__}: {str(exc)[:200]}): check line lengths and nodes",
+            source=str(path),
+        ) from None
+    if k.shape != (6, 6) or not np.all(np.isfinite(k)):
+        raise SpecError("the moorings' stiffness is not finite", source=str(path))
+    return 0.5 * (k + k.T)
