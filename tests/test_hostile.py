@@ -7,7 +7,8 @@ from typer.testing import CliRunner
 
 from wtvib.cli import app
 
-HOSTILE = Path(__file__).parent / "data" / "hostile"
+DATA = Path(__file__).parent / "data"
+HOSTILE = DATA / "hostile"
 
 
 def expectations() -> list[tuple[str, str]]:
@@ -44,8 +45,27 @@ def importer_cases() -> list[tuple[str, str, str, str, str]]:
     return rows
 
 
+_FLOATING: list[Path] = []
+
+
+def _floating() -> Path:
+    """r-test's floating deck sets (tests/data/openfast_decks/rtest_floating.tar.gz),
+    extracted once a session."""
+    if not _FLOATING:
+        import tarfile
+        import tempfile
+
+        root = Path(tempfile.mkdtemp(prefix="wtvib-floating-"))
+        with tarfile.open(DATA / "openfast_decks" / "rtest_floating.tar.gz") as tar:
+            tar.extractall(root, filter="data")
+        _FLOATING.append(root)
+    return _FLOATING[0]
+
+
 def _base(where: str) -> Path:
     kind, _, rest = where.partition(":")
+    if kind == "floating":
+        return _floating() / "glue-codes" / "openfast" / rest
     if kind == "windio":
         windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
         return Path(windio.__file__).parent / "examples" / "turbine" / rest
@@ -96,7 +116,10 @@ def test_hostile_importer_input_gives_one_line_and_exit_2(
     first, *options = checked.split()
     source = _base(first)
     folder = tmp_path / "deck"
-    if source.name.endswith(".fst"):
+    if first.startswith("floating:"):  # the deck sets name files in a sibling folder
+        shutil.copytree(source.parents[1], tmp_path / "decks")
+        folder = tmp_path / "decks" / source.parent.name
+    elif source.name.endswith(".fst"):
         shutil.copytree(source.parent, folder)
     else:
         folder.mkdir()

@@ -4,13 +4,17 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py deck      # NREL 5-MW OpenFAST deck set
     .venv/bin/python tests/campaigns/exhaustive.py windio    # IEA-15 windIO 2.x example
     .venv/bin/python tests/campaigns/exhaustive.py extremes  # catalogue specs' numbers
+    .venv/bin/python tests/campaigns/exhaustive.py floating  # r-test's OC4 semisubmersible
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
 blade, ROSCO, an aerofoil) deleted, cut in half, its first and last token replaced by
 abc, nan, -1, 0, 1e300, 1e-300, 2.7. windio: each key path (list items: the first two)
 deleted, emptied, made text, negated, true, null. extremes: each numeric leaf of every
-turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. The invariant, as the CLI's: a typed wtvib
+turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. floating: as deck, on the files of r-test's
+OC4 semisubmersible deck sets that make its platform (the .fst, ElastoDyn, HydroDyn,
+SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120 lines of its .1; the
+archive tests/data/openfast_decks/rtest_floating.tar.gz). The invariant, as the CLI's: a typed wtvib
 error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
 line per crash or slow case. tests/FUZZ.md records the campaigns run.
 """
@@ -61,26 +65,71 @@ Case = tuple[str, Callable[[], dict[str, Any]]]  # label, the spec data it impor
 
 def deck_cases(work: Path) -> Iterator[Case]:
     for name in DECK_FILES:
-        lines = (NREL / name).read_text(encoding="latin-1").splitlines(keepends=True)
-        for i, line in enumerate(lines):
-            edits = [("delete", [*lines[:i], *lines[i + 1 :]])]
-            edits.append(("cut", [*lines[:i], line[: len(line) // 2]]))
-            tokens = line.split()
-            for j in sorted({0, len(tokens) - 1}) if tokens else []:
-                for junk in TOKENS:
-                    changed = " ".join([*tokens[:j], junk, *tokens[j + 1 :]]) + "\n"
-                    edits.append((f"token{j}={junk}", [*lines[:i], changed, *lines[i + 1 :]]))
-            for label, text in edits:
-                yield f"{name}:{i + 1} {label}", _deck_import(work, name, "".join(text))
+        yield from _line_cases(NREL, work, "NREL-5MW.fst", name)
 
 
-def _deck_import(work: Path, name: str, text: str) -> Callable[[], dict[str, Any]]:
+#: The floating campaign's files, each with the deck set that reads it and how many of its
+#: lines are mutated (WAMIT's .1 has 6,000 rows of one form: its first 120).
+OC4 = "glue-codes/openfast/5MW_OC4Semi_Linear/"
+OC4_MD = "glue-codes/openfast/5MW_OC4Semi_MD_Linear/"
+HYDRO_DATA = "glue-codes/openfast/5MW_Baseline/HydroData/"
+FLOATING_FILES = (
+    (OC4 + "5MW_OC4Semi_Linear.fst", OC4 + "5MW_OC4Semi_Linear.fst", None),
+    (
+        OC4 + "5MW_OC4Semi_Linear.fst",
+        OC4 + "NRELOffshrBsline5MW_OC4DeepCwindSemi_ElastoDyn.dat",
+        None,
+    ),
+    (
+        OC4 + "5MW_OC4Semi_Linear.fst",
+        OC4 + "NRELOffshrBsline5MW_OC4DeepCwindSemi_HydroDyn.dat",
+        None,
+    ),
+    (OC4 + "5MW_OC4Semi_Linear.fst", OC4 + "SeaState.dat", None),
+    (OC4 + "5MW_OC4Semi_Linear.fst", OC4 + "NRELOffshrBsline5MW_OC4DeepCwindSemi_MAP.dat", None),
+    (OC4 + "5MW_OC4Semi_Linear.fst", HYDRO_DATA + "marin_semi.hst", None),
+    (OC4 + "5MW_OC4Semi_Linear.fst", HYDRO_DATA + "marin_semi.1", 120),
+    (
+        OC4_MD + "5MW_OC4Semi_MD_Linear.fst",
+        OC4_MD + "NRELOffshrBsline5MW_OC4DeepCwindSemi_MoorDyn.dat",
+        None,
+    ),
+)
+
+
+def floating_cases(source: Path, work: Path) -> Iterator[Case]:
+    for fst, name, first in FLOATING_FILES:
+        yield from _line_cases(source, work, fst, name, first)
+
+
+def _line_cases(
+    source: Path, work: Path, fst: str, name: str, first: int | None = None
+) -> Iterator[Case]:
+    """Each line of ``name`` (of the first ``first``) deleted, cut, its first and last token
+    replaced by each of TOKENS; the deck set ``fst`` imported with it."""
+    lines = (source / name).read_text(encoding="latin-1").splitlines(keepends=True)
+    for i, line in enumerate(lines[:first]):
+        edits = [("delete", [*lines[:i], *lines[i + 1 :]])]
+        edits.append(("cut", [*lines[:i], line[: len(line) // 2]]))
+        tokens = line.split()
+        for j in sorted({0, len(tokens) - 1}) if tokens else []:
+            for junk in TOKENS:
+                changed = " ".join([*tokens[:j], junk, *tokens[j + 1 :]]) + "\n"
+                edits.append((f"token{j}={junk}", [*lines[:i], changed, *lines[i + 1 :]]))
+        for label, text in edits:
+            run = _deck_import(source, work, fst, name, "".join(text))
+            yield f"{name}:{i + 1} {label}", run
+
+
+def _deck_import(
+    source: Path, work: Path, fst: str, name: str, text: str
+) -> Callable[[], dict[str, Any]]:
     def run() -> dict[str, Any]:
         try:
             (work / name).write_text(text, encoding="latin-1")
-            return importers.to_data(work / "NREL-5MW.fst")
+            return importers.to_data(work / fst)
         finally:
-            shutil.copyfile(NREL / name, work / name)
+            shutil.copyfile(source / name, work / name)
 
     return run
 
@@ -164,7 +213,7 @@ def _numbers(node: Any, path: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("campaign", choices=["deck", "windio", "extremes"])
+    ap.add_argument("campaign", choices=["deck", "windio", "extremes", "floating"])
     ap.add_argument("--part", type=int, default=0)
     ap.add_argument("--parts", type=int, default=1)
     args = ap.parse_args()
@@ -172,6 +221,14 @@ def main() -> None:
     if args.campaign == "deck":
         shutil.copytree(NREL, work)
         cases = deck_cases(work)
+    elif args.campaign == "floating":
+        import tarfile
+
+        source = work.parent / "source"
+        with tarfile.open(ROOT / "tests/data/openfast_decks/rtest_floating.tar.gz") as tar:
+            tar.extractall(source, filter="data")
+        shutil.copytree(source, work)
+        cases = floating_cases(source, work)
     elif args.campaign == "windio":
         work.mkdir(parents=True)
         cases = windio_cases(work)

@@ -398,7 +398,7 @@ def counted(deck: Deck, text: str, keys: tuple[str, ...], column: str) -> Table 
             count = float(_fortran(count_text))
         except ValueError:
             count = math.nan
-        if not (count == int(count) and 0 <= count <= MAX_TABLE_ROWS):
+        if not (math.isfinite(count) and count == int(count) and 0 <= count <= MAX_TABLE_ROWS):
             raise SpecError(
                 f"{tokens[1]} must be a whole number of rows from 0 to {MAX_TABLE_ROWS:,} "
                 f"(got {count_text!r})",

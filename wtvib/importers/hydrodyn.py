@@ -32,6 +32,10 @@ from .deck import Deck, _file, beside, environment, parse, present
 WATER_DENSITY, GRAVITY = 1025.0, 9.80665
 
 
+#: The largest WAMIT length scale ``WAMITULEN`` [m] taken (OpenFAST's platforms use 1 m).
+MAX_LENGTH_SCALE = 1000.0
+
+
 def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
     """The ``platform`` block of the deck set's floating platform and what the report
     says about it, or why it cannot be modelled (a sentence for the refusal)."""
@@ -48,6 +52,12 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
     rho = _setting(hd, fst, "WtrDens", WATER_DENSITY)
     g = env.get("Gravity", (GRAVITY, ""))[0]
     length = hd.num("WAMITULEN", default=1.0)
+    if not 0 < length <= MAX_LENGTH_SCALE:  # WAMIT's results scale with L⁵: bound it
+        raise SpecError(
+            f"WAMITULEN {length:g} m is not a body's length scale (0 to {MAX_LENGTH_SCALE:g} m)",
+            line=hd.values.get("WAMITULEN", ("", None))[1],
+            source=str(hd.path),
+        )
     root = hd.text("PotFile")
     added, by_frequency = _wamit_added_mass(beside(hd.path, root + ".1"), rho, length, hd)
     hydrostatic = _wamit_hydrostatic(beside(hd.path, root + ".hst"), rho, g, length, hd)
@@ -57,11 +67,11 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
     moorings, mooring_note = mooring_stiffness(fst, rho, g)
     refz = main.num("PtfmRefzt", default=0.0)
     body = _Body(
-        main.num("PtfmMass"),
+        _not_negative(main, "PtfmMass"),
         main.num("PtfmCMzt") - refz,
-        main.num("PtfmRIner"),
-        main.num("PtfmPIner"),
-        main.num("PtfmYIner"),
+        _not_negative(main, "PtfmRIner"),
+        _not_negative(main, "PtfmPIner"),
+        _not_negative(main, "PtfmYIner"),
     )
     members = _members(hd, rho, refz)
     ballast = members.fill
@@ -188,6 +198,18 @@ def _members(hd: Deck, rho: float, refz: float) -> _Members:
     cm = m6[0, 4] / mass
     fill = _Body(mass, cm, m6[3, 3] - mass * cm**2, m6[4, 4] - mass * cm**2, m6[5, 5])
     return _Members(fill, left)
+
+
+def _not_negative(deck: Deck, key: str) -> float:
+    """A mass or inertia of the deck, refused where negative."""
+    value = deck.num(key)
+    if value < 0:
+        raise SpecError(
+            f"{key} = {value:g}: a mass or inertia cannot be negative",
+            line=deck.values[key][1],
+            source=str(deck.path),
+        )
+    return value
 
 
 def _setting(hd: Deck, fst: Deck, key: str, default: float) -> float:
