@@ -47,8 +47,30 @@ def test_a_fifo_among_a_lin_sets_files_is_refused_not_waited_on(tmp_path):
 def test_a_sparse_giant_beside_the_file_is_refused_by_its_size(tmp_path):
     first = _lin(tmp_path)
     with (tmp_path / "t.2.lin").open("wb") as fh:
-        fh.truncate(6 * 1024**3)  # 6 GB of holes: read whole, it took 6 GB
-    _one_line_exit_2(["check", str(first), "--no-plots"], "over the")
+        fh.truncate(6 * 1024**3)  # 6 GB of holes: read whole, it took 6 GB; its head is read
+    _one_line_exit_2(["check", str(first), "--no-plots"], "binary file")
+
+
+def test_a_lin_file_is_read_to_the_end_of_a_only(tmp_path, monkeypatch):
+    """A full-system linearisation's B, C and D can be many times A's size: wtvib reads the
+    header and A's rows, not the rest — a file with 45 MB after A, far over the header
+    limit (set here just above its header), audits as the file without them; a file whose
+    header alone is over the limit is one line."""
+    from wtvib.importers import openfast_lin
+
+    plain = _lin(tmp_path / "plain")
+    grown = _lin(tmp_path / "grown")
+    text = grown.read_text()
+    with grown.open("a") as fh:
+        fh.write(("B: 1 x 1\n" + " 1.0E+000" * 1000 + "\n") * 5000)
+    monkeypatch.setattr(openfast_lin, "LIN_MAX_BYTES", len(text.split("A:")[0]) + 100)
+    a = runner.invoke(app, ["check", str(plain), "--no-plots", "-f", "json"])
+    b = runner.invoke(app, ["check", str(grown), "--no-plots", "-f", "json"])
+    assert a.exit_code == b.exit_code and a.exit_code in (0, 1), b.output
+    modes = [json.loads(r.stdout)["modes"] for r in (a, b)]
+    assert [m["frequency_hz"] for m in modes[0]] == [m["frequency_hz"] for m in modes[1]]
+    monkeypatch.setattr(openfast_lin, "LIN_MAX_BYTES", 2000)
+    _one_line_exit_2(["check", str(plain), "--no-plots"], "no state matrix 'A:' in the first")
 
 
 @pytest.mark.parametrize(

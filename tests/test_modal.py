@@ -134,3 +134,23 @@ def test_roots_beyond_double_precision_are_refused_not_returned():
     assert abs(lam[0]) == pytest.approx(1.0, rel=1e-6)
     with pytest.raises(modal.ModalError, match="orders of magnitude"):
         modal.oscillations(np.diag([1.0, 1e30]), m, d, floor=1e-3)
+
+
+def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> None:
+    """From LEFT_VECTORS_STATES states on, the left eigenvectors come from LAPACK with the
+    right ones: the roots and participation factors equal the small path's (Φ⁻¹) to
+    rounding, and a defective matrix (a Jordan block) is refused on both."""
+    rng = np.random.default_rng(3)
+    a = rng.normal(size=(60, 60))
+    small = modal.state_modes(a)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(modal, "LEFT_VECTORS_STATES", 1)
+        large = modal.state_modes(a)
+        with pytest.raises(modal.ModalError, match="defective"):
+            modal.state_modes(np.diag([1.0, 1.0], k=1))
+    i = np.lexsort((small.roots.imag, small.roots.real))
+    j = np.lexsort((large.roots.imag, large.roots.real))
+    np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
+    np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
+    with pytest.raises(modal.ModalError, match="defective"):
+        modal.state_modes(np.diag([1.0, 1.0], k=1))

@@ -13,7 +13,7 @@ from typing import Any
 
 from ..errors import SpecError
 from ..spec import Spec, from_data, load_document, read_text
-from ..spec.load import fingerprint
+from ..spec.load import file_fingerprint, fingerprint
 
 FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x), an "
 FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst), or Campbell results: OpenFAST "
@@ -113,7 +113,8 @@ def to_data(
     files, which hold no hub or nacelle masses).
     """
     p = Path(path)
-    text = "" if p.is_dir() else read_text(p)
+    results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
+    text = "" if results_files else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
     if soil is not None and kind != "windio":
@@ -162,7 +163,8 @@ def load(
     ``blades`` the number of blades of Campbell results that do not say, ``soil`` a soil
     profile (YAML: ``soil`` layers and optional ``bounds``) for a windIO monopile."""
     p = Path(path)
-    text = "" if p.is_dir() else read_text(p)
+    results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
+    text = "" if results_files else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, rpm, rated, head_mass)
     if kind == "wtvib" and rpm is None and rated is None and soil is None:
@@ -181,7 +183,11 @@ def load(
     spec = from_data(data, source=str(p))
     if p.is_dir():  # a folder of results: the hash of its files' hashes, in order
         files = spec.results.files if spec.results is not None else []
-        text = "\n".join(fingerprint(read_text(f)) for f in sorted(files))
+        return spec.fingerprinted(
+            fingerprint("\n".join(file_fingerprint(f) for f in sorted(files)))
+        )
+    if results_files:  # a linearisation: its bytes hashed a megabyte at a time
+        return spec.fingerprinted(file_fingerprint(p))
     return spec.fingerprinted(fingerprint(text))
 
 

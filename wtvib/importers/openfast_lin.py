@@ -56,11 +56,15 @@ Array = NDArray[np.float64]
 #: The largest azimuth a header may give [rad] (OpenFAST writes it within one turn).
 MAX_AZIMUTH = 1e6
 
-#: A linearisation's files are large (A alone is n² numbers): the size limit for them,
-#: unless WTVIB_MAX_BYTES sets one.
-LIN_MAX_BYTES = 64 * MAX_FILE_BYTES
-#: At most this many continuous states (the dense eigen-solution of A grows with n³).
-MAX_STATES = 10_000
+#: A linearisation's header — everything before A: the operating point, the state, input
+#: and output tables — is read up to this size, unless WTVIB_MAX_BYTES sets one; then A's
+#: n rows, each at most :data:`ROW_BYTES` a number; B, C, D and the rest are not read.
+LIN_MAX_BYTES = 4 * MAX_FILE_BYTES
+#: The most bytes a number of A may take in its row (OpenFAST writes 21: ' -1.234567890123E+000').
+ROW_BYTES = 40
+#: At most this many continuous states: the dense eigen-solution of A grows with n³ (5,000
+#: states: a minute and 2 GB on one core).
+MAX_STATES = 5_000
 #: A mode is structural where the structural states hold at least this share of it.
 STRUCTURAL_SHARE = 0.5
 #: A mode whose largest coordinate group holds less than this share is called mixed.
@@ -170,10 +174,22 @@ def read(path: Path) -> LinFile:
             f"one module's own linearisation, not the whole system's{root}: give {whole}",
             source=str(path),
         )
-    raw = read_bytes(path, max_bytes=lin_max_bytes())
+    raw = read_bytes(path, max_bytes=lin_max_bytes(), head=True)
     if b"\x00" in raw:
         raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
     marker = re.search(rb"^[ \t]*A:[ \t]*(\S+)[ \t]*x[ \t]*(\S+)", raw, re.MULTILINE)
+    if marker is not None and marker.group(1).isdigit() and marker.group(1) == marker.group(2):
+        n_a = min(int(marker.group(1)), MAX_STATES)  # A's rows: read them, not what follows
+        raw = read_bytes(path, max_bytes=marker.end() + n_a * (n_a * ROW_BYTES + 2), head=True)
+        if b"\x00" in raw:
+            raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
+    elif marker is None and len(raw) == lin_max_bytes():
+        raise SpecError(
+            f"no state matrix 'A:' in the first {len(raw):,} bytes: not an OpenFAST "
+            "linearisation, or its input and output tables are over that limit "
+            "(WTVIB_MAX_BYTES)",
+            source=str(path),
+        )
     head = raw[: marker.start() if marker else len(raw)].decode("utf-8", errors="replace")
     lines = head.splitlines()
 
@@ -301,14 +317,17 @@ def _matrix(raw: bytes, marker: "re.Match[bytes]", n: int, fail: Any) -> Array:
     body_start = raw.find(b"\n", marker.end())
     if body_start < 0:
         raise fail("A has no rows", line)
-    nxt = re.search(rb"^[ \t]*[A-Za-z]", raw[body_start + 1 :], re.MULTILINE)
-    body = raw[body_start + 1 : body_start + 1 + nxt.start() if nxt else len(raw)]
+    end = body_start + 1
+    for _ in range(n):  # A's n rows, a line each (OpenFAST's layout); B … follow
+        newline = raw.find(b"\n", end)
+        end = len(raw) if newline < 0 else newline + 1
+    body = raw[body_start + 1 : end]
     import warnings
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # numpy says where parsing stopped; we say which row
         try:
-            values = np.fromstring(body.decode("ascii", errors="replace"), sep=" ")
+            values = np.fromstring(body, sep=" ")  # type: ignore[call-overload]
         except ValueError:  # numpy ≥ 2.3 raises where older ones warned and stopped
             values = np.zeros(0)
     if values.size != n * n or not np.all(np.isfinite(values)):

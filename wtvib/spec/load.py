@@ -66,6 +66,25 @@ def fingerprint(text: str) -> str:
     return hashlib.sha256(text.encode("utf-8")).hexdigest()
 
 
+def file_fingerprint(path: str | FsPath) -> str:
+    """SHA-256 of a file's bytes — what ``sha256sum`` prints, and :func:`fingerprint` of
+    its text where that is UTF-8 without a byte-order mark — read a megabyte at a time: a
+    linearisation of hundreds of megabytes is hashed, never held whole."""
+    p = FsPath(path)
+    digest = hashlib.sha256()
+    try:
+        if not stat.S_ISREG(p.stat().st_mode):
+            raise SpecError("not a regular file; give a file", source=str(p))
+        with p.open("rb") as fh:
+            while chunk := fh.read(1 << 20):
+                digest.update(chunk)
+    except FileNotFoundError:
+        raise SpecError("no such file", source=str(p)) from None
+    except OSError as exc:
+        raise SpecError(f"cannot read: {exc.strerror or exc}", source=str(p)) from None
+    return digest.hexdigest()
+
+
 def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
     """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
     p = FsPath(path)
@@ -79,10 +98,12 @@ def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
         raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
 
 
-def read_bytes(path: str | FsPath, *, max_bytes: int | None = None) -> bytes:
+def read_bytes(path: str | FsPath, *, max_bytes: int | None = None, head: bool = False) -> bytes:
     """A file's bytes: only a regular file (not a device, pipe or socket), at most
     ``max_bytes`` (default: :func:`max_file_bytes`) — every file wtvib reads comes through
-    here, the files a deck or a folder names too."""
+    here, the files a deck or a folder names too. ``head``: the file's first ``max_bytes``
+    bytes, a longer file not refused (a reader that needs only the start of a large file:
+    an OpenFAST linearisation's A, before its B, C and D)."""
     p = FsPath(path)
     max_bytes = max_bytes if max_bytes is not None else max_file_bytes()
     try:
@@ -93,7 +114,7 @@ def read_bytes(path: str | FsPath, *, max_bytes: int | None = None) -> bytes:
             raise SpecError(
                 "not a regular file (a device, pipe or socket); give a file", source=str(p)
             )
-        if info.st_size > max_bytes:
+        if info.st_size > max_bytes and not head:
             raise SpecError(
                 f"file is {info.st_size:,} bytes, over the {max_bytes:,}-byte limit",
                 source=str(p),
@@ -101,10 +122,10 @@ def read_bytes(path: str | FsPath, *, max_bytes: int | None = None) -> bytes:
         with p.open("rb") as fh:
             # no more than the file holds (a read allocates what it is asked for) and one
             # byte over: a file that grows while read is caught, not cut short
-            raw = fh.read(min(max_bytes, info.st_size) + 1)
+            raw = fh.read(min(max_bytes, info.st_size) + (0 if head else 1))
         if len(raw) > max_bytes:
             raise SpecError(f"file is over the {max_bytes:,}-byte limit", source=str(p))
-        if len(raw) > info.st_size:
+        if len(raw) > info.st_size and not head:
             raise SpecError("the file grew while it was read; read it again", source=str(p))
     except IsADirectoryError:
         raise SpecError("is a folder, not a file", source=str(p)) from None
