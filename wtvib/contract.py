@@ -120,6 +120,11 @@ CHECK_NUMBERS: dict[str, str] = {
     "amplitude_deg": "The yaw amplitude judged [deg].",
     "frequency_with_play_hz": "Effective yaw frequency with the play at that amplitude [Hz].",
     "power_fraction": "Power fractions of the drive train's grid mode over the power range [-].",
+    "pairs": (
+        "Subsystems' modes the chapter names as coupled, at their closest: the two ids and "
+        "frequencies [Hz], the rotor speed [rpm], the separation |f₁ − f₂|/min [-] and the "
+        "coupled modes judged in their place (system.closeness)."
+    ),
 }
 
 _CHECK: dict[str, Any] = {

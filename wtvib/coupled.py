@@ -63,7 +63,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, blade, drivetrain, imported, modal, tower, yaw
+from . import beam, blade, closeness, drivetrain, imported, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
 from .kinematics import (
@@ -848,7 +848,8 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
 
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:
-    """``system.coupling`` (coupled vs isolated) and, for two blades, ``system.floquet``."""
+    """``system.coupling`` (coupled vs isolated), for two blades ``system.floquet``, and
+    ``system.closeness`` (subsystems' modes close to each other, :mod:`wtvib.closeness`)."""
     two_bladed = applies(spec) and spec.rotor.blades < 3
     periodic = (
         stability_check(spec, build(spec, spec.coupled.rotating_condition))  # type: ignore[union-attr]
@@ -857,7 +858,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     )
     if spec.results is not None:
         return imported.stability(spec, ctx)
-    found = (check(spec, list(ctx.modes)), periodic)
+    found = (check(spec, list(ctx.modes)), periodic, closeness.check(ctx.modes, ctx.op))
     aerodynamic = spec.aerodynamics is not None and spec.rotor.blades >= 3
     damping = (
         "the drive train's dampers and the aerodynamics at the operating points (each "
