@@ -5,6 +5,8 @@ import pytest
 
 from wtvib import beam
 
+from . import oracles
+
 
 @pytest.mark.parametrize("length", [0.5, 2.0, 7.3])
 def test_gauss_elements_equal_closed_forms_for_constant_properties(length):
@@ -12,12 +14,12 @@ def test_gauss_elements_equal_closed_forms_for_constant_properties(length):
     nodes = np.array([0.0, length])
     ones = np.ones((1, 4))
     k, geo, m = beam.bending_elements(nodes, 3.0 * ones, 2.0 * ones, 5.0 * ones)
-    assert k[0] == pytest.approx(beam.bending_stiffness(3.0, length))
-    assert m[0] == pytest.approx(beam.bending_mass(2.0, length))
-    assert geo[0] == pytest.approx(beam.geometric_stiffness(5.0, length))
+    assert k[0] == pytest.approx(oracles.bending_stiffness(3.0, length))
+    assert m[0] == pytest.approx(oracles.bending_mass(2.0, length))
+    assert geo[0] == pytest.approx(oracles.geometric_stiffness(5.0, length))
     kt, mt = beam.torsion_elements(nodes, 4.0 * ones, 1.5 * ones)
-    assert kt[0] == pytest.approx(beam.torsion_stiffness(4.0, length))
-    assert mt[0] == pytest.approx(beam.torsion_mass(1.5, length))
+    assert kt[0] == pytest.approx(oracles.torsion_stiffness(4.0, length))
+    assert mt[0] == pytest.approx(oracles.torsion_mass(1.5, length))
 
 
 def test_linear_taper_is_integrated_exactly():

@@ -65,3 +65,18 @@ def test_a_head_yaw_inertia_below_half_the_rotors_polar_is_refused():
     with pytest.raises(SpecError, match="must exceed half the rotor's polar inertia") as err:
         audit.run(s)
     assert err.value.path == "yaw.inertia_kgm2"
+
+
+def test_the_moment_budget_carries_the_gyroscopic_moment_of_the_yawing_rotor():
+    """Aeroman retrofit, two blades: J_p 2,456 kg·m² (its spec), 56 rpm, yawing at 3 °/s —
+    J_p·Ω·Ω_yaw = 2456 · (56·π/30) · (3·π/180) = 754.1 N·m, the tilt moment's mean over a
+    revolution and (sin 2ψ) the yaw moment's peak (Hau 6.8, 7.4.1)."""
+    import math
+
+    from tests.conftest import TURBINES
+
+    expected = 2456 * (56 * math.pi / 30) * math.radians(3)
+    report = audit.run(spec.load(TURBINES / "aeroman-retrofit.yaml"))
+    budget = next(c for c in report.checks if c.id == "yaw.moments")
+    assert budget.numbers["gyroscopic_nm"] == pytest.approx(expected, rel=1e-6)
+    assert f"up to {expected:,.0f} N·m about the yaw axis" in budget.message

@@ -104,11 +104,6 @@ def speed_of(q: float, rho: float) -> float:
     return math.sqrt(2 * q / rho) if math.isfinite(q) else math.inf
 
 
-def cantilever_divergence_closed_form(gj: float, arm_c_cla: float, length: float) -> float:
-    """Uniform cantilever under a uniform dynamic pressure: q_D = π²GJ/(4·e·c·C_Lα·l²)."""
-    return math.pi**2 * gj / (4 * arm_c_cla * length**2)
-
-
 def cantilever_divergence(
     stations: Array,
     gj: Array,

@@ -434,7 +434,7 @@ SLOW_TIP = 40.0
 
 
 def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
-    """Legal but suspicious inputs, each with the reason (issue 9: warn, do not refuse), and
+    """Legal but suspicious inputs, each with the reason (warn, do not refuse), and
     what an importer had to assume."""
     out = list(spec.warnings)
     speed = spec.rotor.speed

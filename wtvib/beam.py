@@ -19,58 +19,9 @@ from numpy.typing import NDArray
 Array = NDArray[np.float64]
 
 
-def bending_stiffness(ei: float, length: float) -> Array:
-    """Stiffness of a bending element, dofs (w₁, θ₁, w₂, θ₂). [N/m, N, N·m]"""
-    L = length
-    return (ei / L**3) * np.array(
-        [
-            [12, 6 * L, -12, 6 * L],
-            [6 * L, 4 * L**2, -6 * L, 2 * L**2],
-            [-12, -6 * L, 12, -6 * L],
-            [6 * L, 2 * L**2, -6 * L, 4 * L**2],
-        ]
-    )
-
-
-def bending_mass(m: float, length: float) -> Array:
-    """Consistent mass of a bending element with mass per length ``m`` [kg/m]."""
-    L = length
-    return (m * L / 420.0) * np.array(
-        [
-            [156, 22 * L, 54, -13 * L],
-            [22 * L, 4 * L**2, 13 * L, -3 * L**2],
-            [54, 13 * L, 156, -22 * L],
-            [-13 * L, -3 * L**2, -22 * L, 4 * L**2],
-        ]
-    )
-
-
-def geometric_stiffness(axial: float, length: float) -> Array:
-    """Geometric stiffness of a bending element under axial force ``axial`` [N], tension > 0."""
-    L = length
-    return (axial / (30.0 * L)) * np.array(
-        [
-            [36, 3 * L, -36, 3 * L],
-            [3 * L, 4 * L**2, -3 * L, -(L**2)],
-            [-36, -3 * L, 36, -3 * L],
-            [3 * L, -(L**2), -3 * L, 4 * L**2],
-        ]
-    )
-
-
-def torsion_stiffness(gj: float, length: float) -> Array:
-    """Stiffness of a torsion element, dofs (φ₁, φ₂). [N·m/rad]"""
-    return (gj / length) * np.array([[1.0, -1.0], [-1.0, 1.0]])
-
-
-def torsion_mass(inertia_per_length: float, length: float) -> Array:
-    """Consistent mass of a torsion element; polar mass inertia per length in [kg·m]."""
-    return (inertia_per_length * length / 6.0) * np.array([[2.0, 1.0], [1.0, 2.0]])
-
-
 #: Beyond this many input stations a member is not meshed at every station: a uniform mesh
 #: of this many elements samples the (linearly interpolated) table at its Gauss points. A
-#: 10,000-station tower took 300 s and 15 GB as 10,000 elements (issue 19).
+#: 10,000-station tower took 300 s and 15 GB as 10,000 elements.
 MAX_STATION_NODES = 200
 
 

@@ -64,14 +64,16 @@ def _given(spec: Spec) -> list[Mode]:
 DEFAULT_ELEMENTS = beam.BLADE_ELEMENTS
 #: Rotor speeds at which the rotating modes are computed, 0 … overspeed.
 SPEED_SAMPLES = 13
-#: Standstill modes spanning the basis of the rotating blade, per mode kept (issue 20: the
+#: Standstill modes spanning the basis of the rotating blade, per mode kept (the
 #: 13-speed sweep of the NREL 5-MW, IEA-15 and IEA-22 blades within 4e-8 of the full
 #: model's, 7-10 times faster; tests/validation/test_structure.py).
 RITZ_BLADE = 6
 
 
-def blade_matrices(s: BladeStructure, nodes: Array, omega: float) -> tuple[Array, Array]:
-    """K(Ω) and M of the blade, dofs per node (w, w', v, v'): w out of, v in the rotor plane.
+def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, Array]:
+    """K₀ (elastic), G (geometric stiffness of the centrifugal tension per Ω²), M_v (the
+    in-plane part of the mass) and M of the cantilevered blade: K(Ω) = K₀ + Ω²·(G − M_v),
+    dofs per node (w, w', v, v'), w out of and v in the rotor plane.
 
     Notes
     -----
@@ -79,21 +81,13 @@ def blade_matrices(s: BladeStructure, nodes: Array, omega: float) -> tuple[Array
     EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sinβ·cosβ. Rotation adds the
     geometric stiffness of the centrifugal tension N(r) = Ω²∫_r^R m(s)·(r_hub + s) ds to both
     planes and the in-plane softening −Ω²·M_v (the centrifugal force has a component along
-    an in-plane displacement): K(Ω) = K₀ + Ω²·(G − M_v) (see :func:`blade_parts`). The root
-    is clamped.
+    an in-plane displacement). The root is clamped.
 
     References
     ----------
     Hansen, *Aerodynamics of Wind Turbines*, 3rd ed., ch. 12; Wright et al., "Vibration
     modes of centrifugally stiffened beams", J. Appl. Mech. 49, 1982 (Southwell K ≈ 1.19).
     """
-    k0, geo, m_v, m = blade_parts(s, nodes)
-    return k0 + omega**2 * (geo - m_v), m
-
-
-def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, Array]:
-    """K₀ (elastic), G (geometric stiffness of the centrifugal tension per Ω²), M_v (the
-    in-plane part of the mass) and M of the cantilevered blade (:func:`blade_matrices`)."""
     span = np.asarray(s.span_m, dtype=float)
     b = beam.basis(nodes)
     m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
@@ -196,7 +190,7 @@ def rotating_modes(
     k0, geo, m_v, m = fe.k0, fe.geo, fe.m_v, fe.m
     # the rotating problems in the basis of the lowest standstill modes (Rayleigh–Ritz):
     # K(Ω) = K₀ + Ω²(G − M_v) is linear in Ω², so every speed is one small eigenproblem,
-    # all solved as one stack (issue 20)
+    # all solved as one stack
     basis = fe.standstill.shapes[:, :need]
     k_r, g_r, m_r = (basis.T @ a @ basis for a in (k0, geo - m_v, m))
     first = modal.solve(k_r, m_r, count)

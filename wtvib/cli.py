@@ -20,7 +20,7 @@ from typing import Annotated, Any, TypeVar
 import click
 import typer
 
-# One BLAS thread unless the user chose (issue 20): the models solve small dense problems,
+# One BLAS thread unless the user chose: the models solve small dense problems,
 # where OpenBLAS's busy-waiting threads only fight each other and a batch's workers (one
 # process per core). Set before numpy loads — nothing above imports it; bench/bench_threads.py
 # measures the two side by side.
@@ -825,7 +825,7 @@ def window(
         from .plots.campbell import windows_plot
 
         tower_w = next((w.allowed for w in found if w.subsystem == "tower"), ())
-        folder = out if out is not None else Path.cwd()  # never beside the input (issue 21)
+        folder = out if out is not None else Path.cwd()  # never beside the input
         path = write_atomic(
             folder / f"{spec_file.stem}.windows.png",
             png_bytes(windows_plot(report, tower_w)),

@@ -94,7 +94,7 @@ Index = NDArray[np.intp]
 _RIGID = 6
 
 #: Rotor speeds of the rotating sweep (0 … 1.1 × overspeed, the blade model's top speed too);
-#: 30 points is the Campbell sweep issue 11 sets the cost target for.
+#: 30 points is the Campbell sweep the cost target was set for.
 SPEED_SAMPLES = 30
 
 

@@ -76,7 +76,7 @@ def terminal(
 
 def wrote(console: Console, written: Sequence[Path]) -> None:
     """A line for each file written, the report's last lines; a path is never wrapped or
-    cut (issue 21)."""
+    cut."""
     for path in written:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 

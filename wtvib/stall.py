@@ -191,7 +191,7 @@ def by_part(
     in ``part`` there (``blade.flap1``: the coupled model's modes, whose parts are known
     point by point — a mode followed through a veering changes part, so a name alone does
     not say which modes are flapwise where): the points and the mode of each; None where no
-    mode has that part at any point — one truth per mode (issue 17)."""
+    mode has that part at any point — one truth per mode."""
     known = [m for m in modes if m.operating is not None and m.operating.part is not None]
     if not known:
         return None

@@ -447,7 +447,7 @@ def _keep(k: Array, m: Array, dofs: slice) -> tuple[Array, Array]:
 
 
 #: A computed tower mode below this [Hz] (a period over 15 minutes) is a mechanism, not a
-#: structure: a pile or spring that carries nothing (issue 19: a 1e-300 m pile wall gave
+#: structure: a pile or spring that carries nothing (a 1e-300 m pile wall gave
 #: 0 Hz and the 1P-4P checks "passed" it).
 NOT_HELD_HZ = 1e-3
 

@@ -386,13 +386,18 @@ def _moment_budget(spec: Spec) -> Check:
         )
     )
     if j_p and y.yaw_rate_deg_s:
-        gyro = j_p * omega * math.radians(y.yaw_rate_deg_s)
+        psi = np.linspace(0.0, 2 * math.pi, 72, endpoint=False)  # a revolution
+        about_tilt, about_yaw = gyroscopic_moments(
+            j_p, omega, math.radians(y.yaw_rate_deg_s), spec.rotor.blades, psi
+        )
+        gyro = float(about_tilt.mean())  # J_p·Ω·Ω_yaw: the tilt moment's mean over a revolution
         terms["gyroscopic_nm"] = gyro
         if spec.rotor.blades >= 3:
             notes.append(f"gyroscopic J_p·Ω·Ω_yaw = {gyro:,.0f} N·m, constant, about the tilt axis")
         else:
             notes.append(
-                f"gyroscopic J_p·Ω·Ω_yaw = {gyro:,.0f} N·m: tilt ×(1 + cos 2ψ), yaw ×sin 2ψ (at 2P)"
+                f"gyroscopic J_p·Ω·Ω_yaw = {gyro:,.0f} N·m: tilt ×(1 + cos 2ψ), yaw ×sin 2ψ (at "
+                f"2P; up to {float(np.abs(about_yaw).max()):,.0f} N·m about the yaw axis)"
             )
     if y.rated_torque_nm and y.shaft_tilt_deg:
         tilt = y.rated_torque_nm * math.sin(math.radians(abs(y.shaft_tilt_deg)))

@@ -1,5 +1,5 @@
 """Tabulated Campbell curves: a CSV of rotor speed against frequency (and damping) per mode —
-what a test campaign or any other tool produces (issue 22).
+what a test campaign or any other tool produces.
 
 One row per mode and operating point, with a header::
 

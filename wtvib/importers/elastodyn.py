@@ -417,7 +417,7 @@ def _tower_torsion(
     """The tower's torsional stiffness and polar inertia per length, and how they were found:
     FAST v7's TwGJStif (with TwFAIner + TwSSIner, else the thin tube's m·2EI/EA from
     TwEAStif); without them, and only where the deck set has no yaw spring either (the
-    nacelle would be held in yaw, stiffening the cyclic flap modes: issue 18), the steel
+    nacelle would be held in yaw, stiffening the cyclic flap modes), the steel
     tube's defaults. None: no torsion (ElastoDyn has none, a yaw spring carries yaw)."""
     gj = tower.optional_column("HtFract", "TwGJStif")
     if gj is not None and np.all(gj > 0):

@@ -100,7 +100,7 @@ def _to_spec_data(
     v2 = "outer_shape" in d["components"].get("tower", {})
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
     notes = [f"Imported from the {version} file {path.name}."]
-    if v2:  # the windIO schema first, then what wtvib needs (issue 19)
+    if v2:  # the windIO schema first, then what wtvib needs
         from . import windio_schema
 
         if windio_schema.available():
@@ -545,7 +545,7 @@ class _Reader:
 
     # -- tower head ---------------------------------------------------------------------
     def mass_warnings(self) -> list[str]:
-        """Masses the file gives twice and differently (issue 18: the IEA-22 2.1.1 example's
+        """Masses the file gives twice and differently (the IEA-22 2.1.1 example's
         generator is 508 t as ``mass`` and 1,269 t as ``elastic_properties.mass``, and its
         nacelle 1,565 t against 821 t in the turbine's OpenFAST deck)."""
         dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})

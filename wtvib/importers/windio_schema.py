@@ -1,4 +1,4 @@
-"""The windIO 2.x turbine schema, checked before a windIO file is imported (issue 19).
+"""The windIO 2.x turbine schema, checked before a windIO file is imported.
 
 The schema ships with the windio package (``wtvib[windio]``); it is read from the package's
 data without importing windIO itself (which loads xarray and netCDF4, a second), and checked

@@ -1,4 +1,4 @@
-"""Fixed figure layouts: margins in inches, set once (issue 20).
+"""Fixed figure layouts: margins in inches, set once.
 
 Constrained layout measured every text of a figure on every draw — a fifth of the drawing
 time — to find margins these figures know beforehand: their tick labels, axis labels, title

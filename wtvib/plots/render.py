@@ -1,4 +1,4 @@
-"""PNG bytes of a report's figures, drawn beside the audit (issue 20).
+"""PNG bytes of a report's figures, drawn beside the audit.
 
 A ``check`` spends about as long importing matplotlib (≈ 0.5 s) and drawing its figures
 (0.15–0.4 s each) as it spends auditing. Where there is more than one core and ``os.fork``

@@ -17,7 +17,7 @@ from .blade import MAX_WIND_M_S
 #: BEM solve grows with both).
 MAX_AIRFOILS, MAX_STATIONS, MAX_POLAR_POINTS = 250, 200, 400
 
-#: No aerofoil coefficient is larger (a flat plate's C_D peaks near 2; issue 19's magnitudes).
+#: No aerofoil coefficient is larger (a flat plate's C_D peaks near 2).
 MAX_COEFFICIENT = 10.0
 
 #: No rotor is larger: radius and chord [m] (the largest turbines reach ~150 m).

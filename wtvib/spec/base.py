@@ -10,7 +10,7 @@ from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag, model_val
 class _Strict(BaseModel):
     """Every spec model: unknown keys refused, immutable, finite, and strict in type — a
     number must be a number ("110000" is text, ``true`` is not one blade), a count a whole
-    number (issue 19: YAML 1.1 coerced both silently)."""
+    number (YAML 1.1 coerced both silently)."""
 
     model_config = ConfigDict(
         extra="forbid", frozen=True, allow_inf_nan=False, str_strip_whitespace=True, strict=True
@@ -19,7 +19,7 @@ class _Strict(BaseModel):
 
 Positive = Annotated[float, Field(gt=0)]
 
-# Physical ranges far beyond any wind turbine, short of what breaks a model (issue 19: a
+# Physical ranges far beyond any wind turbine, short of what breaks a model (a
 # 1e-300 rpm rotor asked the Floquet sweep for an integer too large for an array, a
 # 1e-300 m rotor divided the swept area by zero, a 1e300 m chord overflowed the blade).
 #: A rotor speed. [rpm]

@@ -16,7 +16,7 @@ from .base import (
 )
 
 #: No operating wind is faster (the work of the stall sweep grows with it: 1e9 m/s
-#: allocated 24 GB, issue 19). [m/s]
+#: allocated 24 GB). [m/s]
 MAX_WIND_M_S = 100.0
 
 

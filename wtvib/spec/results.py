@@ -1,5 +1,5 @@
 """Modes another tool computed: the Campbell results of OpenFAST linearisation, HAWCStab2 or a
-table, as the modes of a turbine to judge (issue 22)."""
+table, as the modes of a turbine to judge."""
 
 from typing import Annotated, Literal
 

@@ -145,7 +145,7 @@ class Spec(_Strict):
     )
 
     _source_file: str | None = PrivateAttr(None)
-    _source_sha256: str | None = PrivateAttr(None)  # of the input as read (issue 21)
+    _source_sha256: str | None = PrivateAttr(None)  # of the input as read
     _provenance: dict[str, Quantity] = PrivateAttr(default_factory=dict)
     # results derived from this spec that several analyses of one audit reuse (the coupled
     # model's blade modes): they live and die with the spec object, never across specs
