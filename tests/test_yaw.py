@@ -80,3 +80,25 @@ def test_the_moment_budget_carries_the_gyroscopic_moment_of_the_yawing_rotor():
     budget = next(c for c in report.checks if c.id == "yaw.moments")
     assert budget.numbers["gyroscopic_nm"] == pytest.approx(expected, rel=1e-6)
     assert f"up to {expected:,.0f} N·m about the yaw axis" in budget.message
+
+
+def test_a_two_bladed_rotors_yaw_inertia_swings_by_half_its_polar_inertia():
+    """Two blades, each J_p/2 about the shaft, at azimuth ψ and ψ + π: their inertia about
+    the vertical yaw axis is J_p·sin²ψ (written out here over a revolution), which swings
+    ±J_p/2 about its mean — the yaw model's variation (Aeroman retrofit: J_p 2,456 kg·m²),
+    and the yaw frequency's range follows from the mean ± that swing."""
+    import math
+
+    from tests.conftest import TURBINES
+
+    s = spec.load(TURBINES / "aeroman-retrofit.yaml")
+    j_p = yaw.rotor_polar_inertia(s)
+    psi = np.linspace(0, 2 * math.pi, 721)
+    about_yaw = sum(j_p / 2 * np.sin(psi + k * math.pi) ** 2 for k in range(2))
+    swing = (about_yaw.max() - about_yaw.min()) / 2
+    mdl = yaw.model(s)
+    assert j_p == pytest.approx(2456) and mdl.inertia_variation == pytest.approx(swing, rel=1e-6)
+    check = next(c for c in audit.run(s).checks if c.id == "yaw.inertia")
+    low, high = check.numbers["frequency_range_hz"]
+    assert high == pytest.approx(mdl.frequencies(inertia=mdl.inertia - swing)[0], rel=1e-5)
+    assert low == pytest.approx(mdl.frequencies(inertia=mdl.inertia + swing)[0], rel=1e-5)

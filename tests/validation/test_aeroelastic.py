@@ -181,3 +181,31 @@ def test_stability_chart_flutter_limit_is_where_the_section_flutters_at_that_spe
     assert chart.divergence_k_theta == pytest.approx(0.5 * 4.0 * 0.3 * 2 * 2 * math.pi)
     # centre of mass ahead of the elastic axis: no flutter limit
     assert np.isnan(chart.flutter_k_theta[0])
+
+
+@pytest.mark.parametrize("a", [-0.4, 0.0, 0.3])
+def test_still_air_leaves_the_flat_plates_added_mass(a: float) -> None:
+    """In still air (U → 0, k → ∞) Theodorsen's forces are the apparent mass alone: a flat
+    plate of chord 2b moves ρπb² of water-like fluid per metre in plunge and turns ρπb⁴·(1/8
+    + a²) about an axis a semichords aft of mid-chord (potential flow; Newman, *Marine
+    Hydrodynamics*, §4.13; H&P eq. 5.310 with U = 0), with the plunge–pitch coupling
+    −ρπb³·a."""
+    b, rho, w = 1.5, 1.225, 4.0
+    s = ae.Section(
+        semichord_m=b, a=a, x_theta=0.0, mass_kg_m=100.0, inertia_kgm=50.0,
+        omega_h=2.0, omega_theta=8.0, air_density=rho,
+    )  # fmt: skip
+    speed = 1e-7
+    matrix = ae.aero_matrix(s, w * b / speed, speed)
+    expected = (
+        rho * math.pi * b**2 * w**2 * np.array([[1.0, -b * a], [-b * a, b**2 * (1 / 8 + a**2)]])
+    )
+    np.testing.assert_allclose(matrix.real, expected, rtol=1e-5, atol=1e-9)
+
+
+def test_the_speed_margin_bands_warn_between_one_and_one_plus_margin() -> None:
+    """A divergence or flutter speed below the highest section speed fails, within the
+    margin above it warns, beyond it passes (the bands' edges included upwards)."""
+    assert [ae._status(r, 0.2) for r in (0.95, 1.0, 1.1, 1.2, 1.25)] == [
+        "fail", "warn", "warn", "pass", "pass",
+    ]  # fmt: skip

@@ -69,6 +69,9 @@ def test_rotating_uniform_blade_southwell_coefficient():
     k_edge = (f[1, 1] ** 2 - f[0, 1] ** 2) / rev**2
     assert k_flap == pytest.approx(1.193, abs=0.002)
     assert k_edge == pytest.approx(k_flap - 1.0, abs=0.002)  # in-plane: minus Ω² softening
+    # the coefficients a given mode takes when its spec has none are these, to 0.5 %
+    assert blade.DEFAULT_SOUTHWELL["flap"] == pytest.approx(k_flap, abs=0.005)
+    assert blade.DEFAULT_SOUTHWELL["edge"] == pytest.approx(k_edge, abs=0.005)
 
 
 def test_stiffer_tower_is_never_lower():
