@@ -9,7 +9,7 @@ RUNTIME := $(VENV)/.runtime-installed
 DEV     := $(VENV)/.dev-installed
 PIP_TOOLS := pip-tools==7.6.2
 
-.PHONY: demo test lint venv clean fuzz lock install-check docs-images
+.PHONY: demo test lint venv clean fuzz lock install-check docs-images mutate
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -77,6 +77,13 @@ lock:
 		--all-build-deps --no-emit-index-url --no-emit-find-links --extra dev \
 		pyproject.toml -o requirements/dev.txt
 	rm -rf build/lock-venv
+
+# A mutation campaign over the physics and verdict modules (tests/campaigns/mutate.py: one-
+# token bugs on each module's syntax tree, a seeded sample per module, each run against
+# that module's tests in a private copy of the tree); the score is recorded in
+# tests/MUTATION.md. About half an hour on two cores.
+mutate: $(DEV)
+	$(BIN)/python tests/campaigns/mutate.py --per-module 12 --workers 2 --seed 1
 
 # A long fuzzing campaign (>= 100,000 cases: 3 spec properties x 40,000 examples, 2
 # importer properties x 2,000, 5 reader properties x 25,000: .lin, HAWCStab2, Campbell

@@ -145,3 +145,12 @@ def test_whole_blade_divergence_lies_between_the_root_and_tip_pressure_bounds(
     assert closed / q_tip < factor  # type: ignore[operator]
     assert factor < 1.05 * closed / q_root  # type: ignore[operator]
     assert "whole blade" in str(c["message"])
+    # exactly: the torsion bar (validated against the closed form) under the pressure of each
+    # station's air speed and the propeller moment's stiffness Ω²·I_θ·cos 2β, written out
+    import numpy as np
+
+    x = np.array([0.0, length])
+    pressure = 0.5 * 1.225 * ((omega * (hub + x)) ** 2 + 25.0**2)
+    spring = omega**2 * np.array([25.0, 25.0]) * math.cos(0.0)
+    exact = ae.cantilever_divergence(x, np.full(2, gj), np.full(2, arm), pressure, spring)
+    assert factor == pytest.approx(exact, rel=1e-5)

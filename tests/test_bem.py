@@ -155,3 +155,18 @@ def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nr
     hub = factor(b * (radius - rot.hub_radius) / (rot.hub_radius * s))
     np.testing.assert_allclose(bem._losses(rot, phi), np.maximum(tip * hub, 1e-6), rtol=1e-14)
     assert np.all(bem._losses(rot, phi)[:, [0, -1]] == 1e-6)
+
+
+def test_momentum_theory_gives_the_induction_in_both_of_its_paths():
+    """Below k = 2/3 the axial induction is momentum theory's a = k/(1 + k) (Ning 2014,
+    eq. 14) — on the path taken when every station is lightly loaded and, station by station,
+    on the mixed path beside Buhl's heavily loaded ones; above, Buhl's curve, which meets it
+    at k = 2/3 (a = 0.4) continuously."""
+    light = np.array([0.05, 0.3, 0.6])
+    f = np.ones(3)
+    np.testing.assert_allclose(bem._momentum(light, f), light / (1 + light), rtol=1e-12)
+    mixed = np.array([0.05, 0.3, 0.6, 0.9, 1.5])
+    a = bem._momentum(mixed, np.ones(5))
+    np.testing.assert_allclose(a[:3], light / (1 + light), rtol=1e-12)
+    edge = bem._momentum(np.array([2 / 3 - 1e-9, 2 / 3 + 1e-9]), np.ones(2))
+    assert edge == pytest.approx([0.4, 0.4], abs=1e-6)

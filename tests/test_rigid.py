@@ -41,3 +41,40 @@ def test_rotor_points_weigh_a_uniform_blade_exactly():
     pts = rotor_points(2.0, np.array([0.0, 40.0]), np.array([100.0, 100.0]))
     assert pts.mass.sum() == pytest.approx(4000.0)
     assert pts.polar() == pytest.approx(100 * (42**3 - 2**3) / 3)
+
+
+def test_the_nacelle_left_when_a_rotor_of_point_masses_is_taken_out():
+    """A head built by hand: a nacelle (4,000 kg, CM 1.5 m downwind and 2 m up, inertias
+    3,000/5,000/4,000 kg·m² about its CM) and three 100 kg point blades 20 m from an apex 3 m
+    upwind and 2.5 m up, in the rotor plane (shaft along x). The head's mass, CM and
+    inertias about its CM are summed here by the parallel-axis theorem; taking the rotor
+    (mass, apex, J_p) out must give the nacelle back — which holds only if the rotor's own
+    inertia about a diameter is J_p/2 and the offsets are dz² (roll), dx² + dz² (pitch) and
+    dx² (yaw)."""
+    m_nac, c_nac, i_nac = 4000.0, np.array([1.5, 0.0, 2.0]), np.array([3000.0, 5000.0, 4000.0])
+    apex, m_blade, r = np.array([-3.0, 0.0, 2.5]), 100.0, 20.0
+    psi = np.radians([0.0, 120.0, 240.0]) + 0.3
+    blades = [apex + r * np.array([0.0, np.sin(p), np.cos(p)]) for p in psi]
+    masses = [m_nac] + [m_blade] * 3
+    m = sum(masses)
+    cm = (m_nac * c_nac + sum(m_blade * b for b in blades)) / m
+
+    def about_cm(point: np.ndarray, mass: float) -> np.ndarray:  # roll, pitch, yaw
+        d = point - cm
+        return mass * np.array(
+            [d[1] ** 2 + d[2] ** 2, d[0] ** 2 + d[2] ** 2, d[0] ** 2 + d[1] ** 2]
+        )
+
+    inertia = i_nac + about_cm(c_nac, m_nac) + sum(about_cm(b, m_blade) for b in blades)
+    head = TowerHead(
+        mass_kg=m,
+        cm_downwind_m=float(cm[0]),
+        cm_above_top_m=float(cm[2]),
+        inertia_roll_kgm2=float(inertia[0]),
+        inertia_pitch_kgm2=float(inertia[1]),
+        inertia_yaw_kgm2=float(inertia[2]),
+    )
+    part = nacelle(head, apex, m_rotor=3 * m_blade, j_polar=3 * m_blade * r**2)
+    assert part.mass == pytest.approx(m_nac)
+    assert part.c == pytest.approx(c_nac)
+    assert part.inertia == pytest.approx(i_nac, rel=1e-9)

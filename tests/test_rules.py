@@ -62,3 +62,19 @@ def test_worst_orders_statuses():
     assert worst(["pass", "info", "warn"]) == "warn"
     assert worst(["info", "fail", "pass"]) == "fail"
     assert worst([]) == "pass"
+
+
+@pytest.mark.parametrize("kind", ["band", "ratio"])
+def test_the_drawn_bands_end_where_the_judged_separation_meets_the_margin(kind):
+    """The Campbell figure's bands are the rule's judgement drawn: at each edge of the band
+    of excitations forbidden around a natural frequency (and of natural frequencies forbidden
+    around an excitation) the separation the rule judges equals its margin exactly."""
+    rule = MarginRule(kind, 0.1, "test")
+    low, high = rule.forbidden_band(2.0)
+    assert rule.separation(low, 2.0) == pytest.approx(0.1)
+    assert rule.separation(high, 2.0) == pytest.approx(0.1)
+    assert low < 2.0 < high
+    low, high = rule.natural_band(3.0)
+    assert rule.separation(3.0, low) == pytest.approx(0.1)
+    assert rule.separation(3.0, high) == pytest.approx(0.1)
+    assert low < 3.0 < high

@@ -25,3 +25,28 @@ def test_built_in_polar_is_thin_aerofoil_then_flat_plate():
     cl, cd = stall.builtin_polar(np.array([2.0, 90.0]))
     assert cl[0] == pytest.approx(2 * math.pi * math.radians(2.0), rel=1e-6)
     assert cl[1] == pytest.approx(0.0, abs=1e-9) and cd[1] == pytest.approx(2.0)  # flat plate
+
+
+def test_the_tip_sees_the_wind_slowed_by_the_induction():
+    """The stall rotor without its BEM block, with an axial induction of 1/3: at each point
+    the tip's angle of attack is the velocity triangle's, atan(V·(1 − a)/(Ω·R)) less the
+    tip's twist and pitch (Hau 7.2.3; Burton et al., Wind Energy Handbook, §3.5), written
+    out here."""
+    from tests.conftest import TURBINES
+    from wtvib import audit, spec
+    from wtvib.units import rpm_to_rad_s
+
+    s = spec.load(TURBINES / "stall-rotor-1mw.yaml")
+    ae = s.blade.aeroelastic.model_copy(update={"axial_induction": 1 / 3})
+    blade = s.blade.model_copy(update={"aeroelastic": ae})
+    s = s.model_copy(update={"blade": blade, "aerodynamics": None})  # the strip-theory path
+    modes = {m.id: m for m in audit.run(s).modes}
+    radius = s.turbine.rotor_diameter_m / 2
+    r_plan, _, twist = stall._planform(s, radius)
+    theta_tip = float(np.interp(radius, r_plan, twist)) + ae.pitch_deg
+    points = stall.damping_curve(s, modes["blade.edge1"], radius)
+    assert points
+    for p in points[:: max(1, len(points) // 5)]:
+        omega = float(rpm_to_rad_s(p.rpm))
+        expected = math.degrees(math.atan2(p.wind * (2 / 3), omega * radius)) - theta_tip
+        assert p.alpha_tip_deg == pytest.approx(expected, abs=1e-9)

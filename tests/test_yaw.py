@@ -102,3 +102,32 @@ def test_a_two_bladed_rotors_yaw_inertia_swings_by_half_its_polar_inertia():
     low, high = check.numbers["frequency_range_hz"]
     assert high == pytest.approx(mdl.frequencies(inertia=mdl.inertia - swing)[0], rel=1e-5)
     assert low == pytest.approx(mdl.frequencies(inertia=mdl.inertia + swing)[0], rel=1e-5)
+
+
+def test_coulomb_friction_damps_the_yaw_modes_by_equal_energy_per_cycle():
+    """Aeroman retrofit: the yaw modes' damping from the friction (and, parked, the brakes)
+    is Den Hartog's equivalent viscous ratio ζ = 2·M/(π·J·ω²·A) at the mode's own angular
+    frequency ω = 2π·f and the spec's amplitude A (Mechanical Vibrations §8.3), written out
+    here for every yaw mode it damps."""
+    import math
+
+    from tests.conftest import TURBINES
+
+    s = spec.load(TURBINES / "aeroman-retrofit.yaml")
+    mdl = yaw.model(s)
+    y = s.yaw
+    modes = {m.id: m for m in yaw.modes(s)}
+    moment = {"yaw.1": y.friction_moment_nm, "yaw.play.1": y.friction_moment_nm}
+    moment["yaw.parked.1"] = y.brake_moment_nm + y.friction_moment_nm
+    # the amplitude: the play's, else the cyclic yaw moment's static twist of the drives
+    amplitude = mdl.amplitude or y.yaw_moment_amplitude_nm / mdl.drive
+    judged = 0
+    for mode_id, m_f in moment.items():
+        if mode_id not in modes:
+            continue
+        m = modes[mode_id]
+        omega = 2 * math.pi * m.frequency_hz
+        expected = min(2 * m_f / (math.pi * mdl.inertia * omega**2 * amplitude), 0.99)
+        assert m.damping_ratio == pytest.approx(expected, rel=1e-9), mode_id
+        judged += 1
+    assert judged >= 1
