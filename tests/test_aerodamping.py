@@ -142,3 +142,24 @@ def test_a_structural_audit_says_which_aeroelastic_checks_it_made():
     assert "blade.flutter" in operation("euros-44m")
     assert "looked for" not in operation("euros-44m")
     assert "no aeroelastic instability looked for" in operation("mod-2")
+
+
+def test_the_operating_points_thrust_and_power_agree_with_their_coefficients():
+    """In aerodynamics.operation every point's thrust [kN] is C_t·½ρA·V² and its power [kW]
+    C_p·½ρA·V³ with one ½ρA for all of them (the definitions of the coefficients, Burton et
+    al. §3.2): thrust/(C_t·V²) and power/(C_p·V³) are the same constant at every point."""
+    import pytest
+
+    from tests.conftest import TURBINES
+
+    s = load(TURBINES / "stall-rotor-1mw.yaml")
+    report = audit.run(s)
+    c = next(c for c in report.checks if c.id == "aerodynamics.operation")
+    rows = [p for p in c.numbers["points"] if p["ct"] > 0.05 and p["cp"] > 0.05]
+    assert len(rows) >= 5
+    half_rho_area = [p["thrust_kn"] / (p["ct"] * p["wind_m_s"] ** 2) for p in rows]
+    half_rho_area += [p["power_kw"] / (p["cp"] * p["wind_m_s"] ** 3) for p in rows]
+    assert half_rho_area == pytest.approx([half_rho_area[0]] * len(half_rho_area), rel=2e-3)
+    assert s.aerodynamics is not None and s.turbine.rotor_diameter_m is not None
+    rho, radius = s.aerodynamics.air_density_kg_m3, s.turbine.rotor_diameter_m / 2
+    assert half_rho_area[0] * 1e3 == pytest.approx(0.5 * rho * np.pi * radius**2, rel=0.01)

@@ -75,3 +75,11 @@ def test_a_parked_mode_is_compared_at_standstill_only() -> None:
 
 def test_no_pair_no_check() -> None:
     assert closeness.check([_mode("tower.fa1", 0.3), _mode("yaw.1", 1.0)], OP) is None
+
+
+def test_the_closeness_limit_is_ten_percent() -> None:
+    """9.5 % apart is close, 10.5 % is not (Hau's 10 % margin, applied between modes)."""
+    for gap, status in ((0.095, "warn"), (0.105, "pass")):
+        modes = [_mode("blade.flap1", 1.0 + gap), _mode("tower.fa1", 1.0)]
+        c = closeness.check(modes, OP)
+        assert c is not None and c.status == status, gap

@@ -78,3 +78,17 @@ def test_the_drawn_bands_end_where_the_judged_separation_meets_the_margin(kind):
     assert rule.separation(3.0, low) == pytest.approx(0.1)
     assert rule.separation(3.0, high) == pytest.approx(0.1)
     assert low < 3.0 < high
+
+
+def test_the_deciding_check_is_the_most_severe_then_the_least_margin():
+    from wtvib.rules import worst_check
+
+    checks = [
+        {"id": "a", "status": "warn", "margin": 0.08},
+        {"id": "b", "status": "warn", "margin": 0.05},
+        {"id": "c", "status": "pass", "margin": 0.0},
+        {"id": "d", "status": "info", "margin": None},
+    ]
+    assert worst_check(checks)["id"] == "b"  # type: ignore[index]
+    assert worst_check([*checks, {"id": "e", "status": "fail", "margin": 0.09}])["id"] == "e"  # type: ignore[index]
+    assert worst_check(checks[2:]) is None

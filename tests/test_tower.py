@@ -168,3 +168,13 @@ def test_a_hingeless_two_bladed_rotor_needs_a_stiff_tower(tmp_path, turbine, hub
         assert checks["tower.concept"].status == status
     if status == "fail":
         assert report.verdict == "fail"
+
+
+def test_the_tower_frequency_is_placed_between_the_rotor_harmonics():
+    """f_t against 1P = 0.2 Hz: 0.45 Hz lies between 2P and 3P, 0.2 Hz exactly on 1P counts
+    as between 1P and 2P, 0.15 Hz below 1P."""
+    from wtvib.tower import _between
+
+    assert _between(0.45, 3, 0.2) == "between 2P and 3P"
+    assert _between(0.2, 3, 0.2) == "between 1P and 2P"
+    assert _between(0.15, 3, 0.2) == "below 1P"
