@@ -253,7 +253,7 @@ def test_map_moorings_are_symmetric_about_the_axis(tmp_path: Path) -> None:
     ("old", "new", "message", "line"),
     [
         ("902.2", "-5", "positive length", 13),
-        ("902.2", "nan", "not a number", 13),
+        ("902.2", "nan", "not a finite number", 13),
         ("Vessel", "Buoy", "not fix, vessel or connect", 9),
         ("main      0.09", "main      -0.09", "positive Diam", 4),
         ("1       main      902.2     1         2", "1  main  902.2  1", "5 columns", 13),

@@ -258,6 +258,17 @@ def beside(base: Path, name: str) -> Path:
         return path
 
 
+def finite(text: str, line: int, path: Path) -> float:
+    """A cell of a file as a finite number, or one line naming file, line and cell."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise SpecError(f"{text!r} is not a finite number", line=line, source=str(path))
+    return value
+
+
 def present(path: Path) -> bool:
     """Whether a named file is there (a name the file system cannot hold is not)."""
     try:

@@ -14,12 +14,12 @@ are not used (wtvib's tower bends on its foundation; torsion on the soil is held
 """
 
 import itertools
-import math
 from pathlib import Path
 from typing import Any
 
 from ..errors import SpecError
 from ..spec import read_text
+from .deck import finite
 
 #: HAWC2's soil files give forces in kN.
 KILO = 1e3
@@ -48,23 +48,13 @@ def profile(path: Path) -> dict[str, Any]:
     raise SpecError("a HAWC2 soil file without a 'lateral' set", source=str(path))
 
 
-def _number(path: Path, text: str, line: int) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        raise SpecError(f"{text!r} is not a finite number", line=line, source=str(path))
-    return value
-
-
 def _layers(path: Path, lines: list[str], at: int) -> list[dict[str, Any]]:
     if at + 1 >= len(lines):
         raise SpecError("the lateral set is cut short", line=at, source=str(path))
     counts = lines[at].split()
     if len(counts) < 2:
         raise SpecError("expected 'nrow ndefl'", line=at + 1, source=str(path))
-    rows, defl = (_number(path, c, at + 1) for c in counts[:2])
+    rows, defl = (finite(c, at + 1, path) for c in counts[:2])
     if not (rows == int(rows) and 2 <= rows <= 500 and defl == int(defl) and defl >= 2):
         raise SpecError(
             "nrow must be a whole number from 2 to 500 and ndefl at least 2",
@@ -72,7 +62,7 @@ def _layers(path: Path, lines: list[str], at: int) -> list[dict[str, Any]]:
             source=str(path),
         )
     cells = lines[at + 1].split()
-    x = [_number(path, c, at + 2) for c in cells[:2]]
+    x = [finite(c, at + 2, path) for c in cells[:2]]
     if len(x) < 2 or x[1] <= x[0]:
         raise SpecError("the deflections must increase", line=at + 2, source=str(path))
     z, e_py = [], []
@@ -84,8 +74,8 @@ def _layers(path: Path, lines: list[str], at: int) -> list[dict[str, Any]]:
                 f"nrow = {int(rows)}, but row {k + 1} is missing or short", line=n + 1,
                 source=str(path),
             )  # fmt: skip
-        z.append(_number(path, parts[0], n + 1))
-        f0, f1 = (_number(path, p, n + 1) for p in parts[1:3])
+        z.append(finite(parts[0], n + 1, path))
+        f0, f1 = (finite(p, n + 1, path) for p in parts[1:3])
         slope = (f1 - f0) / (x[1] - x[0]) * KILO
         if slope < 0:
             raise SpecError("a spring of negative stiffness", line=n + 1, source=str(path))

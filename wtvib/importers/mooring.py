@@ -25,7 +25,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import Deck, _file, environment, parse
+from .deck import Deck, _file, environment, finite, parse
 
 #: At most this many mooring lines (a platform has a handful; the bound keeps a hostile
 #: file's repeat angles from building millions).
@@ -99,15 +99,7 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
     lines = read_text(path).splitlines()
 
     def number(text: str, line: int) -> float:
-        if text.lower() == "depth":
-            return -depth
-        try:
-            value = float(text)
-        except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
-            raise SpecError(f"{text!r} is not a number", line=line, source=str(path))
-        return value
+        return -depth if text.lower() == "depth" else finite(text, line, path)
 
     def row(cells: list[str], n: int, width: int, what: str) -> list[str]:
         if len(cells) < width:
