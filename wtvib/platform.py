@@ -33,12 +33,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .modal import ModalError
+from .units import STANDARD_GRAVITY
 
 if TYPE_CHECKING:
     from .spec.tower import Platform
 
 Array = NDArray[np.float64]
-G = 9.80665
+G = STANDARD_GRAVITY
 
 #: The platform DOFs of each bending plane (translation, rotation) in the 6-DOF order.
 PLANE_DOFS: dict[str, tuple[int, int]] = {"fa": (0, 4), "ss": (1, 3)}

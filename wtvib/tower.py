@@ -23,7 +23,7 @@ from .resonance import Finding, assess
 from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule, Status
 from .spec import Spec
-from .units import rad_s_to_hz, rad_s_to_rpm
+from .units import STANDARD_GRAVITY, rad_s_to_hz, rad_s_to_rpm
 
 TowerClass = Literal["stiff", "soft", "soft-soft", "resonant"]
 Array = NDArray[np.float64]
@@ -191,7 +191,7 @@ def _between(f_t: float, blades: int, p1: float) -> str:
 #: (tests/validation/test_structure.py).
 DEFAULT_ELEMENTS = 10
 
-G = 9.80665  # standard gravity [m/s²]
+G = STANDARD_GRAVITY
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 TWO_PI = 2.0 * math.pi
+#: Standard gravity [m/s²] (ISO 80000-3; OpenFAST's default Gravity too).
+STANDARD_GRAVITY = 9.80665
 
 
 def rpm_to_rad_s(rpm: ArrayLike) -> NDArray[np.float64]:

@@ -324,6 +324,28 @@ def environment(fst: Deck | None) -> dict[str, tuple[float, str]]:
     }
 
 
+#: OpenFAST's default sea-water density (kg/m³), its "default" WtrDens.
+WATER_DENSITY = 1025.0
+
+
+def sea_state(fst: Deck) -> Deck | None:
+    """The deck set's SeaState file (OpenFAST ≥ 3.4), where it runs one."""
+    if fst.num("CompSeaSt", default=0) > 0 and "SeaStFile" in fst.values:
+        return parse(_file(fst, "SeaStFile"))
+    return None
+
+
+def sea_setting(hd: Deck, sea: Deck | None, key: str, default: float) -> float:
+    """An environmental input of the water (WtrDens, MSL2SWL …): HydroDyn's own, else
+    SeaState's, else the .fst's (through "default", :func:`environment` in ``hd.inherited``),
+    else OpenFAST's default."""
+    for deck in (hd, sea):
+        if deck is not None and key in deck.values:
+            return deck.num(key, default=default)
+    env = hd.inherited.get(key)
+    return env[0] if env is not None else default
+
+
 @dataclass(frozen=True)
 class Table:
     """A counted table of a SubDyn / HydroDyn file: its header's column names, its rows

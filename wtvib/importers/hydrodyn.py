@@ -26,11 +26,18 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import Deck, _file, beside, environment, parse, present
-
-#: OpenFAST's defaults where a deck says "default".
-WATER_DENSITY, GRAVITY = 1025.0, 9.80665
-
+from ..units import STANDARD_GRAVITY
+from .deck import (
+    WATER_DENSITY,
+    Deck,
+    _file,
+    beside,
+    environment,
+    parse,
+    present,
+    sea_setting,
+    sea_state,
+)
 
 #: The largest WAMIT length scale ``WAMITULEN`` [m] taken (OpenFAST's platforms use 1 m).
 MAX_LENGTH_SCALE = 1000.0
@@ -49,8 +56,8 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
             "its HydroDyn has no potential-flow model (PotMod ≠ 1): a platform of strip-theory "
             "members only is not modelled"
         )
-    rho = _setting(hd, fst, "WtrDens", WATER_DENSITY)
-    g = env.get("Gravity", (GRAVITY, ""))[0]
+    rho = sea_setting(hd, sea_state(fst), "WtrDens", WATER_DENSITY)
+    g = env.get("Gravity", (STANDARD_GRAVITY, ""))[0]
     length = hd.num("WAMITULEN", default=1.0)
     if not 0 < length <= MAX_LENGTH_SCALE:  # WAMIT's results scale with L⁵: bound it
         raise SpecError(
@@ -210,14 +217,6 @@ def _not_negative(deck: Deck, key: str) -> float:
             source=str(deck.path),
         )
     return value
-
-
-def _setting(hd: Deck, fst: Deck, key: str, default: float) -> float:
-    if key in hd.values:
-        return hd.num(key, default=default)
-    if key in fst.values and not fst.is_default(key):
-        return fst.num(key)
-    return default
 
 
 def _exponent(i: int, j: int, base: int) -> int:

@@ -34,14 +34,23 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import Deck, Table, _file, beside, counted, environment, parse
+from .deck import (
+    WATER_DENSITY,
+    Deck,
+    Table,
+    _file,
+    beside,
+    counted,
+    environment,
+    parse,
+    sea_setting,
+    sea_state,
+)
 
 #: Joints closer than this [m] (horizontally) lie on one vertical axis.
 AXIS_TOLERANCE_M = 0.01
 #: A property step between two members is tabulated this far [m] below their joint.
 STEP_M = 1e-3
-#: OpenFAST's default sea-water density (kg/m³), its "default" WtrDens.
-WATER_DENSITY = 1025.0
 
 
 @dataclass
@@ -351,12 +360,12 @@ def water(fst: Deck, pile: Monopile) -> Water | str:
     hd = parse(_file(fst, "HydroFile"))
     env = environment(fst)
     hd.inherited.update(env)
-    sea = _sea_state(fst)
+    sea = sea_state(fst)
     if sea is not None:
         sea.inherited.update(env)
     text = read_text(hd.path)
-    rho = _setting(hd, sea, "WtrDens", WATER_DENSITY)
-    swl = _setting(hd, sea, "MSL2SWL", 0.0)
+    rho = sea_setting(hd, sea, "WtrDens", WATER_DENSITY)
+    swl = sea_setting(hd, sea, "MSL2SWL", 0.0)
     joints = counted(hd, text, ("NJoints",), "Jointzi")
     members = counted(hd, text, ("NMembers",), "MJointID1")
     props = counted(hd, text, ("NPropSets", "NPropSetsCyl"), "PropD")
@@ -439,22 +448,6 @@ def water(fst: Deck, pile: Monopile) -> Water | str:
         + f" — {float(np.trapezoid(total, z_grid)) / 1e3:,.0f} t in all, in bending only."
     )
     return Water(z_grid, total, note)
-
-
-def _sea_state(fst: Deck) -> Deck | None:
-    if fst.num("CompSeaSt", default=0) > 0 and "SeaStFile" in fst.values:
-        return parse(_file(fst, "SeaStFile"))
-    return None
-
-
-def _setting(hd: Deck, sea: Deck | None, key: str, default: float) -> float:
-    """An environmental input: HydroDyn's own, else SeaState's, else the .fst's (through
-    "default"), else OpenFAST's default."""
-    for deck in (hd, sea):
-        if deck is not None and key in deck.values:
-            return deck.num(key, default=default)
-    env = hd.inherited.get(key)
-    return env[0] if env is not None else default
 
 
 @dataclass(frozen=True)
