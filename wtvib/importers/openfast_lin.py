@@ -180,9 +180,13 @@ def read(path: Path) -> LinFile:
     marker = re.search(rb"^[ \t]*A:[ \t]*(\S+)[ \t]*x[ \t]*(\S+)", raw, re.MULTILINE)
     if marker is not None and marker.group(1).isdigit() and marker.group(1) == marker.group(2):
         n_a = min(int(marker.group(1)), MAX_STATES)  # A's rows: read them, not what follows
-        raw = read_bytes(path, max_bytes=marker.end() + n_a * (n_a * ROW_BYTES + 2), head=True)
-        if b"\x00" in raw:
-            raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
+        need = marker.end() + n_a * (n_a * ROW_BYTES + 2)
+        if len(raw) < lin_max_bytes() or need <= len(raw):  # the head read holds A already
+            raw = raw[:need]
+        else:
+            raw = read_bytes(path, max_bytes=need, head=True)
+            if b"\x00" in raw:
+                raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
     elif marker is None and len(raw) == lin_max_bytes():
         raise SpecError(
             f"no state matrix 'A:' in the first {len(raw):,} bytes: not an OpenFAST "
