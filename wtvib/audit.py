@@ -30,7 +30,7 @@ from .resonance import marks as resonance_marks
 from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
-from .tower import PLATFORM_MODE
+from .tower import is_platform_mode
 
 REPORT_SCHEMA = "wtvib-report/1"
 
@@ -468,7 +468,7 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             "highest steady speed"
         )
     for m in modes:
-        slowest = SLOWEST_PLATFORM_HZ if m.id.startswith(PLATFORM_MODE) else SLOWEST_MODE_HZ
+        slowest = SLOWEST_PLATFORM_HZ if is_platform_mode(m.id) else SLOWEST_MODE_HZ
         if m.subsystem == "tower" and m.id.endswith(("fa1", "ss1")):
             if m.frequency_hz > 20:
                 out.append(

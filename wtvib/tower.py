@@ -486,6 +486,14 @@ Pair = tuple[modal.Modes, modal.Modes]
 
 #: The floating platform's rigid-body modes are named ``tower.platform.<motion>``.
 PLATFORM_MODE = "tower.platform."
+
+
+def is_platform_mode(mode_id: str) -> bool:
+    """A floating platform's rigid-body mode, computed (``tower.platform.surge``) or from a
+    whole-turbine model or linearisation (``system.platform.surge``)."""
+    return mode_id.split(".")[1:2] == ["platform"]
+
+
 #: A bending or torsion mode whose kinetic energy sits at least this much in the platform
 #: is a platform mode (surge, pitch …), the rest the tower's own.
 PLATFORM_SHARE = 0.5

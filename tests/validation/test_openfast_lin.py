@@ -173,3 +173,18 @@ def test_forward_whirl_is_the_one_at_f_plus_1p(tmp_path):
     assert modes["blade.flap1.forward"]["frequency_hz"][0] == pytest.approx(0.7 + one_p, rel=1e-3)
     assert modes["blade.flap1.backward"]["frequency_hz"][0] == pytest.approx(0.7 - one_p, rel=1e-3)
     assert modes["blade.flap1.forward"]["whirl"] == ["forward"]
+
+
+def test_a_floating_linearisations_platform_modes_are_not_called_implausible(tmp_path):
+    """OpenFAST's OC4 semisubmersible at 12 rpm: its surge and sway at 0.0089 Hz (a period
+    of 113 s on catenary moorings, reference.json) are platform modes, held to the
+    platform's slowest plausible frequency (0.002 Hz, audit.SLOWEST_PLATFORM_HZ) like the
+    ones wtvib computes — not to the 0.01 Hz of any other mode."""
+    from wtvib import audit, importers
+
+    _case("5MW_OC4Semi_Linear", tmp_path)
+    lin = tmp_path / "5MW_OC4Semi_Linear" / "5MW_OC4Semi_Linear.1.lin"
+    report = audit.run(importers.load(lin, rpm=(6.0, 12.1)))
+    surge = next(m for m in report.modes if m.id == "system.platform.surge")
+    assert surge.frequency_hz == pytest.approx(0.00887, rel=0.01)
+    assert not [w for w in report.warnings if "platform" in w and "implausible" in w]
