@@ -238,19 +238,22 @@ def test_head_mass_zero_gets_the_same_rule_as_any_other_bad_mass(shared):
         assert "--head-mass must be a mass above 0 kg" in result.stderr
 
 
-def test_a_floating_windio_turbine_is_refused_unless_clamped_base_is_asked_for():
+def test_a_floating_windio_turbine_stands_on_its_platform_or_clamped_on_request():
     windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
     from pathlib import Path
 
     floater = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-22-280-RWT_Floater.yaml"
-    refused = run("check", str(floater), "--no-plot")
-    assert refused.exit_code == 2
-    assert "components.floating_platform: a floating turbine" in refused.stderr
-    assert "--clamped-base" in refused.stderr and len(refused.stderr.strip().splitlines()) == 1
+    floating = run("check", str(floater), "--no-plot", "-f", "json")
+    assert floating.exit_code in (0, 1)
+    report = json.loads(floating.stdout)
+    ids = {m["id"] for m in report["modes"]}
+    assert {f"tower.platform.{d}" for d in ("surge", "heave", "pitch", "yaw")} <= ids
+    assert any("Floating platform from the windIO file" in a for a in report["assumptions"])
     clamped = run("check", str(floater), "--no-plot", "--clamped-base", "-f", "json")
     assert clamped.exit_code in (0, 1)
     report = json.loads(clamped.stdout)
     assert any("--clamped-base" in w for w in report["warnings"])
+    assert not any(m["id"].startswith("tower.platform") for m in report["modes"])
 
 
 def test_user_text_is_neither_markup_nor_terminal_control(write_spec):

@@ -24,12 +24,18 @@ def test_condensation_removes_the_offset_term_of_the_diagonal():
     assert k55[0] == pytest.approx(ei) and k66[0] == pytest.approx(1e8)
 
 
-def test_a_floating_turbine_is_refused_naming_the_component(tmp_path):
-    text = "components:\n  floating_platform: {}\n  tower: {}\nassembly: {number_of_blades: 3}\n"
-    with pytest.raises(SpecError) as err:
+def test_a_floating_platform_without_its_parts_is_one_line_naming_them(tmp_path):
+    """A floating_platform is read (wtvib.importers.windio_platform); one without joints is
+    one line naming the missing field, and moorings with no platform are refused."""
+    from wtvib.importers.windio_platform import platform
+
+    doc = windio._paths({"components": {"floating_platform": {}}}, (), "f.yaml")
+    with pytest.raises(SpecError, match="components.floating_platform.joints is missing"):
+        platform(doc, tmp_path / "f.yaml", 1e6, 15.0)
+    text = "components:\n  mooring: {}\n  tower: {}\nassembly: {number_of_blades: 3}\n"
+    with pytest.raises(SpecError, match="moorings but no components.floating_platform") as err:
         windio.to_spec_data(tmp_path / "f.yaml", text)
-    assert err.value.path == "components.floating_platform"
-    assert "--clamped-base" in str(err.value)
+    assert err.value.path == "components.mooring"
 
 
 def iea15() -> dict:  # type: ignore[type-arg]

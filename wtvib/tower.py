@@ -494,8 +494,9 @@ def is_platform_mode(mode_id: str) -> bool:
     return mode_id.split(".")[1:2] == ["platform"]
 
 
-#: A bending or torsion mode whose kinetic energy sits at least this much in the platform
-#: is a platform mode (surge, pitch …), the rest the tower's own.
+#: A bending mode whose kinetic energy sits at least this much in the whole turbine's rigid
+#: motion on the platform (translation and tilt about the PRP) is a platform mode (surge,
+#: pitch …), the rest the tower's own bending.
 PLATFORM_SHARE = 0.5
 _PLATFORM = {
     "surge": "platform surge",
@@ -510,7 +511,8 @@ _PLATFORM = {
 def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
     """The tower on its floating platform: in each bending plane the four lowest modes of
     the tower with its base free on the platform — the two whose kinetic energy sits mostly
-    in the platform named after its motion there (surge or pitch, sway or roll: the larger
+    in the whole turbine's rigid motion on the platform (:func:`_rigid_share`) named after
+    the platform's motion there (surge or pitch, sway or roll: the larger
     energy of translation or rotation at the PRP), the others the tower's bending (fa1,
     fa2 …, their base moving); torsion with the platform's yaw; heave with the whole
     turbine's mass (wtvib.platform). Each mode has the platform's added mass at its own
@@ -529,8 +531,7 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
         own = 0
         for f, x, m in _own_frequency(plane, 4):
-            m_p, _ = platform.plane(p, direction, f)
-            share = float(x[:2] @ m_p @ x[:2]) / float(x @ m @ x)
+            share = _rigid_share(x, m, b.nodes + p.tower_base_m)
             if share >= PLATFORM_SHARE:
                 name = _platform_motion(p, direction, x[:2], f)
                 out.append(_platform_mode(name, f, share))
@@ -557,6 +558,19 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
         out.append(_platform_mode("yaw", platform.at_own_frequency(rigid_yaw), 1.0))
     return sorted(out, key=lambda mode: mode.frequency_hz)
+
+
+def _rigid_share(x: Array, m: Array, heights: Array) -> float:
+    """The share of a bending mode's kinetic energy in the rigid motion of the whole turbine
+    on its platform: its mass-weighted projection on translation and tilt about the PRP
+    (``heights`` of the nodes above it). A platform's surge or pitch moves the tower nearly
+    whole (share near 1, however heavy the turbine above the platform); the tower's bending
+    does not."""
+    rigid = np.zeros((len(x), 2))
+    rigid[0::2, 0] = 1.0  # translation
+    rigid[0::2, 1], rigid[1::2, 1] = heights, 1.0  # tilt about the PRP
+    c = np.linalg.solve(rigid.T @ m @ rigid, rigid.T @ m @ x)
+    return float((rigid @ c) @ m @ (rigid @ c)) / float(x @ m @ x)
 
 
 def _check_restoring(spec: Spec, b: Beam) -> None:
@@ -636,7 +650,7 @@ def _platform_mode(name: str, f: float, share: float) -> Mode:
         id=PLATFORM_MODE + name,
         subsystem="tower",
         description=f"{_PLATFORM[name]} (rigid-body mode of the floating platform, "
-        f"{share:.0%} of its energy in the platform)",
+        f"{share:.0%} of its kinetic energy in the turbine's rigid motion on it)",
         frequency_hz=f,
         origin="computed",
         condition="floating",

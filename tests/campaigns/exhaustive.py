@@ -5,6 +5,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py windio    # IEA-15 windIO 2.x example
     .venv/bin/python tests/campaigns/exhaustive.py extremes  # catalogue specs' numbers
     .venv/bin/python tests/campaigns/exhaustive.py floating  # r-test's OC4 semisubmersible
+    .venv/bin/python tests/campaigns/exhaustive.py windio-floating  # windIO OC3/OC4 platforms
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
@@ -14,7 +15,10 @@ deleted, emptied, made text, negated, true, null. extremes: each numeric leaf of
 turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. floating: as deck, on the files of r-test's
 OC4 semisubmersible deck sets that make its platform (the .fst, ElastoDyn, HydroDyn,
 SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120 lines of its .1; the
-archive tests/data/openfast_decks/rtest_floating.tar.gz). The invariant, as the CLI's: a typed wtvib
+archive tests/data/openfast_decks/rtest_floating.tar.gz). windio-floating: as windio, on
+every key path of the windIO OC3 spar and OC4 semisubmersible (tests/data/windio_floating),
+plus each number at 0, 1e-300 and 1e300; the platform read under the NREL 5-MW catalogue
+turbine and its tower's modes computed. The invariant, as the CLI's: a typed wtvib
 error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
 line per crash or slow case. tests/FUZZ.md records the campaigns run.
 """
@@ -160,6 +164,52 @@ def windio_cases(work: Path) -> Iterator[Case]:
             yield label, _windio_import(work / "m.yaml", yaml.safe_dump(doc, sort_keys=False))
 
 
+def windio_floating_cases() -> Iterator[Case]:
+    from wtvib.importers import windio
+    from wtvib.importers.windio_platform import platform
+
+    turbine = parse_plain((ROOT / "turbines" / "nrel-5mw.yaml").read_text()).data
+    for name in ("oc3_spar.yaml", "oc4_semi.yaml"):
+        source = ROOT / "tests" / "data" / "windio_floating" / name
+        base = parse_plain(source.read_text()).data
+        for path in _paths(base):
+            kinds: list[Any] = ["delete", "empty", "text", "negate", "true", "null"]
+            for kind in [*kinds, 0.0, 1e-300, 1e300]:
+                doc = copy.deepcopy(base)
+                parent = doc
+                for key in path[:-1]:
+                    parent = parent[key]
+                value = parent[path[-1]]
+                numeric = isinstance(value, int | float) and not isinstance(value, bool)
+                if kind == "delete":
+                    if isinstance(parent, list):
+                        continue
+                    del parent[path[-1]]
+                elif kind == "negate" or not isinstance(kind, str):
+                    if not numeric:
+                        continue
+                    parent[path[-1]] = -abs(value) - 1 if kind == "negate" else kind
+                else:
+                    parent[path[-1]] = {"empty": [], "text": "abc", "true": True, "null": None}[
+                        kind
+                    ]
+                label = f"{name} {'.'.join(map(str, path))} {kind}"
+
+                def run(doc: Any = doc, source: Path = source) -> dict[str, Any]:
+                    data = copy.deepcopy(turbine)
+                    d = windio._paths(doc, (), str(source))
+                    try:  # the windIO reader's own net for a file of the wrong shape
+                        floater = platform(d, source, 7e5, 10.0)
+                    except (KeyError, TypeError, ValueError, IndexError, AttributeError) as exc:
+                        if isinstance(exc, WtvibError):
+                            raise
+                        raise spec.SpecError(f"{type(exc).__name__}: {exc}") from None
+                    data["tower"]["foundation"] = {"kind": "platform", "platform": floater.block}
+                    return data
+
+                yield label, run
+
+
 def _windio_import(target: Path, text: str) -> Callable[[], dict[str, Any]]:
     def run() -> dict[str, Any]:
         target.write_text(text)
@@ -213,7 +263,9 @@ def _numbers(node: Any, path: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("campaign", choices=["deck", "windio", "extremes", "floating"])
+    ap.add_argument(
+        "campaign", choices=["deck", "windio", "extremes", "floating", "windio-floating"]
+    )
     ap.add_argument("--part", type=int, default=0)
     ap.add_argument("--parts", type=int, default=1)
     args = ap.parse_args()
@@ -232,6 +284,8 @@ def main() -> None:
     elif args.campaign == "windio":
         work.mkdir(parents=True)
         cases = windio_cases(work)
+    elif args.campaign == "windio-floating":
+        cases = windio_floating_cases()
     else:
         cases = extreme_cases()
     signal.signal(signal.SIGALRM, _alarm)

@@ -1,11 +1,12 @@
 """The one refusal both importers give a floating turbine they cannot model.
 
-wtvib models a floating platform from an OpenFAST deck set: ElastoDyn's platform mass,
-HydroDyn's WAMIT added mass and hydrostatics and MAP++ or MoorDyn moorings
-(:mod:`.hydrodyn`, :mod:`.mooring`). A floating turbine described otherwise — windIO's
-``floating_platform``, a deck set without HydroDyn's potential-flow files — is refused with
-the same sentence naming what is missing, unless the user asks, with ``--clamped-base``,
-for the tower to be audited as if clamped at its base.
+wtvib models a floating platform from an OpenFAST deck set (ElastoDyn's platform mass,
+HydroDyn's WAMIT added mass and hydrostatics, MAP++ or MoorDyn moorings: :mod:`.hydrodyn`,
+:mod:`.mooring`) or from windIO's ``floating_platform`` (:mod:`.windio_platform`). A floating
+turbine described otherwise — a deck set without HydroDyn's potential-flow files, windIO
+moorings with no platform — is refused with the same sentence naming what is missing,
+unless the user asks, with ``--clamped-base``, for the tower to be audited as if clamped at
+its base.
 """
 
 from __future__ import annotations

@@ -223,3 +223,99 @@ def _body_stiffness(system: Any, path: Path) -> np.ndarray:
     if k.shape != (6, 6) or not np.all(np.isfinite(k)):
         raise SpecError("the moorings' stiffness is not finite", source=str(path))
     return 0.5 * (k + k.T)
+
+
+#: windIO line types → MoorPy's line property library (``getLineProps``).
+WINDIO_MATERIALS = {
+    "chain": "chain",
+    "chain_stud": "chain_studlink",
+    "wire": "wire",
+    "iwrc": "wire",
+    "wire_wire": "wire",
+    "polyester": "polyester",
+    "fiber": "polyester",
+    "nylon": "nylon",
+}
+
+
+def windio_system(
+    mooring: dict[str, Any],
+    joints: dict[str, np.ndarray],
+    depth: float,
+    rho: float,
+    g: float,
+    path: Path,
+) -> tuple[np.ndarray, float, int, list[str]]:
+    """A windIO ``mooring`` block's stiffness at the PRP, its vertical force on the
+    platform [N] (negative: down), its number of lines, and what was assumed. A line type
+    without its own ``mass_density`` and ``stiffness`` takes MoorPy's properties for its
+    material at the nominal size whose volume-equivalent diameter is windIO's ``diameter``
+    (the schema's definition; WISDEM reads it so: a chain's nominal size is d/1.8)."""
+    import moorpy as mp
+    import moorpy.helpers
+
+    notes: list[str] = []
+
+    def fail(message: str, where: str) -> SpecError:
+        return SpecError(message, path=f"components.mooring.{where}", source=str(path))
+
+    system = mp.System(depth=depth)
+    for i, t in enumerate(mooring["line_types"]):
+        d = t.get("diameter")
+        if isinstance(d, bool) or not isinstance(d, (int, float)) or not 0 < d < 10:
+            raise fail(f"a line's diameter must be 0 … 10 m (got {d!r})", f"line_types[{i}]")
+        mass, ea = t.get("mass_density"), t.get("stiffness")
+        if isinstance(mass, (int, float)) and isinstance(ea, (int, float)) and mass > 0 < ea:
+            system.setLineType(name=str(t["name"]), d_vol=float(d), mass=float(mass),
+                               EA=float(ea))  # fmt: skip
+            continue
+        material = WINDIO_MATERIALS.get(str(t.get("type", "")).lower())
+        if material is None:
+            raise fail(
+                f"line type {t.get('type')!r} has no mass_density and stiffness, and MoorPy's "
+                f"library has no such material ({', '.join(WINDIO_MATERIALS)})",
+                f"line_types[{i}]",
+            )
+        # windIO's diameter is the volume-equivalent one; MoorPy's library is by nominal size
+        probe = mp.helpers.getLineProps(100.0, material, source="default")
+        nominal = float(d) / (probe["d_vol"] / 0.1)
+        kind = system.setLineType(dnommm=nominal * 1000, material=material, name=str(t["name"]))
+        notes.append(
+            f"line type {t['name']}: {material} of volume-equivalent diameter {float(d):g} m "
+            f"(windIO's diameter), nominal {nominal * 1000:.0f} mm — MoorPy's library: "
+            f"{kind['m']:.0f} kg/m, EA {kind['EA']:.3g} N"
+        )
+    system.addBody(-1, np.zeros(6))
+    body = system.bodyList[0]
+    ids = {}
+    for i, n in enumerate(mooring["nodes"]):
+        kind = str(n.get("node_type", ""))
+        joint = n.get("joint")
+        if joint is not None and str(joint) in joints:
+            r = joints[str(joint)]
+        elif isinstance(n.get("location"), list) and len(n["location"]) == 3:
+            r = np.asarray(n["location"], float)
+        else:
+            raise fail("a node needs a joint of the platform or a location", f"nodes[{i}]")
+        if kind == "vessel":
+            system.addPoint(1, r)
+            body.attachPoint(len(system.pointList), r)
+        elif kind in ("fixed", "connection"):
+            system.addPoint(1 if kind == "fixed" else 0, r)
+        else:
+            raise fail(f"node_type {kind!r} is not fixed, vessel or connection", f"nodes[{i}]")
+        ids[str(n["name"])] = len(system.pointList)
+    lines = mooring["lines"]
+    if not lines or len(lines) > MAX_LINES:
+        raise fail(f"{len(lines)} mooring lines (1 … {MAX_LINES})", "lines")
+    for i, line in enumerate(lines):
+        a, b, kind = str(line["node1"]), str(line["node2"]), str(line["line_type"])
+        if a not in ids or b not in ids or kind not in system.lineTypes:
+            raise fail("a line names a node or line type the file does not have", f"lines[{i}]")
+        length = line["unstretched_length"]
+        if isinstance(length, bool) or not isinstance(length, (int, float)) or not length > 0:
+            raise fail("a line needs a positive unstretched_length", f"lines[{i}]")
+        system.addLine(float(length), kind, pointA=ids[a], pointB=ids[b])
+    k = _body_stiffness(system, path)
+    force = float(system.bodyList[0].getForces(lines_only=True)[2])
+    return k, force, len(lines), notes

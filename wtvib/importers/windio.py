@@ -35,7 +35,7 @@ from .floating import refusal
 _UT = {"mass": 0, "i_plr": 20}
 
 
-#: windIO components that make a turbine float: wtvib has no platform or mooring model.
+#: windIO components that make a turbine float (:mod:`.windio_platform` reads them).
 FLOATING = ("floating_platform", "mooring")
 
 
@@ -78,24 +78,21 @@ def _to_spec_data(
 ) -> dict[str, Any]:
     """wtvib spec data from a windIO turbine file.
 
-    A floating turbine (``floating_platform``/``mooring`` components) is refused: its tower
-    modes are set by the platform and moorings, which wtvib reads from OpenFAST deck sets
-    only (windIO's floating_platform members and their coefficients are not read yet). With
-    ``clamped_base`` the tower is audited as if clamped at its base, and the report says so
-    in its headline.
+    A floating turbine (``floating_platform``/``mooring`` components) stands on its platform
+    (:mod:`.windio_platform`); with ``clamped_base`` the tower is audited as if clamped at its
+    base instead, and the report says so in its headline.
     """
     doc = parse_plain(text, str(path))
     d = _paths(doc.data, (), str(path))
     if not isinstance(d, dict) or "components" not in d:
         raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
     floating = [c for c in FLOATING if c in d["components"]]
-    if floating and not clamped_base:
+    if floating == ["mooring"] and not clamped_base:
         raise refusal(
-            "components." + " and components.".join(floating),
-            "wtvib reads a floating platform from an OpenFAST deck set (ElastoDyn, HydroDyn's "
-            "WAMIT files, MAP++ or MoorDyn), not from windIO",
+            "components.mooring",
+            "the file has moorings but no components.floating_platform",
             str(path),
-            path="components." + floating[0],
+            path="components.mooring",
         )
     v2 = "outer_shape" in d["components"].get("tower", {})
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
@@ -179,9 +176,16 @@ def _to_spec_data(
             "(--clamped-base): the platform's and moorings' modes and their effect on the "
             "tower are not modelled"
         ]
-        if floating
+        if floating and clamped_base
         else []
     ) + mass_warnings
+    if floating and not clamped_base:
+        from .windio_platform import platform
+
+        floater = platform(d, path, _carried(tower, head), reader.tower_base)
+        tower["foundation"] = {"kind": "platform", "platform": floater.block}
+        notes += floater.notes
+        warnings += floater.warnings
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -279,6 +283,19 @@ def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return k44, k55, k66
 
 
+def _carried(tower: dict[str, Any], head: dict[str, Any]) -> float:
+    """The mass a platform carries: the tower (its sections, material and point masses)
+    and the head [kg]."""
+    sec, mat = tower["sections"], tower["material"]
+    z = np.asarray(sec["height_m"])
+    d = np.asarray(sec["outer_diameter_m"])
+    t = np.asarray(sec["wall_thickness_m"])
+    area = np.pi / 4 * (d**2 - (d - 2 * t) ** 2)
+    steel = float(np.trapezoid(area, z)) * mat["density_kg_m3"] * mat.get("mass_factor", 1.0)
+    points = sum(p["mass_kg"] for p in tower.get("point_masses", []))
+    return steel + points + float(head["mass_kg"])
+
+
 def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
     return {} if value is None else {key: float(value) * scale}
 
@@ -302,6 +319,7 @@ class _Reader:
         self.apex: dict[str, float] = {}
         self.hub: dict[str, float] = {}
         self.embedded: dict[str, float] | None = None  # the monopile below the mudline
+        self.tower_base = 0.0  # the tower's lowest station, z [m]
 
     def fail(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path))
@@ -409,6 +427,7 @@ class _Reader:
             f"kg/m³), outfitting factor {factor:g}."
         ]
         base = z[0]
+        self.tower_base = float(z[0])
         masses = []
         if "monopile" in self.c:
             mz, mdia, mt, mmat, mfactor = self.member("monopile")
