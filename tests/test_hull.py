@@ -37,17 +37,20 @@ def test_a_vertical_cylinder_floats_by_the_book():
 
 
 def test_an_off_axis_column_adds_its_waterplane_by_parallel_axes():
-    """A column at (x, 0): C₃₅ = −ρgA·x, C₅₅ gains ρgA·x², C₄₄ does not."""
-    x = 30.0
+    """A column at (x, y): C₃₅ = −ρgA·x, C₃₄ = ρgA·y, C₅₅ gains ρgA·x², C₄₄ ρgA·y²,
+    C₄₅ = −ρgA·xy (Faltinsen 1990, §2.3)."""
+    x, y = 30.0, -12.0
     m = cylinder()
-    shift = np.array([x, 0.0, 0.0])
+    shift = np.array([x, y, 0.0])
     moved = hull.Member(**{**m.__dict__, "a": m.a + shift, "b": m.b + shift})
     c0 = hull.hydrostatic(hull.buoyancy([m]), RHO, G)
     c = hull.hydrostatic(hull.buoyancy([moved]), RHO, G)
     area = np.pi * 100 / 4
     assert c[2, 4] == pytest.approx(-RHO * G * area * x, rel=1e-9)
+    assert c[2, 3] == pytest.approx(RHO * G * area * y, rel=1e-9)
     assert c[4, 4] - c0[4, 4] == pytest.approx(RHO * G * area * x**2, rel=1e-9)
-    assert c[3, 3] == pytest.approx(c0[3, 3], rel=1e-9)
+    assert c[3, 3] - c0[3, 3] == pytest.approx(RHO * G * area * y**2, rel=1e-9)
+    assert c[3, 4] == pytest.approx(-RHO * G * area * x * y, rel=1e-9)
 
 
 def test_strip_theory_added_mass_of_a_column():
@@ -116,6 +119,7 @@ def test_ballast_fills_a_column_from_the_bottom_and_a_pontoon_by_its_segment():
     water = hull.ballast(pipe, pipe.fills[0], -10.0)
     # a half-full pipe's water: its centroid 4r/3π below the axis (a semicircle's)
     assert water[0, 4] / water[0, 0] == pytest.approx(-10.0 - 4 * 2.0 / (3 * np.pi), rel=1e-3)
+    assert water[1, 5] / water[0, 0] == pytest.approx(20.0, rel=1e-9)  # along it: its middle
 
 
 def test_trim_balances_buoyancy_and_weight_and_says_what_is_missing():

@@ -81,6 +81,12 @@ def test_the_tower_base_moves_with_the_platform(direction: str, dofs: tuple[int,
 
 
 def _tower_on(p: Platform, youngs_pa: float = 2.1e12) -> dict[str, float]:
+    return {
+        m.id: m.frequency_hz for m in tower.structural_modes(from_data(_tower_data(p, youngs_pa)))
+    }
+
+
+def _tower_data(p: Platform, youngs_pa: float = 2.1e12) -> dict[str, object]:
     data = {
         "wtvib": 1,
         "turbine": {"name": "rigid tower on a platform"},
@@ -97,7 +103,7 @@ def _tower_on(p: Platform, youngs_pa: float = 2.1e12) -> dict[str, float]:
         },
         "tower_head": {"mass_kg": 1e5, "cm_above_top_m": 0.0},
     }
-    return {m.id: m.frequency_hz for m in tower.structural_modes(from_data(data))}
+    return data
 
 
 def test_a_rigid_tower_on_a_platform_is_a_two_dof_rigid_body() -> None:
@@ -285,3 +291,25 @@ def test_a_platform_that_capsizes_or_sinks_is_refused() -> None:
     stiffness[4, 4] = 2.2e9
     with pytest.raises(ModalError, match="sinks"):
         _tower_on(_platform(stiffness=stiffness.tolist()))
+
+
+def test_platform_modes_are_compared_with_the_wave_band_as_information() -> None:
+    """``tower.platform.waves``: none without a band; the modes inside a band named (their
+    periods from the modes themselves), all outside said so; information either way."""
+    p = _platform()
+    spec = from_data(_tower_data(p))
+    modes = tower.structural_modes(spec)
+    assert tower.wave_check(spec, modes) is None
+    periods = sorted(1 / m.frequency_hz for m in modes if tower.is_platform_mode(m.id))
+    lo, hi = periods[0], periods[-1]
+    clear = tower.wave_check(from_data(_tower_data(_platform(wave_periods_s=(1.0, lo * 0.9)))),
+                             modes)  # fmt: skip
+    assert clear is not None and clear.status == "info" and clear.numbers["inside"] == []
+    assert f"all {len(periods)} platform modes outside" in clear.message
+    around = (periods[1] * 0.99, periods[1] * 1.01)
+    hit = tower.wave_check(from_data(_tower_data(_platform(wave_periods_s=around))), modes)
+    assert hit is not None and hit.status == "info" and len(hit.numbers["inside"]) >= 1
+    assert "inside the wave band" in hit.message
+    assert hi > lo
+    with pytest.raises(ValueError, match="shortest first"):
+        _platform(wave_periods_s=(20.0, 5.0))

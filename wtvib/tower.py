@@ -726,7 +726,60 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     check = class_check(c, spec.rotor.blades, ctx.op, ctx.rule)
     concept = concept_check(c, spec)
     lead = (check,) if concept is None else (check, concept)
-    return Analysis(lead=lead, results={"class": c}, assumptions=statements)
+    waves = wave_check(spec, ctx.own(NAME))
+    return Analysis(
+        lead=lead, checks=() if waves is None else (waves,), results={"class": c},
+        assumptions=statements,
+    )  # fmt: skip
+
+
+def wave_check(spec: Spec, tower_modes: Sequence[Mode]) -> Check | None:
+    """``tower.platform.waves`` (information): the platform's rigid-body modes against the
+    site's wave energy band where the spec gives one (``wave_periods_s``). A floating
+    platform is designed with its natural periods outside the band — surge, sway and yaw
+    above it, heave, roll and pitch above it or, rarely, below — so that first-order wave
+    loads do not excite them directly (Jonkman 2010, NREL/TP-500-47535, §7: the OC3-Hywind's
+    periods all above 25 s; DNV-ST-0119, Floating wind turbine structures, 2021). Whether a
+    mode inside the band responds too much needs its damping (radiation, viscous), which
+    wtvib does not model: information, not a verdict."""
+    p = spec.tower.foundation.platform
+    if p is None or p.wave_periods_s is None:
+        return None
+    short, long = p.wave_periods_s
+    platform_modes = [m for m in tower_modes if is_platform_mode(m.id)]
+    inside = [m for m in platform_modes if 1 / long <= m.frequency_hz <= 1 / short]
+    band = f"the wave band {short:g}–{long:g} s ({1 / long:.3g}–{1 / short:.3g} Hz)"
+    if inside:
+        named = ", ".join(f"{m.id} {m.frequency_hz:.3g} Hz ({1 / m.frequency_hz:.3g} s)"
+                          for m in inside)  # fmt: skip
+        text = (
+            f"{named} inside {band}: first-order wave loads excite "
+            f"{'it' if len(inside) == 1 else 'them'} directly — its response depends on the "
+            "platform's radiation and viscous damping, which wtvib does not model"
+        )
+    else:
+        periods = sorted(1 / m.frequency_hz for m in platform_modes)
+        text = (
+            f"all {len(platform_modes)} platform modes outside {band} (their periods "
+            f"{periods[0]:.3g}–{periods[-1]:.3g} s): first-order wave loads do not excite "
+            "them directly"
+        )
+    return Check(
+        id="tower.platform.waves",
+        subsystem="tower",
+        status="info",
+        message=text,
+        rule=Rule(
+            "a floating platform's rigid-body periods lie outside the site's wave energy "
+            "band (information: the response inside it needs hydrodynamic damping)",
+            "Jonkman 2010 (NREL/TP-500-47535) §7; DNV-ST-0119 (2021), floating wind turbine "
+            "structures",
+        ),
+        numbers={
+            "wave_periods_s": [short, long],
+            "inside": [m.id for m in inside],
+        },
+    )
 
 
 def concept_check(c: Classification, spec: Spec) -> Check | None:

@@ -49,6 +49,7 @@ TESTS: dict[str, tuple[str, ...]] = {
     "excitation": ("tests/test_resonance.py",),
     "soil": ("tests/validation/test_soil_pybmodes.py", "tests/validation/test_soil_hawc2.py"),
     "platform": ("tests/validation/test_floating.py",),
+    "hull": ("tests/validation/test_windio_floating.py", "tests/test_windio_platform.py"),
     "closeness": (),
     "rigid": ("tests/test_coupled.py",),
     "bem": ("tests/validation/test_aerodynamics.py",),

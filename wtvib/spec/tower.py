@@ -215,6 +215,10 @@ class AddedMassPoint(_Strict):
     )
 
 
+#: A wave period [s]: swell and wind sea lie between 1 and 100 s.
+WavePeriod = Annotated[float, Field(ge=0.5, le=100)]
+
+
 class Platform(_Strict):
     """A floating platform under the tower: a rigid body with six degrees of freedom (surge,
     sway, heave, roll, pitch, yaw) about its reference point (PRP, on the still-water line
@@ -247,9 +251,18 @@ class Platform(_Strict):
         "N·m/rad]"
     )
     source: str | None = Field(None, max_length=2000, description="Where the matrices come from.")
+    wave_periods_s: tuple[WavePeriod, WavePeriod] | None = Field(
+        None,
+        description="The site's wave energy band as periods (shortest, longest) [s]: the "
+        "platform's modes are compared with it, as information.",
+    )
 
     @model_validator(mode="after")
     def _symmetric(self) -> "Platform":
+        if self.wave_periods_s is not None and not (
+            self.wave_periods_s[0] < self.wave_periods_s[1]
+        ):
+            raise ValueError("wave_periods_s must be (shortest, longest), shortest first")
         matrices = [("added_mass", self.added_mass), ("stiffness", self.stiffness)]
         matrices += [
             (f"added_mass_by_frequency[{n}].matrix", point.matrix)
