@@ -342,61 +342,10 @@ class _Platform:
                 f"{where}.spacing = {value:g}{more}: read as radians ({math.degrees(value):.4g}°), "
                 "as windIO's own 1.x → 2.x converter does; windIO 2.x gives it in degrees"
             )
-        transition = [str(j["name"]) for j in self.fp["joints"] if j.get("transition", False)]
-        if len(transition) != 1:
-            raise self.fail(
-                "components.floating_platform.joints: exactly one joint must be the "
-                f"transition (transition: true) where the tower stands; {len(transition)} are"
-            )
-        top = joints[transition[0]]
-        if math.hypot(top[0], top[1]) > AXIS_TOLERANCE:
-            raise self.fail(
-                f"the transition joint {transition[0]!r} is at x = {top[0]:g}, y = {top[1]:g} "
-                "m: wtvib's platform has the tower on its vertical axis through the origin"
-            )
-        if abs(top[2] - tower_base_z) > AXIS_TOLERANCE:
-            raise self.fail(
-                f"the tower starts at z = {tower_base_z:g} m but the platform's transition "
-                f"joint {transition[0]!r} is at z = {top[2]:g} m: they must meet"
-            )
+        top = self.tower_joint(joints, tower_base_z)
         steel = sum((hull.structure(m) for m in members), np.zeros((6, 6)))
-        points = np.zeros((6, 6))
-        tp = float(self.fp.get("transition_piece_mass", 0.0) or 0.0)
-        if tp:
-            points += hull.at_point(
-                self.number(tp, "transition_piece_mass", 0, 1e9) * np.eye(3), top
-            )
-        for k, body in enumerate(self.fp.get("rigid_bodies", []) or []):
-            bw = f"components.floating_platform.rigid_bodies[{k}]"
-            if str(body["joint1"]) not in joints:
-                raise self.fail(f"{bw}.joint1: joint {body['joint1']!r} is not defined", bw)
-            r = joints[str(body["joint1"])] + np.asarray(body.get("cm_offset", [0, 0, 0]), float)
-            mass = self.number(body["mass"], f"{bw}.mass", 0.0, 1e10)
-            inertia = np.diag(
-                [
-                    self.number(v, f"{bw}.moments_of_inertia", 0, 1e15)
-                    for v in body["moments_of_inertia"]
-                ]
-            )
-            points += hull.at_point(mass * np.eye(3), r, inertia)
-        fixed = np.zeros((6, 6))
-        variable: list[tuple[hull.Member, hull.Fill]] = []
-        for m in members:
-            for f in m.fills:
-                if f.volume is None:
-                    variable.append((m, f))
-                    continue
-                if f.volume == FLOODED:
-                    fixed += hull.ballast(m, f, 0.0)
-                    continue
-                room = hull.capacity(m, f)
-                if f.volume > room * 1.01:
-                    self.warnings.append(
-                        f"tower.foundation: member {m.name}'s ballast of {f.volume:g} m³ "
-                        f"overfills its compartment ({room:.4g} m³); the compartment is taken "
-                        "full"
-                    )
-                fixed += hull.ballast(m, f, hull.level([(m, f)], f.volume))
+        points = self.point_masses(joints, top)
+        fixed, variable = self.fixed_ballast(members)
         float_ = hull.buoyancy(members)
         if float_.volume <= 0:
             raise self.fail("the platform's members displace no water (none below z = 0)")
@@ -416,6 +365,13 @@ class _Platform:
                 "axis; wtvib's platform model takes it on the axis"
             )
         inertia = body[3:, 3:] + mass * hull.skew(cm) @ hull.skew(cm)
+        products = max(abs(inertia[0, 1]), abs(inertia[0, 2]), abs(inertia[1, 2]))
+        if products > 0.01 * min(inertia[0, 0], inertia[1, 1]):
+            self.warnings.append(
+                f"tower.foundation: the platform's products of inertia reach {products:.3g} "
+                "kg·m² (over 1 % of its roll and pitch inertias); wtvib's platform model keeps "
+                "its principal axes along x, y, z"
+            )
         added = hull.added_mass(members, self.rho)
         restoring = hull.hydrostatic(float_, self.rho, self.g) + k_moor
         block = {
@@ -449,6 +405,75 @@ class _Platform:
             "added mass's change with frequency are left out."
         )
         return Floater(block, self.notes, self.warnings)
+
+    def tower_joint(self, joints: dict[str, np.ndarray], tower_base_z: float) -> np.ndarray:
+        """The transition joint, where the tower stands: one, on the axis, at its base."""
+        transition = [str(j["name"]) for j in self.fp["joints"] if j.get("transition", False)]
+        if len(transition) != 1:
+            raise self.fail(
+                "components.floating_platform.joints: exactly one joint must be the "
+                f"transition (transition: true) where the tower stands; {len(transition)} are"
+            )
+        top = joints[transition[0]]
+        if math.hypot(top[0], top[1]) > AXIS_TOLERANCE:
+            raise self.fail(
+                f"the transition joint {transition[0]!r} is at x = {top[0]:g}, y = {top[1]:g} "
+                "m: wtvib's platform has the tower on its vertical axis through the origin"
+            )
+        if abs(top[2] - tower_base_z) > AXIS_TOLERANCE:
+            raise self.fail(
+                f"the tower starts at z = {tower_base_z:g} m but the platform's transition "
+                f"joint {transition[0]!r} is at z = {top[2]:g} m: they must meet"
+            )
+        return top
+
+    def point_masses(self, joints: dict[str, np.ndarray], top: np.ndarray) -> np.ndarray:
+        """The transition piece at the tower's joint and the ``rigid_bodies`` (6 × 6)."""
+        points = np.zeros((6, 6))
+        tp = float(self.fp.get("transition_piece_mass", 0.0) or 0.0)
+        if tp:
+            points += hull.at_point(
+                self.number(tp, "transition_piece_mass", 0, 1e9) * np.eye(3), top
+            )
+        for k, body in enumerate(self.fp.get("rigid_bodies", []) or []):
+            bw = f"components.floating_platform.rigid_bodies[{k}]"
+            if str(body["joint1"]) not in joints:
+                raise self.fail(f"{bw}.joint1: joint {body['joint1']!r} is not defined", bw)
+            r = joints[str(body["joint1"])] + np.asarray(body.get("cm_offset", [0, 0, 0]), float)
+            mass = self.number(body["mass"], f"{bw}.mass", 0.0, 1e10)
+            inertia = np.diag(
+                [
+                    self.number(v, f"{bw}.moments_of_inertia", 0, 1e15)
+                    for v in body["moments_of_inertia"]
+                ]
+            )
+            points += hull.at_point(mass * np.eye(3), r, inertia)
+        return points
+
+    def fixed_ballast(
+        self, members: list[hull.Member]
+    ) -> tuple[np.ndarray, list[tuple[hull.Member, hull.Fill]]]:
+        """The fixed ballast and flooded members' water (6 × 6), and the water-ballast
+        compartments left for the trim."""
+        fixed = np.zeros((6, 6))
+        variable: list[tuple[hull.Member, hull.Fill]] = []
+        for m in members:
+            for f in m.fills:
+                if f.volume is None:
+                    variable.append((m, f))
+                    continue
+                if f.volume == FLOODED:
+                    fixed += hull.ballast(m, f, 0.0)
+                    continue
+                room = hull.capacity(m, f)
+                if f.volume > room * 1.01:
+                    self.warnings.append(
+                        f"tower.foundation: member {m.name}'s ballast of {f.volume:g} m³ "
+                        f"overfills its compartment ({room:.4g} m³); the compartment is taken "
+                        "full"
+                    )
+                fixed += hull.ballast(m, f, hull.level([(m, f)], f.volume))
+        return fixed, variable
 
     def trim_notes(
         self,

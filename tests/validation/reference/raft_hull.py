@@ -25,36 +25,41 @@ import yaml
 from wtvib.importers.windio_platform import _Platform
 
 
+def raft_member(m, st=None, l_fill=None, rho_fill=None) -> dict:  # type: ignore[no-untyped-def]
+    """RAFT's member dict of a wtvib hull member, its stations ``st`` (shares of its length;
+    the member's own where None), with ballast fills per section where given."""
+    st = m.stations if st is None else np.asarray(st)
+    t = sum(layer.thickness for layer in m.layers)
+    out = {
+        "name": m.name, "type": "rigid", "shape": "circ",
+        "rA": m.a.tolist(), "rB": m.b.tolist(),
+        "stations": (st * m.length).tolist(),
+        "d": np.interp(st, m.stations, m.diameter).tolist(),
+        "t": np.interp(st, m.stations, np.asarray(t) * np.ones(len(m.stations))).tolist(),
+        "Ca": m.ca, "Cd": 0.8, "CdEnd": 0.0,
+        "CaEnd": [m.ca_end if m.free_ends[0] else 0.0] + [m.ca_end] * (len(st) - 2)
+        + [m.ca_end if m.free_ends[1] else 0.0],
+        "rho_shell": m.layers[0].density * m.outfitting if m.layers else 7850.0,
+        "potMod": False, "gamma": 0.0,
+    }  # fmt: skip
+    if l_fill is not None:
+        out |= {
+            "l_fill": l_fill, "rho_fill": rho_fill,
+            "cap_stations": [b.station * m.length for b in m.bulkheads],
+            "cap_t": [b.thickness for b in m.bulkheads],
+            "cap_d_in": [0.0 for _ in m.bulkheads],
+        }  # fmt: skip
+    return out
+
+
 def members(path: Path) -> list[dict]:
     d = yaml.safe_load(path.read_text())
     reader = _Platform(d, path)
-    out = []
-    for m in reader.members(reader.joints()):
-        if m.a[2] >= 0 and m.b[2] >= 0:
-            continue  # out of the water: no hydrostatics or added mass
-        t = sum(layer.thickness for layer in m.layers)
-        out.append(
-            {
-                "name": m.name,
-                "type": "rigid",
-                "shape": "circ",
-                "rA": m.a.tolist(),
-                "rB": m.b.tolist(),
-                "stations": m.stations.tolist(),
-                "d": m.diameter.tolist(),
-                "t": np.asarray(t).tolist(),
-                "Ca": m.ca,
-                "Cd": 0.8,
-                "CdEnd": 0.0,
-                "CaEnd": [m.ca_end if m.free_ends[0] else 0.0]
-                + [m.ca_end] * (len(m.stations) - 2)
-                + [m.ca_end if m.free_ends[1] else 0.0],
-                "rho_shell": 7850.0,
-                "potMod": False,
-                "gamma": 0.0,
-            }
-        )
-    return out
+    return [
+        raft_member(m)
+        for m in reader.members(reader.joints())
+        if m.a[2] < 0 or m.b[2] < 0  # out of the water: no hydrostatics or added mass
+    ]
 
 
 def main(path: Path) -> None:
@@ -141,7 +146,6 @@ def system(path: Path, raft_design: Path, head_mass: float) -> None:
     )
     out = []
     for m in ms:
-        t = sum(layer.thickness for layer in m.layers)
         cuts = sorted({0.0, 1.0, *[f.start for f in m.fills], *[f.end for f in m.fills]})
         st = np.array(cuts)
         l_fill, rho_fill = [], []
@@ -166,32 +170,7 @@ def system(path: Path, raft_design: Path, head_mass: float) -> None:
             else:  # a level member's water spread along it
                 l_fill.append((b - a) * m.length * (1 - 1e-9))
                 rho_fill.append(fill.density * share)
-        out.append(
-            {
-                "name": m.name,
-                "type": "rigid",
-                "shape": "circ",
-                "rA": m.a.tolist(),
-                "rB": m.b.tolist(),
-                "stations": (st * m.length).tolist(),
-                "d": np.interp(st, m.stations, m.diameter).tolist(),
-                "t": np.interp(st, m.stations, t).tolist(),
-                "Ca": m.ca,
-                "Cd": 0.8,
-                "CdEnd": 0.0,
-                "CaEnd": [m.ca_end if m.free_ends[0] else 0.0]
-                + [m.ca_end] * (len(st) - 2)
-                + [m.ca_end if m.free_ends[1] else 0.0],
-                "rho_shell": m.layers[0].density * m.outfitting if m.layers else 7850.0,
-                "l_fill": l_fill,
-                "rho_fill": rho_fill,
-                "cap_stations": [b.station * m.length for b in m.bulkheads],
-                "cap_t": [b.thickness for b in m.bulkheads],
-                "cap_d_in": [0.0 for _ in m.bulkheads],
-                "potMod": False,
-                "gamma": 0.0,
-            }
-        )
+        out.append(raft_member(m, st, l_fill, rho_fill))
     design["platform"] = {"potModMaster": 1, "dlsMax": 1.0, "members": out}
     tower = data["tower"]
     sec = tower["sections"]
