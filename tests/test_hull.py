@@ -84,7 +84,8 @@ def test_a_tube_s_mass_and_inertia():
     ro, ri = d / 2, d / 2 - t
     assert body[0, 0] == pytest.approx(mass, rel=1e-9)
     assert body[5, 5] == pytest.approx(mass * (ro**2 + ri**2) / 2, rel=1e-9)
-    assert body[3, 3] == pytest.approx(mass * ((ro**2 + ri**2) / 4 + length**2 / 12), rel=1e-4)
+    # the slices' own length terms make the sum exact (a uniform rod's L²/12)
+    assert body[3, 3] == pytest.approx(mass * ((ro**2 + ri**2) / 4 + length**2 / 12), rel=1e-9)
 
 
 def test_at_point_is_the_parallel_axis_theorem():
@@ -133,3 +134,48 @@ def test_trim_balances_buoyancy_and_weight_and_says_what_is_missing():
     assert short.shortfall == pytest.approx(RHO * (v - hull.capacity(*parts[0])), rel=1e-9)
     heavy = hull.trim(v, RHO, RHO * v + 1000.0, parts)
     assert heavy.volume == 0.0 and heavy.shortfall == pytest.approx(-1000.0)
+
+
+def test_a_bulkhead_at_a_step_of_diameter_closes_the_wider_side():
+    """A disc across the inside, ρ·π(D − 2t)²/4·t_b: at a step (two stations at one place)
+    the wider section's (its top closes the wider part, as OC4's base columns)."""
+    t, plate = 0.05, 0.06
+
+    def member(bulkheads):  # type: ignore[no-untyped-def]
+        return hull.Member(
+            name="s",
+            a=np.array([0.0, 0.0, -30.0]),
+            b=np.array([0.0, 0.0, 10.0]),
+            stations=np.array([0.0, 0.5, 0.5, 1.0]),
+            diameter=np.array([20.0, 20.0, 10.0, 10.0]),
+            layers=[hull.Layer(np.full(4, t), 7850.0)],
+            bulkheads=bulkheads,
+        )
+
+    bare = hull.structure(member(()))[0, 0]
+    closed = hull.structure(member((hull.Disc(0.5, plate, 7850.0),)))[0, 0]
+    assert closed - bare == pytest.approx(7850.0 * np.pi / 4 * (20.0 - 2 * t) ** 2 * plate)
+
+
+def test_small_members_keep_their_end_added_mass_and_waterplane():
+    """A 1 m column whose top is 0.5 m above the water: its waterplane πD²/4 and its bottom's
+    ρC_a,end·πD³/12 (0.26 m³ of fluid) count like a big one's."""
+    m = cylinder(1.0, 5.0, 0.5, free_ends=(True, False))
+    assert hull.buoyancy([m]).area == pytest.approx(np.pi / 4, rel=1e-12)
+    assert hull.added_mass([m], RHO)[2, 2] == pytest.approx(RHO * 0.6 * np.pi / 12, rel=1e-12)
+
+
+def test_a_thin_pipe_below_its_level_holds_no_water_and_half_full_sits_low():
+    pipe = hull.Member(
+        name="p",
+        a=np.array([0.0, 0.0, -10.0]),
+        b=np.array([10.0, 0.0, -10.0]),
+        stations=np.array([0.0, 1.0]),
+        diameter=np.array([1.0, 1.0]),
+        layers=[],
+        fills=[hull.Fill(0.0, 1.0, RHO)],
+    )
+    fill = pipe.fills[0]
+    assert hull.held(pipe, fill, -11.0).sum() == 0.0
+    water = hull.ballast(pipe, fill, -10.0)
+    assert water[0, 4] / water[0, 0] == pytest.approx(-10.0 - 4 * 0.5 / (3 * np.pi), rel=1e-6)
