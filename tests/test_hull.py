@@ -159,8 +159,9 @@ def test_a_bulkhead_at_a_step_of_diameter_closes_the_wider_side():
 
 def test_small_members_keep_their_end_added_mass_and_waterplane():
     """A 1 m column whose top is 0.5 m above the water: its waterplane πD²/4 and its bottom's
-    ρC_a,end·πD³/12 (0.26 m³ of fluid) count like a big one's."""
-    m = cylinder(1.0, 5.0, 0.5, free_ends=(True, False))
+    ρC_a,end·πD³/12 (0.26 m³ of fluid) count like a big one's; its top, out of the water,
+    adds none."""
+    m = cylinder(1.0, 5.0, 0.5, free_ends=(True, True))
     assert hull.buoyancy([m]).area == pytest.approx(np.pi / 4, rel=1e-12)
     assert hull.added_mass([m], RHO)[2, 2] == pytest.approx(RHO * 0.6 * np.pi / 12, rel=1e-12)
 
