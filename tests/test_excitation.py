@@ -42,3 +42,17 @@ def test_gear_mesh_line_acts_on_the_drive_train_only(write_spec):
     s = spec.load(write_spec(spec_text() + extra, name="g.yaml"))
     (mesh,) = excitation.gear_mesh(s)
     assert mesh.order == 19 * 27 and mesh.acts_on("drivetrain") and not mesh.acts_on("tower")
+
+
+def test_the_high_speed_shaft_imbalance_is_a_minor_line_at_the_generator_speed(write_spec):
+    """Hau 7.3.4: the rotating parts' mass imbalance — a line at gear ratio × 1P on the
+    drive train only, minor (its torque is the eccentric mass's gravity torque); none where
+    no gear ratio is given or the generator turns with the rotor."""
+    geared = spec.load(write_spec(spec_text() + "drivetrain: {gear_ratio: 50}\n", name="h.yaml"))
+    (line,) = excitation.shaft_imbalance(geared)
+    assert line.order == 50.0 and line.energy == "minor"
+    assert line.acts_on("drivetrain") and not line.acts_on("tower")
+    assert line in excitation.excitations(geared)
+    direct = spec.load(write_spec(spec_text() + "drivetrain: {gear_ratio: 1}\n", name="d.yaml"))
+    assert excitation.shaft_imbalance(direct) == []
+    assert excitation.shaft_imbalance(spec.load(write_spec())) == []

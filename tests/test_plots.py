@@ -462,10 +462,13 @@ def test_a_crossing_hidden_under_a_worse_one_is_not_in_the_legend(reports):
     """WKA-60's drive train has one frequency with the generator on the grid and free
     (1.88 Hz): the 6P and 5P lines cross both modes at the same place, once judged info,
     once pass. The info marker covers the pass one, so the legend names no pass crossing
-    a reader could not find."""
+    a reader could not find. (Without its gear ratio: the high-speed shaft's 1G line has
+    pass crossings of its own, below the operating range, which the legend rightly names.)"""
     from wtvib.excitation import operating_range
 
-    wka = reports["wka-60"]
+    data = reports["wka-60"].spec.model_dump(mode="json", exclude_none=True)
+    data["drivetrain"].pop("gear_ratio")
+    wka = audit.run(spec.from_data(data))
     op = operating_range(wka.spec.rotor.speed)
     marks = [
         (f.excitation.id, c, f.status_at(c, op))
@@ -483,3 +486,21 @@ def test_a_crossing_hidden_under_a_worse_one_is_not_in_the_legend(reports):
     legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
     texts = [t.get_text() for legend in legends for t in legend.get_texts()]
     assert "crossing: info" in texts and "crossing: pass" not in texts
+
+
+def test_the_drive_train_figure_draws_the_chain_it_was_computed_on(reports):
+    """Hau Fig. 7.10: the distribution of inertia and stiffness along the train heads the
+    mode shapes — the reduced chain the modes came from (the blades' edgewise spring too)."""
+    from wtvib import drivetrain as model
+
+    wka = reports["wka-60"]
+    chain = wka.results["drivetrain"]["chain"]
+    again = model.reduce(wka.spec, model.edge_frequency(wka.spec, list(wka.modes)))
+    assert chain.names == again.names and list(chain.stiffness) == list(again.stiffness)
+    fig = drivetrain.drivetrain_shapes_plot(wka)
+    assert fig is not None
+    bars = fig.axes[0].patches
+    assert [b.get_height() for b in bars] == pytest.approx(list(chain.inertia))
+    assert "stiffness" in fig.axes[-1].get_ylabel() or any(
+        "stiffness" in ax.get_ylabel() for ax in fig.axes
+    )

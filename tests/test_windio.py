@@ -30,10 +30,10 @@ def test_a_floating_platform_without_its_parts_is_one_line_naming_them(tmp_path)
     from wtvib.importers.windio_platform import platform
 
     doc = windio._paths({"components": {"floating_platform": {}}}, (), "f.yaml")
-    with pytest.raises(SpecError, match="components.floating_platform.joints is missing"):
+    with pytest.raises(SpecError, match=r"components\.floating_platform\.joints is missing"):
         platform(doc, tmp_path / "f.yaml", 1e6, 15.0)
     text = "components:\n  mooring: {}\n  tower: {}\nassembly: {number_of_blades: 3}\n"
-    with pytest.raises(SpecError, match="moorings but no components.floating_platform") as err:
+    with pytest.raises(SpecError, match=r"moorings but no components\.floating_platform") as err:
         windio.to_spec_data(tmp_path / "f.yaml", text)
     assert err.value.path == "components.mooring"
 

@@ -136,3 +136,28 @@ def test_windio_2_radians_in_a_stiffener_spacing_are_read_and_said():
     )
     # 11 more stiffeners of 0.04 m² on three 32 m columns
     assert steel_deg - bare == pytest.approx(11 * 0.04 * rho * 32.0 * 3, rel=1e-6)
+
+
+def test_a_line_type_with_its_own_mass_and_stiffness_is_taken_as_given():
+    """``mass_density`` and ``stiffness`` given: MoorPy's library is not consulted; OC4's
+    published line (113.35 kg/m, EA 753.6 MN, Robertson et al. 2014) pulls harder
+    than the library chain the file's 0.0766 m volume-equivalent diameter gives (40 kg/m)."""
+    from wtvib.importers.windio_platform import _Platform
+
+    def pull(edit) -> float:  # type: ignore[no-untyped-def]
+        doc = yaml.safe_load(OC4.read_text())
+        edit(doc)
+        reader = _Platform(windio._paths(doc, (), str(OC4)), OC4)
+        joints = reader.joints()
+        reader.members(joints)
+        k, down, _ = reader.moorings(joints)
+        assert k[0, 0] > 0
+        return down
+
+    library = pull(lambda d: None)
+    given = pull(
+        lambda d: d["components"]["mooring"]["line_types"][0].update(
+            type="custom", mass_density=113.35, stiffness=7.536e8
+        )
+    )
+    assert given > 2 * library

@@ -517,12 +517,27 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         else ()
     )
     shares = inertia_shares(spec)
+    results: dict[str, object] = {"power": curve} if curve is not None else {}
+    chain = _drawn_chain(spec, ctx.modes)
+    if chain is not None:  # the distribution of inertia and stiffness (Hau Fig. 7.10)
+        results["chain"] = chain
     return Analysis(
         checks=checks,
         refine=torque_refiner(spec, ctx.modes),
-        results={"power": curve} if curve is not None else {},
+        results=results,
         assumptions=(shares_statement(shares),) if shares else (),
     )
+
+
+def _drawn_chain(spec: Spec, modes: Sequence[Mode]) -> Chain | None:
+    """The chain the modes were computed on (the blades' edgewise spring from the blade's
+    first edgewise mode), for its figure; None where the spec has no chain."""
+    if not spec.drivetrain.chain or not spec.drivetrain.shafts:
+        return None
+    try:
+        return reduce(spec, edge_frequency(spec, list(modes)))
+    except ModelInputError:
+        return None
 
 
 def inertia_shares(spec: Spec) -> dict[str, float] | None:

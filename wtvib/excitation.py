@@ -202,6 +202,31 @@ def gear_mesh(spec: Spec) -> list[Excitation]:
     ]
 
 
+def shaft_imbalance(spec: Spec) -> list[Excitation]:
+    """The high-speed shaft's mass imbalance: a line at the generator's speed (gear ratio ×
+    1P) acting on the drive train, where the spec gives a gear ratio above 1.
+
+    Hau ch. 7.3.4 names "mass imbalances of the rotating parts" beside the gear mesh as the
+    drive train's internal excitations (the Aeroman's centrifugal switch on its high-speed
+    shaft, Fig. 7.15). An imbalance's force is lateral: it twists the train only through
+    the eccentric mass's gravity torque m·g·e, once a turn of the shaft — a minor line,
+    which a crossing marks without failing the audit (the shaft's own bending, which the
+    force drives directly, is not modelled).
+    """
+    ratio = spec.drivetrain.gear_ratio
+    if ratio is None or ratio <= 1.0:
+        return []
+    return [
+        Excitation(
+            "1G",
+            ratio,
+            "minor",
+            f"high-speed shaft imbalance: once a turn of the generator, {ratio:g}·P",
+            frozenset({"drivetrain"}),
+        )
+    ]
+
+
 def electrical(spec: Spec) -> list[Excitation]:
     """Generator-side excitations at fixed frequencies (Hau ch. 7.3.4: grid oscillations,
     inverters, control), acting on the drive train."""
@@ -223,5 +248,6 @@ def excitations(spec: Spec) -> list[Excitation]:
     return (
         rotor_harmonics(spec.rotor.blades, spec.audit.harmonics)
         + gear_mesh(spec)
+        + shaft_imbalance(spec)
         + electrical(spec)
     )

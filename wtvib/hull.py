@@ -152,12 +152,24 @@ def skew(r: Array) -> Array:
 def at_point(a: Array, r: Array, j: Array | None = None) -> Array:
     """The 6 × 6 matrix at the origin of a 3 × 3 translational mass ``a`` at ``r`` (with
     rotational inertia ``j`` about r): [[a, −a·S], [S·a, j − S·a·S]]."""
-    s = skew(r)
+    return at_points(a[None], np.asarray(r, dtype=float)[None], None if j is None else j[None])
+
+
+def at_points(a: Array, r: Array, j: Array | None = None) -> Array:
+    """:func:`at_point` summed over n points: ``a`` (n, 3, 3), ``r`` (n, 3), ``j`` (n, 3, 3)."""
+    x, y, z = r[:, 0], r[:, 1], r[:, 2]
+    zero = np.zeros_like(x)
+    s = np.stack(
+        [np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)],
+        axis=1,
+    )
     out = np.zeros((6, 6))
-    out[:3, :3] = a
-    out[:3, 3:] = -a @ s
-    out[3:, :3] = s @ a
-    out[3:, 3:] = (np.zeros((3, 3)) if j is None else j) - s @ a @ s
+    out[:3, :3] = a.sum(axis=0)
+    out[:3, 3:] = -np.einsum("nij,njk->ik", a, s)
+    out[3:, :3] = np.einsum("nij,njk->ik", s, a)
+    out[3:, 3:] = -np.einsum("nij,njk,nkl->il", s, a, s)
+    if j is not None:
+        out[3:, 3:] += j.sum(axis=0)
     return out
 
 
@@ -181,17 +193,14 @@ def _about_axis(axis: Array, along: float, across: float) -> Array:
     return np.asarray(along * q + across * (np.eye(3) - q))
 
 
-def _tubes(
-    member: Member, cut: Slices, mass: Array, outer: Array, inner: Array
-) -> Array:  # fmt: skip
+def _tubes(member: Member, cut: Slices, mass: Array, outer: Array, inner: Array) -> Array:
     """Slices of tube of ``mass`` each, between diameters ``outer`` and ``inner``."""
-    out = np.zeros((6, 6))
     r2 = (outer**2 + inner**2) / 4  # (R_o² + R_i²)
-    for m, r, rr, dl in zip(mass, cut.r, r2, cut.dl, strict=True):
-        if m > 0:
-            j = _about_axis(member.axis, m * rr / 2, m * (rr / 4 + dl**2 / 12))
-            out += at_point(m * np.eye(3), r, j)
-    return out
+    q = np.outer(member.axis, member.axis)
+    along = mass * r2 / 2
+    across = mass * (r2 / 4 + cut.dl**2 / 12)
+    j = along[:, None, None] * q + across[:, None, None] * (np.eye(3) - q)
+    return at_points(mass[:, None, None] * np.eye(3), cut.r, j)
 
 
 def structure(member: Member) -> Array:
@@ -218,11 +227,12 @@ def structure(member: Member) -> Array:
     return out * member.outfitting
 
 
-def held(member: Member, fill: Fill, level: float) -> Array:
+def held(member: Member, fill: Fill, level: float, cut: Slices | None = None) -> Array:
     """The volume in each slice of the fill's compartment below the water ``level`` [m³]: a
     steep member's slices by the share of their height below it, a level one's (within
-    ``LEVEL_DEG`` of the horizontal) by the circular segment of their section."""
-    cut = slices(member)
+    ``LEVEL_DEG`` of the horizontal) by the circular segment of their section (``cut``:
+    the member's slices, where the caller has them)."""
+    cut = slices(member) if cut is None else cut
     inside = (cut.s >= fill.start) & (cut.s <= fill.end)
     r = cut.inner / 2
     if abs(member.axis[2]) < np.sin(np.radians(LEVEL_DEG)):
@@ -249,9 +259,13 @@ def level(parts: Sequence[tuple[Member, Fill]], volume: float) -> float:
     ends = [z for m, _ in parts for z in (m.a[2], m.b[2])]
     reach = max((float(np.max(m.diameter)) for m, _ in parts), default=0.0)
     low, high = min(ends, default=0.0) - reach, max(ends, default=0.0) + reach
+    cuts = [slices(m) for m, _ in parts]
     for _ in range(60):
         mid = (low + high) / 2
-        if sum(float(held(m, f, mid).sum()) for m, f in parts) < volume:
+        if (
+            sum(float(held(m, f, mid, c).sum()) for (m, f), c in zip(parts, cuts, strict=True))
+            < volume
+        ):
             low = mid
         else:
             high = mid
@@ -261,7 +275,7 @@ def level(parts: Sequence[tuple[Member, Fill]], volume: float) -> float:
 def ballast(member: Member, fill: Fill, water_level: float) -> Array:
     """The fill's ballast below ``water_level`` in its compartment, 6 × 6 at the origin."""
     cut = slices(member)
-    volume = held(member, fill, water_level)
+    volume = held(member, fill, water_level, cut)
     if abs(member.axis[2]) < np.sin(np.radians(LEVEL_DEG)):
         # a level member's water lies in the segment below the level: its centroid
         # (2/3)(r² − e²)^(3/2)/A below the axis, e the level's height above it
@@ -328,23 +342,22 @@ def added_mass(members: Sequence[Member], rho: float) -> Array:
     for member in members:
         cut = slices(member)
         q = np.outer(member.axis, member.axis)
-        across = np.eye(3) - q
-        for r, d, dl, wet in zip(cut.r, cut.outer, cut.dl, cut.wet, strict=True):
-            if wet > 0:
-                out += at_point(rho * member.ca * np.pi / 4 * d**2 * dl * wet * across, r)
+        across = rho * member.ca * np.pi / 4 * cut.outer**2 * cut.dl * cut.wet
+        out += at_points(across[:, None, None] * (np.eye(3) - q), cut.r)
         # axial: each step of diameter along the member, and its free ends
         edges = np.concatenate([[0.0], (cut.s[1:] + cut.s[:-1]) / 2, [1.0]])
-        d_edge = np.interp(edges, member.stations, member.diameter)
-        steps = np.abs(np.diff(d_edge**3))
-        ends = [(0.0, member.free_ends[0]), (1.0, member.free_ends[1])]
-        for s, volume in [*zip(cut.s, np.pi / 12 * steps, strict=True)] + [
-            (s, np.pi / 12 * float(np.interp(s, member.stations, member.diameter)) ** 3)
-            for s, free in ends
-            if free
-        ]:
-            r = member.a + s * (member.b - member.a)
-            if r[2] < 0 and volume > 0:
-                out += at_point(rho * member.ca_end * volume * q, r)
+        steps = np.abs(np.diff(np.interp(edges, member.stations, member.diameter) ** 3))
+        where = list(cut.s)
+        volume = list(np.pi / 12 * steps)
+        for s, free in ((0.0, member.free_ends[0]), (1.0, member.free_ends[1])):
+            if free:
+                where.append(s)
+                volume.append(
+                    np.pi / 12 * float(np.interp(s, member.stations, member.diameter)) ** 3
+                )
+        r = member.a + np.asarray(where)[:, None] * (member.b - member.a)
+        axial = rho * member.ca_end * np.where(r[:, 2] < 0, np.asarray(volume), 0.0)
+        out += at_points(axial[:, None, None] * q, r)
     return 0.5 * (out + out.T)
 
 

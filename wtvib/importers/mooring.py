@@ -16,6 +16,7 @@ K₁₅ −2.821·10⁶ N, K₃₃ 11,940 N/m, K₄₄ 311.1·10⁶ N·m/rad, K�
 """
 
 import contextlib
+import functools
 import io
 import math
 import warnings
@@ -241,6 +242,14 @@ WINDIO_MATERIALS = {
 }
 
 
+@functools.cache
+def _line_library() -> Any:
+    """MoorPy's line property library (its YAML read once a process)."""
+    import moorpy.helpers
+
+    return moorpy.helpers.loadLineProps(None)
+
+
 def windio_system(
     mooring: dict[str, Any],
     joints: dict[str, np.ndarray],
@@ -262,15 +271,15 @@ def windio_system(
     def fail(message: str, where: str) -> SpecError:
         return SpecError(message, path=f"components.mooring.{where}", source=str(path))
 
-    system = mp.System(depth=depth)
+    system = mp.System(depth=depth, rho=rho, g=g)
     for i, t in enumerate(mooring["line_types"]):
         d = t.get("diameter")
         if isinstance(d, bool) or not isinstance(d, (int, float)) or not 0 < d < 10:
             raise fail(f"a line's diameter must be 0 … 10 m (got {d!r})", f"line_types[{i}]")
         mass, ea = t.get("mass_density"), t.get("stiffness")
         if isinstance(mass, (int, float)) and isinstance(ea, (int, float)) and mass > 0 < ea:
-            system.setLineType(name=str(t["name"]), d_vol=float(d), mass=float(mass),
-                               EA=float(ea))  # fmt: skip
+            given = {"name": str(t["name"]), "d_vol": float(d), "m": float(mass), "EA": float(ea)}
+            system.setLineType(name=given["name"], lineType={**given, "material": "custom"})
             continue
         material = WINDIO_MATERIALS.get(str(t.get("type", "")).lower())
         if material is None:
@@ -280,9 +289,11 @@ def windio_system(
                 f"line_types[{i}]",
             )
         # windIO's diameter is the volume-equivalent one; MoorPy's library is by nominal size
-        probe = mp.helpers.getLineProps(100.0, material, source="default")
+        library = _line_library()
+        probe = mp.helpers.getLineProps(100.0, material, lineProps=library)
         nominal = float(d) / (probe["d_vol"] / 0.1)
-        kind = system.setLineType(dnommm=nominal * 1000, material=material, name=str(t["name"]))
+        props = mp.helpers.getLineProps(nominal * 1000, material, lineProps=library)
+        kind = system.setLineType(name=str(t["name"]), lineType={**props, "name": str(t["name"])})
         notes.append(
             f"line type {t['name']}: {material} of volume-equivalent diameter {float(d):g} m "
             f"(windIO's diameter), nominal {nominal * 1000:.0f} mm — MoorPy's library: "

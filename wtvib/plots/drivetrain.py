@@ -1,5 +1,6 @@
-"""Drive-train figures: mode shapes per generator condition (which masses swing against
-which, Hau Fig. 7.12) and the grid mode over power (Hau Fig. 7.14)."""
+"""Drive-train figures: the distribution of inertia and stiffness along the train (Hau
+Fig. 7.10) above the mode shapes per generator condition (which masses swing against
+which, Hau Fig. 7.12), and the grid mode over power (Hau Fig. 7.14)."""
 
 from typing import TYPE_CHECKING
 
@@ -9,7 +10,10 @@ from ..audit import Report
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+
+    from ..drivetrain import Chain
 
 
 def drivetrain_shapes_plot(report: Report) -> "Figure | None":
@@ -20,15 +24,22 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     if not modes:
         return None
     conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
-    fig = Figure(figsize=(7.5, 1.95 * len(conditions) + 0.6), dpi=FIGURE_DPI)
-    axes = fig.subplots(len(conditions), 1, squeeze=False)[:, 0]
+    chain = report.results.get("drivetrain", {}).get("chain")
+    panels = len(conditions) + (chain is not None)
+    fig = Figure(figsize=(7.5, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
+    axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
     heading = fit(
         f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
         f"{report.spec.drivetrain.reference_shaft} shaft)",
         7.3,
     )
     # the suptitle and each panel's title above it; the mass names under each panel
-    fixed_layout(fig, top=0.4 + title_height(heading), bottom=0.4, gap=0.6)
+    # the stiffness axis on the right of the distribution panel needs its own margin
+    right = 0.85 if chain is not None else 0.3
+    fixed_layout(fig, top=0.4 + title_height(heading), bottom=0.4, gap=0.6, right=right)
+    if chain is not None:
+        _distribution(axes[0], chain, report.spec.drivetrain.reference_shaft)
+        axes = axes[1:]
     for ax, condition in zip(axes, conditions, strict=True):
         for m in (m for m in modes if m.id.split(".")[1] == condition):
             assert m.shape is not None
@@ -50,6 +61,28 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
         ax.grid(True, alpha=0.3)
     fig.suptitle(heading, fontweight="bold")
     return fig
+
+
+def _distribution(ax: "Axes", chain: "Chain", shaft: str) -> None:
+    """Inertias at the masses and stiffnesses between them, on log scales (Hau Fig. 7.10)."""
+    x = np.arange(len(chain.names))
+    ax.bar(x, chain.inertia, width=0.5, color="#1565c0", label="inertia [kg·m²]")
+    ax.set_yscale("log")
+    ax.set_ylabel("inertia [kg·m²]", color="#1565c0")
+    ax.set_xticks(x, list(chain.names))
+    ax.set_xlim(-0.5, x[-1] + 0.5)
+    springs = ax.twinx()
+    springs.bar(x[:-1] + 0.5, chain.stiffness, width=0.25, color="#ef6c00")
+    springs.set_yscale("log")
+    springs.set_ylabel("stiffness [N·m/rad]", color="#ef6c00")
+    ax.set_title(
+        f"inertia (blue, at the masses) and stiffness (orange, between them), reduced to the "
+        f"{shaft} shaft",
+        loc="left",
+        fontsize=SMALL_PT,
+        y=1.0,
+    )
+    ax.grid(True, axis="y", alpha=0.3)
 
 
 def power_curve_plot(report: Report) -> "Figure | None":
