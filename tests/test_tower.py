@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wtvib import audit, spec
+from wtvib import audit, spec, tower
 
 
 def classify(write_spec, f, blades=2, speed="fixed_rpm: 30", margin=None):
@@ -178,3 +178,30 @@ def test_the_tower_frequency_is_placed_between_the_rotor_harmonics():
     assert _between(0.45, 3, 0.2) == "between 2P and 3P"
     assert _between(0.2, 3, 0.2) == "between 1P and 2P"
     assert _between(0.15, 3, 0.2) == "below 1P"
+
+
+def test_an_uncalibrated_concrete_tower_is_judged_as_a_band(write_spec):
+    """Hau 7.5.2: concrete towers' frequencies "differ considerably from the calculated
+    values". WKA-60's concrete tower without its stated tolerance gets its bending modes as
+    bands over E·0.7 … E·1.2 (EN 1992-1-1 §3.1.3(2)), said in the assumptions; with the
+    tolerance, none (the tolerance is the user's statement of the uncertainty)."""
+    from tests.conftest import TURBINES
+
+    text = (TURBINES / "wka-60.yaml").read_text()
+    tolerances = (', tolerance: 0.15}', '"reinforced concrete", tolerance: 0.05}')
+    assert all(t in text for t in tolerances)
+    untold = text.replace(tolerances[0], "}").replace(tolerances[1], '"reinforced concrete"}')
+    bare = spec.load(write_spec(untold, name="w.yaml"))
+    stated = spec.load(write_spec(text, name="s.yaml"))
+    assert tower.concrete_band(bare) and not tower.concrete_band(stated)
+    fa1 = next(m for m in tower.modes(bare) if m.id == "tower.fa1")
+    assert fa1.band_hz is not None
+    low, high = fa1.band_hz
+    # EI scaled, gravity's softening not: the band is close to f·√0.7 … f·√1.2, a little wider
+    assert low / fa1.frequency_hz == pytest.approx(0.7**0.5, rel=0.03)
+    assert high / fa1.frequency_hz == pytest.approx(1.2**0.5, rel=0.03)
+    assert low < 0.7**0.5 * fa1.frequency_hz * 1.001 and high > fa1.frequency_hz
+    assert next(m for m in tower.modes(stated) if m.id == "tower.fa1").band_hz is None
+    said = audit.run(bare).assumptions
+    assert any("Concrete tower with no tolerance stated" in a for a in said)
+    assert not any("Concrete tower" in a for a in audit.run(stated).assumptions)

@@ -711,7 +711,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
     name = f"{f.mode.id} ({f.natural_hz:.3g} Hz{', ' + whirl if whirl else ''})"
     if f.mode.band_hz is not None:
         lo, hi = f.mode.band_hz
-        name += f" [soil band {lo:.3g}–{hi:.3g} Hz at standstill]"
+        name += f" [band {lo:.3g}–{hi:.3g} Hz at standstill]"
     need = f"needs {rule.margin:.0%}"
     exc = f.excitation.id
     if f.driven_by and f.driven_by != exc:

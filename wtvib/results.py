@@ -171,7 +171,8 @@ class Mode:
     replaces: str | None = None  # the isolated mode a coupled mode stands for (if it exists)
     operating: OperatingDamping | None = field(default=None, compare=False)  # in operation
     #: The standstill frequency's band [Hz] with lower- and upper-bound inputs (a monopile's
-    #: soil): judged as a band — a line anywhere in it, or within the margin of its ends.
+    #: soil, an uncalibrated concrete tower's modulus): judged as a band — a line anywhere
+    #: in it, or within the margin of its ends.
     band_hz: tuple[float, float] | None = None
 
     def band_factors(self) -> tuple[float, float] | None:
