@@ -33,3 +33,31 @@ def test_blade_analysis_states_how_computed_modes_came_about(shared):
     r = audit.run(importers.load(deck, rpm=(6.9, 12.1)))
     assert any(a.startswith("Blade modes computed") for a in r.assumptions)
     assert {m.origin for m in r.modes if m.subsystem == "blade"} == {"computed"}
+
+
+def test_the_pitch_drive_softens_the_blade_s_torsion_by_the_closed_form():
+    """A uniform blade (GJ, I_p, length L) on a root spring k_p, free at the tip: θ =
+    cos β(L − x), and GJ·θ′(0) = k_p·θ(0) gives βL·tan βL = k_p·L/GJ, ω = β·√(GJ/I_p)
+    (Hau 7.2.2; the clamped root is k_p → ∞, βL = π/2)."""
+    from scipy.optimize import brentq
+
+    from wtvib.spec.blade import BladeStructure
+
+    gj, ip, length, kp = 5e7, 20.0, 40.0, 2.5e6
+    base = {
+        "span_m": [0.0, length],
+        "mass_per_length_kg_m": [200.0, 200.0],
+        "ei_flap_nm2": [1e9, 1e9],
+        "ei_edge_nm2": [3e9, 3e9],
+        "gj_nm2": [gj, gj],
+        "torsional_inertia_kgm": [ip, ip],
+    }
+    c = (gj / ip) ** 0.5
+    clamped = blade.torsion_frequency(BladeStructure.model_validate(base), elements=60)
+    assert clamped == pytest.approx(np.pi / 2 / length * c / (2 * np.pi), rel=1e-3)
+    sprung = blade.torsion_frequency(
+        BladeStructure.model_validate(base | {"pitch_drive_nm_rad": kp}), elements=60
+    )
+    bl = brentq(lambda z: z * np.tan(z) - kp * length / gj, 1e-9, np.pi / 2 - 1e-9)
+    assert sprung == pytest.approx(bl / length * c / (2 * np.pi), rel=1e-3)
+    assert sprung < clamped

@@ -224,7 +224,10 @@ def plane_names(shapes: Array) -> list[str]:
 
 
 def torsion_frequency(s: BladeStructure, elements: int = DEFAULT_ELEMENTS) -> float:
-    """First torsion frequency of the cantilevered blade (no rotational effect). [Hz]"""
+    """First torsion frequency of the blade (no rotational effect), its root clamped or,
+    where the spec gives the pitch drive's stiffness, on that spring in series with its
+    own torsion (Hau 7.2.2: the pitch mechanism's stiffness enters the blade's torsional
+    frequency). [Hz]"""
     assert s.gj_nm2 is not None and s.torsional_inertia_kgm is not None
     span = np.asarray(s.span_m, dtype=float)
     nodes = beam.mesh(span, elements)
@@ -234,7 +237,10 @@ def torsion_frequency(s: BladeStructure, elements: int = DEFAULT_ELEMENTS) -> fl
         beam.interpolate(x, span, np.asarray(s.gj_nm2)),
         beam.interpolate(x, span, np.asarray(s.torsional_inertia_kgm)),
     )
-    return float(modal.solve(k[1:, 1:], m[1:, 1:], 1).frequency_hz[0])
+    if s.pitch_drive_nm_rad is None:
+        return float(modal.solve(k[1:, 1:], m[1:, 1:], 1).frequency_hz[0])
+    k[0, 0] += s.pitch_drive_nm_rad
+    return float(modal.solve(k, m, 1).frequency_hz[0])
 
 
 def structural_modes(spec: Spec) -> list[Mode]:
@@ -324,6 +330,14 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
                     else " (its flap hinge is not modelled)"
                 )
                 if spec.rotor.hub in ("teetered", "hinged")
+                else ""
+            )
+            + (
+                f"; torsion on the pitch drive's {s.pitch_drive_nm_rad:.3g} N·m/rad at the "
+                "root, in series with the blade's own (Hau 7.2.2)"
+                if s.pitch_drive_nm_rad is not None and s.gj_nm2 is not None
+                else "; torsion clamped at the root (no pitch drive stiffness given)"
+                if s.gj_nm2 is not None
                 else ""
             )
             + ".",

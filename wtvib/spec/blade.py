@@ -38,6 +38,11 @@ class BladeStructure(_Strict):
     tip_mass_kg: float = Field(
         0.0, ge=0, description="Point mass at the tip (a tip brake: ElastoDyn TipMass). [kg]"
     )
+    pitch_drive_nm_rad: Positive | None = Field(
+        None,
+        description="Torsional stiffness of the pitch drive and bearing holding the blade at "
+        "its root (Hau 7.2.2); none: the root clamped in torsion. [N·m/rad]",
+    )
 
     @model_validator(mode="after")
     def _consistent(self) -> "BladeStructure":
