@@ -56,9 +56,10 @@ analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9
 """
 
 import functools
-from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import Any
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
@@ -81,9 +82,9 @@ from .kinematics import (
     skew,
     spin,
 )
-from .multiblade import MODES_KEPT, Sweep, parked, sweep
+from .multiblade import MODES_KEPT, Sweep, SystemModes, parked, sweep
 from .periodic import stability_check
-from .results import Check, Mode, Rule, Sampled, Whirl
+from .results import Check, Mode, Rule, Sampled, Whirl, ordinal
 from .rigid import Rigid, nacelle, rotor_points
 from .spec import BladeStructure, Spec
 from .units import rpm_to_rad_s
@@ -562,7 +563,6 @@ def applies(spec: Spec) -> bool:
         and spec.tower_head is not None
         and spec.tower.has_structure
         and spec.rotor.orientation != "vertical-axis"
-        and spec.tower.foundation.kind != "platform"  # a floater: the isolated models
     )
 
 
@@ -580,8 +580,86 @@ def rotating_sweep(spec: Spec) -> Sweep:
     assert spec.coupled is not None
     cond = spec.coupled.rotating_condition
     key = ("coupled.sweep." + cond, 0)
-    found: Sweep = spec.derived(key, spec, lambda: sweep(build(spec, cond), speeds(spec)))
+
+    def solve() -> Sweep:
+        model = build(spec, cond)
+        found = sweep(model, speeds(spec), kept(spec))
+        names, texts = platform_named(model, found.names, found.descriptions, found.path.shapes[0])
+        return replace(found, names=names, descriptions=texts)
+
+    found: Sweep = spec.derived(key, spec, solve)
     return found
+
+
+#: The coupled model's names of a floating platform's modes (:func:`platform_named`).
+PLATFORM = "platform."
+
+
+def parked_named(model: Model) -> SystemModes:
+    """The parked modes (:func:`wtvib.multiblade.parked`), a floating platform's named."""
+    res = parked(model, count=kept(model.spec))
+    names, texts = platform_named(model, res.names, res.descriptions, res.shapes)
+    return replace(res, names=names, descriptions=texts)
+
+
+#: A floating turbine's coupled model holds five platform modes (surge, sway, roll, pitch
+#: and yaw; heave has no degree of freedom in it) below its tower and rotor modes.
+PLATFORM_MODES = 5
+
+
+def kept(spec: Spec) -> int:
+    """How many of the coupled model's lowest modes are kept: MODES_KEPT, and the platform's
+    five on a floating base."""
+    return MODES_KEPT + (PLATFORM_MODES if spec.tower.foundation.kind == "platform" else 0)
+
+
+def platform_named(
+    model: Model,
+    names: Sequence[str],
+    descriptions: Sequence[str],
+    shapes: NDArray[np.complex128],
+) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """On a floating base: the modes whose tower motion is mostly the whole turbine's rigid
+    motion on the platform (:func:`wtvib.tower.rigid_share`) named ``platform.<motion>``,
+    the tower's own bending and torsion numbered after them (``tower.fa1`` is the first
+    bending mode, not the platform's pitch). Elsewhere the names as they are."""
+    p = model.spec.tower.foundation.platform
+    if p is None:
+        return tuple(names), tuple(descriptions)
+    m = model.standstill[0]
+    lay = model.layout
+    heights = tower.discretise(model.spec.tower).nodes + p.tower_base_m
+    counters: dict[str, int] = {}
+    out_names: list[str] = []
+    out_texts: list[str] = []
+    for j, (name, text) in enumerate(zip(names, descriptions, strict=True)):
+        z = shapes[:, j]
+        x = np.real(z * np.conj(z[np.argmax(np.abs(z))]))  # a standstill shape, real
+        kind = next((k for k in ("tower.fa", "tower.ss", "tower.tor") if name.startswith(k)), None)
+        if kind is None:
+            out_names.append(name)
+            out_texts.append(text)
+            continue
+        block = {"tower.fa": lay.fa, "tower.ss": lay.ss, "tower.tor": lay.torsion}[kind]
+        xb, mb = x[block], m[block, block]
+        if kind == "tower.tor":
+            whole = np.ones(len(xb))  # the tower turning whole on the platform's yaw
+            c = float(whole @ mb @ xb) / float(whole @ mb @ whole)
+            share = c * c * float(whole @ mb @ whole) / float(xb @ mb @ xb)
+            motion = "yaw"
+        else:
+            direction: Literal["fa", "ss"] = "fa" if kind == "tower.fa" else "ss"
+            share = tower.rigid_share(xb, mb, heights)
+            motion = tower.platform_motion(p, direction, xb[:2], None)
+        if share >= tower.PLATFORM_SHARE:
+            out_names.append(f"platform.{motion}")
+            out_texts.append(f"platform {motion} (coupled model, added mass A∞)")
+            continue
+        counters[kind] = counters.get(kind, 0) + 1
+        suffix = name[len(kind) :].lstrip("0123456789")
+        out_names.append(f"{kind}{counters[kind]}{suffix}")
+        out_texts.append(re.sub(r"^\d+(st|nd|rd|th) ", f"{ordinal(counters[kind])} ", text))
+    return tuple(out_names), tuple(out_texts)
 
 
 #: A coupled mode kept for its content (beyond the lowest MODES_KEPT) stands for its isolated
@@ -614,12 +692,12 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
 
     def stands_for(j: int, name: str, f: float) -> str | None:
         iso = isolated_id(name, cond)
-        if j < MODES_KEPT or iso not in known:
+        if j < kept(spec) or iso not in known:
             return iso
         return iso if max(f, known[iso]) <= PAIRED * min(f, known[iso]) else None
 
     if spec.rotor.blades < 3:
-        res = parked(model)
+        res = parked_named(model)
         return [
             Mode(
                 f"system.{n}",
@@ -634,6 +712,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
             for j, (f, n, d) in enumerate(
                 zip(res.frequency_hz, res.names, res.descriptions, strict=True)
             )
+            if not n.startswith(PLATFORM)
         ]
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
@@ -641,6 +720,8 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     lower = default_damping(spec)
     out = []
     for j, name in enumerate(sw.names):
+        if name.startswith(PLATFORM):  # judged from the isolated model, at its own frequency
+            continue
         material = weighted[j]
         curve = Sampled(omega, tuple(sw.frequency_hz[:, j].tolist()))
         # the drive train's dampers (the eigenvalue damping at standstill) add to the
@@ -712,10 +793,12 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     assert spec.coupled is not None
     cond = spec.coupled.rotating_condition
     model = build(spec, cond)
-    res = parked(model)
+    res = parked_named(model)
     by_id = {m.id: m.frequency_hz for m in isolated}
     rows: list[dict[str, Any]] = []
     for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
+        if name.startswith(PLATFORM):
+            continue
         iso = isolated_id(name, cond)
         f_iso = by_id.get(iso)
         # the judged mode's own standstill value (damped |λ|, as in the modes list)
@@ -744,7 +827,7 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     }
     other = spec.coupled.parked_condition
     if other != cond:
-        alt = parked(build(spec, other))
+        alt = parked_named(build(spec, other))
         numbers["parked"] = {
             "condition": f"generator {other}, parked",
             "modes": [
@@ -778,6 +861,16 @@ def _statements(model: Model) -> tuple[str, ...]:
         f"{model.hub_mass:,.0f} kg / {model.hub_polar:,.0f} kg·m², generator {model.condition}",
         "neglected: shaft tilt, precone, blade torsion, gravity on the blades; damping in "
         "the parked model: the drive train's only",
+        *(
+            (
+                "on its floating platform (surge, sway, roll, pitch, and yaw where the tower "
+                "twists; heave has no degree of freedom here), the platform's added mass "
+                "taken at A∞ for the tower and rotor modes; its own modes (platform.*) are "
+                "judged from the isolated model, each at its own frequency",
+            )
+            if model.spec.tower.foundation.kind == "platform"
+            else ()
+        ),
         *model.assumptions,
     )
 

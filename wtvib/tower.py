@@ -511,7 +511,7 @@ _PLATFORM = {
 def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
     """The tower on its floating platform: in each bending plane the four lowest modes of
     the tower with its base free on the platform — the two whose kinetic energy sits mostly
-    in the whole turbine's rigid motion on the platform (:func:`_rigid_share`) named after
+    in the whole turbine's rigid motion on the platform (:func:`rigid_share`) named after
     the platform's motion there (surge or pitch, sway or roll: the larger
     energy of translation or rotation at the PRP), the others the tower's bending (fa1,
     fa2 …, their base moving); torsion with the platform's yaw; heave with the whole
@@ -531,9 +531,9 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
         own = 0
         for f, x, m in _own_frequency(plane, 4):
-            share = _rigid_share(x, m, b.nodes + p.tower_base_m)
+            share = rigid_share(x, m, b.nodes + p.tower_base_m)
             if share >= PLATFORM_SHARE:
-                name = _platform_motion(p, direction, x[:2], f)
+                name = platform_motion(p, direction, x[:2], f)
                 out.append(_platform_mode(name, f, share))
             elif own < 2:
                 own += 1
@@ -560,7 +560,7 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
     return sorted(out, key=lambda mode: mode.frequency_hz)
 
 
-def _rigid_share(x: Array, m: Array, heights: Array) -> float:
+def rigid_share(x: Array, m: Array, heights: Array) -> float:
     """The share of a bending mode's kinetic energy in the rigid motion of the whole turbine
     on its platform: its mass-weighted projection on translation and tilt about the PRP
     (``heights`` of the nodes above it). A platform's surge or pitch moves the tower nearly
@@ -631,8 +631,8 @@ def _own_frequency(
     return out
 
 
-def _platform_motion(
-    p: "spec_mod.tower.Platform", direction: Literal["fa", "ss"], base: Array, f: float
+def platform_motion(
+    p: "spec_mod.tower.Platform", direction: Literal["fa", "ss"], base: Array, f: float | None
 ) -> str:
     """Translation or rotation: which carries more of the platform's kinetic energy at the
     PRP in this mode (frequency ``f``)."""
@@ -882,8 +882,9 @@ def _statements(spec: Spec) -> tuple[str, ...]:
             "each with the added mass at its own frequency; the head's rotary inertia turns "
             "whole with the tower top, which holds the first bending modes (within 3 % of "
             "pyBModes and OpenFAST on the OC3 and OC4 platforms) but puts the second bending "
-            "modes low (OC4: 2.5 Hz where OpenFAST finds 3.9 Hz); radiation damping, viscous "
-            "drag and the whole-turbine coupled model are not built on a floating base"
+            "modes low (OC4: 2.5 Hz where OpenFAST finds 3.9 Hz; the coupled model, where the "
+            "spec has one, stands on the platform too and judges the tower's modes); "
+            "radiation damping and viscous drag are not modelled"
         )
     else:
         assert f.pile is not None
