@@ -1,6 +1,8 @@
 """The drive train: conditions and the regimes they exist in, its analysis (torque
 amplification on its resonance checks, the synchronous power curve)."""
 
+import math
+
 import pytest
 
 from tests.conftest import TURBINES
@@ -159,3 +161,24 @@ def test_inertia_shares_reduce_each_mass_by_its_speed_squared(write_spec):
     )
     shares = drivetrain.inertia_shares(load(write_spec(extra=chain)))
     assert shares == pytest.approx({"blades": 0.7, "hub": 0.05, "generator": 0.25, "rest": 0.0})
+
+
+def test_an_induction_generator_on_the_grid_is_a_damper_and_its_frequencies_ignore_power():
+    """Hau 7.3.3: the slip couples an induction generator to the grid as a damper only —
+    the train's 'zeroth natural frequency' is its whole rotation, decaying in τ = ΣJ/d_m
+    (d_m = T_rated/(s·Ω_s) on the generator shaft, reduced by i²) — and its frequencies do
+    not depend on power. Aeroman (2 % slip)."""
+    s = spec.load(TURBINES / "aeroman.yaml")
+    modes = drivetrain.modes(s)
+    check = drivetrain.induction_check(s, modes)
+    assert check is not None and check.status == "info"
+    g = s.drivetrain.generator_model
+    chain = drivetrain.reduce(s, drivetrain.edge_frequency(s, modes))
+    omega_s = 2 * math.pi * g.grid_frequency_hz / g.pole_pairs
+    d_m = g.rated_power_kw * 1e3 / (omega_s * (1 + g.rated_slip)) / (g.rated_slip * omega_s)
+    assert check.numbers["damping_nms_rad"] == pytest.approx(d_m)
+    tau = chain.inertia.sum() / (d_m * chain.generator_factor)
+    assert check.numbers["time_constant_s"] == pytest.approx(tau)
+    assert "drivetrain.grid.1" in check.message
+    wka = spec.load(TURBINES / "wka-60.yaml")  # no induction generator on the grid
+    assert drivetrain.induction_check(wka, drivetrain.modes(wka)) is None

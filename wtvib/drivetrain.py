@@ -509,13 +509,16 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """Torque amplification on each resonance check; the power curve of a synchronous
-    generator on the grid (``drivetrain.grid.power``)."""
+    generator on the grid (``drivetrain.grid.power``), an induction generator's coupling
+    (``drivetrain.grid.induction``)."""
     curve = power_curve(spec)
-    checks = (
-        (power_check(curve, ctx.op, ctx.rule, ctx.lines, ctx.settings.heavy_damping_ratio),)
+    found = (
+        power_check(curve, ctx.op, ctx.rule, ctx.lines, ctx.settings.heavy_damping_ratio)
         if curve is not None
-        else ()
+        else None,
+        induction_check(spec, ctx.modes),
     )
+    checks = tuple(c for c in found if c is not None)
     shares = inertia_shares(spec)
     results: dict[str, object] = {"power": curve} if curve is not None else {}
     chain = _drawn_chain(spec, ctx.modes)
@@ -526,6 +529,48 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         refine=torque_refiner(spec, ctx.modes),
         results=results,
         assumptions=(shares_statement(shares),) if shares else (),
+    )
+
+
+def induction_check(spec: Spec, modes: Sequence[Mode]) -> Check | None:
+    """``drivetrain.grid.induction`` (information): a grid-coupled induction generator ties
+    the train to the grid by its slip — a damper, no spring — so the train's "zeroth
+    natural frequency" is its whole rotation at the generator's speed, a real root decaying
+    with τ = J/d_m rather than a vibration, and its natural frequencies do not depend on
+    power (d_m, the torque–slip curve's slope, is the same over its linear part), unlike a
+    synchronous generator's (``drivetrain.grid.power``). Hau 7.3.3, "Grid-coupled
+    induction generator"."""
+    dt = spec.drivetrain
+    g = dt.generator_model
+    if (
+        not (dt.chain and dt.generator == "induction" and dt.grid_coupling == "direct" and g)
+        or g.rated_slip is None
+    ):
+        return None
+    chain = reduce(spec, edge_frequency(spec, list(modes)))
+    d_m = induction_damping(g.rated_power_kw * 1e3, g.rated_slip, g.pole_pairs, g.grid_frequency_hz)
+    tau = float(chain.inertia.sum()) / (d_m * chain.generator_factor)
+    grid = sorted(
+        (m for m in modes if m.id.startswith(f"{NAME}.grid.")), key=lambda m: m.frequency_hz
+    )
+    listed = ", ".join(f"{m.id} {m.frequency_hz:.3g} Hz" for m in grid) or "none computed"
+    return Check(
+        id="drivetrain.grid.induction",
+        subsystem="drivetrain",
+        status="info",
+        message=(
+            f"induction generator on the grid: its slip ({g.rated_slip:.1%} at rated) couples "
+            f"the train to the grid as a damper (d_m {d_m:.3g} N·m·s/rad on the generator "
+            f"shaft), no spring — the train's zeroth natural frequency is its whole rotation at "
+            f"the generator's speed, which decays in τ = {tau:.3g} s and does not vibrate; its "
+            f"natural frequencies ({listed}) hold at every power, unlike a synchronous "
+            "generator's"
+        ),
+        rule=Rule(
+            "induction d_m = T_rated/(s·Ω_s): the slope of the torque–slip curve's linear part",
+            "Hau ch. 7.3.3 (grid-coupled induction generator), Fig. 7.11",
+        ),
+        numbers={"damping_nms_rad": d_m, "time_constant_s": tau},
     )
 
 
