@@ -186,3 +186,14 @@ def test_a_verdict_resting_on_no_judged_mode_is_an_error_not_a_pass(monkeypatch)
     s = spec.load(TURBINES / "mod-2.yaml")
     with pytest.raises(SpecError, match="no natural frequency to judge"):
         audit_module.run(s)
+
+
+def test_a_vertical_axis_audit_says_what_it_does_not_judge():
+    """Hau 7.5.2: a Darrieus rotor's blades see their angle of attack oscillate over each
+    turn; wtvib judges the per-rev lines only and says that its own excitation is not
+    modelled."""
+    from tests.conftest import TURBINES
+
+    report = audit.run(spec.load(TURBINES / "darrieus.yaml"))
+    said = " ".join(report.assumptions)
+    assert "Not judged: its own excitation" in said and "angle of attack" in said

@@ -626,7 +626,10 @@ def _assumptions(
     out += spec.assumptions
     if spec.rotor.orientation == "vertical-axis":
         out.append(
-            "Vertical-axis rotor: no stiff/soft tower classification; resonance "
-            "checks against per-rev excitations only."
+            "Vertical-axis rotor: no stiff/soft tower classification; resonance checks "
+            "against per-rev excitations only. Not judged: its own excitation — the blades' "
+            "free-stream velocity and angle of attack oscillate over each turn (Hau 7.5.2, "
+            "Fig. 7.28), loading the symmetric and antisymmetric in-plane modes of a "
+            "two-bladed rotor in ways the per-rev lines stand in for, not model."
         )
     return out
