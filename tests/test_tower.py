@@ -188,7 +188,7 @@ def test_an_uncalibrated_concrete_tower_is_judged_as_a_band(write_spec):
     from tests.conftest import TURBINES
 
     text = (TURBINES / "wka-60.yaml").read_text()
-    tolerances = (', tolerance: 0.15}', '"reinforced concrete", tolerance: 0.05}')
+    tolerances = (", tolerance: 0.15}", '"reinforced concrete", tolerance: 0.05}')
     assert all(t in text for t in tolerances)
     untold = text.replace(tolerances[0], "}").replace(tolerances[1], '"reinforced concrete"}')
     bare = spec.load(write_spec(untold, name="w.yaml"))
