@@ -197,3 +197,12 @@ def test_a_vertical_axis_audit_says_what_it_does_not_judge():
     report = audit.run(spec.load(TURBINES / "darrieus.yaml"))
     said = " ".join(report.assumptions)
     assert "Not judged: its own excitation" in said and "angle of attack" in said
+
+
+def test_a_subsystem_s_own_warning_is_not_said_twice(write_spec):
+    """A first tower bending at 0.008 Hz: the tower's own bound (tower.warnings, under 0.05
+    Hz) says it; the bound every mode shares (under 0.01 Hz) does not say it again."""
+    report = audit.run(spec.load(write_spec(modes="fa1: 0.008")))
+    said = [w for w in report.warnings if w.startswith("tower.fa1:")]
+    assert len(said) == 1 and "first tower bending" in said[0]
+    assert audit.MODIFIERS and all(hasattr(m, "modify") for m in audit.MODIFIERS)

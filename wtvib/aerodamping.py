@@ -329,6 +329,13 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
 # Every judged mode
 
 
+def modify(
+    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
+) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:
+    """The :class:`wtvib.analysis.Modifier` protocol: :func:`in_operation`."""
+    return in_operation(spec, built, heavy)
+
+
 def in_operation(
     spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
 ) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:

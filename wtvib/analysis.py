@@ -7,10 +7,14 @@ module added to :data:`wtvib.audit.SUBSYSTEMS`:
 
 1. ``build_modes`` computes (or takes as given) the natural modes, seeing the modes of the
    subsystems before it (``built``; the drive train takes the blades' edgewise frequency);
-2. the audit marks the modes the coupled model supersedes, fills in default damping, and
-   judges every mode against every excitation (:mod:`wtvib.resonance`);
+2. the audit marks the modes the coupled model supersedes, fills in default damping, lets
+   each :class:`Modifier` (:data:`wtvib.audit.MODIFIERS`: the aerodynamic damping) change
+   every mode, and judges every mode against every excitation (:mod:`wtvib.resonance`);
 3. ``analyse`` returns the subsystem's own checks and results, seeing every mode and the
-   judgement of its own (:class:`Context`).
+   judgement of its own (:class:`Context`);
+4. ``warnings(spec, modes)``, where a subsystem has it, names the legal but suspicious
+   values of its part (a tower's first bending at 0.01 Hz, a yaw model without the head's
+   yaw inertia) for the report's warnings.
 """
 
 from collections.abc import Callable, Mapping, Sequence
@@ -97,6 +101,19 @@ class Subsystem(Protocol):
 
     def analyse(self, spec: "Spec", ctx: Context) -> Analysis:
         """The subsystem's own checks and results."""
+        ...
+
+
+class Modifier(Protocol):
+    """What changes every judged mode after the models are built — the aerodynamic damping at
+    the operating points today, a foundation's or a platform's influence later: a module
+    with ``modify``."""
+
+    def modify(
+        self, spec: "Spec", built: "Mapping[str, list[Mode]]", heavy: float
+    ) -> "tuple[dict[str, list[Mode]], tuple[str, ...]]":
+        """Every subsystem's modes, changed, and the statements the report makes about how
+        (``heavy``: the damping ratio above which a mode has no resonant peak)."""
         ...
 
 

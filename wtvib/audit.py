@@ -21,7 +21,7 @@ from . import (
     tower,
     yaw,
 )
-from .analysis import Analysis, Context, Subsystem
+from .analysis import Analysis, Context, Damping, Modifier, Subsystem
 from .errors import SpecError
 from .excitation import OperatingRange, excitations, operating_range
 from .modal import ModalError
@@ -47,6 +47,10 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     aeroelastic,
     stall,
 )
+
+#: What changes every judged mode once the models are built (:class:`wtvib.analysis.Modifier`):
+#: the aerodynamic damping at the operating points.
+MODIFIERS: tuple[Modifier, ...] = (aerodamping,)
 
 
 @dataclass(frozen=True)
@@ -271,14 +275,16 @@ def _run(
             built[sub.NAME] = sub.build_modes(spec, built)
         except ModalError as exc:  # say which model could not be solved
             raise ModalError(f"{sub.NAME} model: {exc}") from None
-    built = _one_truth_per_mode(spec, built)
-    # the aerodynamics (where given) damp every judged mode at the operating points
-    built, aero_notes = aerodamping.in_operation(spec, built, settings.heavy_damping_ratio)
+    damping = {sub.NAME: sub.default_damping(spec) for sub in SUBSYSTEMS}
+    built = _one_truth_per_mode(built, damping)
+    assumptions: list[str] = []
+    for modifier in MODIFIERS:  # the aerodynamics damp every judged mode in operation
+        built, notes = modifier.modify(spec, built, settings.heavy_damping_ratio)
+        assumptions += notes
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
     results: dict[str, Mapping[str, Any]] = {}
-    assumptions: list[str] = list(aero_notes)
     for sub in SUBSYSTEMS:
         found = assess_all(
             built[sub.NAME],
@@ -286,7 +292,7 @@ def _run(
             op,
             rule,
             settings.severities(),
-            sub.default_damping(spec).ratio,
+            damping[sub.NAME].ratio,
             settings.heavy_damping_ratio,
         )
         resonance = resonance_checks(found, op, rule)
@@ -315,7 +321,7 @@ def _run(
         modes=tuple(all_modes),
         checks=tuple(checks),
         findings=tuple(findings),
-        assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions)),
+        assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions, damping)),
         warnings=tuple(
             suspicious(spec, all_modes)
             + _no_tolerance(spec, samples)
@@ -326,7 +332,9 @@ def _run(
     )
 
 
-def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, list[Mode]]:
+def _one_truth_per_mode(
+    built: dict[str, list[Mode]], damping: Mapping[str, Damping]
+) -> dict[str, list[Mode]]:
     """Mark the isolated modes a coupled mode stands for (``replaces``: shown, not judged;
     the first coupled mode of each wins) and give every mode without its own damping its
     subsystem's default, saying where it came from."""
@@ -339,13 +347,13 @@ def _one_truth_per_mode(spec: Spec, built: dict[str, list[Mode]]) -> dict[str, l
     stands_for = {v: present[k] for k, v in replaced.items()}
     out = {}
     for sub in SUBSYSTEMS:
-        damping = sub.default_damping(spec)
+        own = damping[sub.NAME]
         out[sub.NAME] = [
             replace(
                 m,
                 superseded_by=replaced.get(m.id),
-                damping_ratio=damping.ratio if m.damping_ratio is None else m.damping_ratio,
-                damping_source=damping.source if m.damping_ratio is None else m.damping_source,
+                damping_ratio=own.ratio if m.damping_ratio is None else m.damping_ratio,
+                damping_source=own.source if m.damping_ratio is None else m.damping_source,
                 band_hz=m.band_hz or _band_of(m, stands_for.get(m.id)),
             )
             for m in built[sub.NAME]
@@ -467,20 +475,17 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             f"rotor.speed: overspeed {speed.overspeed:g} rpm is more than 150 % of the "
             "highest steady speed"
         )
+    own: list[str] = []  # each subsystem's own warnings about its part
+    for sub in SUBSYSTEMS:
+        hook = getattr(sub, "warnings", None)
+        if hook is not None:
+            own += hook(spec, modes)
+    out += own
     for m in modes:
         slowest = SLOWEST_PLATFORM_HZ if is_platform_mode(m.id) else SLOWEST_MODE_HZ
-        if m.subsystem == "tower" and m.id.endswith(("fa1", "ss1")):
-            if m.frequency_hz > 20:
-                out.append(
-                    f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
-                    "over 20 Hz is implausible (units? kHz, rad/s?)"
-                )
-            elif m.frequency_hz < 0.05:
-                out.append(
-                    f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency "
-                    "under 0.05 Hz is implausible"
-                )
-        elif m.frequency_hz > FASTEST_MODE_HZ:
+        if any(w.startswith(f"{m.id}:") for w in own):
+            continue  # its subsystem said it, with its own bounds
+        if m.frequency_hz > FASTEST_MODE_HZ:
             out.append(
                 f"{m.id}: {m.frequency_hz:.3g} Hz — a natural frequency over "
                 f"{FASTEST_MODE_HZ:g} Hz is implausible for a wind turbine's structure (a "
@@ -493,7 +498,6 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
                 f"{slowest:g} Hz (a period over {1 / slowest:.0f} s) is "
                 "implausible for a wind turbine's structure (units? a typing slip?)"
             )
-    out += _missing_yaw_inertia(spec, modes)
     out += _spikes(spec)
     far = scaling.head_warning(spec)
     if far:
@@ -551,39 +555,12 @@ def _spikes(spec: Spec) -> list[str]:
     return out
 
 
-def _missing_yaw_inertia(spec: Spec, modes: list[Mode]) -> list[str]:
-    """A yaw model on a tower head without a yaw inertia: the frequency can be off by a factor.
-
-    The rotor alone has the inertia J_p/2 about a diameter (a planar body: J_x = J_y + J_z,
-    J_y = J_z), a lower bound of the head's yaw inertia; the yaw frequency scales with
-    1/√J.
-    """
-    head = spec.tower_head
-    first = next((m for m in modes if m.id == "yaw.1"), None)
-    if (
-        first is None
-        or head is None
-        or spec.yaw.inertia_kgm2 is not None
-        or "inertia_yaw_kgm2" in head.model_fields_set
-    ):
-        return []
-    used = head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
-    j_p = yaw.rotor_polar_inertia(spec)
-    text = (
-        f"tower_head.inertia_yaw_kgm2: not given, so the yaw model uses {used:.3g} kg·m² (the "
-        f"head's mass at its CM offset only) and yaw.1 comes out at {first.frequency_hz:.3g} Hz"
-    )
-    if j_p and j_p / 2 > used:
-        estimate = first.frequency_hz * math.sqrt(max(used, 1e-9) / (used + j_p / 2))
-        text += (
-            f"; the rotor alone adds J_p/2 = {j_p / 2:.3g} kg·m², which would put it near "
-            f"{estimate:.3g} Hz"
-        )
-    return [text + " — give the head's yaw inertia"]
-
-
 def _assumptions(
-    spec: Spec, rule: MarginRule, modes: list[Mode], statements: list[str]
+    spec: Spec,
+    rule: MarginRule,
+    modes: list[Mode],
+    statements: list[str],
+    damping: Mapping[str, Damping],
 ) -> list[str]:
     out = [f"Margin rule: {rule.label} — {rule.source}."]
     speed = spec.rotor.speed
@@ -593,17 +570,16 @@ def _assumptions(
             f"the highest steady speed ({speed.overspeed:.4g} rpm) is checked."
         )
     for sub in SUBSYSTEMS:
-        damping = sub.default_damping(spec)
+        own = damping[sub.NAME]
         mine = [m for m in modes if m.subsystem == sub.NAME and m.damping_source]
-        alone = [m.id for m in mine if m.damping_ratio == damping.ratio]
-        added = [m.id for m in mine if m.damping_ratio != damping.ratio]
-        if mine and damping.assumed:  # an assumption is stated only when it was made
+        alone = [m.id for m in mine if m.damping_ratio == own.ratio]
+        added = [m.id for m in mine if m.damping_ratio != own.ratio]
+        if mine and own.assumed:  # an assumption is stated only when it was made
             parts = [f"for {', '.join(alone)}"] if alone else []
             if added:
                 parts.append(f"added to what the dampers give for {', '.join(added)}")
             out.append(
-                f"{sub.NAME}: damping ratio {damping.ratio:.3g} {damping.source} "
-                f"{'; '.join(parts)}."
+                f"{sub.NAME}: damping ratio {own.ratio:.3g} {own.source} {'; '.join(parts)}."
             )
     stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:

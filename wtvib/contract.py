@@ -120,6 +120,12 @@ CHECK_NUMBERS: dict[str, str] = {
     "amplitude_deg": "The yaw amplitude judged [deg].",
     "frequency_with_play_hz": "Effective yaw frequency with the play at that amplitude [Hz].",
     "power_fraction": "Power fractions of the drive train's grid mode over the power range [-].",
+    "damping_nms_rad": "An induction generator's slip damping on its shaft [N·m·s/rad].",
+    "time_constant_s": (
+        "The time constant of the drive train's whole rotation against that damping [s]."
+    ),
+    "wave_periods_s": "The site's wave band (shortest, longest period) [s].",
+    "inside": "The platform modes inside the wave band.",
     "pairs": (
         "Subsystems' modes the chapter names as coupled, at their closest: the two ids and "
         "frequencies [Hz], the rotor speed [rpm], the separation |f₁ − f₂|/min [-] and the "

@@ -934,3 +934,30 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         f"{'included' if t.gravity else 'not included'}.",
         *concrete,
     )
+
+
+#: A first tower bending frequency outside these bounds is implausible [Hz] (units? kHz,
+#: rad/s?): a floating platform's pitch is not the tower's bending, and 20 Hz is a tower of
+#: a few metres.
+FIRST_BENDING_HZ = (0.05, 20.0)
+
+
+def warnings(spec: Spec, modes: Sequence[Mode]) -> list[str]:
+    """The tower's suspicious values: a first bending frequency outside
+    :data:`FIRST_BENDING_HZ`."""
+    low, high = FIRST_BENDING_HZ
+    out = []
+    for m in modes:
+        if m.subsystem != NAME or not m.id.endswith(("fa1", "ss1")):
+            continue
+        if m.frequency_hz > high:
+            out.append(
+                f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency over "
+                f"{high:g} Hz is implausible (units? kHz, rad/s?)"
+            )
+        elif m.frequency_hz < low:
+            out.append(
+                f"{m.id}: {m.frequency_hz:.3g} Hz — a first tower bending frequency under "
+                f"{low:g} Hz is implausible"
+            )
+    return out

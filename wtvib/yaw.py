@@ -436,3 +436,35 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """``yaw.play``, ``yaw.inertia`` and ``yaw.moments`` after the yaw resonance checks."""
     return Analysis(checks=tuple(checks(spec, ctx.op, ctx.rule, ctx.lines)))
+
+
+def warnings(spec: Spec, modes: Sequence[Mode]) -> list[str]:
+    """The yaw model's suspicious inputs: a tower head without a yaw inertia, whose yaw
+    frequency can be off by a factor.
+
+    The rotor alone has the inertia J_p/2 about a diameter (a planar body: J_x = J_y + J_z,
+    J_y = J_z), a lower bound of the head's yaw inertia; the yaw frequency scales with
+    1/√J.
+    """
+    head = spec.tower_head
+    first = next((m for m in modes if m.id == "yaw.1"), None)
+    if (
+        first is None
+        or head is None
+        or spec.yaw.inertia_kgm2 is not None
+        or "inertia_yaw_kgm2" in head.model_fields_set
+    ):
+        return []
+    used = head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
+    j_p = rotor_polar_inertia(spec)
+    text = (
+        f"tower_head.inertia_yaw_kgm2: not given, so the yaw model uses {used:.3g} kg·m² (the "
+        f"head's mass at its CM offset only) and yaw.1 comes out at {first.frequency_hz:.3g} Hz"
+    )
+    if j_p and j_p / 2 > used:
+        estimate = first.frequency_hz * math.sqrt(max(used, 1e-9) / (used + j_p / 2))
+        text += (
+            f"; the rotor alone adds J_p/2 = {j_p / 2:.3g} kg·m², which would put it near "
+            f"{estimate:.3g} Hz"
+        )
+    return [text + " — give the head's yaw inertia"]
