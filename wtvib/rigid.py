@@ -6,7 +6,7 @@ importing the other.
 """
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -14,8 +14,25 @@ from numpy.typing import NDArray
 from . import beam
 from .errors import SpecError
 
-if TYPE_CHECKING:
-    from .spec import TowerHead
+
+class Head(Protocol):
+    """What :func:`nacelle` reads of a tower head (the spec's ``TowerHead`` has it): its mass
+    [kg], CM downwind of the tower axis and above the top [m], inertias about the CM
+    [kg·m²]."""
+
+    @property
+    def mass_kg(self) -> float: ...
+    @property
+    def cm_downwind_m(self) -> float: ...
+    @property
+    def cm_above_top_m(self) -> float: ...
+    @property
+    def inertia_roll_kgm2(self) -> float: ...
+    @property
+    def inertia_pitch_kgm2(self) -> float: ...
+    @property
+    def inertia_yaw_kgm2(self) -> float: ...
+
 
 Array = NDArray[np.float64]
 
@@ -56,7 +73,7 @@ def rotor_points(
     return RotorPoints((hub_radius + b.x).ravel(), m.ravel(), nodes, b)
 
 
-def nacelle(head: "TowerHead", apex: Array, m_rotor: float, j_polar: float) -> Rigid:
+def nacelle(head: Head, apex: Array, m_rotor: float, j_polar: float) -> Rigid:
     """The tower head minus a rotor of mass m_rotor at the apex with polar inertia J_p (and
     J_p/2 about any diameter, exact for three or more blades).
 
