@@ -744,7 +744,11 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
                 f"{blades}P): minor"
             )
         elif f.energy == "minor":
-            text += "; a low-energy harmonic (Hau 7.2.2)"
+            text += (
+                "; a low-energy harmonic (Hau 7.2.2)"
+                if f.excitation.blades is not None
+                else f"; a low-energy line ({f.excitation.description})"
+            )
         elif f.energy == "secondary":
             dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
             text += (
