@@ -135,12 +135,19 @@ def test_a_structural_audit_says_which_aeroelastic_checks_it_made():
 
     from .conftest import TURBINES
 
-    def operation(name: str) -> str:
-        report = audit.run(load(TURBINES / f"{name}.yaml"))
+    from wtvib.spec import from_data
+
+    def operation(name: str, aerodynamics: bool = True) -> str:
+        s = load(TURBINES / f"{name}.yaml")
+        if not aerodynamics:  # the catalogue's Euros has them since; audit it without
+            data = s.model_dump(mode="json", exclude_none=True)
+            data.pop("aerodynamics")
+            s = from_data(data)
+        report = audit.run(s)
         return next(c.message for c in report.checks if c.id == "aerodynamics.operation")
 
-    assert "blade.flutter" in operation("euros-44m")
-    assert "looked for" not in operation("euros-44m")
+    structural = operation("euros-44m", aerodynamics=False)
+    assert "blade.flutter" in structural and "looked for" not in structural
     assert "no aeroelastic instability looked for" in operation("mod-2")
 
 
