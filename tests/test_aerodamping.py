@@ -131,11 +131,9 @@ def test_a_structural_audit_says_which_aeroelastic_checks_it_made():
     """Issue 39: Euros 44 m's report said 'no aeroelastic instability looked for' beside its
     own divergence, flutter and stall checks; MOD-2 has no section data and says so."""
     from wtvib import audit
-    from wtvib.spec import load
+    from wtvib.spec import from_data, load
 
     from .conftest import TURBINES
-
-    from wtvib.spec import from_data
 
     def operation(name: str, aerodynamics: bool = True) -> str:
         s = load(TURBINES / f"{name}.yaml")
