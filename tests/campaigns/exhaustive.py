@@ -18,7 +18,8 @@ SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120 lines of it
 archive tests/data/openfast_decks/rtest_floating.tar.gz). windio-floating: as windio, on
 every key path of the windIO OC3 spar and OC4 semisubmersible (tests/data/windio_floating),
 plus each number at 0, 1e-300 and 1e300; the platform read under the NREL 5-MW catalogue
-turbine and its tower's modes computed. The invariant, as the CLI's: a typed wtvib
+turbine's head on the OC3/OC4 tower (its modes computed on the platform) and audited. The
+invariant, as the CLI's: a typed wtvib
 error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
 line per crash or slow case. tests/FUZZ.md records the campaigns run.
 """
@@ -164,6 +165,21 @@ def windio_cases(work: Path) -> Iterator[Case]:
             yield label, _windio_import(work / "m.yaml", yaml.safe_dump(doc, sort_keys=False))
 
 
+#: The OC3/OC4 tower (Jonkman 2010: 10 → 87.6 m, 6.5 → 3.87 m, walls 27 → 19 mm, E 210 GPa,
+#: ρ 8,500 kg/m³) under the NREL 5-MW's head, so that every mutated platform is audited with
+#: a computed tower on it (the catalogue NREL 5-MW gives its tower's modes).
+FLOATING_TOWER = {
+    "construction": "steel-tube",
+    "height_m": 77.6,
+    "sections": {
+        "height_m": [0.0, 77.6],
+        "outer_diameter_m": [6.5, 3.87],
+        "wall_thickness_m": [0.027, 0.019],
+    },
+    "material": {"youngs_modulus_pa": 2.1e11, "density_kg_m3": 8500.0},
+}
+
+
 def windio_floating_cases() -> Iterator[Case]:
     from wtvib.importers import windio
     from wtvib.importers.windio_platform import platform
@@ -204,7 +220,11 @@ def windio_floating_cases() -> Iterator[Case]:
                         if isinstance(exc, WtvibError):
                             raise
                         raise spec.SpecError(f"{type(exc).__name__}: {exc}") from None
-                    data["tower"]["foundation"] = {"kind": "platform", "platform": floater.block}
+                    data["tower"] = {
+                        **FLOATING_TOWER,
+                        "foundation": {"kind": "platform", "platform": floater.block},
+                    }
+                    data["tower_head"] = {"mass_kg": 350000.0, "cm_above_top_m": 1.97}
                     return data
 
                 yield label, run
