@@ -82,7 +82,7 @@ from .kinematics import (
     skew,
     spin,
 )
-from .multiblade import MODES_KEPT, Sweep, SystemModes, parked, sweep
+from .multiblade import MODES_KEPT, Layout, Sweep, SystemModes, parked, sweep
 from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl, ordinal
 from .rigid import Rigid, nacelle, rotor_points
@@ -160,25 +160,6 @@ def _blade_modes(s: BladeStructure, fe: "blade.BladeFE", count: int) -> BladeMod
         edge,
         length,
     )
-
-
-@dataclass(frozen=True)
-class Layout:
-    """Global degrees of freedom: offsets of each part and the map of the local coordinates.
-
-    ``local[j]`` holds, for blade j, the global index of each local coordinate (−1: held)
-    and ``sign`` its sign (the side-side slope is −θₓ).
-    """
-
-    size: int
-    fa: slice
-    ss: slice
-    torsion: slice
-    yaw: int | None
-    chain: slice
-    blades: slice
-    local: Index
-    sign: Array
 
 
 @dataclass(frozen=True)

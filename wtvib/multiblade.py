@@ -15,7 +15,7 @@ stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -24,11 +24,68 @@ from . import modal
 from .results import ordinal
 from .units import rad_s_to_rpm
 
-if TYPE_CHECKING:
-    from .coupled import Model
-
 Array = NDArray[np.float64]
 Index = NDArray[np.intp]
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Global degrees of freedom: offsets of each part and the map of the local coordinates.
+
+    ``local[j]`` holds, for blade j, the global index of each local coordinate (−1: held)
+    and ``sign`` its sign (the side-side slope is −θₓ).
+    """
+
+    size: int
+    fa: slice
+    ss: slice
+    torsion: slice
+    yaw: int | None
+    chain: slice
+    blades: slice
+    local: Index
+    sign: Array
+
+
+class RotorModes(Protocol):
+    """What is read of the blades' modes: their names and standstill circular frequencies."""
+
+    @property
+    def names(self) -> tuple[str, ...]: ...
+    @property
+    def omega(self) -> Array: ...
+
+
+class Model(Protocol):
+    """What the multi-blade transformation, the tracking and the Floquet check read of the
+    coupled model (:class:`wtvib.coupled.Model`, which builds it): this module does not
+    know how the model is built."""
+
+    @property
+    def layout(self) -> Layout: ...
+    @property
+    def rotor(self) -> RotorModes: ...
+    @property
+    def blades(self) -> int: ...
+    @property
+    def condition(self) -> str: ...
+    @property
+    def k_v(self) -> Array: ...
+    @property
+    def d_v(self) -> Array: ...
+    @property
+    def k_blades(self) -> int: ...
+    @property
+    def multiblade(self) -> tuple[Array, Array, Array, Array, Array]: ...
+    @property
+    def standstill(self) -> tuple[Array, Array, Array]: ...
+    @property
+    def groups(self) -> dict[str, Index]: ...
+    @property
+    def standstill_modes(self) -> modal.Modes: ...
+    def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]: ...
+    def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]: ...
+
 
 #: Coupled modes reported: the lowest ones, up to this many (wtvib's choice: enough for the
 #: first and second tower, blade-flap and drive-train modes of Jonkman et al. Table 9-1).

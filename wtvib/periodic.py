@@ -22,13 +22,12 @@ from numpy.typing import NDArray
 from . import modal
 from .excitation import operating_range
 from .floquet import _GAUSS, GROWTH, MAX_STEPS, REFINE, propagate, steps_for
-from .multiblade import parked
+from .multiblade import Model, parked
 from .resonance import regime_of
 from .results import Check, Rule
 from .units import rad_s_to_hz, rpm_to_rad_s
 
 if TYPE_CHECKING:
-    from .coupled import Model
     from .rules import Status
     from .spec import Spec
 
