@@ -86,6 +86,12 @@ CASES = [
         "names a node or line type",
     ),
     (
+        "line too short",
+        lambda d: d["components"]["mooring"]["lines"][0].update(unstretched_length=50.0),
+        None,
+        "too short for them",
+    ),
+    (
         "no water",
         lambda d: [
             j.update(location=[j["location"][0], j["location"][1], 50.0 + i])

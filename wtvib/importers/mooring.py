@@ -33,6 +33,11 @@ from .deck import Deck, _file, environment, finite, parse
 #: file's repeat angles from building millions).
 MAX_LINES = 1000
 
+#: A line strained beyond this at the undisplaced position cannot be what the file means: it
+#: is too short to reach between its ends (steel chain and wire yield below 1 %, fibre ropes
+#: stretch a few per cent at their breaking load).
+MAX_STRAIN = 0.1
+
 #: How MAP++ names its node types.
 ANCHOR, FAIRLEAD, CONNECT = "fix", "vessel", "connect"
 
@@ -226,6 +231,16 @@ def _body_stiffness(system: Any, path: Path) -> np.ndarray:
         ) from None
     if k.shape != (6, 6) or not np.all(np.isfinite(k)):
         raise SpecError("the moorings' stiffness is not finite", source=str(path))
+    for n, line in enumerate(system.lineList, start=1):
+        tension = max(abs(float(line.TA)), abs(float(line.TB)))
+        ea = float(line.type["EA"])
+        if not tension / ea <= MAX_STRAIN:
+            raise SpecError(
+                f"mooring line {n} is stretched {tension / ea:.0%} of its length ({tension:.3g} N "
+                f"on EA {ea:.3g} N) to reach its ends: it is too short for them (a chain or rope "
+                f"strains under {MAX_STRAIN:.0%}) — check its length and its nodes",
+                source=str(path),
+            )
     return 0.5 * (k + k.T)
 
 
