@@ -176,6 +176,11 @@ def _judge(
     if heavily_damped:
         # no resonant peak to speak of: report, do not judge (see AuditSettings)
         regime_status = {k: ("info" if v != "pass" else v) for k, v in regime_status.items()}
+    if mode.status_cap is not None:  # damping beyond the model: at most the cap
+        cap = STATUS_ORDER[mode.status_cap]
+        regime_status = {
+            k: (mode.status_cap if STATUS_ORDER[v] > cap else v) for k, v in regime_status.items()
+        }
     hit = [name for name in regime_status if violations[name]]
     status = worst([regime_status[name] for name in hit])
     # The governing regime: the first (most steady) one whose status is the worst.
@@ -756,6 +761,12 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
                 "Hau 7.5.2)"
                 if dwelt
                 else "; a secondary harmonic swept in partial load, not at rated speed: milder"
+            )
+        if f.mode.status_cap is not None and f.status == f.mode.status_cap:
+            text += (
+                f"; at most a {f.mode.status_cap}: this mode's damping (a floating platform's "
+                "radiation and viscous damping) is beyond wtvib's model, which takes the "
+                "structure's alone"
             )
         if op.variable and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:  # (info: no need)
             text += f"; exclude {spans} to clear it"

@@ -170,6 +170,9 @@ class Mode:
     origin: str = "given"  # given (in the spec), computed (a subsystem model) or coupled
     replaces: str | None = None  # the isolated mode a coupled mode stands for (if it exists)
     operating: OperatingDamping | None = field(default=None, compare=False)  # in operation
+    #: The worst status a resonance on this mode may take, where its damping is beyond the
+    #: model (a floating platform's rigid-body modes: warn — radiation and viscous damping)
+    status_cap: Status | None = None
     #: The standstill frequency's band [Hz] with lower- and upper-bound inputs (a monopile's
     #: soil, an uncalibrated concrete tower's modulus): judged as a band — a line anywhere
     #: in it, or within the margin of its ends.

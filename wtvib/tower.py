@@ -654,6 +654,7 @@ def _platform_mode(name: str, f: float, share: float) -> Mode:
         frequency_hz=f,
         origin="computed",
         condition="floating",
+        status_cap="warn",
     )
 
 
