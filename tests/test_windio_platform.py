@@ -1,6 +1,7 @@
 """windIO floating platforms a user can get wrong: each one line naming the field, never a
 traceback (wtvib.importers.windio_platform on WISDEM's OC4 description)."""
 
+import math
 from pathlib import Path
 
 import pytest
@@ -167,3 +168,21 @@ def test_a_line_type_with_its_own_mass_and_stiffness_is_taken_as_given():
         )
     )
     assert given > 2 * library
+
+
+def test_a_joint_s_axial_added_mass_coefficient_is_read():
+    """windIO's ``axial_coeffs.Ca`` at a member's end joint sets its end term
+    ρ·C_a,end·πD³/12 (else RAFT's 0.6): OC4's main column (6.5 m) on a keel joint with Ca 1.0
+    gains ρ·0.4·π·6.5³/12 in heave."""
+    from wtvib import hull
+    from wtvib.importers.windio_platform import _Platform
+
+    def heave(edit) -> float:  # type: ignore[no-untyped-def]
+        doc = yaml.safe_load(OC4.read_text())
+        edit(doc)
+        reader = _Platform(windio._paths(doc, (), str(OC4)), OC4)
+        return float(hull.added_mass(reader.members(reader.joints()), 1025.0)[2, 2])
+
+    base = heave(lambda d: None)
+    keel = heave(lambda d: joints(d)[0].update(axial_coeffs={"Ca": 1.0}))
+    assert keel - base == pytest.approx(1025.0 * 0.4 * math.pi * 6.5**3 / 12, rel=1e-9)

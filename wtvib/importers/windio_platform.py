@@ -231,23 +231,7 @@ class _Platform:
                         self.positive(ballast["volume"], f"{bw}.volume"),
                     )
                 )
-        # an end inside another member's side is cut at its surface
-        for end, name in ((0, str(m["joint1"])), (1, str(m["joint2"]))):
-            if name in hosts and hosts[name][0] != i:
-                host = raw[hosts[name][0]][1]
-                h_a = joints[str(host["joint1"])]
-                h_b = joints[str(host["joint2"])]
-                h_axis = (h_b - h_a) / np.linalg.norm(h_b - h_a)
-                axis = (b - a) / length
-                sine = float(np.linalg.norm(np.cross(axis, h_axis)))
-                hg, hd = self.table(host["outer_shape"]["outer_diameter"], "host")
-                radius = float(np.interp(hosts[name][1], hg, hd)) / 2
-                if sine >= MIN_CUT_SINE and radius / sine < 0.45 * length:
-                    cut = radius / sine * axis
-                    if end == 0:
-                        a = a + cut
-                    else:
-                        b = b - cut
+        a, b = self.cut_ends(i, m, a, b, joints, hosts, raw)
         return hull.Member(
             name=str(m["name"]),
             a=a,
@@ -261,13 +245,53 @@ class _Platform:
                 struct.get("outfitting_factor", 1.0), f"{where}.structure.outfitting_factor"
             ),
             ca=self.coefficient(m.get("Ca"), f"{where}.Ca"),
-            ca_end=DEFAULT_CA_END,
+            ca_end=self.axial_ca(m),
             free_ends=(
                 self.free(str(m["joint1"]), i, raw, hosts),
                 self.free(str(m["joint2"]), i, raw, hosts),
             ),
             fills=fills,
         )
+
+    def cut_ends(
+        self,
+        i: int,
+        m: dict[str, Any],
+        a: np.ndarray,
+        b: np.ndarray,
+        joints: dict[str, np.ndarray],
+        hosts: dict[str, tuple[int, float]],
+        raw: list[tuple[int, dict[str, Any]]],
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """The member's ends, each cut back to the surface of the member whose side it
+        enters (its end an axial joint of that member), so that no volume counts twice."""
+        length = float(np.linalg.norm(b - a))
+        axis = (b - a) / length
+        for end, name in ((0, str(m["joint1"])), (1, str(m["joint2"]))):
+            if name not in hosts or hosts[name][0] == i:
+                continue
+            host = raw[hosts[name][0]][1]
+            h_a, h_b = joints[str(host["joint1"])], joints[str(host["joint2"])]
+            h_axis = (h_b - h_a) / np.linalg.norm(h_b - h_a)
+            sine = float(np.linalg.norm(np.cross(axis, h_axis)))
+            hg, hd = self.table(host["outer_shape"]["outer_diameter"], "host")
+            radius = float(np.interp(hosts[name][1], hg, hd)) / 2
+            if sine >= MIN_CUT_SINE and radius / sine < 0.45 * length:
+                cut = radius / sine * axis
+                a, b = (a + cut, b) if end == 0 else (a, b - cut)
+        return a, b
+
+    def axial_ca(self, m: dict[str, Any]) -> float:
+        """The axial (end) added-mass coefficient: the ``axial_coeffs.Ca`` its end joints
+        give (their mean), else :data:`DEFAULT_CA_END`."""
+        given = []
+        for j in self.fp["joints"]:
+            if str(j.get("name")) in (str(m["joint1"]), str(m["joint2"])):
+                coeffs = j.get("axial_coeffs") or {}
+                if isinstance(coeffs, dict) and "Ca" in coeffs:
+                    where = f"components.floating_platform.joints ({j.get('name')}).axial_coeffs.Ca"
+                    given.append(self.number(coeffs["Ca"], where, 0.0, 10.0))
+        return float(np.mean(given)) if given else DEFAULT_CA_END
 
     def free(
         self,
