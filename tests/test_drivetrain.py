@@ -44,7 +44,7 @@ def test_resonance_checks_carry_the_torque_amplification(growian):
 
 def test_the_synchronous_power_curve_is_a_result_the_figure_draws():
     r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
-    curve = r.results["drivetrain"]["power"]
+    curve = r.result(drivetrain.NAME, drivetrain.DrivetrainResults).power
     # Hau Fig. 7.14: the magnetic stiffness falls with power, and so does the frequency
     assert curve.frequency_hz[0] > curve.frequency_hz[-1]
     assert [label for label, _ in curve.lines] == ["1P at 40 rpm", "2P at 40 rpm"]

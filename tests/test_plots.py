@@ -494,7 +494,7 @@ def test_the_drive_train_figure_draws_the_chain_it_was_computed_on(reports):
     from wtvib import drivetrain as model
 
     wka = reports["wka-60"]
-    chain = wka.results["drivetrain"]["chain"]
+    chain = wka.result(model.NAME, model.DrivetrainResults).chain
     again = model.reduce(wka.spec, model.edge_frequency(wka.spec, list(wka.modes)))
     assert chain.names == again.names and list(chain.stiffness) == list(again.stiffness)
     fig = drivetrain.drivetrain_shapes_plot(wka)

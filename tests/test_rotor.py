@@ -16,7 +16,7 @@ def test_three_blades_need_no_floquet_analysis(write_spec):
 
 def test_the_map_is_a_result_for_the_figure():
     r = audit.run(spec.load(TURBINES / "aeroman.yaml"))
-    smap = r.results["rotor"]["map"]
+    smap = r.result(rotor.NAME, rotor.RotorResults).map
     assert len(smap.speeds_rpm) == len(smap.largest) and np.all(np.isfinite(smap.largest))
 
 

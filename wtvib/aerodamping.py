@@ -531,6 +531,13 @@ def _rule_operation() -> Rule:
     )
 
 
+@dataclass(frozen=True)
+class AerodynamicsResults:
+    """What the damping figure draws beside the modes: the operating points' schedule."""
+
+    schedule: bem.Schedule
+
+
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """``aerodynamics.operation`` (the schedule, or that the audit is structural) and
     ``aerodynamics.stability`` (negative total damping of a judged mode anywhere in
@@ -611,7 +618,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             ],
         },
     )
-    return Analysis(checks=(operation, stability(ctx.modes)), results={"schedule": sch})
+    return Analysis(checks=(operation, stability(ctx.modes)), results=AerodynamicsResults(sch))
 
 
 def stability(modes: Sequence[Mode]) -> Check:

@@ -668,6 +668,17 @@ default_damping = blade_damping
 build_modes = no_modes  # it judges the blade's modes
 
 
+@dataclass(frozen=True)
+class AeroelasticResults:
+    """What the blade's stability figures draw: every station's result, the one nearest to
+    flutter (its V-g curves) and its stability-limits chart at the required speed."""
+
+    stations: "tuple[StationResult, ...]"
+    worst: "StationResult"
+    required_speed_m_s: float
+    chart: StabilityChart
+
+
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``blade.divergence`` and ``blade.flutter``, with the station results, the station
     nearest to flutter (its V-g curves) and its stability-limits chart (Hau Fig. 7.6) at the
@@ -680,10 +691,7 @@ def analyse(spec: "Spec", ctx: Context) -> Analysis:
     required = worst.section_speed * (1 + ae.speed_margin)
     return Analysis(
         checks=tuple(found),
-        results={
-            "stations": tuple(stations_),
-            "worst": worst,
-            "required_speed_m_s": required,
-            "chart": stability_chart(worst.section, required),
-        },
+        results=AeroelasticResults(
+            tuple(stations_), worst, required, stability_chart(worst.section, required)
+        ),
     )

@@ -18,7 +18,7 @@ module added to :data:`wtvib.audit.SUBSYSTEMS`:
 """
 
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Protocol
 
 if TYPE_CHECKING:
@@ -54,13 +54,15 @@ class Analysis:
 
     ``lead`` checks go before the subsystem's resonance checks (the tower class), ``checks``
     after them; ``refine`` rewrites each of its resonance checks (the drive train adds the
-    shaft-torque amplification); ``results`` are the typed objects its figures draw.
+    shaft-torque amplification); ``results`` is the subsystem's own typed result object,
+    what its figures draw (``tower.TowerResults``, ``drivetrain.DrivetrainResults`` …;
+    ``Report.result`` gives it back by type).
     """
 
     lead: "tuple[Check, ...]" = ()
     checks: "tuple[Check, ...]" = ()
     refine: "Callable[[Check], Check] | None" = None
-    results: Mapping[str, Any] = field(default_factory=dict)
+    results: object | None = None
     assumptions: tuple[str, ...] = ()
 
 

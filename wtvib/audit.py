@@ -4,7 +4,7 @@ import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -33,6 +33,8 @@ from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
 from .tower import is_platform_mode
 
 REPORT_SCHEMA = "wtvib-report/1"
+
+R = TypeVar("R")
 
 #: The analysed parts of a turbine, in report order: each a module with the subsystem
 #: protocol of :mod:`wtvib.analysis` (modes, default damping, its own checks and results).
@@ -65,13 +67,19 @@ class Report:
     assumptions: tuple[str, ...] = field(default_factory=tuple)
     warnings: tuple[str, ...] = field(default_factory=tuple)
     uncertainty: dict[str, Any] | None = None
-    results: Mapping[str, Mapping[str, Any]] = field(default_factory=dict)  # by subsystem
+    results: Mapping[str, object] = field(default_factory=dict)  # by subsystem (typed)
+
+    def result(self, subsystem: str, kind: type[R]) -> R | None:
+        """A subsystem's typed result object (``Analysis.results``), None where it gave none
+        (a figure asks with the subsystem's NAME and result class)."""
+        found = self.results.get(subsystem)
+        return found if isinstance(found, kind) else None
 
     @property
     def tower_class(self) -> str | None:
         """stiff, soft, soft-soft or resonant (None: no tower classification)."""
-        found = self.results.get("tower", {}).get("class")
-        return found.tower_class if found is not None else None
+        found = self.result(tower.NAME, tower.TowerResults)
+        return found.classification.tower_class if found is not None else None
 
     @property
     def rule(self) -> MarginRule:
@@ -284,7 +292,7 @@ def _run(
     all_modes = [m for ms in built.values() for m in ms]
     checks: list[Check] = []
     findings: list[Finding] = []
-    results: dict[str, Mapping[str, Any]] = {}
+    results: dict[str, object] = {}
     for sub in SUBSYSTEMS:
         found = assess_all(
             built[sub.NAME],
@@ -302,7 +310,7 @@ def _run(
             resonance = [analysis.refine(c) for c in resonance]
         findings += found
         checks += [*analysis.lead, *resonance, *analysis.checks]
-        if analysis.results:
+        if analysis.results is not None:
             results[sub.NAME] = analysis.results
         assumptions += analysis.assumptions
     _assert_finite(all_modes)

@@ -520,14 +520,11 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     )
     checks = tuple(c for c in found if c is not None)
     shares = inertia_shares(spec)
-    results: dict[str, object] = {"power": curve} if curve is not None else {}
     chain = _drawn_chain(spec, ctx.modes)
-    if chain is not None:  # the distribution of inertia and stiffness (Hau Fig. 7.10)
-        results["chain"] = chain
     return Analysis(
         checks=checks,
         refine=torque_refiner(spec, ctx.modes),
-        results=results,
+        results=DrivetrainResults(curve, chain) if curve or chain else None,
         assumptions=(shares_statement(shares),) if shares else (),
     )
 
@@ -572,6 +569,15 @@ def induction_check(spec: Spec, modes: Sequence[Mode]) -> Check | None:
         ),
         numbers={"damping_nms_rad": d_m, "time_constant_s": tau},
     )
+
+
+@dataclass(frozen=True)
+class DrivetrainResults:
+    """What the drive train's figures draw: a synchronous generator's grid mode over power
+    (Hau Fig. 7.14) and the chain its modes were computed on (Fig. 7.10)."""
+
+    power: PowerCurve | None
+    chain: Chain | None
 
 
 def _drawn_chain(spec: Spec, modes: Sequence[Mode]) -> Chain | None:

@@ -370,7 +370,14 @@ def default_damping(spec: "Spec") -> Damping:
 build_modes = no_modes  # its modes are the tower's and the yaw system's; it judges them
 
 
+@dataclass(frozen=True)
+class RotorResults:
+    """What the Floquet figure draws: the stability map over rotor speed."""
+
+    map: StabilityMap
+
+
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``rotor.floquet`` and the stability map it draws (two-bladed rotors)."""
     found, smap = check(spec, ctx.modes)
-    return Analysis(checks=(found,), results={"map": smap} if smap is not None else {})
+    return Analysis(checks=(found,), results=RotorResults(smap) if smap is not None else None)

@@ -354,7 +354,15 @@ default_damping = blade_damping
 build_modes = no_modes  # it judges the blade's modes
 
 
+@dataclass(frozen=True)
+class StallResults:
+    """What the stall figure draws: each judged mode's total damping over the operating
+    points."""
+
+    curves: "dict[str, list[Point]]"
+
+
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``blade.stall.flap1`` and ``blade.stall.edge1``, with the damping curves they judge."""
     found, curves = judge(spec, list(ctx.modes))
-    return Analysis(checks=tuple(found), results={"curves": curves} if curves else {})
+    return Analysis(checks=tuple(found), results=StallResults(curves) if curves else None)

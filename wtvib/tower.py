@@ -736,6 +736,13 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
     return modes(spec)
 
 
+@dataclass(frozen=True)
+class TowerResults:
+    """What the tower's figures draw: its classification (the Campbell diagram's headline)."""
+
+    classification: Classification
+
+
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """The ``tower.class`` check, on the first bending mode as judged (the coupled one where
     the coupled model has it), placed before the tower's resonance checks."""
@@ -756,7 +763,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     lead = (check,) if concept is None else (check, concept)
     waves = wave_check(spec, ctx.own(NAME))
     return Analysis(
-        lead=lead, checks=() if waves is None else (waves,), results={"class": c},
+        lead=lead, checks=() if waves is None else (waves,), results=TowerResults(c),
         assumptions=statements,
     )  # fmt: skip
 

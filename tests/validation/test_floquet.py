@@ -136,7 +136,7 @@ TWO_BLADED = ["mod-0", "mod-1", "mod-2", "wts-75", "wts-3", "wts-4", "growian", 
 def test_every_two_bladed_catalogue_turbine_gets_a_stability_map(name):
     r = audit.run(spec.load(TURBINES / f"{name}.yaml"))
     c = next(c for c in r.checks if c.id == "rotor.floquet")
-    smap = r.results["rotor"]["map"]  # the result the figure draws (not in the JSON)
+    smap = r.result(rotor.NAME, rotor.RotorResults).map  # what the figure draws (not in JSON)
     assert len(smap.speeds_rpm) == len(smap.largest) > 50
     assert "map_rpm" not in c.numbers
     assert c.status == "pass"  # the built designs are stable where they run

@@ -5,6 +5,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .. import aeroelastic, stall
 from ..audit import Report
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, plain_decades, title_height
 
@@ -17,10 +18,10 @@ def flutter_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "blade.flutter"), None)
-    found = report.results.get("aeroelastic", {})
-    if check is None or "worst" not in found:
+    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
+    if check is None or found is None:
         return None
-    worst, required = found["worst"], found["required_speed_m_s"]
+    worst, required = found.worst, found.required_speed_m_s
     fig = Figure(figsize=(7.2, 5.1), dpi=FIGURE_DPI)
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
     heading = fit(
@@ -82,12 +83,12 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "blade.flutter"), None)
-    found = report.results.get("aeroelastic", {})
+    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
     ae = report.spec.blade.aeroelastic
-    if check is None or "chart" not in found or ae is None:
+    if check is None or found is None or ae is None:
         return None
     n = check.numbers
-    chart, speed, worst = found["chart"], found["required_speed_m_s"], found["worst"]
+    chart, speed, worst = found.chart, found.required_speed_m_s, found.worst
     x = 100 * chart.offset_chord
     kilo = 1e-3
     fig = Figure(figsize=(7.2, 4.5), dpi=FIGURE_DPI)
@@ -110,7 +111,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
         x,
         bottom,
         np.where(np.isfinite(flutter_k), flutter_k, bottom),
-        where=np.isfinite(flutter_k),
+        where=np.isfinite(flutter_k).tolist(),
         color="#e53935",
         alpha=0.18,
         lw=0,
@@ -166,7 +167,8 @@ def stall_damping_plot(report: Report) -> "Figure | None":
     """Total and aerodynamic damping of the first flap and edge modes over the wind speed."""
     from matplotlib.figure import Figure
 
-    found = report.results.get("stall", {}).get("curves", {})
+    stall_found = report.result(stall.NAME, stall.StallResults)
+    found = stall_found.curves if stall_found is not None else {}
     by_id = {c.id: c for c in report.checks}
     curves = {name: by_id[f"blade.stall.{name}"] for name in found}
     if not curves:

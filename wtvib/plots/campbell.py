@@ -10,6 +10,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .. import aerodamping
+from .. import tower as tower_model
 from ..audit import Report
 from ..results import Sampled
 from ..rules import STATUS_ORDER
@@ -301,7 +303,8 @@ def _title(report: Report, subsystems: Sequence[str], covered, findings) -> tupl
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
         what = "Darrieus rotor"
     judged = [f for f in findings if f.mode.judged]
-    tower = report.results.get("tower", {}).get("class")
+    tower_found = report.result(tower_model.NAME, tower_model.TowerResults)
+    tower = tower_found.classification if tower_found is not None else None
     cls = (
         f"; tower {tower.tower_class}"
         if tower is not None and any(m.id == tower.mode_id for m in covered)
@@ -504,7 +507,8 @@ def damping_plot(report: Report) -> "Figure | None":
         )
     ax.set_yscale("symlog", linthresh=0.1)
     plain_decades(ax.yaxis)
-    schedule = report.results.get("aerodynamics", {}).get("schedule")
+    aero = report.result(aerodamping.NAME, aerodamping.AerodynamicsResults)
+    schedule = aero.schedule if aero is not None else None
     if schedule is not None and schedule.rated_wind is not None:
         ax.axvline(schedule.rated_wind, color="#616161", lw=0.8, ls="--")
         ax.annotate(

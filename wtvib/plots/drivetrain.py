@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .. import drivetrain as drivetrain_model
 from ..audit import Report
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, title_height
 
@@ -24,7 +25,8 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     if not modes:
         return None
     conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
-    chain = report.results.get("drivetrain", {}).get("chain")
+    found = report.result(drivetrain_model.NAME, drivetrain_model.DrivetrainResults)
+    chain = found.chain if found is not None else None
     panels = len(conditions) + (chain is not None)
     fig = Figure(figsize=(7.5, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
     axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
@@ -90,7 +92,8 @@ def power_curve_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "drivetrain.grid.power"), None)
-    curve = report.results.get("drivetrain", {}).get("power")
+    found = report.result(drivetrain_model.NAME, drivetrain_model.DrivetrainResults)
+    curve = found.power if found is not None else None
     if check is None or curve is None:
         return None
     power = 100 * np.asarray(curve.power_fraction)

@@ -4,6 +4,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .. import rotor
 from ..audit import Report
 from .layout import FIGURE_DPI, fit, fixed_layout, title_height
 
@@ -16,9 +17,10 @@ def floquet_plot(report: Report) -> "Figure | None":
     from matplotlib.figure import Figure
 
     check = next((c for c in report.checks if c.id == "rotor.floquet"), None)
-    smap = report.results.get("rotor", {}).get("map")
-    if check is None or smap is None:
+    found = report.result(rotor.NAME, rotor.RotorResults)
+    if check is None or found is None:
         return None
+    smap = found.map
     rpm, rho = smap.speeds_rpm, smap.largest
     speed = report.spec.rotor.speed
     fig = Figure(figsize=(7.2, 3.85), dpi=FIGURE_DPI)
