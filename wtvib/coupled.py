@@ -391,6 +391,73 @@ def _build(spec: Spec, condition: str) -> Model:
         raise SpecError("the coupled model needs the tower's structure (sections or table)")
     notes: list[str] = []
     rotor = blade_modes(spec, cm.blade_modes)
+    parts_k, parts_m = _tower_parts(spec, notes)
+    n_tor = parts_k[2].shape[0] if len(parts_k) == 3 else 0
+    k_yaw = _yaw_spring(spec, n_tor, notes)
+    chain = _chain(spec, condition, notes)
+    lay = _layout(
+        [part.shape[0] for part in parts_k[:2]], n_tor, k_yaw, chain.m.shape[0], spec, rotor
+    )
+    k_v = np.zeros((lay.size, lay.size))
+    d_v = np.zeros((lay.size, lay.size))
+    m_fixed = np.zeros((lay.size, lay.size))
+    for part, sl in zip(parts_k, (lay.fa, lay.ss, lay.torsion), strict=False):
+        k_v[sl, sl] = part
+    for part, sl in zip(parts_m, (lay.fa, lay.ss, lay.torsion), strict=False):
+        m_fixed[sl, sl] = part
+    if lay.yaw is not None:
+        assert k_yaw is not None
+        k_v[lay.yaw, lay.yaw] += k_yaw
+        if n_tor:
+            top = lay.torsion.stop - 1
+            k_v[top, top] += k_yaw
+            k_v[top, lay.yaw] -= k_yaw
+            k_v[lay.yaw, top] -= k_yaw
+    ch, n_chain = lay.chain, chain.m.shape[0]
+    if n_chain:
+        k_v[ch, ch] = chain.k
+        d_v[ch, ch] = chain.d
+        m_fixed[ch, ch] = chain.m
+    kb = len(rotor.names)
+    for j in range(spec.rotor.blades):
+        blk = slice(lay.blades.start + j * kb, lay.blades.start + (j + 1) * kb)
+        k_v[blk, blk] += np.diag(rotor.omega**2)
+
+    nacelle = _nacelle(spec, rotor, cm.hub_mass_kg, chain.hub_polar)
+    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
+    hub_i = np.array([0.0, 0.5 * chain.hub_polar, 0.5 * chain.hub_polar])
+    rigid = _rigid_mass(nacelle) + _rigid_mass(Rigid(cm.hub_mass_kg, apex, hub_i))
+    if n_chain:
+        # chain masses spin about the shaft (x): roll couples with their rotations
+        for i in range(n_chain):
+            g = ch.start + i
+            rigid[TX, TX] += chain.own[i]
+            _add_pair(m_fixed, lay.local[0, TX], g, -chain.coupling[i])  # θₓ dof is −u_y′
+    else:
+        rigid[TX, TX] += chain.hub_polar
+    model = Model(
+        spec,
+        condition,
+        lay,
+        k_v,
+        d_v,
+        m_fixed,
+        rotor,
+        nacelle,
+        cm.hub_mass_kg,
+        chain.hub_polar,
+        apex,
+        spec.rotor.blades,
+        tuple(notes),
+    )
+    model._scatter(m_fixed, rigid, 0, rigid_only=True)
+    return model
+
+
+def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]]:
+    """The tower's stiffness and mass in fore-aft and side-side bending and, where it has a
+    GJ, torsion — on its foundation, the head left to the coupled model."""
+    t = spec.tower
     b = tower.discretise(t)
     parts_k: list[Array] = []
     parts_m: list[Array] = []
@@ -412,19 +479,41 @@ def _build(spec: Spec, condition: str) -> Model:
         parts_m.append(m)
     else:
         notes.append("tower torsion not modelled (no GJ): the tower top does not twist")
-    n_fa, n_ss = parts_k[0].shape[0], parts_k[1].shape[0]
-    n_tor = parts_k[2].shape[0] if len(parts_k) == 3 else 0
+    return parts_k, parts_m
 
-    k_yaw = None
+
+def _yaw_spring(spec: Spec, n_tor: int, notes: list[str]) -> float | None:
+    """The yaw drive's stiffness (in series with the tower's torsion where the tower's own
+    torsion is not modelled), None where the nacelle's yaw is held."""
     if spec.yaw.has_model:
         k_yaw = yaw.model(spec).drive
         if n_tor == 0 and spec.yaw.tower_torsion_nm_rad:
             k_yaw = yaw.series(k_yaw, spec.yaw.tower_torsion_nm_rad)
-    elif n_tor == 0:
+        return k_yaw
+    if n_tor == 0:
         notes.append("no yaw stiffness and no tower torsion: nacelle yaw held")
+    return None
 
-    # drive train: the chain without its blades (they are modelled here), hub first
-    chain_m = chain_k = chain_d = np.zeros((0, 0))
+
+@dataclass(frozen=True)
+class _Chain:
+    """The drive train without its blades (the coupled model carries them), hub first:
+    M, K, D, each mass's own inertia and its coupling to the nacelle's roll, the hub's polar
+    inertia."""
+
+    m: Array
+    k: Array
+    d: Array
+    own: Array
+    coupling: Array
+    hub_polar: float
+
+
+def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
+    cm = spec.coupled
+    assert cm is not None
+    empty = np.zeros((0, 0))
+    chain_m, chain_k, chain_d = empty, empty, empty
     coupling = own = np.zeros(0)
     hub_polar = cm.hub_inertia_kgm2 or 0.0
     dt = spec.drivetrain
@@ -452,8 +541,21 @@ def _build(spec: Spec, condition: str) -> Model:
             hub_polar = rest[0].inertia_kgm2
     if chain_m.shape[0] == 0:
         notes.append("no flexible drive train: the rotor is held on the nacelle")
-    n_chain = chain_m.shape[0]
+    return _Chain(chain_m, chain_k, chain_d, own, coupling, hub_polar)
 
+
+def _layout(
+    bending: list[int],
+    n_tor: int,
+    k_yaw: float | None,
+    n_chain: int,
+    spec: Spec,
+    rotor: BladeModes,
+) -> Layout:
+    """The global degrees of freedom: the tower's fore-aft, side-side and torsion, the yaw
+    drive's, the chain's, then each blade's modes; each blade's local coordinates mapped
+    onto them (the tower top's and the shaft's motion, its own modes)."""
+    n_fa, n_ss = bending
     kb = len(rotor.names)
     nb = spec.rotor.blades
     offsets = np.cumsum([0, n_fa, n_ss, n_tor, 1 if k_yaw else 0, n_chain, nb * kb])
@@ -472,60 +574,7 @@ def _build(spec: Spec, condition: str) -> Model:
         local[j, TZ] = theta_z
         local[j, PHI] = ch.start if n_chain else -1
         local[j, _RIGID:] = np.arange(bl.start + j * kb, bl.start + (j + 1) * kb)
-
-    k_v = np.zeros((size, size))
-    d_v = np.zeros((size, size))
-    m_fixed = np.zeros((size, size))
-    for part, sl in zip(parts_k, (fa, ss, tor), strict=False):
-        k_v[sl, sl] = part
-    for part, sl in zip(parts_m, (fa, ss, tor), strict=False):
-        m_fixed[sl, sl] = part
-    if yaw_dof is not None:
-        assert k_yaw is not None
-        k_v[yaw_dof, yaw_dof] += k_yaw
-        if n_tor:
-            top = tor.stop - 1
-            k_v[top, top] += k_yaw
-            k_v[top, yaw_dof] -= k_yaw
-            k_v[yaw_dof, top] -= k_yaw
-    if n_chain:
-        k_v[ch, ch] = chain_k
-        d_v[ch, ch] = chain_d
-        m_fixed[ch, ch] = chain_m
-    for j in range(nb):
-        blk = slice(bl.start + j * kb, bl.start + (j + 1) * kb)
-        k_v[blk, blk] += np.diag(rotor.omega**2)
-
-    nacelle = _nacelle(spec, rotor, cm.hub_mass_kg, hub_polar)
-    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
-    rigid = _rigid_mass(nacelle) + _rigid_mass(
-        Rigid(cm.hub_mass_kg, apex, np.array([0.0, 0.5 * hub_polar, 0.5 * hub_polar]))
-    )
-    if n_chain:
-        # chain masses spin about the shaft (x): roll couples with their rotations
-        for i in range(n_chain):
-            g = ch.start + i
-            rigid[TX, TX] += own[i]
-            _add_pair(m_fixed, local[0, TX], g, -coupling[i])  # sign: θₓ dof is −u_y′
-    else:
-        rigid[TX, TX] += hub_polar
-    model = Model(
-        spec,
-        condition,
-        Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign),
-        k_v,
-        d_v,
-        m_fixed,
-        rotor,
-        nacelle,
-        cm.hub_mass_kg,
-        hub_polar,
-        apex,
-        nb,
-        tuple(notes),
-    )
-    model._scatter(m_fixed, rigid, 0, rigid_only=True)
-    return model
+    return Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign)
 
 
 def _add_pair(m: Array, i: int, j: int, value: float) -> None:
