@@ -34,7 +34,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 Array = NDArray[np.float64]
 
@@ -187,19 +187,18 @@ def _inner(member: Member, s: float) -> float:
     return max(max(sides) - 2 * wall, 0.0)
 
 
-def _about_axis(axis: Array, along: float, across: float) -> Array:
-    """A 3 × 3 inertia with ``along`` about the axis and ``across`` about any normal."""
+def _about_axis(axis: Array, along: ArrayLike, across: ArrayLike) -> Array:
+    """3 × 3 inertias (one per entry of ``along``/``across``) with ``along`` about the axis
+    and ``across`` about any normal to it."""
     q = np.outer(axis, axis)
-    return np.asarray(along * q + across * (np.eye(3) - q))
+    along, across = np.asarray(along, dtype=float), np.asarray(across, dtype=float)
+    return np.asarray(along[..., None, None] * q + across[..., None, None] * (np.eye(3) - q))
 
 
 def _tubes(member: Member, cut: Slices, mass: Array, outer: Array, inner: Array) -> Array:
     """Slices of tube of ``mass`` each, between diameters ``outer`` and ``inner``."""
     r2 = (outer**2 + inner**2) / 4  # (R_o² + R_i²)
-    q = np.outer(member.axis, member.axis)
-    along = mass * r2 / 2
-    across = mass * (r2 / 4 + cut.dl**2 / 12)
-    j = along[:, None, None] * q + across[:, None, None] * (np.eye(3) - q)
+    j = _about_axis(member.axis, mass * r2 / 2, mass * (r2 / 4 + cut.dl**2 / 12))
     return at_points(mass[:, None, None] * np.eye(3), cut.r, j)
 
 
@@ -227,6 +226,11 @@ def structure(member: Member) -> Array:
     return out * member.outfitting
 
 
+def _is_level(member: Member) -> bool:
+    """Within ``LEVEL_DEG`` of the horizontal: its water lies along it, not from one end."""
+    return bool(abs(member.axis[2]) < np.sin(np.radians(LEVEL_DEG)))
+
+
 def held(member: Member, fill: Fill, level: float, cut: Slices | None = None) -> Array:
     """The volume in each slice of the fill's compartment below the water ``level`` [m³]: a
     steep member's slices by the share of their height below it, a level one's (within
@@ -235,7 +239,7 @@ def held(member: Member, fill: Fill, level: float, cut: Slices | None = None) ->
     cut = slices(member) if cut is None else cut
     inside = (cut.s >= fill.start) & (cut.s <= fill.end)
     r = cut.inner / 2
-    if abs(member.axis[2]) < np.sin(np.radians(LEVEL_DEG)):
+    if _is_level(member):
         h = np.clip(level - (cut.r[:, 2] - r), 0.0, 2 * r)
         c = np.clip(r - h, -r, r)
         area = r**2 * np.arccos(np.divide(c, r, out=np.ones_like(r), where=r > 0)) - c * np.sqrt(
@@ -276,7 +280,7 @@ def ballast(member: Member, fill: Fill, water_level: float) -> Array:
     """The fill's ballast below ``water_level`` in its compartment, 6 × 6 at the origin."""
     cut = slices(member)
     volume = held(member, fill, water_level, cut)
-    if abs(member.axis[2]) < np.sin(np.radians(LEVEL_DEG)):
+    if _is_level(member):
         # a level member's water lies in the segment below the level: its centroid
         # (2/3)(r² − e²)^(3/2)/A below the axis, e the level's height above it
         r = cut.inner / 2
@@ -364,12 +368,13 @@ def added_mass(members: Sequence[Member], rho: float) -> Array:
 @dataclass(frozen=True)
 class Trim:
     """The water ballast that floats the platform at its design draft: its volume [m³], the
-    common level it fills the compartments to [m], and what is missing where they are too
-    small (negative: too much weight without any water) [kg]."""
+    common level it fills the compartments to [m], what is missing where they are too small
+    (negative: too much weight without any water) [kg], and the compartments' room [m³]."""
 
     volume: float
     level: float
     shortfall: float
+    room: float
 
 
 def trim(
@@ -383,5 +388,5 @@ def trim(
     room = sum(capacity(m, f) for m, f in compartments)
     volume = float(np.clip(need, 0.0, room))
     if volume <= 0:
-        return Trim(0.0, -np.inf, rho * need)
-    return Trim(volume, level(compartments, volume), rho * (need - volume))
+        return Trim(0.0, -np.inf, rho * need, room)
+    return Trim(volume, level(compartments, volume), rho * (need - volume), room)

@@ -377,7 +377,6 @@ class _Platform:
         carried_total = steel[0, 0] + fixed[0, 0] + points[0, 0] + carried + pull / self.g
         trimmed = hull.trim(float_.volume, self.rho, carried_total, variable)
         water = sum((hull.ballast(m, f, trimmed.level) for m, f in variable), np.zeros((6, 6)))
-        room = sum(hull.capacity(m, f) for m, f in variable)
         body = steel + fixed + points + water
         mass = float(body[0, 0])
         cm = np.array([body[1, 5], -body[0, 5], body[0, 4]]) / mass
@@ -410,7 +409,7 @@ class _Platform:
             "source": f"windIO floating_platform and mooring of {self.path.name} (wtvib.hull: "
             f"strip theory, waterplane hydrostatics; {moor_note})",
         }
-        self.trim_notes(trimmed, steel, fixed, water, float_, room)
+        self.trim_notes(trimmed, steel, fixed, water, float_)
         if self.flooded:
             self.notes.append(
                 f"Flooded members ({', '.join(self.flooded)}): the sea water inside them, up to "
@@ -506,8 +505,8 @@ class _Platform:
         fixed: np.ndarray,
         water: np.ndarray,
         float_: hull.Buoyancy,
-        room: float,
     ) -> None:
+        room = trimmed.room
         level = f", z = {trimmed.level:.3g} m" if math.isfinite(trimmed.level) else ""
         self.notes.append(
             f"Ballast: the hull's steel {steel[0, 0]:,.0f} kg, fixed ballast "
