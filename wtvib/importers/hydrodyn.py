@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import hull
 from ..errors import SpecError
 from ..spec import read_text
 from ..units import STANDARD_GRAVITY
@@ -186,13 +187,7 @@ def _members(hd: Deck, rho: float, refz: float) -> _Members:
         wet = r[:, 2] <= surface
         dm = density * np.pi / 4 * np.clip(d - 2 * t, 0, None) ** 2 * ds * wet
         rel = r - np.array([0.0, 0.0, refz])
-        for w, (x, y, z) in zip(dm, rel, strict=True):
-            m6[:3, :3] += w * np.eye(3)
-            m6[3, 3] += w * (y * y + z * z)
-            m6[4, 4] += w * (x * x + z * z)
-            m6[5, 5] += w * (x * x + y * y)
-            m6[0, 4] += w * z
-            m6[1, 3] -= w * z
+        m6 += hull.at_points(dm[:, None, None] * np.eye(3), rel)
     left = (
         f" HydroDyn's {strip} strip-theory members (PropPot false: {strip_volume:,.0f} m³ "
         "below the water line) add added mass and buoyancy wtvib leaves out."
