@@ -512,15 +512,15 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     generator on the grid (``drivetrain.grid.power``), an induction generator's coupling
     (``drivetrain.grid.induction``)."""
     curve = power_curve(spec)
+    chain = _drawn_chain(spec, ctx.modes)  # the chain the modes were computed on
     found = (
         power_check(curve, ctx.op, ctx.rule, ctx.lines, ctx.settings.heavy_damping_ratio)
         if curve is not None
         else None,
-        induction_check(spec, ctx.modes),
+        induction_check(spec, chain, ctx.modes) if chain is not None else None,
     )
     checks = tuple(c for c in found if c is not None)
     shares = inertia_shares(spec)
-    chain = _drawn_chain(spec, ctx.modes)
     return Analysis(
         checks=checks,
         refine=torque_refiner(spec, ctx.modes),
@@ -529,14 +529,14 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     )
 
 
-def induction_check(spec: Spec, modes: Sequence[Mode]) -> Check | None:
+def induction_check(spec: Spec, chain: Chain, modes: Sequence[Mode]) -> Check | None:
     """``drivetrain.grid.induction`` (information): a grid-coupled induction generator ties
     the train to the grid by its slip — a damper, no spring — so the train's "zeroth
     natural frequency" is its whole rotation at the generator's speed, a real root decaying
     with τ = J/d_m rather than a vibration, and its natural frequencies do not depend on
     power (d_m, the torque–slip curve's slope, is the same over its linear part), unlike a
-    synchronous generator's (``drivetrain.grid.power``). Hau 7.3.3, "Grid-coupled
-    induction generator"."""
+    synchronous generator's (``drivetrain.grid.power``); ``chain``: the train the modes
+    were computed on. Hau 7.3.3, "Grid-coupled induction generator"."""
     dt = spec.drivetrain
     g = dt.generator_model
     if (
@@ -544,7 +544,6 @@ def induction_check(spec: Spec, modes: Sequence[Mode]) -> Check | None:
         or g.rated_slip is None
     ):
         return None
-    chain = reduce(spec, edge_frequency(spec, list(modes)))
     d_m = induction_damping(g.rated_power_kw * 1e3, g.rated_slip, g.pole_pairs, g.grid_frequency_hz)
     tau = float(chain.inertia.sum()) / (d_m * chain.generator_factor)
     grid = sorted(
