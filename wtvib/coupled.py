@@ -673,9 +673,8 @@ def platform_named(
         block = {"tower.fa": lay.fa, "tower.ss": lay.ss, "tower.tor": lay.torsion}[kind]
         xb, mb = x[block], m[block, block]
         if kind == "tower.tor":
-            whole = np.ones(len(xb))  # the tower turning whole on the platform's yaw
-            c = float(whole @ mb @ xb) / float(whole @ mb @ whole)
-            share = c * c * float(whole @ mb @ whole) / float(xb @ mb @ xb)
+            # the tower turning whole on the platform's yaw
+            share = tower.motion_share(xb, mb, np.ones((len(xb), 1)))
             motion = "yaw"
         else:
             direction: Literal["fa", "ss"] = "fa" if kind == "tower.fa" else "ss"

@@ -569,8 +569,14 @@ def rigid_share(x: Array, m: Array, heights: Array) -> float:
     rigid = np.zeros((len(x), 2))
     rigid[0::2, 0] = 1.0  # translation
     rigid[0::2, 1], rigid[1::2, 1] = heights, 1.0  # tilt about the PRP
-    c = np.linalg.solve(rigid.T @ m @ rigid, rigid.T @ m @ x)
-    return float((rigid @ c) @ m @ (rigid @ c)) / float(x @ m @ x)
+    return motion_share(x, m, rigid)
+
+
+def motion_share(x: Array, m: Array, motions: Array) -> float:
+    """The share of a mode's kinetic energy (shape ``x``, mass ``m``) in the span of the
+    given motions (columns of ``motions``): its mass-weighted projection on them."""
+    c = np.linalg.solve(motions.T @ m @ motions, motions.T @ m @ x)
+    return float((motions @ c) @ m @ (motions @ c)) / float(x @ m @ x)
 
 
 def _check_restoring(spec: Spec, b: Beam) -> None:
