@@ -157,7 +157,6 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
     system = mp.System(depth=depth)
     system.lineTypes.update(kinds)
     system.addBody(-1, np.zeros(6))
-    body = system.bodyList[0]
     for angle in angles:
         c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
         ids = {}
@@ -165,18 +164,14 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
             kind = row(cells, n, 5, "NODE PROPERTIES")[1].lower()
             x, y, z = (number(v, n) for v in cells[2:5])
             r = [c * x - s * y, s * x + c * y, z]
-            if kind == FAIRLEAD:
-                system.addPoint(1, r)
-                body.attachPoint(len(system.pointList), r)
-            elif kind in (ANCHOR, CONNECT):
-                system.addPoint(1 if kind == ANCHOR else 0, r)
-            else:
+            role = {FAIRLEAD: "fairlead", ANCHOR: "anchor", CONNECT: "free"}.get(kind)
+            if role is None:
                 raise SpecError(
                     f"node type {cells[1]!r} is not fix, vessel or connect",
                     line=n,
                     source=str(path),
                 )
-            ids[cells[0]] = len(system.pointList)
+            ids[cells[0]] = _add_point(system, role, r)
         for cells, n in line_rows:
             row(cells, n, 5, "LINE PROPERTIES")
             if cells[1] not in kinds or cells[3] not in ids or cells[4] not in ids:
@@ -188,6 +183,16 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
                 raise SpecError("a line needs a positive length", line=n, source=str(path))
             system.addLine(length, cells[1], pointA=ids[cells[3]], pointB=ids[cells[4]])
     return system
+
+
+def _add_point(system: Any, role: str, r: Any) -> int:
+    """A mooring node in the MoorPy system — an ``anchor`` (fixed), a ``fairlead`` (fixed to
+    the platform's body, the system's first) or a ``free`` connection — and its number."""
+    system.addPoint(0 if role == "free" else 1, r)
+    number = len(system.pointList)
+    if role == "fairlead":
+        system.bodyList[0].attachPoint(number, r)
+    return number
 
 
 def _moordyn_system(path: Path, depth: float) -> Any:
@@ -315,7 +320,6 @@ def windio_system(
             f"{kind['m']:.0f} kg/m, EA {kind['EA']:.3g} N"
         )
     system.addBody(-1, np.zeros(6))
-    body = system.bodyList[0]
     ids = {}
     for i, n in enumerate(mooring["nodes"]):
         kind = str(n.get("node_type", ""))
@@ -326,14 +330,10 @@ def windio_system(
             r = np.asarray(n["location"], float)
         else:
             raise fail("a node needs a joint of the platform or a location", f"nodes[{i}]")
-        if kind == "vessel":
-            system.addPoint(1, r)
-            body.attachPoint(len(system.pointList), r)
-        elif kind in ("fixed", "connection"):
-            system.addPoint(1 if kind == "fixed" else 0, r)
-        else:
+        role = {"vessel": "fairlead", "fixed": "anchor", "connection": "free"}.get(kind)
+        if role is None:
             raise fail(f"node_type {kind!r} is not fixed, vessel or connection", f"nodes[{i}]")
-        ids[str(n["name"])] = len(system.pointList)
+        ids[str(n["name"])] = _add_point(system, role, r)
     lines = mooring["lines"]
     if not lines or len(lines) > MAX_LINES:
         raise fail(f"{len(lines)} mooring lines (1 … {MAX_LINES})", "lines")
