@@ -65,3 +65,25 @@ def torsion_mass(inertia_per_length: float, length: float) -> Array:
 def cantilever_divergence_closed_form(gj: float, arm_c_cla: float, length: float) -> float:
     """Uniform cantilever under a uniform dynamic pressure: q_D = π²GJ/(4·e·c·C_Lα·l²)."""
     return math.pi**2 * gj / (4 * arm_c_cla * length**2)
+
+
+def lagged_single_mode_zeta(
+    mass: float, omega: float, damping: float, lift: float, rate: float
+) -> float:
+    """ζ of m·s² + s·(d − l + l·C(s/κ)) + m·ω² = 0 with Jones's C(s̄) = 1 − 0.165·s̄/(s̄ +
+    0.0455) − 0.335·s̄/(s̄ + 0.3) (NACA Report 681; Leishman §8.5), the denominators
+    multiplied out into a quartic and its roots found as a polynomial's (not as a state
+    matrix's eigenvalues, as wtvib does): the oscillating root nearest ω; 1 where none
+    oscillates. ``damping`` d is the whole quasi-steady coefficient, ``lift`` l its
+    lift-slope part, ``rate`` κ = 2W/c."""
+    b1, b2 = 0.0455 * rate, 0.3 * rate
+    p1, p2 = np.poly1d([1.0, b1]), np.poly1d([1.0, b2])
+    s = np.poly1d([1.0, 0.0])
+    structure = np.poly1d([mass, float(damping - lift), mass * omega**2])
+    lagged = p1 * p2 - 0.165 * s * p2 - 0.335 * s * p1
+    roots = (structure * p1 * p2 + s * lagged * float(lift)).roots
+    osc = [r for r in roots if r.imag > 1e-9 * omega]
+    if not osc:
+        return 1.0
+    root = min(osc, key=lambda r: abs(abs(r) - omega))
+    return float(-root.real / abs(root))

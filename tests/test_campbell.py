@@ -30,7 +30,7 @@ def test_campbell_csv_has_a_row_per_mode_and_sample(write_spec):
     csv = report.campbell.to_csv().splitlines()
     assert csv[0] == (
         "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
-        "aeroelastic_frequency_hz,damped_frequency_hz,method"
+        "aeroelastic_frequency_hz,damped_frequency_hz,method,quasi_steady_damping_ratio"
     )
     assert len(csv) == 1 + 3 * 30  # tower.fa1, blade.flap1, blade.edge1 × 30 speeds
     assert any(line.startswith("blade.flap1,0.0000,,,") for line in csv)
@@ -55,6 +55,11 @@ def test_aeroelastic_campbell_follows_the_operating_points(shared):
     flap = data["modes"]["system.blade.flap1.collective"]
     assert set(flap["method"]) <= {"eigenvalue", "overdamped", "first-order"}
     assert len(flap["aeroelastic_frequency_hz"]) == len(flap["damping_ratio"])
+    # the quasi-steady damping beside the judged one, for comparison: the shed wake's lag
+    # of the lift takes damping from the flap modes (tests/validation/test_unsteady.py)
+    steady = np.asarray(flap["quasi_steady_damping_ratio"])
+    assert len(steady) == len(flap["damping_ratio"])
+    assert np.all(np.asarray(flap["damping_ratio"]) < steady)
     n = len(data["wind_m_s"])
     assert n == len(data["rpm"]) == len(data["pitch_deg"]) >= 25
     fa = data["modes"]["system.tower.fa1"]

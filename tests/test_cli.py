@@ -295,7 +295,7 @@ def test_check_writes_the_campbell_csv_and_never_clobbers(tmp_path):
     assert lines[0].startswith("# produced by wtvib ") and "wka-60.yaml, SHA-256 " in lines[0]
     assert lines[1] == (
         "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
-        "aeroelastic_frequency_hz,damped_frequency_hz,method"
+        "aeroelastic_frequency_hz,damped_frequency_hz,method,quasi_steady_damping_ratio"
     )
     assert len(lines) > 30
     assert runner.invoke(app, args).exit_code in (0, 1)  # ours: replaced

@@ -20,14 +20,22 @@ are −C·v with (s = sin φ, c = cos φ, ′ = d/dα)
 C_nn and C_tt are the stall check's c(ψ) for flapwise (ψ = 90° − φ) and edgewise
 (ψ = 180° − φ) motion. Past stall C_L′ < 0 makes C_tt, and in deep stall C_nn, negative.
 
+The C_L′ terms are ½ρcW·C_L′·u·uᵀ, u = (cos φ, sin φ) (:func:`section_lift`): the lift's
+response to the angle of attack, which the shed wake lags (:mod:`wtvib.unsteady`, Jones's
+approximation of Wagner's function); the judged damping has that part lagged, the
+quasi-steady result is kept beside it for comparison.
+
 Models:
 
 * the coupled whole-turbine model (three or more blades): each blade point's velocity from
   the model's kinematics (blade modes, tower-top translation and rotation, drive train),
-  D = Σ Jᵀ C J per blade, in multi-blade coordinates; the damped eigenproblem at each
-  operating point, each mode matched by shape to the structural mode at the same rotor
-  speed (overdamped roots kept, with ζ = 1);
-* isolated blade modes: ζ_a = ∫ C φ² dr / (2ω ∫ m φ² dr) (flap: C_nn, edge: C_tt);
+  D = Σ Jᵀ C J per blade, in multi-blade coordinates, the lift's part through lag states
+  (:func:`wtvib.multiblade.lift_lag`); the damped eigenproblem at each operating point,
+  each mode matched by shape to the structural mode at the same rotor speed (overdamped
+  roots kept, with ζ = 1);
+* isolated blade modes: the single-mode root with the modal coefficient ∫ C φ² dr on the
+  generalised mass ∫ m φ² dr, its lift part lagged (quasi-steady: ζ_a = ∫ C φ² dr /
+  (2ω ∫ m φ² dr); flap: C_nn, edge: C_tt);
 * isolated first tower bending modes: the rotor's hub-velocity damping N_b∫C_nn dr
   (fore-aft) and (N_b/2)∫C_tt dr (side-side, azimuth mean) on the tower's first-mode
   generalised mass, the head plus 33/140 of the tower (a cantilever's equivalent tip
@@ -36,8 +44,9 @@ Models:
   top's slope and the blades' flap share (+40–90 % there) — the isolated value is low.
 
 Neglected and stated: aerodynamic stiffness (the rotor plane's tilt and yaw, blade
-torsion), dynamic inflow and dynamic stall, the tower's own drag. Structural damping is the
-mode's given or assumed ratio, added to the aerodynamic one and stated separately.
+torsion), the apparent mass, dynamic inflow and dynamic stall, the tower's own drag.
+Structural damping is the mode's given or assumed ratio, added to the aerodynamic one and
+stated separately.
 """
 
 import math
@@ -47,12 +56,16 @@ from dataclasses import dataclass, replace
 import numpy as np
 from numpy.typing import NDArray
 
-from . import bem
+from . import bem, unsteady
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .results import Check, Mode, OperatingDamping, Rule
 from .spec import Spec
 
 Array = NDArray[np.float64]
+
+#: A mode's aerodynamic damping ratio at the operating points: with the lift lagged by the
+#: shed wake (judged) and quasi-steady (for comparison).
+Estimate = tuple[Array, Array]
 
 #: A damped mode stands for a structural one when MAC + energy overlap reaches this (of 2);
 #: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
@@ -79,6 +92,17 @@ def section_matrix(
     return out
 
 
+def section_lift(rho: float, chord: Array, w: Array, phi: Array, dcl: Array) -> Array:
+    """The lift slope's part of :func:`section_matrix`: ½ρcW·C_L′·u·uᵀ with
+    u = (cos φ, sin φ) — a section velocity v changes the angle of attack by uᵀv/W and the
+    lift, along u, by ½ρcW²·C_L′ times that. The part the shed wake lags
+    (:mod:`wtvib.unsteady`); the rest (drag, the lift's change with the relative speed and
+    direction) acts at once."""
+    q = 0.5 * rho * chord * w * dcl
+    u = np.stack([np.cos(phi), np.sin(phi)], axis=-1)
+    return np.asarray(q[..., None, None] * u[..., :, None] * u[..., None, :])
+
+
 @dataclass(frozen=True)
 class Sections:
     """The blade sections' damping matrices at each steady operating point."""
@@ -86,13 +110,16 @@ class Sections:
     schedule: bem.Schedule
     radius: Array  # stations [m], (S,)
     c: Array  # per unit length and blade [N·s/m²], (K, S, 2, 2)
+    lift: Array  # the lift slope's part of c (section_lift), (K, S, 2, 2)
+    rate: Array  # each section's reduced rate 2W/c [1/s], (K, S)
 
-    def at(self, radius: Array) -> Array:
-        """The matrices at other radii (K, P, 2, 2): linear between stations, zero
-        outside them."""
+    def at(self, radius: Array, table: Array | None = None) -> Array:
+        """The matrices (``table``, else ``c``) at other radii (K, P, 2, 2): linear
+        between stations, zero outside them."""
         r = np.asarray(radius, float)
         x = self.radius
-        flat = self.c.reshape(len(self.c), len(x), 4)
+        tab = self.c if table is None else table
+        flat = tab.reshape(len(tab), len(x), 4)
         # every point and entry at once, with np.interp's own arithmetic: the slope of the
         # interval times the distance from its start, a station's own value where r is one
         j = np.clip(np.searchsorted(x, r, side="right") - 1, 0, len(x) - 2)
@@ -101,7 +128,7 @@ class Sections:
         out[:, r == x[j]] = flat[:, j][:, r == x[j]]
         out[:, r == x[-1]] = flat[:, -1, None, :]
         out[:, (r < x[0]) | (r > x[-1])] = 0.0
-        return out.reshape(len(self.c), len(r), 2, 2)
+        return out.reshape(len(tab), len(r), 2, 2)
 
 
 def sections(spec: Spec) -> Sections:
@@ -122,7 +149,8 @@ def _sections(spec: Spec) -> Sections:
     cl_m, cd_m = r.polar(sol.alpha - h)
     dcl, dcd = (cl_p - cl_m) / (2 * h), (cd_p - cd_m) / (2 * h)
     c = section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
-    return Sections(sch, r.radius, c)
+    lift = section_lift(r.rho, r.chord, sol.w, sol.phi, dcl)
+    return Sections(sch, r.radius, c, lift, unsteady.lag_rates(sol.w, r.chord))
 
 
 #: A damped root at or above this damping ratio is no oscillation (overdamped: its two
@@ -137,12 +165,18 @@ def _operating(
     source: str,
     part: tuple[str, ...] | None = None,
     roots: tuple[Array, Array, NDArray[np.bool_]] | None = None,
+    quasi: Array | None = None,
 ) -> OperatingDamping:
     """The mode's damping at the operating points; ``roots``: the matched damped roots'
     natural frequency and eigenvalue damping, and where they are first-order estimates —
-    a root damped past critical reports ζ = 1 and is marked overdamped."""
+    a root damped past critical reports ζ = 1 and is marked overdamped; ``quasi``: the
+    aerodynamic damping with quasi-steady lift, kept for comparison (at most 1 in total,
+    as every total)."""
     sol = sch.solution
-    total = np.asarray(aero, float) + structural
+    total = np.minimum(np.asarray(aero, float) + structural, 1.0)
+    steady = None
+    if quasi is not None:
+        steady = tuple(float(min(q + structural, 1.0)) for q in quasi)
     if roots is None:
         natural, method = None, tuple("isolated" for _ in total)
     else:
@@ -164,6 +198,7 @@ def _operating(
         part,
         natural,
         method,
+        steady,
     )
 
 
@@ -181,6 +216,7 @@ class Coupled:
     standstill: Array  # (modes,), the eigenvalue damping at standstill (the dampers)
     first_order: NDArray[np.bool_]  # (K, modes): no damped mode matched, first-order ζ
     parts: tuple[tuple[str, ...], ...]  # (K, modes): where each mode's energy sits there
+    quasi_steady: Array  # (K, modes): ζ with the lift unlagged (quasi-steady), to compare
 
 
 def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
@@ -188,14 +224,23 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     with a rotating multi-blade view); ``reduced``: in the model's Ritz basis
     (``Model.ritz``), else the full model."""
     from . import coupled as coupled_model
-    from .multiblade import at_speeds, fixed_frame_damping, matched, parts, perturbed
+    from .multiblade import (
+        Extra,
+        at_speeds,
+        fixed_frame_damping,
+        lift_lag,
+        matched,
+        parts,
+        perturbed,
+    )
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
         return None
     assert spec.coupled is not None
     model = coupled_model.build(spec, spec.coupled.rotating_condition)
     sol = sec.schedule.solution
-    c_points = sec.at(model.rotor.radius) * model.rotor.length[None, :, None, None]
+    per_length = model.rotor.length[None, :, None, None]
+    c_points = sec.at(model.rotor.radius) * per_length
     # the structural modes at each operating speed, continued from the rotating sweep's
     # nearest speed: the names and reference shapes
     speeds = sorted({round(float(w), 12) for w in sol.omega})
@@ -208,15 +253,37 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     zeta = np.empty((len(sol.omega), kept))
     unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
     part = [parts(model, model.multiblade[0], shapes) for shapes in path.shapes]
-    # every operating point's aerodynamic damping and stiffness at once (stacks)
-    d_aero, k_aero = fixed_frame_damping(model, model.section_damping(c_points), sol.omega)
-    extras = list(zip(d_aero, k_aero, strict=True))
+    # every operating point's aerodynamic damping and stiffness at once (stacks): the
+    # quasi-steady forces, and the lift slope's part of them that the shed wake lags
+    d_qs = model.section_damping(c_points)
+    lift = sec.at(model.rotor.radius, sec.lift) * per_length
+    rated = sec.at(model.rotor.radius, sec.lift * sec.rate[..., None, None]) * per_length
+    d_lift = model.section_damping(lift)
+    lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
+    d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * d_lift
+    d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
+    extras: list[Extra] = [
+        (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
+    ]
     refs = [path.shapes[i] for i in where]
     points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
     damped = matched(model, points, refs, reduced=path.basis)
+    qs_d, qs_k = fixed_frame_damping(model, d_qs, sol.omega)
+    qs_points: list[tuple[float, Extra]] = [
+        (float(om), (d, k)) for om, d, k in zip(sol.omega, qs_d, qs_k, strict=True)
+    ]
+    steady = matched(model, qs_points, refs, reduced=path.basis)
+    quasi = np.empty((len(sol.omega), kept))
     for k, (om, i) in enumerate(zip(sol.omega, where, strict=True)):
         ref, extra = refs[k], extras[k]
         freq[k], zeta[k], score = damped[k]
+        _, quasi[k], qs_score = steady[k]
+        poor_qs = qs_score < MATCH
+        if np.any(poor_qs):
+            z0 = path.damping_ratio[i]
+            w0 = 2 * np.pi * path.frequency_hz[i]
+            lam0 = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
+            quasi[k, poor_qs] = perturbed(model, float(om), qs_points[k][1], ref, lam0)[poor_qs]
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode instead
         poor = score < MATCH
@@ -236,6 +303,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         np.asarray(path.first.damping_ratio),
         unresolved,
         tuple(part[i] for i in where),
+        np.minimum(quasi, 1.0),
     )
 
 
@@ -268,9 +336,10 @@ def blade_mass(spec: Spec, r: Array, root: float) -> Array | None:
     return None
 
 
-def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
+def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     """ζ_a of an isolated blade mode (flap: out-of-plane, edge: in-plane) at each
-    operating point; None without the blade's mass."""
+    operating point, with the lift lagged and quasi-steady (:func:`_single_mode`); None
+    without the blade's mass."""
     kind = mode.id.split(".")[1].rstrip("0123456789")
     if kind not in ("flap", "edge"):
         return None
@@ -288,9 +357,15 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
     if not gen_mass > 0:
         return None
     e = 0 if kind == "flap" else 1
-    c = sec.at(r)[:, :, e, e]
+    weight = shape**2
+
+    def modal(table: Array) -> Array:  # Σ over the span of a section table on the shape
+        return np.asarray(np.trapezoid(sec.at(r, table)[:, :, e, e] * weight, r, axis=1))
+
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return np.asarray(np.trapezoid(c * shape**2, r, axis=1) / (2 * omega * gen_mass))
+    return _single_mode(
+        gen_mass, omega, modal(sec.c), modal(sec.lift), modal(sec.lift * sec.rate[..., None, None])
+    )
 
 
 def tower_mass(spec: Spec) -> float | None:
@@ -306,9 +381,10 @@ def tower_mass(spec: Spec) -> float | None:
     return float(np.sum(b.mass * b.basis.w))
 
 
-def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
+def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     """ζ_a of an isolated first tower bending mode at each operating point (the rotor's
-    damping of the hub's velocity); None for other modes or without the masses."""
+    damping of the hub's velocity), with the lift lagged and quasi-steady
+    (:func:`_single_mode`); None for other modes or without the masses."""
     if mode.id not in ("tower.fa1", "tower.ss1") or spec.tower_head is None:
         return None
     m_tower = tower_mass(spec)
@@ -317,12 +393,33 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Array | None:
     gen_mass = spec.tower_head.mass_kg + TOWER_EQUIVALENT * m_tower
     r = sec.radius
     nb = spec.rotor.blades
-    if mode.id == "tower.fa1":
-        c = nb * np.trapezoid(sec.c[:, :, 0, 0], r, axis=1)
-    else:  # the in-plane velocity of a blade is v·cos ψⱼ: the azimuth mean of cos² is ½
-        c = 0.5 * nb * np.trapezoid(sec.c[:, :, 1, 1], r, axis=1)
+    # fore-aft: the out-of-plane velocity of every blade; side-side: the in-plane velocity
+    # of a blade is v·cos ψⱼ, the azimuth mean of cos² is ½
+    e, share = (0, nb) if mode.id == "tower.fa1" else (1, 0.5 * nb)
+
+    def rotor(table: Array) -> Array:
+        return np.asarray(share * np.trapezoid(table[:, :, e, e], r, axis=1))
+
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return np.asarray(c / (2 * omega * gen_mass))
+    return _single_mode(
+        gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift * sec.rate[..., None, None])
+    )
+
+
+def _single_mode(
+    gen_mass: float, omega: Array, c: Array, lift: Array, lift_rate: Array
+) -> tuple[Array, Array]:
+    """ζ_a of one mode (generalised mass, circular frequency ω at each operating point) with
+    the modal damping coefficient c of the blade-element forces, ``lift`` its lift-slope
+    part and ``lift_rate`` that part weighted by each section's 2W/c: the root with the
+    lift lagged by the shed wake (:func:`wtvib.unsteady.single_mode_roots`; 1 where it
+    does not oscillate) and the quasi-steady c/(2ωm), which may exceed 1."""
+    quasi = np.asarray(c / (2 * omega * gen_mass))
+    # the lift-weighted mean of the sections' rates (one filter stands for them all)
+    rate = np.abs(lift_rate / np.where(lift != 0, lift, 1.0))
+    root = unsteady.single_mode_roots(gen_mass, gen_mass * omega**2, c - lift, lift, rate)
+    lagged = np.where(np.isnan(root), 1.0, -root.real / np.abs(root))
+    return np.asarray(lagged), quasi
 
 
 # ---------------------------------------------------------------------------------------
@@ -356,12 +453,13 @@ def in_operation(
     for sub, modes in built.items():
         done = []
         for m in modes:
-            aero, source = _aerodynamic(spec, m, sec, cpl, index, by_id)
-            if aero is None:
+            found, source = _aerodynamic(spec, m, sec, cpl, index, by_id)
+            if found is None:
                 if m.judged and m.subsystem != "rotor":
                     skipped.setdefault(source, []).append(m.id)
                 done.append(m)
                 continue
+            aero, quasi = found
             if m.id in index and cpl is not None:  # how far |λ| departs from the judged curve
                 f_struct = m.frequency_at(sch.solution.omega)
                 ok = (f_struct > 0) & (aero + (m.damping_ratio or 0.0) < heavy)
@@ -375,15 +473,18 @@ def in_operation(
                 part = tuple(row[j] for row in cpl.parts)
                 roots = (cpl.frequency_hz[:, j], cpl.damping_ratio[:, j], cpl.first_order[:, j])
             done.append(
-                replace(m, operating=_operating(sch, aero, structural, source, part, roots))
+                replace(m, operating=_operating(sch, aero, structural, source, part, roots, quasi))
             )
         out[sub] = done
     notes = [*sch.assumptions, _statement(spec, sch)]
     notes.append(
-        "Aerodynamic damping: quasi-steady blade-element forces linearised at each operating "
-        "point with frozen induction (no dynamic inflow or dynamic stall), lift and drag "
-        f"slopes over ±{bem.SLOPE_STEP_DEG:g}°; aerodynamic stiffness (tilt, yaw, torsion) "
-        "neglected; total damping = aerodynamic + the mode's structural ratio."
+        "Aerodynamic damping: blade-element forces linearised at each operating point with "
+        "frozen induction (no dynamic inflow or dynamic stall), lift and drag slopes over "
+        f"±{bem.SLOPE_STEP_DEG:g}°, the lift's response lagged by the shed wake (Jones's "
+        "approximation of Wagner's function at each section's 2W/c; the quasi-steady "
+        "damping is kept beside it in the Campbell data); aerodynamic stiffness (tilt, yaw, "
+        "torsion) and apparent mass neglected; total damping = aerodynamic + the mode's "
+        "structural ratio."
     )
     if cpl is not None:
         notes.append(
@@ -437,48 +538,50 @@ def _aerodynamic(
     cpl: Coupled | None,
     index: Mapping[str, int],
     by_id: Mapping[str, Mode],
-) -> tuple[Array | None, str]:
-    """A mode's aerodynamic damping ratio at each operating point and the model it came
-    from: the coupled model's where it has the mode (judged), else an isolated estimate for
-    blade and first tower modes (also for isolated modes shown beside a coupled one, and
-    for a coupled mode the coupled model gives none: fewer than three blades); None, and
-    why not, where no model gives one."""
+) -> tuple[Estimate | None, str]:
+    """A mode's aerodynamic damping ratio at each operating point (with the lift lagged,
+    and quasi-steady for comparison) and the model it came from: the coupled model's where
+    it has the mode (judged), else an isolated estimate for blade and first tower modes
+    (also for isolated modes shown beside a coupled one, and for a coupled mode the coupled
+    model gives none: fewer than three blades); None, and why not, where no model gives
+    one."""
     if m.id in index and cpl is not None:
         if not m.judged:
             return None, ""
         j = index[m.id]
         aero = cpl.damping_ratio[:, j] - cpl.standstill[j]
-        return aero, "coupled model, damped eigenvalues at the operating points"
+        quasi = cpl.quasi_steady[:, j] - cpl.standstill[j]
+        return (aero, quasi), "coupled model, damped eigenvalues at the operating points"
     if m.subsystem == "system":  # a coupled mode without a damped solve (N < 3: periodic)
         base = by_id.get(m.replaces or "")
         if base is None or base.subsystem not in ("blade", "tower"):
             return None, _periodic(spec)
-        aero, why = _isolated(spec, base, sec)
-        if aero is None:
+        found, why = _isolated(spec, base, sec)
+        if found is None:
             also = "no isolated estimate covers it either" if why == NO_MODEL else why
             return None, f"{_periodic(spec)}; {also}"
         # the same modal damping coefficient at this mode's frequency: ζ ∝ 1/ω
         omega = sec.schedule.solution.omega
-        aero = aero * base.frequency_at(omega) / m.frequency_at(omega)
-        return aero, (
+        ratio = base.frequency_at(omega) / m.frequency_at(omega)
+        return (found[0] * ratio, found[1] * ratio), (
             f"isolated estimate of {base.id} at this mode's frequency ({_periodic(spec)})"
         )
     return _isolated(spec, m, sec)
 
 
-def _isolated(spec: Spec, m: Mode, sec: Sections) -> tuple[Array | None, str]:
+def _isolated(spec: Spec, m: Mode, sec: Sections) -> tuple[Estimate | None, str]:
     if m.subsystem == "blade" and m.id.split(".")[1].rstrip("0123456789") in ("flap", "edge"):
         aero = isolated_blade(spec, m, sec)
         if aero is None:
             return None, NO_BLADE_MASS
-        return aero, "isolated blade mode, section damping on its shape"
+        return aero, "isolated blade mode, section damping on its shape, lift lagged"
     if m.subsystem == "tower" and m.id in ("tower.fa1", "tower.ss1"):
         aero = isolated_tower(spec, m, sec)
         if aero is None:
             return None, NO_TOWER_MASS
         return aero, (
             "isolated tower mode: the rotor's damping of the hub's translation on the head + "
-            "33/140 of the tower (tilt and blade flexibility left out: low)"
+            "33/140 of the tower, lift lagged (tilt and blade flexibility left out: low)"
         )
     return None, NO_MODEL
 

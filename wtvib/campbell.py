@@ -36,6 +36,9 @@ class Campbell:
     roots: dict[str, tuple[tuple[float, ...] | None, tuple[float, ...] | None, tuple[str, ...]]] = (
         field(default_factory=dict)
     )
+    #: id → the total damping with quasi-steady aerodynamics (no shed-wake lag of the
+    #: lift), for comparison; modes in operation
+    quasi_steady: dict[str, tuple[float, ...]] = field(default_factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
         out: dict[str, Any] = {
@@ -55,6 +58,11 @@ class Campbell:
                     else {}
                 ),
                 **self._roots(mid),
+                **(
+                    {"quasi_steady_damping_ratio": [round(v, 6) for v in self.quasi_steady[mid]]}
+                    if mid in self.quasi_steady
+                    else {}
+                ),
             }
             for mid, (f, z) in self.modes.items()
         }
@@ -72,8 +80,10 @@ class Campbell:
 
     def to_csv(self, identity: str | None = None) -> str:
         """One row per mode and sample: mode, rpm, wind_m_s, pitch_deg, frequency_hz,
-        damping_ratio, aerodynamic_damping_ratio (wind, pitch and the aerodynamic part empty
-        where there is none); ``identity`` (a comment line first: which wtvib, which input)."""
+        damping_ratio, aerodynamic_damping_ratio, the aeroelastic root's natural and damped
+        frequency, how the point was obtained and the quasi-steady damping (wind, pitch and
+        the aerodynamic columns empty where there is none); ``identity`` (a comment line
+        first: which wtvib, which input)."""
         buf = io.StringIO()
         if identity:
             buf.write(f"# {identity}\n")
@@ -91,9 +101,9 @@ class Campbell:
                     else ["", ""]
                 )
                 how = method[i] if method else ""
-                w.writerow(
-                    [mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero, *root, how]
-                )
+                steady = f"{self.quasi_steady[mid][i]:.6f}" if mid in self.quasi_steady else ""
+                row = [mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero]
+                w.writerow([*row, *root, how, steady])
         return buf.getvalue()
 
 
@@ -118,6 +128,7 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
     out: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {}
     aero: dict[str, tuple[float, ...]] = {}
     roots = {}
+    steady: dict[str, tuple[float, ...]] = {}
     for m in picked:
         f = tuple(float(v) for v in m.frequency_at(omega))
         if m.operating is not None and m.operating.omega == tuple(float(v) for v in omega):
@@ -125,7 +136,9 @@ def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:
             aero[m.id] = m.operating.aero
             if m.operating.method is not None:
                 roots[m.id] = (m.operating.natural_hz, m.operating.damped_hz, m.operating.method)
+            if m.operating.quasi_steady is not None:
+                steady[m.id] = m.operating.quasi_steady
         else:
             z = tuple(m.damping_at(float(o), float(m.damping_ratio or 0.0)) for o in omega)
         out[m.id] = (f, z)
-    return Campbell(rpm, wind, pitch, out, aero, roots)
+    return Campbell(rpm, wind, pitch, out, aero, roots, steady)

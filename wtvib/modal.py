@@ -289,10 +289,29 @@ def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
     return np.asarray(np.linalg.eigvals(state_matrix(k, m, d)))
 
 
-def state_matrix(k: Array, m: Array, d: Array) -> Array:
+def state_matrix(
+    k: Array, m: Array, d: Array, lag: tuple[Array, Array, Array, Array] | None = None
+) -> Array:
     """A = [[0, I], [−M⁻¹K, −M⁻¹D]] of M q̈ + D q̇ + K q = 0 in first-order form: the one
-    builder of it. Stacks (..., n, n) broadcast: many speeds or azimuths at once."""
+    builder of it. Stacks (..., n, n) broadcast: many speeds or azimuths at once.
+
+    ``lag`` = (F, P, V, S): first-order states χ with χ̇ = P·q + V·q̇ + S·χ that add the
+    force −F·χ (the lift's lag, :class:`wtvib.multiblade.LiftLag`), appended after q̇:
+    A = [[0, I, 0], [−M⁻¹K, −M⁻¹D, −M⁻¹F], [P, V, S]]."""
     n = k.shape[-1]
+    if lag is not None:
+        f, p, v, s = lag
+        base = state_matrix(k, m, d)
+        extra = s.shape[-1]
+        out = np.zeros((*base.shape[:-2], 2 * n + extra, 2 * n + extra))
+        out[..., : 2 * n, : 2 * n] = base
+        out[..., n : 2 * n, 2 * n :] = -(np.linalg.inv(m) @ f)
+        out[..., 2 * n :, :n] = p
+        out[..., 2 * n :, n : 2 * n] = v
+        out[..., 2 * n :, 2 * n :] = s
+        if not np.all(np.isfinite(out)):
+            raise ModalError(OUT_OF_RANGE)
+        return out
     try:
         minv = np.linalg.inv(m)
     except np.linalg.LinAlgError:
@@ -343,12 +362,26 @@ def oscillations_stacked(
     floor: float | None = None,
     unstable: str = "keep",
     overdamped: bool = False,
+    lag: tuple[Array, Array, Array, Array] | None = None,
 ) -> list[tuple[NDArray[np.complex128], NDArray[np.complex128]]]:
     """:func:`oscillations` of a stack of problems (K and D shaped (p, n, n), one M): the
     state matrices built and solved as one stack (M inverted once, one eigen-solver call
-    for the lot — a sweep's points, an operating schedule's), each filtered alone."""
+    for the lot — a sweep's points, an operating schedule's), each filtered alone.
+
+    ``lag``: first-order states beside the structure (:func:`state_matrix`); roots in which
+    they take part more than the structure does (participation factors, :func:`state_modes`)
+    are the lag's own, not modes of the structure, and are left out."""
     n = k.shape[-1]
-    lams, vecs = np.linalg.eig(state_matrix(k, m, d))
+    lams, vecs = np.linalg.eig(state_matrix(k, m, d, lag))
+    if lag is not None:
+        try:
+            left = np.linalg.inv(vecs)  # rows: the left eigenvectors
+        except np.linalg.LinAlgError:
+            raise ModalError(DEFECTIVE) from None
+        weight = np.abs(vecs * np.swapaxes(left, -1, -2))
+        structure = weight[..., : 2 * n, :].sum(axis=-2) / np.maximum(weight.sum(axis=-2), 1e-300)
+        own = structure < 0.5
+        lams = np.where(own, 0j, lams)  # dropped below as a root of zero size
     return [
         _oscillatory(lam, vec, n, floor, unstable, overdamped)
         for lam, vec in zip(lams, vecs, strict=True)

@@ -188,6 +188,84 @@ def fixed_frame_damping(model: "Model", d: Array, omega: float | Array) -> tuple
     return damping, stiffness
 
 
+@dataclass(frozen=True)
+class LiftLag:
+    """The blades' lift lag states (:mod:`wtvib.unsteady`) in multi-blade coordinates, one
+    set per operating point (stacks): χ̇ = P·z + V·ż + S·χ, the generalised force −F·χ."""
+
+    force: Array  # F (…, n, L)
+    on_position: Array  # P (…, L, n)
+    on_rate: Array  # V (…, L, n)
+    rates: Array  # S (…, L, L)
+
+    def at(self, i: int) -> "LiftLag":
+        """The states of operating point i."""
+        return LiftLag(self.force[i], self.on_position[i], self.on_rate[i], self.rates[i])
+
+    def reduced(self, basis: Array) -> "LiftLag":
+        """In a reduced basis z = Φ·p."""
+        return LiftLag(
+            basis.T @ self.force, self.on_position @ basis, self.on_rate @ basis, self.rates
+        )
+
+
+#: What a point adds to the multi-blade equations: damping and stiffness, and the lift's lag
+#: states where the aerodynamics is unsteady.
+Extra = tuple[Array, Array] | tuple[Array, Array, LiftLag]
+
+
+def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> LiftLag:
+    """Jones's lag of the blades' lift (:mod:`wtvib.unsteady`) on the coupled model.
+
+    ``d_lift`` (p, n, n): the lift slope's part of the section damping (global coordinates,
+    ψ = 0, one matrix per operating point), ``d_rate``: the same with each section's
+    reduced rate 2W/c as a factor; ``omega`` (p,): the rotor speeds. The lag acts on the
+    velocities the lift responds to: the coordinates whose columns ``d_lift`` fills (each
+    blade's modes, the hub's motion). Each such coordinate's velocity goes through one
+    filter per term of Jones's approximation, at its lift-weighted reduced rate; the
+    blades' filters, like their coordinates, in multi-blade form: with z_b = T_b·χ and
+    T_b′ = T_b·R, χ̇ = −(β + Ω·R)·χ + βA·(ż + Ω·R·z) (R constant for three or more blades,
+    so the lagged system stays time-invariant). The immediate share (1 − A₁ − A₂) of the
+    lift stays in the damping matrix (:func:`fixed_frame_damping` of the rest)."""
+    from .unsteady import JONES
+
+    n = d_lift.shape[-1]
+    lay = model.layout
+    blk = np.arange(n)[lay.blades]
+    diag = np.abs(np.diagonal(d_lift, axis1=-2, axis2=-1))
+    used = np.flatnonzero(diag.max(axis=0) > 1e-12 * max(float(diag.max(initial=0.0)), 1e-300))
+    cols = np.union1d(blk, used)
+    width = len(cols)
+    weight = diag[:, cols]
+    rate = np.abs(np.diagonal(d_rate, axis1=-2, axis2=-1))[:, cols]
+    fallback = rate.sum(axis=1, keepdims=True) / np.maximum(
+        weight.sum(axis=1, keepdims=True), 1e-300
+    )
+    kappa = np.where(weight > 0, rate / np.where(weight > 0, weight, 1.0), fallback)
+    b, b1, _, _ = coleman(model.blades, 0.0)
+    turn = np.zeros((width, width))
+    at = np.flatnonzero(np.isin(cols, blk))
+    turn[np.ix_(at, at)] = np.kron(np.linalg.solve(b, b1), np.eye(model.k_blades))
+    pick = np.zeros((width, n))
+    pick[np.arange(width), cols] = 1.0
+    om = np.asarray(omega, float)[:, None, None]
+    mbc, _ = fixed_frame_damping(model, d_lift, omega)
+    f = mbc[..., :, cols]
+    count = len(JONES)
+    points = len(om)
+    force = np.concatenate([f] * count, axis=-1)
+    on_rate = np.zeros((points, count * width, n))
+    on_position = np.zeros_like(on_rate)
+    rates = np.zeros((points, count * width, count * width))
+    for i, (amp, b_i) in enumerate(JONES):
+        beta = b_i * kappa  # (p, width)
+        rows = slice(i * width, (i + 1) * width)
+        on_rate[:, rows] = amp * beta[:, :, None] * pick
+        on_position[:, rows] = amp * beta[:, :, None] * (om * (turn @ pick))
+        rates[:, rows, rows] = -(beta[:, :, None] * np.eye(width) + om * turn)
+    return LiftLag(force, on_position, on_rate, rates)
+
+
 def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
     lay = model.layout
     b, b1, b2, _ = coleman(model.blades, psi)
@@ -267,7 +345,7 @@ def rotating(
     model: "Model",
     omega: float,
     count: int = MODES_KEPT,
-    extra: tuple[Array, Array] | None = None,
+    extra: Extra | None = None,
     reduced: int = 0,
     by_content: bool = False,
 ) -> SystemModes:
@@ -307,13 +385,14 @@ def _selected(lam: NDArray[np.complex128], vec: NDArray[np.complex128], idx: Ind
 
 def _roots(
     model: "Model",
-    points: Sequence[tuple[float, tuple[Array, Array] | None]],
+    points: Sequence[tuple[float, Extra | None]],
     reduced: int,
     overdamped: bool,
 ) -> list[tuple[NDArray[np.complex128], NDArray[np.complex128]]]:
     """The oscillatory roots and their shapes (multi-blade coordinates) at each (Ω, extra
-    matrices) point — D = D₀ + Ω·D₁ (+ extra), K = K₀ + Ω²·K₂ (+ extra) — all points as one
-    stack (modal.oscillations_stacked); ``reduced``: in the model's Ritz basis of that many
+    matrices) point — D = D₀ + Ω·D₁ (+ extra), K = K₀ + Ω²·K₂ (+ extra), with the lift's
+    lag states where the extra holds them (:class:`LiftLag`) — all points as one stack
+    (modal.oscillations_stacked); ``reduced``: in the model's Ritz basis of that many
     standstill modes, the shapes mapped back; ``overdamped``: real roots kept too (a path
     followed by shape keeps heavily damped flap modes). Roots below 1 mHz are the rotor
     turning on a free generator, not oscillations."""
@@ -323,14 +402,30 @@ def _roots(
         m, d0, d1, k0, k2 = model.multiblade
     omega = np.array([om for om, _ in points], dtype=float)[:, None, None]
     d, k = d0 + omega * d1, k0 + omega**2 * k2
+    lags: list[LiftLag] = []
     for i, (_, extra) in enumerate(points):
         if extra is not None:
-            ed, ek = extra
+            ed, ek = extra[0], extra[1]
             if reduced:
                 ed, ek = basis.T @ ed @ basis, basis.T @ ek @ basis
             d[i] += ed
             k[i] += ek
-    found = modal.oscillations_stacked(k, m, d, floor=2 * np.pi * 1e-3, overdamped=overdamped)
+            if len(extra) > 2:
+                lag = extra[2]
+                lags.append(lag.reduced(basis) if reduced else lag)
+    states = None
+    if lags:
+        if len(lags) != len(points):
+            raise ValueError("lift lag states at some points only")
+        states = (
+            np.stack([g.force for g in lags]),
+            np.stack([g.on_position for g in lags]),
+            np.stack([g.on_rate for g in lags]),
+            np.stack([g.rates for g in lags]),
+        )
+    found = modal.oscillations_stacked(
+        k, m, d, floor=2 * np.pi * 1e-3, overdamped=overdamped, lag=states
+    )
     return [(lam, basis @ vec if reduced else vec) for lam, vec in found]
 
 
@@ -610,7 +705,7 @@ class Path:
 
 def track(
     model: "Model",
-    points: list[tuple[float, tuple[Array, Array] | None]],
+    points: list[tuple[float, Extra | None]],
     count: int = MODES_KEPT,
     reduced: bool = False,
 ) -> Path:
@@ -682,7 +777,7 @@ def _same_kind(before: Sequence[str | None], now: Sequence[str | None]) -> Array
 
 def _candidates(
     model: "Model",
-    points: Sequence[tuple[float, tuple[Array, Array] | None]],
+    points: Sequence[tuple[float, Extra | None]],
     count: int,
     basis: int,
     kept: int,
@@ -722,7 +817,7 @@ def _overlap(model: "Model", a: NDArray[np.complex128], b: NDArray[np.complex128
 
 def matched(
     model: "Model",
-    points: Sequence[tuple[float, tuple[Array, Array]]],
+    points: Sequence[tuple[float, Extra]],
     references: Sequence[NDArray[np.complex128]],
     spare: int = 24,
     reduced: int = 0,
@@ -773,22 +868,31 @@ CONTINUED = 0.9
 def perturbed(
     model: "Model",
     omega: float,
-    extra: tuple[Array, Array],
+    extra: Extra,
     reference: NDArray[np.complex128],
     lam: NDArray[np.complex128],
 ) -> Array:
     """ζ of each reference mode (eigenvalue ``lam``, shape x) with ``extra`` damping D and
     stiffness K′ added, to first order: Δλ = −xᴴ(λD + K′)x / xᴴ(2λM + G)x (the left
-    eigenvector of a gyroscopic system is x̄; G: the structural damping matrix)."""
+    eigenvector of a gyroscopic system is x̄; G: the structural damping matrix); lift lag
+    states add their force at λ, F·(λ − S)⁻¹·(P + λV)."""
     m, d0, d1, _, _ = model.multiblade
     g = d0 + omega * d1
-    d, k = extra
+    d, k = extra[0], extra[1]
     x = reference
 
     def quad(a: Array) -> NDArray[np.complex128]:  # xⱼᴴ A xⱼ for every column (BLAS)
         return np.asarray(np.sum(x.conj() * (a @ x), axis=0))
 
     num = lam * quad(d) + quad(k)
+    if len(extra) > 2:
+        lag: LiftLag = extra[2]  # type: ignore[misc]
+        eye = np.eye(lag.rates.shape[-1])
+        for j, lj in enumerate(lam):
+            states = np.linalg.solve(
+                lj * eye - lag.rates, (lag.on_position + lj * lag.on_rate) @ x[:, j]
+            )
+            num[j] += x[:, j].conj() @ (lag.force @ states)
     den = 2 * lam * quad(m) + quad(g)
     new = lam - num / den
     return np.asarray(-new.real / np.abs(new))

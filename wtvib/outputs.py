@@ -21,7 +21,7 @@ CSV_HEADER = b"file,turbine,tower_class,verdict,worst_check,margin,message"
 #: First line of the Campbell data CSV (``check --campbell-csv``).
 CAMPBELL_HEADER = (
     b"mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
-    b"aeroelastic_frequency_hz,damped_frequency_hz,method"
+    b"aeroelastic_frequency_hz,damped_frequency_hz,method,quasi_steady_damping_ratio"
 )
 
 

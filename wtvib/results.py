@@ -116,6 +116,9 @@ class OperatingDamping:
     #: at 1), "first-order" (no damped root resembled the mode: the structural mode's
     #: first-order estimate), "isolated" (an isolated subsystem estimate)
     method: tuple[str, ...] | None = None
+    #: the total damping with quasi-steady aerodynamics (the lift following the angle of
+    #: attack at once, no shed-wake lag) at each point, for comparison; None: not computed
+    quasi_steady: tuple[float, ...] | None = None
 
     @property
     def damped_hz(self) -> tuple[float, ...] | None:

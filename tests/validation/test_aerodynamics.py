@@ -25,7 +25,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import edited_reference
-from wtvib import aerodamping, audit, bem, stall
+from wtvib import aerodamping, audit, bem, stall, unsteady
 from wtvib.importers import load
 from wtvib.results import Mode
 
@@ -171,14 +171,19 @@ def test_flap_damping_of_a_uniform_blade_in_attached_flow(shared: Path):
         ),
         radius,
         c,
+        aerodamping.section_lift(
+            1.225, np.full_like(radius, chord), w, np.zeros_like(w), np.full_like(w, cla)
+        ),
+        unsteady.lag_rates(w, np.full_like(w, chord)),
     )
     spec = nrel.model_copy(
         update={"blade": nrel.blade.model_copy(update={"structure": None, "mass_kg": 61.5 * 300.0})}
     )
     f_hz = 0.7
     mode = Mode("blade.flap1", "blade", "flap", f_hz)
-    zeta = aerodamping.isolated_blade(spec, mode, fake)
-    assert zeta is not None
+    found = aerodamping.isolated_blade(spec, mode, fake)
+    assert found is not None
+    lagged, zeta = found  # the quasi-steady estimate is the closed form's
     xi = np.linspace(0, 1, 4001)
     bl = 1.8751040687
     sg = (math.cosh(bl) + math.cos(bl)) / (math.sinh(bl) + math.sin(bl))
@@ -194,13 +199,16 @@ def test_flap_damping_of_a_uniform_blade_in_attached_flow(shared: Path):
         / (4 * 2 * np.pi * f_hz * 300.0 * np.trapezoid(shape**2, r))
     )
     np.testing.assert_allclose(zeta, closed, rtol=0.01)
+    # with the lift lagged by the shed wake the root is lower, as Theodorsen's F(k) < 1
+    assert np.all(lagged < zeta)
 
 
 def test_still_air_adds_no_damping_in_the_coupled_model(nrel):
     """Zero section matrices: every coupled mode keeps exactly its standstill damping along
     the path (the multi-blade transform adds no damping of its own)."""
     sec = aerodamping.sections(nrel)
-    still = aerodamping.Sections(sec.schedule, sec.radius, np.zeros_like(sec.c))
+    zero = np.zeros_like(sec.c)
+    still = aerodamping.Sections(sec.schedule, sec.radius, zero, zero, sec.rate)
     cpl = aerodamping.coupled(nrel, still)
     assert cpl is not None
     # rotation alone (Coriolis, gyroscopics) is conservative: ζ stays the dampers' own
@@ -247,7 +255,10 @@ def test_nrel5mw_damped_modes_in_operation(nrel):
     for k in flap:
         assert zeta(k).min() > 0.25  # tens of per cent
     for k in edge:
-        assert 0 < zeta(k).max() < 0.05
+        # a few per cent (OpenFAST's linearisation of this deck at 8 m/s: 1.2–1.7 %,
+        # test_unsteady.py); the most, above rated, where the pitched blades' edgewise
+        # motion changes the lift more (5.5 % with the lift lagged, 4.4 % quasi-steady)
+        assert 0 < zeta(k).max() < 0.06
     assert zeta("system.tower.fa1").min() > 0.02 and zeta("system.tower.fa1").max() < 0.15
     assert zeta("system.tower.ss1").max() < 0.02
     # the same ζ in the verdicts: a flap crossing is heavily damped, a side-side one is not

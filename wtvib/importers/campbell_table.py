@@ -24,14 +24,15 @@ from .campbell_results import MAX_MODES, results_spec
 REQUIRED = ("mode", "rpm", "frequency_hz")
 OPTIONAL = ("damping_ratio", "whirl", "frame", "wind_m_s", "description")
 #: Columns of wtvib's own Campbell CSV (``check --campbell-csv``) that a table may carry and
-#: that are not read (the pitch, the damping's aerodynamic part, the aeroelastic root): a
-#: file wtvib wrote reads back.
+#: that are not read (the pitch, the damping's aerodynamic part, the aeroelastic root, the
+#: quasi-steady damping): a file wtvib wrote reads back.
 IGNORED = (
     "pitch_deg",
     "aerodynamic_damping_ratio",
     "aeroelastic_frequency_hz",
     "damped_frequency_hz",
     "method",
+    "quasi_steady_damping_ratio",
 )
 _ID = re.compile(r"^[a-z][a-z0-9_]*(\.[a-z0-9_]+)*$")
 
