@@ -106,7 +106,7 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
         grid.add_row(
             "Damping",
             f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "
-            "(quasi-steady, aerodynamic + structural)",
+            "(aerodynamic + structural, the lift lagged by the shed wake)",
         )
     elif data.get("damping") == "imported":
         grid.add_row("Damping", f"as computed by {data['results']['tool']} at its operating points")

@@ -238,7 +238,7 @@ def _builtin():  # type: ignore[no-untyped-def]
 
 
 def test_nrel5mw_damped_modes_in_operation(nrel):
-    """Open loop, quasi-steady, frozen wake, above 6 m/s (attached flow over most of the
+    """Open loop, frozen induction, lift lagged, above 6 m/s (attached flow over most of the
     span): the physics' pattern (module docstring)."""
     report = audit.run(nrel)
     modes = {m.id: m for m in report.modes if m.operating is not None}

@@ -541,7 +541,7 @@ def damping_plot(report: Report) -> "Figure | None":
     how = (
         f"total, as computed by {tool}"
         if tool
-        else "aerodynamic + structural; quasi-steady, frozen wake"
+        else "aerodynamic + structural; lift lagged by the shed wake, frozen induction"
     )
     heading = fit(f"{report.spec.turbine.name} — damping in operation ({how})", 7.1)
     ax.set_title(heading, fontweight="bold", y=1.0)
