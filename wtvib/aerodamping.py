@@ -52,6 +52,7 @@ stated separately.
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -151,6 +152,37 @@ def _sections(spec: Spec) -> Sections:
     c = section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
     lift = section_lift(r.rho, r.chord, sol.w, sol.phi, dcl)
     return Sections(sch, r.radius, c, lift, unsteady.lag_rates(sol.w, r.chord))
+
+
+def stalled(spec: Spec) -> NDArray[np.bool_]:
+    """At each operating point, whether any section of the blade's outer half is past its
+    lift maximum (C_L′ < 0): where a negative damping can be stall's. In attached flow a
+    pure in-plane motion is still damped negatively where −C_L·sin φ·cos φ (the lift turning
+    with the in-plane velocity) outweighs the drag and C_L′·sin²φ — at a high lift and a
+    small inflow angle, not stall (see :func:`attached_flow_note`)."""
+    sec = sections(spec)
+    outer = sec.radius >= 0.5 * float(sec.radius[-1])
+    return np.asarray(np.any(sec.lift[:, outer, 0, 0] < 0, axis=1))
+
+
+def attached_flow_note(mode_id: str) -> str:
+    """Why a negative damping of an isolated estimate in attached flow warns, not fails."""
+    return (
+        f"{mode_id}: in attached flow (C_L′ > 0 over the blade's outer half), not stall — the "
+        "isolated estimate damps a purely in-plane motion, whose −C_L·sin φ·cos φ (the lift "
+        "turning with the in-plane velocity) can outweigh drag at a high lift and a small "
+        "inflow angle; the mode's out-of-plane share and its couplings, which the coupled "
+        "model (a `coupled` block) holds, are left out: a warning, not a verdict"
+    )
+
+
+def isolated_in_attached_flow(spec: Spec, op: OperatingDamping, negative: Sequence[int]) -> bool:
+    """Whether a mode's negative damping at points ``negative`` is an isolated estimate's in
+    attached flow (then it warns: :func:`attached_flow_note`)."""
+    if op.method is None or any(op.method[k] != "isolated" for k in negative):
+        return False
+    stall = stalled(spec)
+    return len(stall) == len(op.wind) and not any(stall[k] for k in negative)
 
 
 #: A damped root at or above this damping ratio is no oscillation (overdamped: its two
@@ -721,15 +753,20 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             ],
         },
     )
-    return Analysis(checks=(operation, stability(ctx.modes)), results=AerodynamicsResults(sch))
+    return Analysis(
+        checks=(operation, stability(ctx.modes, spec)), results=AerodynamicsResults(sch)
+    )
 
 
-def stability(modes: Sequence[Mode]) -> Check:
-    """Negative total damping of a judged mode at any operating point is an instability."""
+def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
+    """Negative total damping of a judged mode at any operating point is an instability —
+    an isolated estimate's in attached flow a warning (:func:`attached_flow_note`; with
+    ``spec``, whose operating points tell)."""
     rule = Rule(
         "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
-        "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; quasi-steady section damping "
-        "(M. H. Hansen, Wind Energy 10 (2007) 551–577), frozen wake",
+        "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; blade-element section damping "
+        "(M. H. Hansen, Wind Energy 10 (2007) 551–577), the lift lagged by the shed wake "
+        "(Jones's approximation of Wagner's function), frozen induction",
     )
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:
@@ -742,18 +779,23 @@ def stability(modes: Sequence[Mode]) -> Check:
             "structure and tower_head; the coupled model damps every mode it holds)",
             rule,
         )
-    unstable = []
+    unstable, attached = [], []
     for m in damped:
         op = m.operating
         assert op is not None
-        bad = [v for v, z in zip(op.wind, op.total, strict=True) if z < 0]
-        if bad:
+        at = [k for k, z in enumerate(op.total) if z < 0]
+        if not at:
+            continue
+        bad = [op.wind[k] for k in at]
+        if spec is not None and isolated_in_attached_flow(spec, op, at):
+            attached.append((m, bad))
+        else:
             unstable.append((m, bad))
     low = min(damped, key=lambda m: m.operating.total[m.operating.lowest])  # type: ignore[union-attr]
     lop = low.operating
     assert lop is not None
     i = lop.lowest
-    numbers = {
+    numbers: dict[str, Any] = {
         "lowest": {
             "mode": low.id,
             "total_damping_ratio": round(lop.total[i], 6),
@@ -762,6 +804,25 @@ def stability(modes: Sequence[Mode]) -> Check:
         },
         "unstable": {m.id: [round(v, 4) for v in bad] for m, bad in unstable},
     }
+    if attached:
+        numbers["negative_in_attached_flow"] = {
+            m.id: [round(v, 4) for v in bad] for m, bad in attached
+        }
+    # a mode shown but judged on a better model (an isolated estimate a coupled mode
+    # supersedes) whose own damping goes negative: said, with the mode that judges it
+    shown, hidden = [], {}
+    for m in modes:
+        op = m.operating
+        if m.judged or op is None or min(op.total) >= 0:
+            continue
+        j = int(np.argmin(op.total))
+        shown.append(
+            f"{m.id}'s own estimate reaches ζ = {op.total[j]:.4f} at {op.wind[j]:.3g} m/s "
+            f"(judged on {m.superseded_by or 'another model'})"
+        )
+        hidden[m.id] = round(op.total[j], 6)
+    if hidden:
+        numbers["negative_where_not_judged"] = hidden
     if unstable:
         text = "; ".join(
             f"{m.id} negative total damping at {bad[0]:.3g}–{bad[-1]:.3g} m/s"
@@ -770,12 +831,20 @@ def stability(modes: Sequence[Mode]) -> Check:
         return Check(
             f"{NAME}.stability", NAME, "fail", f"aeroelastic instability: {text}", rule, numbers
         )
+    if attached:
+        text = "; ".join(
+            f"{m.id} negative total damping at {bad[0]:.3g}–{bad[-1]:.3g} m/s"
+            for m, bad in attached
+        )
+        notes = "; ".join(attached_flow_note(m.id) for m, _ in attached)
+        return Check(f"{NAME}.stability", NAME, "warn", f"{text} ({notes})", rule, numbers)
     return Check(
         f"{NAME}.stability",
         NAME,
         "pass",
         f"every judged mode positively damped in operation; lowest: {low.id} ζ = "
-        f"{lop.total[i]:.4f} (aerodynamic {lop.aero[i]:+.4f}) at {lop.wind[i]:.3g} m/s",
+        f"{lop.total[i]:.4f} (aerodynamic {lop.aero[i]:+.4f}) at {lop.wind[i]:.3g} m/s"
+        + ("; " + "; ".join(shown) if shown else ""),
         rule,
         numbers,
     )

@@ -28,7 +28,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .aerodamping import blade_mass, blade_shape
+from .aerodamping import (
+    attached_flow_note,
+    blade_mass,
+    blade_shape,
+    isolated_in_attached_flow,
+)
 from .analysis import Analysis, Context, blade_damping, no_modes
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -231,6 +236,16 @@ def _in_operation(spec: "Spec", mode: "Mode") -> list[Point] | None:
     return [_point(op, k, alpha) for k in range(len(alpha))]
 
 
+def _attached(spec: "Spec", mode: "Mode", curve: list[Point]) -> bool:
+    """Whether the negative points of an isolated mode's damping in operation (``curve``,
+    the mode's operating points) lie in attached flow
+    (:func:`wtvib.aerodamping.isolated_in_attached_flow`)."""
+    op = mode.operating
+    if op is None or len(curve) != len(op.wind):
+        return False
+    return isolated_in_attached_flow(spec, op, [k for k, p in enumerate(curve) if p.total < 0])
+
+
 def checks(spec: "Spec", modes: "list[Mode] | tuple[Mode, ...]") -> "list[Check]":
     """The stall checks alone (see :func:`judge`)."""
     return judge(spec, modes)[0]
@@ -303,12 +318,18 @@ def judge(
         if ids is not None:
             where += f", as {ids[lowest]} (the least damped {_KIND[name]} mode there)"
         status: Status
+        attached = (
+            bool(negative) and ids is None and mode is not None and _attached(spec, mode, curve)
+        )
         if negative:
-            status = "fail"
-            text = (
-                f"negative total damping ζ = {low.total:.3f} at {where}; unstable from "
-                f"{negative[0].wind:g} to {negative[-1].wind:g} m/s"
+            status = "warn" if attached else "fail"
+            span = f"from {negative[0].wind:g} to {negative[-1].wind:g} m/s"
+            text = f"negative total damping ζ = {low.total:.4f} at {where}; " + (
+                f"negative {span}" if attached else f"unstable {span}"
             )
+            if attached:
+                assert mode is not None
+                text += f" ({attached_flow_note(mode.id)})"
         elif low_aero.aero < 0:
             status = "warn"
             text = (

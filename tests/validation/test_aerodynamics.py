@@ -415,3 +415,37 @@ def test_a_two_bladed_rotors_coupled_modes_take_the_isolated_estimates(shared: P
     flap = [m for m in report.modes if m.id.startswith("system.blade.flap1")]
     assert flap and all(m.operating is not None for m in flap)
     assert any("2-bladed rotor has periodic coefficients" in a for a in report.assumptions)
+
+
+def test_a_negative_isolated_edge_estimate_in_attached_flow_warns_and_says_why(shared: Path):
+    """Issue 37: the IEA-15 windIO 1.x file (no coupled model: its head is given by mass)
+    had its isolated first edge mode 'unstable' at rated (ζ −0.0003, α_tip 4.3°) and failed
+    as stall. C_L′ > 0 over the outer half there: the negative value is the pure in-plane
+    motion's −C_L·sin φ·cos φ at a high lift and a small inflow angle — the isolated estimate
+    leaves out the mode's out-of-plane share — so both checks warn and say so. The stall
+    rotor, whose edge damping goes negative past stall, still fails (test_catalogue.py)."""
+    s = load(shared / "reference/IEA15/IEA-15-240-RWT.yaml", head_mass=1.017e6)
+    report = audit.run(s)
+    checks = {c.id: c for c in report.checks}
+    edge = next(m for m in report.modes if m.id == "blade.edge1")
+    assert edge.operating is not None
+    negative = [k for k, z in enumerate(edge.operating.total) if z < 0]
+    assert negative and not any(aerodamping.stalled(s)[k] for k in negative)
+    for cid in ("blade.stall.edge1", "aerodynamics.stability"):
+        assert checks[cid].status == "warn", checks[cid].message
+        assert "attached flow" in checks[cid].message
+    stall_rotor = load(Path(__file__).parents[2] / "turbines/stall-rotor-1mw.yaml")
+    flags = aerodamping.stalled(stall_rotor)
+    wind = aerodamping.sections(stall_rotor).schedule.solution.wind
+    assert flags[wind > 15].all() and not flags[wind < 7].any()
+
+
+def test_a_negative_estimate_the_coupled_model_supersedes_is_said(shared: Path):
+    """Issue 37: the IEA-22's isolated first edge estimate goes negative near 9.4 m/s; the
+    coupled mode judges it (positive), and the stability check says both."""
+    windio = pytest.importorskip("windIO")
+    report = audit.run(load(Path(windio.__file__).parent / "examples/turbine/IEA-22-280-RWT.yaml"))
+    stab = next(c for c in report.checks if c.id == "aerodynamics.stability")
+    assert stab.status == "pass"
+    assert "blade.edge1" in stab.numbers["negative_where_not_judged"]
+    assert "blade.edge1's own estimate reaches" in stab.message
