@@ -519,7 +519,19 @@ def _name(
         merged = {g: float(v) for g, v in zip(merged_names, merged_table[:, j], strict=True)}
         top = merged_names[int(np.argmax(merged_table[:, j]))]
         whirl = _whirl(top, shapes[:, j], groups)
+        name, text = _mode_name(top, share, j, dict(counters), whirl)
+        first = top
+        if name in names:  # a name taken: the next group this mode has a share in
+            top = _free_group(top, merged, share, j, names, counters)
+            whirl = _whirl(top, shapes[:, j], groups)
         name, text = _mode_name(top, share, j, counters, whirl)
+        if top != first:
+            text = f"{text}, {merged[first]:.0%} {first} (named by its second share)"
+        if name in names and name.split(".")[-1].startswith("cyclic"):
+            # the other axis of the same cyclic pair (tilt ↔ yaw) where it is free
+            other = _other_axis(name)
+            if other not in names:
+                name = other
         if whirl in ("forward", "backward"):
             text = f"{text}, {whirl} whirl"
         mixed = [
@@ -536,6 +548,37 @@ def _name(
         energy.append(merged)
         whirls.append(whirl)
     return tuple(names), tuple(texts), tuple(energy), tuple(whirls)
+
+
+def _free_group(
+    top: str,
+    merged: Mapping[str, float],
+    share: dict[str, Array],
+    j: int,
+    names: Sequence[str],
+    counters: dict[str, int],
+) -> str:
+    """Mode j's group to be named by when its first group's name is taken (two coupled
+    modes share one blade mode family's coordinate — the AOC 15/50's cyclic edge modes
+    with its tower torsion, 49 % and 43 % each): the next group with a share of at least
+    :data:`CONTENT_SHARE` whose name is free (a part's names are numbered, always free); else
+    its first group (then numbered ``_2``)."""
+    for group, value in sorted(merged.items(), key=lambda kv: -kv[1]):
+        if group == top or value < CONTENT_SHARE:
+            continue
+        if group in _PARTS:
+            return group
+        name, _ = _mode_name(group, share, j, dict(counters), None)
+        if name not in names or (
+            name.split(".")[-1].startswith("cyclic") and _other_axis(name) not in names
+        ):
+            return group
+    return top
+
+
+def _other_axis(name: str) -> str:
+    """The cyclic name of the other axis of the pair (tilt ↔ yaw)."""
+    return name[: -len("tilt")] + "yaw" if name.endswith("tilt") else name[: -len("yaw")] + "tilt"
 
 
 _PARTS = {

@@ -528,3 +528,36 @@ def test_fasts_fore_aft_above_side_side_is_its_assumed_mode_shapes(nrel, shared)
     # of the coupled model by 0.7 % from the rigid head's
     assert fa_ritz == pytest.approx(0.3240, rel=0.02)
     assert ss_ritz == pytest.approx(0.3120, rel=0.02)
+
+
+@pytest.mark.parametrize(
+    "deck",
+    [
+        "reference/AOC15-50/Test08.fst",
+        "reference/AWT27/Test01.fst",
+        "reference/WindPACT1.5/Test13.fst",
+        NREL,
+        "reference/IEA3.4/IEA-3.4-130-RWT_ElastoDyn.dat",
+        "reference/IEA10/IEA-10.0-198-RWT_ElastoDyn.dat",
+    ],
+)
+def test_every_parked_mode_has_a_name_of_its_own(shared, deck):
+    """Issue 37: two coupled modes that share one blade family's coordinate (the AOC 15/50's
+    cyclic edge modes with its tower torsion, 49 % and 43 %; its second flap modes, collective
+    and cyclic mixed by the tower) were named alike and numbered (``cyclic_yaw_2``,
+    ``collective_2``) while the family's other name went unused. The second takes its next
+    group's free name — the other cyclic axis, a part's next number — and says so."""
+    s = importers.load(shared / deck)
+    res = multiblade.parked(coupled.build(s, "locked"))
+    assert not [n for n in res.names if re.search(r"_\d+$", n)], res.names
+    assert len(set(res.names)) == len(res.names)
+    if "AOC" in deck:
+        at = dict(zip(res.names, res.frequency_hz.tolist(), strict=True))
+        # the family complete: one collective and both cyclic axes
+        assert {
+            "blade.flap2.collective",
+            "blade.flap2.cyclic_tilt",
+            "blade.flap2.cyclic_yaw",
+        } <= set(at)
+        # the edge–tower-torsion pair: the one with less edge energy named by its torsion
+        assert at["blade.edge1.cyclic_yaw"] < at["tower.tor1"] < at["tower.tor2"]
