@@ -97,6 +97,32 @@ def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message, schema, mo
         load_mutated(tmp_path, doc)
 
 
+@pytest.mark.parametrize(
+    ("mutate", "message"),
+    [
+        (  # issue 37: the drive train's spring is read now
+            lambda d: d["components"]["drivetrain"]["elastic_properties"].update(
+                spring_constant="stiff"
+            ),
+            r"drivetrain\.elastic_properties\.spring_constant must be a number",
+        ),
+        (
+            lambda d: d["components"]["drivetrain"]["generator"]["elastic_properties"].update(
+                inertia=[-1.0, 1.0, 1.0]
+            ),
+            r"generator\.elastic_properties\.inertia\[0\] must be positive",
+        ),
+    ],
+)
+def test_a_hostile_drive_train_is_one_line(tmp_path, mutate, message):
+    """Issue 37: the drive train's spring and the generator's inertia are read now (the
+    windIO schema lets a string or a negative inertia through): one line naming the field."""
+    doc = iea15()
+    mutate(doc)
+    with pytest.raises(SpecError, match=message):
+        load_mutated(tmp_path, doc)
+
+
 def test_a_negative_component_mass_is_refused(tmp_path, monkeypatch):
     from wtvib.importers import windio_schema
 

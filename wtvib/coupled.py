@@ -719,14 +719,20 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         # the drive train's modes hold in its generator condition; the rest do in any
         return drivetrain.regimes(spec, cond) if name.startswith("drivetrain") else None
 
+    pairs: dict[str, str] = {}
+    chained: set[str] = set()
+
     def stands_for(j: int, name: str, f: float) -> str | None:
-        iso = isolated_id(name, cond)
-        if j < kept(spec) or iso not in known:
+        iso = pairs.get(name, isolated_id(name, cond))
+        if j < kept(spec) or iso not in known or name in chained:
             return iso
         return iso if max(f, known[iso]) <= PAIRED * min(f, known[iso]) else None
 
     if spec.rotor.blades < 3:
         res = parked_named(model)
+        found, chain = counterparts(spec, res.names, cond)
+        pairs.update(found)
+        chained.update(chain)
         return [
             Mode(
                 f"system.{n}",
@@ -745,6 +751,10 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         ]
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
+    order = np.argsort(sw.frequency_hz[0])
+    found, chain = counterparts(spec, [sw.names[j] for j in order], cond)
+    pairs.update(found)
+    chained.update(chain)
     weighted = strain_weighted(spec, model, sw.path.shapes[0])
     lower = default_damping(spec)
     out = []
@@ -768,11 +778,14 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
             if any(w is not None for w in labels)
             else None
         )
+        text = sw.descriptions[j]
+        if name in chained and not name.startswith("drivetrain"):
+            text += ", the drive train's first torsion (the blades against the generator)"
         out.append(
             Mode(
                 f"system.{name}",
                 "system",
-                sw.descriptions[j],
+                text,
                 float(sw.frequency_hz[0, j]),
                 damping_ratio=ratio,
                 damping_source=source,
@@ -795,6 +808,29 @@ DAMPERS_FLOOR = 1e-4
 #: A coupled frequency within this fraction of its isolated counterpart "stays close" (wtvib's
 #: reading of Hau §7.6's "close"; the book gives no figure).
 CLOSE = 0.05
+
+
+def counterparts(
+    spec: Spec, names: Sequence[str], condition: str
+) -> tuple[dict[str, str], frozenset[str]]:
+    """The isolated mode each coupled mode (``names`` in frequency order) stands for
+    (:func:`isolated_id`), with the drive train's chain paired in order: where the isolated
+    chain puts the blades' edgewise spring first (``blade_edge_spring``), its first mode is
+    the blades swinging edgewise, collectively, against the rest of the train — in the coupled
+    model the collective edge mode, named for where its energy sits: ``drivetrain1`` where a
+    geared generator holds much of it (the NREL 5-MW), ``blade.edge1.collective`` where a
+    direct-drive generator holds little (the IEA-15: 1.7 Hz, the isolated chain's 7.7 Hz
+    beside it was judged as a second mode). Those and the drive-train modes pair with
+    ``drivetrain.<condition>.1, 2, …`` in order — by their place in the chain, however far
+    the lumped chain's frequencies lie from the coupled ones (the second set returned)."""
+    out = {n: isolated_id(n, condition) for n in names}
+    dt = spec.drivetrain
+    if dt is None or not dt.chain or not dt.blade_edge_spring or dt.chain[0].name != "blades":
+        return out, frozenset()
+    chain = [n for n in names if n.startswith("drivetrain") or n == "blade.edge1.collective"]
+    for k, n in enumerate(chain, start=1):
+        out[n] = f"drivetrain.{condition}.{k}"
+    return out, frozenset(chain)
 
 
 def isolated_id(name: str, condition: str) -> str:
@@ -825,10 +861,11 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     res = parked_named(model)
     by_id = {m.id: m.frequency_hz for m in isolated}
     rows: list[dict[str, Any]] = []
+    pairs, _ = counterparts(spec, res.names, cond)
     for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
         if name.startswith(PLATFORM):
             continue
-        iso = isolated_id(name, cond)
+        iso = pairs[name]
         f_iso = by_id.get(iso)
         # the judged mode's own standstill value (damped |λ|, as in the modes list)
         f = by_id.get(f"system.{name}", float(f))

@@ -211,8 +211,14 @@ def test_iea15_windio2_coupled_tower_mode_stays_in_the_published_band():
     f = parked(s)
     for name in ("tower.fa1", "tower.ss1"):
         assert 0.17 * 0.95 <= f[name] <= 0.18 * 1.05
+    # the drive train read from the file (issue 37): the rotor turns on its chain, not held
     model = coupled.build(s, "locked")
-    assert any("rotor is held" in a for a in model.assumptions)  # no drive-train chain in windIO
+    assert not any("rotor is held" in a for a in model.assumptions)
+    assert s.drivetrain is not None and [c.name for c in s.drivetrain.chain] == [
+        "blades",
+        "hub",
+        "generator",
+    ]
 
 
 def test_floquet_of_the_periodic_equations_matches_the_multiblade_eigenvalues(nrel):

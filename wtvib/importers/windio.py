@@ -220,6 +220,10 @@ def _to_spec_data(
     gear = reader.gear_ratio()
     if gear:
         data["drivetrain"] = {"gear_ratio": gear}
+    chain = reader.chain(blades, structure, gear or 1.0)
+    if chain is not None:
+        data["drivetrain"] = {**data.get("drivetrain", {}), **chain[0]}
+        notes.append(chain[1])
     if structure and reader.apex:
         data["coupled"] = {**reader.apex, **reader.hub}
     return data
@@ -713,10 +717,81 @@ class _Reader:
             text,
         )
 
+    def chain(
+        self, blades: int, structure: dict[str, Any] | None, gear: float
+    ) -> tuple[dict[str, Any], str] | None:
+        """The drive train as a chain — blades, hub, generator — where the file gives the
+        shaft's spring (``drivetrain.elastic_properties.spring_constant``) and the
+        generator's inertia (``generator.elastic_properties.inertia``, its first entry, about
+        the shaft), read as WISDEM writes an ElastoDyn deck from the same file (GenIner,
+        DTTorSpr, DTTorDmp, HubIner: the IEA-15-240-RWT's deck holds these numbers); None
+        without them or the blades' mass."""
+        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        ep = dt.get("elastic_properties") or {}
+        gen = (dt.get("generator") or {}).get("elastic_properties") or {}
+        spring, inertia = ep.get("spring_constant"), gen.get("inertia")
+        if not spring or not inertia or not structure:
+            return None
+        span = np.asarray(structure["span_m"], float)
+        per_length = np.asarray(structure["mass_per_length_kg_m"], float)
+        j_blades = blades * float(
+            np.trapezoid(per_length * (structure["hub_radius_m"] + span) ** 2, span)
+        )
+        hub_inertia = ((self.c.get("hub") or {}).get("elastic_properties") or {}).get("inertia")
+        raw = {
+            "drivetrain.elastic_properties.spring_constant": spring,
+            "drivetrain.generator.elastic_properties.inertia[0]": _first(inertia),
+            "hub.elastic_properties.inertia[0]": _first(hub_inertia) if hub_inertia else 0.0,
+            "drivetrain.elastic_properties.damping_coefficient": ep.get("damping_coefficient")
+            or 0.0,
+        }
+        values: dict[str, float] = {}
+        for name, v in raw.items():
+            try:
+                values[name] = float(v)  # type: ignore[arg-type]
+            except (TypeError, ValueError):
+                raise self.fail(f"components.{name} must be a number (got {v!r})") from None
+            may_be_zero = name.startswith(("hub", "drivetrain.elastic_properties.damping"))
+            ok = values[name] >= 0 if may_be_zero else values[name] > 0
+            if not (math.isfinite(values[name]) and ok):
+                raise self.fail(f"components.{name} must be positive (got {v!r})")
+        spring = values["drivetrain.elastic_properties.spring_constant"]
+        j_gen = values["drivetrain.generator.elastic_properties.inertia[0]"]
+        j_hub = values["hub.elastic_properties.inertia[0]"]
+        damping = values["drivetrain.elastic_properties.damping_coefficient"]
+        chain: list[dict[str, Any]] = [{"name": "blades", "inertia_kgm2": j_blades}]
+        shafts: list[dict[str, Any]] = [{"stiffness_nm_rad": None}]
+        if j_hub > 0:
+            chain.append({"name": "hub", "inertia_kgm2": j_hub})
+            shafts.append({"stiffness_nm_rad": None})
+        chain.append({"name": "generator", "inertia_kgm2": j_gen, "speed_ratio": gear})
+        shafts[-1] = {
+            "stiffness_nm_rad": float(spring),
+            "damping_nms_rad": max(damping, 0.0),
+        }
+        if j_hub > 0:
+            shafts[0] = {"stiffness_nm_rad": None}
+        note = (
+            f"Drive train: blades {j_blades:,.0f} kg·m² (N·∫m·r² dr), "
+            + (f"hub {j_hub:,.0f} kg·m², " if j_hub > 0 else "")
+            + f"generator {j_gen:,.0f} kg·m² (its elastic inertia about the shaft; on the "
+            f"{'rotor' if gear == 1 else f'{gear:g}:1 generator'} shaft), shaft "
+            f"{float(spring):.4g} N·m/rad and {damping:.4g} N·m·s/rad "
+            "(drivetrain.elastic_properties) — as WISDEM writes GenIner, HubIner, DTTorSpr and "
+            "DTTorDmp into an ElastoDyn deck; the blades' edgewise flexibility between blades "
+            "and hub."
+        )
+        return {"chain": chain, "shafts": shafts}, note
+
     def gear_ratio(self) -> float | None:
         dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
         ratio = (dt.get("gearbox") or {}).get("gear_ratio", dt.get("gear_ratio"))
         return float(ratio) if ratio else None
+
+
+def _first(value: Any) -> Any:
+    """The first entry of a windIO inertia list (about the shaft), or the value itself."""
+    return value[0] if isinstance(value, list) and value else value
 
 
 def _list(a: np.ndarray) -> list[float]:
