@@ -76,7 +76,8 @@ def test_a_drive_train_damped_past_critical_is_one_line(tmp_path):
     from wtvib.yamlio import parse_plain
 
     data = parse_plain((TURBINES / "mod-0-fluid-coupling.yaml").read_text()).data
-    data["drivetrain"]["shafts"][2]["damping_nms_rad"] = 1.0e9
+    data["drivetrain"]["shafts"][2] = {"stiffness_nm_rad": 150.0, "damping_nms_rad": 1.0e9}
+    data["drivetrain"]["shafts"][2]["speed_ratio"] = 45.0
     with pytest.raises(ModalError, match=r"no oscillatory mode at .* power"):
         audit.run(spec.from_data(data))
 
@@ -184,3 +185,41 @@ def test_an_induction_generator_on_the_grid_is_a_damper_and_its_frequencies_igno
     wka_modes = drivetrain.modes(wka)
     wka_chain = drivetrain.reduce(wka, drivetrain.edge_frequency(wka, wka_modes))
     assert drivetrain.induction_check(wka, wka_chain, wka_modes) is None
+
+
+def test_a_fluid_coupling_is_a_damper_of_its_slip_and_no_spring(tmp_path):
+    """Hau 7.3.3: a fluid coupling passes torque by slip, T = T_r·s/s_r: a damper
+    d = T_r/(s_r·ω) on its shaft and no elastic stiffness (the MOD-0 retrofit's: 100 kW at
+    40 rpm × 45, 3 % slip: 530.5 N·m / (0.03 × 188.5 rad/s) = 93.8 N·m·s/rad). Braked, the
+    rotor side hangs on the coupling alone: no spring, so no mode — the fictitious
+    150 N·m/rad spring the spec had carried gave a 0.46 Hz 'locked' mode."""
+    from tests.conftest import TURBINES
+    from wtvib import spec
+    from wtvib.errors import SpecError
+
+    s = spec.load(TURBINES / "mod-0-fluid-coupling.yaml")
+    shaft = s.drivetrain.shafts[2]
+    omega = 40 * math.pi / 30 * 45
+    expected = 100e3 / omega / (0.03 * omega)
+    assert drivetrain.fluid_coupling_damping(s, shaft) == pytest.approx(expected, rel=1e-12)
+    assert expected == pytest.approx(93.8, abs=0.05)
+    chain = drivetrain.reduce(s)
+    assert chain.stiffness[-1] == 0.0
+    assert chain.damping[-1] == pytest.approx(expected * 45**2, rel=1e-12)  # on the rotor
+    locked = [m for m in audit.run(s).modes if m.id.startswith("drivetrain.locked")]
+    assert locked and min(m.frequency_hz for m in locked) > 10.0
+    text = (TURBINES / "mod-0-fluid-coupling.yaml").read_text()
+    for edit, message in (
+        ("    - fluid_coupling:\n", "    - stiffness_nm_rad: 150\n      fluid_coupling:\n"),
+        ("    - fluid_coupling:\n", "    - damping_nms_rad: 5\n      fluid_coupling:\n"),
+    ):
+        bad = tmp_path / "bad.yaml"
+        bad.write_text(text.replace(edit, message))
+        with pytest.raises(SpecError, match="give fluid_coupling alone"):
+            spec.load(bad)
+    from wtvib.yamlio import parse_plain
+
+    data = parse_plain(text).data
+    data["drivetrain"]["shafts"][2] = {"speed_ratio": 45.0}  # neither stiffness nor coupling
+    with pytest.raises(SpecError, match="stiffness_nm_rad is needed"):
+        spec.from_data(data)

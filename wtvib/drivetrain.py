@@ -27,7 +27,8 @@ from .given import given_modes
 from .resonance import lines_met
 from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule
-from .spec import Spec
+from .spec import ChainShaft, Spec
+from .units import rpm_to_rad_s
 
 Array = NDArray[np.float64]
 
@@ -137,6 +138,9 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
     for j, (shaft, mass) in enumerate(zip(dt.shafts, dt.chain[1:], strict=True)):
         i2 = (shaft.speed_ratio / ref) ** 2
         k = None if shaft.stiffness_nm_rad is None else shaft.stiffness_nm_rad * i2
+        shaft_damping = shaft.damping_nms_rad
+        if shaft.fluid_coupling is not None:
+            k, shaft_damping = 0.0, fluid_coupling_damping(spec, shaft)
         if j == 0 and dt.blade_edge_spring and edge_hz and names[0] == "blades":
             k_b = inertia[0] * (2 * math.pi * edge_hz) ** 2
             k = k_b if k is None else 1.0 / (1.0 / k_b + 1.0 / k)
@@ -152,7 +156,7 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
         own.append(mass.inertia_kgm2)
         coupling.append(mass.inertia_kgm2 * mass.speed_ratio / ref)
         stiffness.append(k)
-        damping.append(shaft.damping_nms_rad * i2)
+        damping.append(shaft_damping * i2)
     if not stiffness:
         raise ModelInputError("the drive-train chain has no flexible connection left")
     gen = (dt.chain[-1].speed_ratio / ref) ** 2
@@ -165,6 +169,29 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
         np.array(own),
         np.array(coupling),
     )
+
+
+def fluid_coupling_damping(spec: Spec, shaft: ChainShaft) -> float:
+    """The small-oscillation damping [N·m·s/rad, on the shaft's own speed] of a fluid
+    coupling (Hau 7.3.3): near its working point the torque it passes grows with the slip,
+    T = T_r·s/s_r at the shaft speed ω, so a change of the speed difference Δω across it
+    passes ΔT = T_r/(s_r·ω)·Δω — a damper, with no spring. T_r = P_r/ω at rated power and
+    rated rotor speed; with the torque proportional to the slip the damping is the same at
+    part load (the slip falls with the torque), so one value serves the whole range."""
+    assert shaft.fluid_coupling is not None
+    rated_kw = (
+        spec.drivetrain.generator_model.rated_power_kw
+        if spec.drivetrain.generator_model is not None
+        else spec.turbine.rated_power_kw
+    )
+    if rated_kw is None:
+        raise ModelInputError(
+            "a fluid coupling's damping needs the rated power: turbine.rated_power_kw or "
+            "drivetrain.generator_model.rated_power_kw"
+        )
+    omega = rpm_to_rad_s(max(spec.rotor.speed.dwell_rpm)) * shaft.speed_ratio
+    torque = rated_kw * 1e3 / omega
+    return float(torque / (shaft.fluid_coupling.rated_slip * omega))
 
 
 def regimes(spec: Spec, condition: str) -> frozenset[str]:

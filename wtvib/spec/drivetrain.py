@@ -41,17 +41,49 @@ class ChainMass(_Strict):
     speed_ratio: Positive = Field(1.0, description="Its shaft's speed / rotor speed. [-]")
 
 
+class FluidCoupling(_Strict):
+    """A hydrodynamic (fluid) coupling in the shaft (Hau 7.3.3): torque by slip, no elastic
+    stiffness."""
+
+    rated_slip: float = Field(
+        gt=0,
+        lt=0.5,
+        description="Slip between its input and output at rated torque (0.03 = 3 %). [-]",
+    )
+
+
 class ChainShaft(_Strict):
     """The torsional connection between two consecutive masses of the chain."""
 
     stiffness_nm_rad: Positive | None = Field(
+        None,
         description="Torsional stiffness; null for a rigid connection (the masses move as "
-        "one, or, between blades and hub, the blades' edgewise spring alone). [N·m/rad]"
+        "one, or, between blades and hub, the blades' edgewise spring alone). [N·m/rad]",
+    )
+    fluid_coupling: FluidCoupling | None = Field(
+        None,
+        description="A fluid coupling instead of a shaft: no stiffness, the damping of its "
+        "slip (rated torque over slip × speed); stiffness and damping then stay unset.",
     )
     damping_nms_rad: float = Field(0.0, ge=0, description="Torsional damping. [N·m·s/rad]")
     speed_ratio: Positive = Field(
         1.0, description="Speed of the shaft the stiffness refers to / rotor speed. [-]"
     )
+
+    @model_validator(mode="after")
+    def _one_kind(self) -> "ChainShaft":
+        if self.fluid_coupling is None and "stiffness_nm_rad" not in self.model_fields_set:
+            raise ValueError(
+                "stiffness_nm_rad is needed (null for a rigid connection), or fluid_coupling"
+            )
+        if self.fluid_coupling is not None and (
+            self.stiffness_nm_rad is not None or self.damping_nms_rad
+        ):
+            raise ValueError(
+                "a fluid coupling has no elastic stiffness and its damping follows from its "
+                "slip: give fluid_coupling alone, without stiffness_nm_rad or damping_nms_rad"
+            )
+        return self
 
 
 class FixedExcitation(_Strict):
