@@ -269,3 +269,67 @@ def test_a_windio_file_without_a_speed_range_takes_the_command_lines(tmp_path):
     spec = importers.load(p, rpm=(5.0, 7.56))
     assert spec.rotor.speed.steady_rpm == [(5.0, 7.56)]
     assert spec.rotor.speed.source == "the command line (--rpm/--rated)"
+
+
+def test_the_schema_checks_long_number_lists_as_samples_with_the_same_verdicts():
+    """Issue 42: the windIO schema's check of the IEA-22 file cost 0.45 s, its long number
+    lists one validator call per entry; they are checked as samples that keep the smallest,
+    the largest and a repeated entry. Planted faults in such lists — out of a minimum or
+    maximum, a repeat in a list whose entries must be unique — give the full check's
+    objections, at the entries' own indices (random positions, fixed seed)."""
+    import copy
+    import random
+
+    from wtvib.importers import windio_schema
+
+    if not windio_schema.available():
+        pytest.skip("the windio package (its schema) is not installed")
+    full = windio_schema._validator()
+    doc = iea15()
+    lists = []
+
+    def walk(v, path):  # type: ignore[no-untyped-def]
+        if isinstance(v, dict):
+            for k, x in v.items():
+                walk(x, (*path, k))
+        elif isinstance(v, list):
+            if len(v) > windio_schema.SAMPLE_ABOVE and all(type(x) in (int, float) for x in v):
+                lists.append(path)
+            else:
+                for i, x in enumerate(v):
+                    walk(x, (*path, i))
+
+    walk(doc, ())
+    assert len(lists) > 50
+    rng = random.Random(7)
+    seen = 0
+    for path in rng.sample(lists, 10):
+        for fault in (-1.0e9, 1.0e9, 1.5, "repeat"):
+            d = copy.deepcopy(doc)
+            target = d
+            for k in path:
+                target = target[k]
+            i = rng.randrange(1, len(target))
+            target[i] = target[i - 1] if fault == "repeat" else fault
+            expected = sorted((tuple(e.absolute_path), e.message) for e in full.iter_errors(d))
+            assert sorted(windio_schema.problems(d)) == expected, (path, fault)
+            seen += bool(expected)
+    assert seen > 5  # the faults were objections, not all harmless
+
+
+def test_a_sample_keeps_the_extremes_a_repeat_and_the_first_entries():
+    """The sample of a long number list (wtvib.importers.windio_schema._sampled): its
+    smallest and largest entry, both entries of the first repeated value, the first six —
+    each at its own index in the map back."""
+    from wtvib.importers import windio_schema
+
+    values = [float(i) for i in range(30)]
+    values[20], values[25], values[27] = -5.0, 99.0, 11.0  # 27 repeats 11
+    index: dict = {}  # type: ignore[type-arg]
+    sample = windio_schema._sampled({"a": values}, (), index)["a"]
+    order = index[("a",)]
+    assert order == [0, 1, 2, 3, 4, 5, 11, 20, 25, 27]
+    assert sample == [values[i] for i in order]
+    assert windio_schema._original(("a", 7, "x"), index) == ("a", 20, "x")
+    short = [1.0] * windio_schema.SAMPLE_ABOVE  # not longer than the limit: whole
+    assert windio_schema._sampled(short, (), index) == short

@@ -7,6 +7,7 @@ duplicate keys, object-constructing tags and documents that expand past a node b
 (alias bombs).
 """
 
+import json
 import re
 from collections.abc import Hashable
 from dataclasses import dataclass, field
@@ -137,13 +138,62 @@ def parse_plain(text: str, source: str | None = None) -> Document:
     fast = _fast_loader()
     if fast is None:
         return parse(text, source)
+    short, lists = _number_lists(text)
     try:
-        data = yaml.load(text, Loader=fast)
+        data = yaml.load(short, Loader=fast)
     except (yaml.YAMLError, _TooLongError):
         return parse(text, source)  # the careful path names the line
     if data is None:
         raise SpecError("the file is empty (no YAML document in it)", source=source)
+    if lists:
+        data = _put_back(data, lists)
     return Document(data, {}, source)
+
+
+#: A line that is a key (or a sequence entry's key) and a flow list of numbers, nothing
+#: else: ``  grid: [0.0, 0.01, …]`` — the bulk of a windIO file.
+_NUMBER_LINE = re.compile(
+    r"^(?P<head>[ \t]*(?:- )?[A-Za-z_][A-Za-z0-9_-]*:[ \t]+)\[(?P<body>[-+0-9.eE, \t]*)\][ \t]*$",
+    re.M,
+)
+#: A number JSON reads as the YAML 1.2 core schema does (an int, or a float by float()).
+_JSON_NUMBER = re.compile(r"-?(?:0|[1-9][0-9]*)(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?")
+
+
+def _number_lists(text: str) -> tuple[str, dict[str, list[Any]]]:
+    """The text with each line's flow list of plain numbers replaced by a token, and the
+    lists (read by json, in C: the windIO files' tens of thousands of numbers cost PyYAML a
+    Python call each). A list with any entry JSON would read otherwise than YAML 1.2's core
+    schema (``.5``, ``+1``, ``01``, ``.inf``) stays in the text, for the YAML reader."""
+    prefix = "wtvib-number-list-"
+    if prefix in text:
+        return text, {}
+    lists: dict[str, list[Any]] = {}
+
+    def swap(m: re.Match[str]) -> str:
+        items = [t.strip() for t in m["body"].split(",")]
+        if items == [""]:
+            return m[0]
+        if not all(_JSON_NUMBER.fullmatch(t) for t in items):
+            return m[0]
+        token = f"{prefix}{len(lists)}"
+        lists[token] = json.loads("[" + ",".join(items) + "]")
+        return f"{m['head']}{token}"
+
+    return _NUMBER_LINE.sub(swap, text), lists
+
+
+def _put_back(value: Any, lists: dict[str, list[Any]]) -> Any:
+    """The document with each token replaced by its list."""
+    if isinstance(value, str):
+        return lists.get(value, value)
+    if isinstance(value, dict):
+        for key, item in value.items():
+            value[key] = _put_back(item, lists)
+    elif isinstance(value, list):
+        for i, item in enumerate(value):
+            value[i] = _put_back(item, lists)
+    return value
 
 
 def format_path(path: Path) -> str:
