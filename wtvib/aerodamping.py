@@ -368,6 +368,26 @@ def blade_mass(spec: Spec, r: Array, root: float) -> Array | None:
     return None
 
 
+def generalised_mass(
+    spec: Spec, mode: Mode, root: float, tip: float
+) -> tuple[Array, Array, float] | None:
+    """A blade mode's generalised mass ∫m·φ² dr (+ the tip mass) with φ = 1 at the tip, on
+    80 radii from ``root`` to ``tip`` [m]: (radii, shape, mass); None without the blade's
+    mass or a span."""
+    if not tip > root:
+        return None
+    r = np.linspace(root, tip, 80)
+    m = blade_mass(spec, r, root)
+    if m is None:
+        return None
+    shape = blade_shape(mode, r, root)
+    gen_mass = float(np.trapezoid(m * shape**2, r))
+    st = spec.blade.structure
+    if st is not None and st.tip_mass_kg:
+        gen_mass += st.tip_mass_kg * float(shape[-1]) ** 2
+    return (r, shape, gen_mass) if gen_mass > 0 else None
+
+
 def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     """ζ_a of an isolated blade mode (flap: out-of-plane, edge: in-plane) at each
     operating point, with the lift lagged and quasi-steady (:func:`_single_mode`); None
@@ -377,17 +397,10 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
         return None
     st = spec.blade.structure
     root = st.hub_radius_m if st is not None else float(sec.radius[0])
-    tip = float(sec.radius[-1])
-    r = np.linspace(root, tip, 80)
-    m = blade_mass(spec, r, root)
-    if m is None or tip <= root:
+    found = generalised_mass(spec, mode, root, float(sec.radius[-1]))
+    if found is None:
         return None
-    shape = blade_shape(mode, r, root)
-    gen_mass = float(np.trapezoid(m * shape**2, r))
-    if st is not None and st.tip_mass_kg:
-        gen_mass += st.tip_mass_kg * float(shape[-1]) ** 2
-    if not gen_mass > 0:
-        return None
+    r, shape, gen_mass = found
     e = 0 if kind == "flap" else 1
     weight = shape**2
 

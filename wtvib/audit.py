@@ -19,6 +19,7 @@ from . import (
     scaling,
     stall,
     tower,
+    tuned_damper,
     yaw,
 )
 from .analysis import Analysis, Context, Damping, Modifier, Subsystem
@@ -50,9 +51,10 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     stall,
 )
 
-#: What changes every judged mode once the models are built (:class:`wtvib.analysis.Modifier`):
-#: the aerodynamic damping at the operating points.
-MODIFIERS: tuple[Modifier, ...] = (aerodamping,)
+#: What changes every judged mode once the models are built (:class:`wtvib.analysis.Modifier`),
+#: in order: a blade tip damper's added damping (structural), then the aerodynamic damping
+#: at the operating points (on top of the structural).
+MODIFIERS: tuple[Modifier, ...] = (tuned_damper, aerodamping)
 
 
 @dataclass(frozen=True)

@@ -39,6 +39,7 @@ from .blade import (
     BladeStructure,
     Planform,
     Polar,
+    TipDamper,
     check_section_inertia,
 )
 from .drivetrain import (
@@ -114,6 +115,7 @@ __all__ = [
     "Severity",
     "Spec",
     "SpecError",
+    "TipDamper",
     "Tower",
     "TowerHead",
     "TowerModeName",

@@ -191,6 +191,16 @@ class BladeAeroelastic(_Strict):
     )
 
 
+class TipDamper(_Strict):
+    """A tuned mass damper in each blade's tip (Hau 7.2.3: LM's remedy for edgewise
+    vibration), tuned and damped as Den Hartog's optimum."""
+
+    mass_kg: Positive = Field(description="Moving mass of the damper in one blade. [kg]")
+    tuned_to: Literal["edge1", "flap1"] = Field(
+        "edge1", description="The blade mode it is tuned to."
+    )
+
+
 class Blade(_Strict):
     """The blades, by their natural frequencies at standstill."""
 
@@ -209,4 +219,7 @@ class Blade(_Strict):
     )
     aeroelastic: BladeAeroelastic | None = Field(
         None, description="Section data for the divergence and flutter checks."
+    )
+    tip_damper: TipDamper | None = Field(
+        None, description="A tuned mass damper in each blade's tip (adds damping to the mode)."
     )
