@@ -54,6 +54,8 @@ TESTS: dict[str, tuple[str, ...]] = {
     "rigid": ("tests/test_coupled.py",),
     "bem": ("tests/validation/test_aerodynamics.py",),
     "aerodamping": ("tests/validation/test_aerodynamics.py",),
+    "unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
+    "tuned_damper": ("tests/validation/test_tuned_damper.py",),
 }
 
 

@@ -63,3 +63,48 @@ def test_a_tip_damper_cures_the_stall_rotors_edgewise_vibration(tmp_path):
     assert {c.id: c.status for c in before.checks}["blade.stall.edge1"] == "fail"
     assert status["blade.stall.edge1"] in ("pass", "warn")
     assert any("μ = 0.0200" in a and "ζ_e = 0.0498" in a for a in after.assumptions)
+
+
+def test_the_mass_ratio_uses_the_modes_generalised_mass_at_the_tip():
+    """A uniform blade structure (m = 300 kg/m over 20 m from a 1.5 m hub radius): the
+    first edgewise mode's generalised mass with its shape 1 at the tip is a uniform
+    cantilever's 0.25·mL (∫₀¹φ² dx of the first clamped-free mode, Blevins Table 8-1) —
+    1,500 kg, so a 30 kg damper is μ = 0.02 — whatever the model's mesh (within 1 %)."""
+    base = spec.load(TURBINES / "stall-rotor-1mw.yaml")
+    span = [0.0, 5.0, 10.0, 15.0, 20.0]
+    structure = spec.BladeStructure(
+        hub_radius_m=1.5,
+        span_m=span,
+        mass_per_length_kg_m=[300.0] * 5,
+        ei_flap_nm2=[2.0e8] * 5,
+        ei_edge_nm2=[6.0e8] * 5,
+    )
+    blade = base.blade.model_copy(
+        update={
+            "structure": structure,
+            "tip_damper": spec.TipDamper(mass_kg=30.0, tuned_to="edge1"),
+            "modes": {},
+        }
+    )
+    report = audit.run(base.model_copy(update={"blade": blade}))
+    said = next(a for a in report.assumptions if a.startswith("blade.tip_damper"))
+    mu = float(said.split("μ = ")[1].split(")")[0])
+    assert mu == pytest.approx(30.0 / (0.25 * 300.0 * 20.0), rel=0.01)
+    assert f"√(1 + 2/μ) = {math.sqrt(1 + 2 / mu):.3g}" in said
+
+
+def test_a_damper_on_a_blade_without_a_span_is_said_to_be_ignored():
+    """No structure and no length: no generalised mass, no mass ratio — said, nothing
+    changed."""
+    base = spec.load(TURBINES / "stall-rotor-1mw.yaml")
+    blade = base.blade.model_copy(
+        update={
+            "structure": None,
+            "length_m": None,
+            "tip_damper": spec.TipDamper(mass_kg=30.0),
+        }
+    )
+    s = base.model_copy(update={"blade": blade})
+    built = {"blade": [m for m in audit.run(base).modes if m.id == "blade.edge1"]}
+    out, notes = tuned_damper.modify(s, built)
+    assert out == built and "ignored" in notes[0]
