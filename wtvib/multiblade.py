@@ -531,7 +531,8 @@ def _name(
             # the other axis of the same cyclic pair (tilt ↔ yaw) where it is free
             other = _other_axis(name)
             if other not in names:
-                name = other
+                was, now = name.rsplit("_", 1)[1], other.rsplit("_", 1)[1]
+                name, text = other, text.replace(f"({was})", f"({now})")
         if whirl in ("forward", "backward"):
             text = f"{text}, {whirl} whirl"
         mixed = [

@@ -567,3 +567,6 @@ def test_every_parked_mode_has_a_name_of_its_own(shared, deck):
         } <= set(at)
         # the edge–tower-torsion pair: the one with less edge energy named by its torsion
         assert at["blade.edge1.cyclic_yaw"] < at["tower.tor1"] < at["tower.tor2"]
+        said = dict(zip(res.names, res.descriptions, strict=True))
+        assert "(tilt)" in said["blade.flap2.cyclic_tilt"]  # its text follows the name
+        assert "named by its second share" in said["tower.tor1"]
