@@ -310,19 +310,16 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         ref, extra = refs[k], extras[k]
         freq[k], zeta[k], score = damped[k]
         _, quasi[k], qs_score = steady[k]
+        # where no damped mode resembles the structural one (veering, overdamping): the
+        # first-order estimate on the structural mode (eigenvalue lam) instead
+        z0 = path.damping_ratio[i]
+        w0 = 2 * np.pi * path.frequency_hz[i]
+        lam = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
         poor_qs = qs_score < MATCH
         if np.any(poor_qs):
-            z0 = path.damping_ratio[i]
-            w0 = 2 * np.pi * path.frequency_hz[i]
-            lam0 = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
-            quasi[k, poor_qs] = perturbed(model, float(om), qs_points[k][1], ref, lam0)[poor_qs]
-        # where no damped mode resembles the structural one (veering, overdamping): the
-        # first-order estimate on the structural mode instead
+            quasi[k, poor_qs] = perturbed(model, float(om), qs_points[k][1], ref, lam)[poor_qs]
         poor = score < MATCH
         if np.any(poor):
-            z0 = path.damping_ratio[i]
-            w0 = 2 * np.pi * path.frequency_hz[i]
-            lam = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
             first = perturbed(model, float(om), extra, ref, lam)
             zeta[k, poor] = first[poor]
             freq[k, poor] = path.frequency_hz[i][poor]
