@@ -407,3 +407,33 @@ def test_rotating_blade_in_its_standstill_basis_equals_the_full_model(shared):
     k0, geo, m_v, m = blade.blade_parts(s, nodes)
     full = np.array([modal.solve(k0 + om**2 * (geo - m_v), m, 4).frequency_hz for om in speeds])
     np.testing.assert_allclose(np.sort(reduced, axis=1), np.sort(full, axis=1), rtol=1e-7)
+
+
+def test_a_rotating_tip_mass_pulls_from_its_own_radius():
+    """Issue 40's mutation survivor `blade` 102: a tip mass M on a nearly massless uniform
+    cantilever of length L whose root sits at hub radius R_h. Rotating slowly, its flapwise
+    ω² rises by the tension's work on the static shape: first order (Southwell), with the
+    tip-loaded cantilever's shape φ = (3x²L − x³)/(2L³) — exact for a massless beam —
+    Δω² = Ω²·M(R_h + L)·∫φ′² dx / M = Ω²·(R_h + L)·6/(5L). A hub radius equal to L doubles
+    the pull over R_h = 0; the model must give it (the beam's own mass is 1e-4 of M)."""
+    import math
+
+    from wtvib import blade as blade_mod
+    from wtvib.spec import BladeStructure
+
+    length, ei, tip = 20.0, 2.0e8, 1000.0
+    omega = 0.05 * math.sqrt(3 * ei / (tip * length**3))  # Ω² a quarter of a per cent of ω₀²
+    for hub in (0.0, length):
+        s = BladeStructure(
+            hub_radius_m=hub,
+            span_m=[0.0, length],
+            mass_per_length_kg_m=[tip * 1e-4 / length] * 2,
+            ei_flap_nm2=[ei, ei],
+            ei_edge_nm2=[9 * ei, 9 * ei],
+            tip_mass_kg=tip,
+        )
+        names, freqs, _, _ = blade_mod.rotating_modes(s, np.array([0.0, omega]))
+        j = names.index("flap1")
+        w0, w1 = (2 * math.pi * freqs[i, j] for i in (0, 1))
+        expected = omega**2 * (hub + length) * 6 / (5 * length)
+        assert w1**2 - w0**2 == pytest.approx(expected, rel=0.01), hub
