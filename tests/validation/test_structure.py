@@ -437,3 +437,36 @@ def test_a_rotating_tip_mass_pulls_from_its_own_radius():
         w0, w1 = (2 * math.pi * freqs[i, j] for i in (0, 1))
         expected = omega**2 * (hub + length) * 6 / (5 * length)
         assert w1**2 - w0**2 == pytest.approx(expected, rel=0.01), hub
+
+
+def test_a_blade_modes_reported_shape_is_its_deflection_in_its_own_plane():
+    """Issue 40's survivor `blade` 251: the shape a computed blade mode reports (and the
+    aerodynamic estimates weigh the sections with) is the deflection of its own plane, flap
+    or edge — for a uniform cantilever both first modes the closed form φ = cosh βx − cos βx
+    − σ(sinh βx − sin βx), β₁L = 1.8751, normalised to the tip (Blevins Table 8-1)."""
+    import math
+
+    from wtvib import blade as blade_mod
+    from wtvib.spec import BladeStructure
+
+    length, m, ei = 30.0, 200.0, 4.0e9
+    structure = BladeStructure(
+        span_m=[0.0, length],
+        mass_per_length_kg_m=[m, m],
+        ei_flap_nm2=[ei, ei],
+        ei_edge_nm2=[5 * ei, 5 * ei],
+    )
+    base = spec.load(TURBINES / "stall-rotor-1mw.yaml")
+    s = base.model_copy(
+        update={"blade": base.blade.model_copy(update={"structure": structure, "modes": {}})}
+    )
+    bl = 1.8751040687
+    sg = (math.cosh(bl) + math.cos(bl)) / (math.sinh(bl) + math.sin(bl))
+    for mode in blade_mod.structural_modes(s):
+        if mode.id not in ("blade.flap1", "blade.edge1"):
+            continue
+        assert mode.shape is not None
+        x = np.asarray(mode.shape.position_m) / length * bl
+        exact = np.cosh(x) - np.cos(x) - sg * (np.sinh(x) - np.sin(x))
+        exact /= exact[-1]
+        np.testing.assert_allclose(mode.shape.deflection, exact, atol=2e-3)
