@@ -130,3 +130,20 @@ def test_builtin_polar_shape() -> None:
     assert cl[1] == pytest.approx(2 * math.pi * math.radians(6))
     assert cl[3] == pytest.approx(1.0) and cd[3] == pytest.approx(1.0)
     assert cd[4] == pytest.approx(2.0) and cl[4] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_builtin_polar_blends_continuously_into_the_flat_plate() -> None:
+    """Issue 40's survivor `stall` 67: between stall (STALL_DEG) and the flat plate
+    (FLAT_PLATE_DEG) lift and drag blend linearly in α — continuous at both ends (a jump in
+    C_D there would be a step in the damping the stall check integrates), the drag halfway
+    between its attached value and the plate's 2·sin²α_f."""
+    import math
+
+    eps = 1e-7
+    for edge in (stall.STALL_DEG, stall.FLAT_PLATE_DEG):
+        (cl_lo, cl_hi), (cd_lo, cd_hi) = stall.builtin_polar(np.array([edge - eps, edge + eps]))
+        assert cl_lo == pytest.approx(cl_hi, abs=1e-6) and cd_lo == pytest.approx(cd_hi, abs=1e-6)
+    mid = 0.5 * (stall.STALL_DEG + stall.FLAT_PLATE_DEG)
+    _, cd = stall.builtin_polar(np.array([mid]))
+    plate = 2 * math.sin(math.radians(stall.FLAT_PLATE_DEG)) ** 2
+    assert cd[0] == pytest.approx(stall.CD0 + 0.5 * (plate - stall.CD0), rel=1e-12)
