@@ -209,3 +209,36 @@ def test_the_speed_margin_bands_warn_between_one_and_one_plus_margin() -> None:
     assert [ae._status(r, 0.2) for r in (0.95, 1.0, 1.1, 1.2, 1.25)] == [
         "fail", "warn", "warn", "pass", "pass",
     ]  # fmt: skip
+
+
+def test_the_figures_station_is_the_one_nearest_to_flutter() -> None:
+    """Issue 40's survivor `aeroelastic` 679: of several sections, the V-g curves and the
+    stability chart are drawn for the one whose flutter speed is the least multiple of its
+    section speed — the one the flutter check names."""
+    from tests.conftest import TURBINES
+    from wtvib import audit
+    from wtvib import spec as spec_mod
+
+    base = spec_mod.load(TURBINES / "euros-44m.yaml")
+    blade_ae = base.blade.aeroelastic
+    assert blade_ae is not None and len(blade_ae.sections) == 1
+    one = blade_ae.sections[0]
+    sections = [
+        one.model_copy(update={"radius_fraction": f, "centre_of_mass_chord": cm})
+        for f, cm in ((0.5, 0.33), (0.75, 0.36), (0.9, 0.42))
+    ]
+    s = base.model_copy(
+        update={
+            "blade": base.blade.model_copy(
+                update={"aeroelastic": blade_ae.model_copy(update={"sections": sections})}
+            )
+        }
+    )
+    report = audit.run(s)
+    res = report.result("aeroelastic", ae.AeroelasticResults)
+    assert res is not None and len(res.stations) == 3
+    ratios = [r.flutter.speed / r.section_speed for r in res.stations]
+    assert len(set(np.round(ratios, 6))) == 3  # the three differ
+    assert res.worst is res.stations[int(np.argmin(ratios))]
+    flutter = next(c for c in report.checks if c.id == "blade.flutter")
+    assert f"r = {res.worst.radius_m:.3g} m" in flutter.message
