@@ -92,3 +92,21 @@ def test_the_deciding_check_is_the_most_severe_then_the_least_margin():
     assert worst_check(checks)["id"] == "b"  # type: ignore[index]
     assert worst_check([*checks, {"id": "e", "status": "fail", "margin": 0.09}])["id"] == "e"  # type: ignore[index]
     assert worst_check(checks[2:]) is None
+
+
+def test_heavy_damping_is_one_threshold_with_its_stated_peak():
+    """Issue 40's survivor `resonance` 84: the resonance routine's default heavy-damping
+    limit was a second 0.3 beside the spec's; one constant now (rules.HEAVY_DAMPING), the
+    limit at which the peak amplification 1/(2ζ√(1 − ζ²)) falls to 1.75 (its stated
+    reason), the default of the audit setting and of the routine alike."""
+    import inspect
+    import math
+
+    from wtvib import resonance, rules
+    from wtvib.spec import AuditSettings
+
+    z = rules.HEAVY_DAMPING
+    assert 1 / (2 * z * math.sqrt(1 - z * z)) == pytest.approx(1.75, abs=0.005)
+    assert AuditSettings().heavy_damping_ratio == z
+    for fn in (resonance.assess, resonance.assess_all):
+        assert inspect.signature(fn).parameters["heavy_damping"].default == z

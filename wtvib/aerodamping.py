@@ -60,6 +60,7 @@ from numpy.typing import NDArray
 from . import bem, unsteady
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .results import Check, Mode, OperatingDamping, Rule
+from .rules import HEAVY_DAMPING
 from .spec import Spec
 
 Array = NDArray[np.float64]
@@ -469,14 +470,14 @@ def _single_mode(
 
 
 def modify(
-    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
+    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = HEAVY_DAMPING
 ) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:
     """The :class:`wtvib.analysis.Modifier` protocol: :func:`in_operation`."""
     return in_operation(spec, built, heavy)
 
 
 def in_operation(
-    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
+    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = HEAVY_DAMPING
 ) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:
     """Every judged mode with its damping at the operating points (``Mode.operating``), and
     the statements the report makes about how; unchanged (and nothing said) without

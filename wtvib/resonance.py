@@ -28,7 +28,7 @@ from numpy.typing import NDArray
 
 from .excitation import Excitation, OperatingRange
 from .results import Check, Mode, Rule
-from .rules import STATUS_ORDER, MarginRule, Status, dynamic_amplification, worst
+from .rules import HEAVY_DAMPING, STATUS_ORDER, MarginRule, Status, dynamic_amplification, worst
 from .units import rad_s_to_rpm
 
 Interval = tuple[float, float]
@@ -81,7 +81,7 @@ def assess(
     rule: MarginRule,
     severity: Mapping[str, Status],
     default_damping: float,
-    heavy_damping: float = 0.3,
+    heavy_damping: float = HEAVY_DAMPING,
 ) -> Finding:
     """Judge one mode against one excitation line over 0 → overspeed."""
     return _assess([(mode, exc)], op, rule, severity, default_damping, heavy_damping)[0]
@@ -591,7 +591,7 @@ def assess_all(
     rule: MarginRule,
     severity: Mapping[str, Status],
     default_damping: float,
-    heavy_damping: float = 0.3,
+    heavy_damping: float = HEAVY_DAMPING,
 ) -> list[Finding]:
     """Every judged mode (:attr:`Mode.judged`) against every excitation acting on it."""
     pairs = [(m, e) for e in excitations for m in modes if e.acts_on(m.subsystem) and m.judged]

@@ -34,6 +34,11 @@ Energy = Literal["dominant", "secondary", "minor"]
 #: Relative slack at the margin edge so that a case exactly at the margin passes.
 EDGE_TOLERANCE = 1e-9
 
+#: A mode at least this damped has no resonant peak worth a margin: its peak amplification
+#: 1/(2ζ√(1 − ζ²)) is at most 1.75 at 0.3 — its margin violations are reported as info
+#: (``audit.heavy_damping_ratio``'s default, and the resonance routine's).
+HEAVY_DAMPING = 0.3
+
 STATUS_ORDER: dict[str, int] = {"pass": 0, "info": 1, "warn": 2, "fail": 3}
 
 

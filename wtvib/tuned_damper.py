@@ -16,6 +16,7 @@ from dataclasses import replace
 
 from .aerodamping import generalised_mass
 from .results import Mode
+from .rules import HEAVY_DAMPING
 from .spec import Spec
 
 
@@ -31,7 +32,7 @@ def equivalent_damping(mu: float) -> float:
 
 
 def modify(
-    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = 0.3
+    spec: Spec, built: Mapping[str, list[Mode]], heavy: float = HEAVY_DAMPING
 ) -> tuple[dict[str, list[Mode]], tuple[str, ...]]:
     """The :class:`wtvib.analysis.Modifier` protocol: the tuned blade mode's damping, in the
     isolated blade model and in the coupled modes it stands in (``system.blade.<mode>.*``),

@@ -5,7 +5,7 @@ from typing import Any, Literal
 
 from pydantic import Field, PrivateAttr
 
-from ..rules import PRESETS, MarginRule, Status
+from ..rules import HEAVY_DAMPING, PRESETS, MarginRule, Status
 from .aerodynamics import Aerodynamics
 from .base import Quantity, _Strict
 from .blade import Blade
@@ -76,7 +76,7 @@ class AuditSettings(_Strict):
     margin: float | None = Field(None, gt=0, lt=1, description="Margin m (0.10 = 10 %). [-]")
     harmonics: int = Field(6, ge=1, le=60, description="Highest rotor harmonic kP checked.")
     heavy_damping_ratio: float = Field(
-        0.3,
+        HEAVY_DAMPING,
         gt=0,
         le=1,
         description="A mode at least this damped (peak amplification 1/(2ζ√(1−ζ²)) ≤ 1.75 at "
