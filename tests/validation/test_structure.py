@@ -313,16 +313,9 @@ def test_blade_tip_mass_against_the_closed_form():
     import math
 
     from wtvib import blade as blade_mod
-    from wtvib.spec import BladeStructure
 
     length, m, ei = 30.0, 200.0, 4.0e9
-    s = BladeStructure(
-        span_m=[0.0, length],
-        mass_per_length_kg_m=[m, m],
-        ei_flap_nm2=[ei, ei],
-        ei_edge_nm2=[4 * ei, 4 * ei],
-        tip_mass_kg=m * length,
-    )
+    s = uniform_blade(length, m, ei, 4.0, tip_mass_kg=m * length)
     names, freqs, _, _ = blade_mod.rotating_modes(s, np.array([0.0]))
     flap = dict(zip(names, freqs[0], strict=True))["flap1"]
     exact = 1.247917**2 / (2 * math.pi * length**2) * math.sqrt(ei / m)
@@ -419,19 +412,11 @@ def test_a_rotating_tip_mass_pulls_from_its_own_radius():
     import math
 
     from wtvib import blade as blade_mod
-    from wtvib.spec import BladeStructure
 
     length, ei, tip = 20.0, 2.0e8, 1000.0
     omega = 0.05 * math.sqrt(3 * ei / (tip * length**3))  # Ω² a quarter of a per cent of ω₀²
     for hub in (0.0, length):
-        s = BladeStructure(
-            hub_radius_m=hub,
-            span_m=[0.0, length],
-            mass_per_length_kg_m=[tip * 1e-4 / length] * 2,
-            ei_flap_nm2=[ei, ei],
-            ei_edge_nm2=[9 * ei, 9 * ei],
-            tip_mass_kg=tip,
-        )
+        s = uniform_blade(length, tip * 1e-4 / length, ei, 9.0, hub_radius_m=hub, tip_mass_kg=tip)
         names, freqs, _, _ = blade_mod.rotating_modes(s, np.array([0.0, omega]))
         j = names.index("flap1")
         w0, w1 = (2 * math.pi * freqs[i, j] for i in (0, 1))
@@ -447,15 +432,9 @@ def test_a_blade_modes_reported_shape_is_its_deflection_in_its_own_plane():
     import math
 
     from wtvib import blade as blade_mod
-    from wtvib.spec import BladeStructure
 
     length, m, ei = 30.0, 200.0, 4.0e9
-    structure = BladeStructure(
-        span_m=[0.0, length],
-        mass_per_length_kg_m=[m, m],
-        ei_flap_nm2=[ei, ei],
-        ei_edge_nm2=[5 * ei, 5 * ei],
-    )
+    structure = uniform_blade(length, m, ei, 5.0)
     base = spec.load(TURBINES / "stall-rotor-1mw.yaml")
     s = base.model_copy(
         update={"blade": base.blade.model_copy(update={"structure": structure, "modes": {}})}
@@ -470,3 +449,16 @@ def test_a_blade_modes_reported_shape_is_its_deflection_in_its_own_plane():
         exact = np.cosh(x) - np.cos(x) - sg * (np.sinh(x) - np.sin(x))
         exact /= exact[-1]
         np.testing.assert_allclose(mode.shape.deflection, exact, atol=2e-3)
+
+
+def uniform_blade(length: float, m: float, ei: float, edge_factor: float, **more: float):  # type: ignore[no-untyped-def]
+    """A uniform blade structure: mass m per length, flapwise EI, edgewise edge_factor × EI."""
+    from wtvib.spec import BladeStructure
+
+    return BladeStructure(
+        span_m=[0.0, length],
+        mass_per_length_kg_m=[m, m],
+        ei_flap_nm2=[ei, ei],
+        ei_edge_nm2=[edge_factor * ei] * 2,
+        **more,
+    )
