@@ -174,20 +174,8 @@ def to_spec_data(
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
 
-    frac = tower.fractions("HtFract")
-    mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
-    ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
-    ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
     yaw_block = _yaw(main, servo)
-    torsion = _tower_torsion(tower, mass, ei_fa, bool(yaw_block))
-    if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
-        frac = np.array([0.0, 1.0])
-        mass, ei_fa, ei_ss = (np.repeat(a, 2) for a in (mass, ei_fa, ei_ss))
-        torsion = (
-            None
-            if torsion is None
-            else (np.repeat(torsion[0], 2), np.repeat(torsion[1], 2), torsion[2])
-        )
+    frac, mass, ei_fa, ei_ss, torsion = _tower_tables(tower, bool(yaw_block))
 
     ed_base = main.num("TowerBsHt", default=0.0)
     heights = frac * tower_height
@@ -262,77 +250,18 @@ def to_spec_data(
             ),
             "damping_ratio": main_damping(tower, "TwrFADmp(1)"),
             **tower_block,
-            "distributed": {
-                "height_m": _list(heights),
-                "mass_per_length_kg_m": _list(mass),
-                "ei_fa_nm2": _list(ei_fa),
-                "ei_ss_nm2": _list(ei_ss),
-                **(
-                    {"gj_nm2": _list(torsion[0]), "polar_inertia_kgm": _list(torsion[1])}
-                    if torsion is not None
-                    else {}
-                ),
-            },
+            "distributed": _distributed(heights, mass, ei_fa, ei_ss, torsion),
         },
-        "tower_head": {
-            "mass_kg": q(head["mass"], "NacMass + HubMass + blades + YawBrMass", "derived"),
-            "cm_downwind_m": q(head["x"], "mass-weighted over the parts", "derived"),
-            "cm_above_top_m": q(head["z"], "mass-weighted over the parts", "derived"),
-            "inertia_pitch_kgm2": q(
-                head["pitch"],
-                "parts about the head CM; rotor about a "
-                "diameter; nacelle a point mass in pitch (as ElastoDyn)",
-                "derived",
-            ),
-            "inertia_roll_kgm2": q(
-                head["roll"],
-                "parts about the head CM; rotor polar inertia (rotor locked to the nacelle)",
-                "derived",
-            ),
-            "inertia_yaw_kgm2": q(
-                head["yaw"], "NacYIner and rotor about a diameter, about the head CM", "derived"
-            ),
-        },
+        "tower_head": _head_block(head, q),
         "blade": {
             "length_m": q(length, "TipRad − HubRad", "derived"),
             "mass_kg": q(float(np.trapezoid(bmass, span)), bl.mass_source, "derived"),
             "damping_ratio": bl.damping,
             "structure": structure,
         },
-        "drivetrain": {
-            "gear_ratio": q(main.num("GBRatio"), "GBRatio"),
-            "chain": [
-                {
-                    "name": "blades",
-                    "inertia_kgm2": q(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
-                },
-                hub,
-                {
-                    "name": "generator",
-                    "inertia_kgm2": q(main.num("GenIner"), "GenIner (HSS)"),
-                    "speed_ratio": q(main.num("GBRatio"), "GBRatio"),
-                },
-            ],
-            "shafts": [
-                {"stiffness_nm_rad": None},  # blades–hub: the blades' edgewise spring
-                {
-                    "stiffness_nm_rad": q(main.num("DTTorSpr"), "DTTorSpr (LSS equivalent)"),
-                    "damping_nms_rad": q(main.num("DTTorDmp", default=0.0), "DTTorDmp"),
-                },
-            ],
-        },
+        "drivetrain": {**_drivetrain_block(main, head, hub, n_blades, q), **operating.generator},
         **yaw_block,
-        "coupled": {
-            "apex_downwind_m": q(
-                main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
-                "OverHang·cos(ShftTilt)",
-                "derived",
-            ),
-            "apex_above_top_m": q(
-                head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)", "derived"
-            ),
-            "hub_mass_kg": q(main.num("HubMass"), "HubMass"),
-        },
+        "coupled": _coupled_block(main, head, q),
         "assumptions": [
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",
@@ -356,52 +285,166 @@ def to_spec_data(
     warnings = list(operating.warnings) + (aero[3] if aero else [])
     warnings += bl.warnings + support_warnings
     if below is not None and not tower_block:
-        why = f": {pile}" if isinstance(pile, str) else ""
-        warnings.append(
-            f"tower.foundation: the deck set's tower stands on a platform ({below[0]}{why}), "
-            "which wtvib does not model: the tower is clamped at its base (TowerBsHt = "
-            f"{ed_base:g} m), so its bending frequencies are upper bounds"
-            + (
-                " and the platform's and moorings' own modes are missing"
-                if below[1]
-                else " (the substructure's own flexibility lowers them)"
-            )
-        )
-    data["drivetrain"].update(operating.generator)
+        warnings.append(_clamped_warning(below, pile, ed_base))
     if warnings:
         data["warnings"] = warnings
     if torsion is not None:
         data["assumptions"].append(torsion[2])
     if aero is not None:
-        data["aerodynamics"] = aero[0]
-        rated = aero[0]["control"].get("rated_power_kw")
-        if rated is not None:
-            data["turbine"]["rated_power_kw"] = q(
-                rated, f"VS_RtPwr ({operating.controller_file})"
-                if operating.controller_file else "VS_RtTq·VS_RtGnSp·GenEff (ServoDyn)",
-            )  # fmt: skip
-        control = aero[0]["control"]
-        given = [
-            f"{key} {control[field]:.6g}{unit}"
-            for key, field, unit in (
-                ("VS_TSRopt", "tip_speed_ratio", " (region-2 tip-speed ratio)"),
-                ("VS_RtPwr", "rated_power_kw", " kW (rated power)"),
-                ("PC_FinePit", "fine_pitch_deg", "° (fine pitch)"),
-            )
-            if field in control
-        ]
-        data["assumptions"].append(
-            "Aerodynamics from AeroDyn 15 (stations at HubRad + BlSpn, precone neglected; the "
-            "first table of each aerofoil file); cut-in and cut-out wind not in the deck set: "
-            "3 and 25 m/s assumed."
-            + (
-                f" From the controller ({operating.controller_file}): {', '.join(given)}."
-                if given and operating.controller_file
-                else ""
-            )
-            + "".join(f" {note}." for note in aero[2])
-        )
+        _add_aerodynamics(data, aero, operating, q)
     return data
+
+
+def _tower_tables(tower: Deck, yaw: bool) -> tuple[Any, Any, Any, Any, Any]:
+    """The tower file's stations (height fractions), mass and bending stiffness per length
+    with its adjustment factors, and its torsion (:func:`_tower_torsion`; ``yaw``: the deck
+    set has a yaw drive); a single station is a uniform tower."""
+    frac = tower.fractions("HtFract")
+    mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
+    ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
+    ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
+    torsion = _tower_torsion(tower, mass, ei_fa, yaw)
+    if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
+        frac = np.array([0.0, 1.0])
+        mass, ei_fa, ei_ss = (np.repeat(a, 2) for a in (mass, ei_fa, ei_ss))
+        torsion = (
+            None
+            if torsion is None
+            else (np.repeat(torsion[0], 2), np.repeat(torsion[1], 2), torsion[2])
+        )
+    return frac, mass, ei_fa, ei_ss, torsion
+
+
+def _distributed(
+    heights: np.ndarray, mass: np.ndarray, ei_fa: np.ndarray, ei_ss: np.ndarray, torsion: Any
+) -> dict[str, Any]:
+    """The tower's distributed properties block (with torsion where the deck set gives or
+    implies it)."""
+    out = {
+        "height_m": _list(heights),
+        "mass_per_length_kg_m": _list(mass),
+        "ei_fa_nm2": _list(ei_fa),
+        "ei_ss_nm2": _list(ei_ss),
+    }
+    if torsion is not None:
+        out |= {"gj_nm2": _list(torsion[0]), "polar_inertia_kgm": _list(torsion[1])}
+    return out
+
+
+def _head_block(head: dict[str, Any], q: Any) -> dict[str, Any]:
+    """The tower head as one rigid body (:func:`tower_head`), each value with its source."""
+    return {
+        "mass_kg": q(head["mass"], "NacMass + HubMass + blades + YawBrMass", "derived"),
+        "cm_downwind_m": q(head["x"], "mass-weighted over the parts", "derived"),
+        "cm_above_top_m": q(head["z"], "mass-weighted over the parts", "derived"),
+        "inertia_pitch_kgm2": q(
+            head["pitch"],
+            "parts about the head CM; rotor about a "
+            "diameter; nacelle a point mass in pitch (as ElastoDyn)",
+            "derived",
+        ),
+        "inertia_roll_kgm2": q(
+            head["roll"],
+            "parts about the head CM; rotor polar inertia (rotor locked to the nacelle)",
+            "derived",
+        ),
+        "inertia_yaw_kgm2": q(
+            head["yaw"], "NacYIner and rotor about a diameter, about the head CM", "derived"
+        ),
+    }
+
+
+def _drivetrain_block(
+    main: Deck, head: dict[str, Any], hub: dict[str, Any], n_blades: int, q: Any
+) -> dict[str, Any]:
+    """The drive train's chain — blades, hub, generator on the high-speed shaft — with
+    ElastoDyn's equivalent shaft spring and damper (the blades' edgewise spring between
+    blades and hub)."""
+    return {
+        "gear_ratio": q(main.num("GBRatio"), "GBRatio"),
+        "chain": [
+            {
+                "name": "blades",
+                "inertia_kgm2": q(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
+            },
+            hub,
+            {
+                "name": "generator",
+                "inertia_kgm2": q(main.num("GenIner"), "GenIner (HSS)"),
+                "speed_ratio": q(main.num("GBRatio"), "GBRatio"),
+            },
+        ],
+        "shafts": [
+            {"stiffness_nm_rad": None},  # blades–hub: the blades' edgewise spring
+            {
+                "stiffness_nm_rad": q(main.num("DTTorSpr"), "DTTorSpr (LSS equivalent)"),
+                "damping_nms_rad": q(main.num("DTTorDmp", default=0.0), "DTTorDmp"),
+            },
+        ],
+    }
+
+
+def _coupled_block(main: Deck, head: dict[str, Any], q: Any) -> dict[str, Any]:
+    """Where the coupled model's rotor apex sits on the tower top, and the hub's mass."""
+    return {
+        "apex_downwind_m": q(
+            main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
+            "OverHang·cos(ShftTilt)",
+            "derived",
+        ),
+        "apex_above_top_m": q(
+            head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)", "derived"
+        ),
+        "hub_mass_kg": q(main.num("HubMass"), "HubMass"),
+    }
+
+
+def _clamped_warning(below: tuple[str, bool], pile: Any, base: float) -> str:
+    """The headline warning of a tower whose platform wtvib does not model."""
+    why = f": {pile}" if isinstance(pile, str) else ""
+    return (
+        f"tower.foundation: the deck set's tower stands on a platform ({below[0]}{why}), "
+        "which wtvib does not model: the tower is clamped at its base (TowerBsHt = "
+        f"{base:g} m), so its bending frequencies are upper bounds"
+        + (
+            " and the platform's and moorings' own modes are missing"
+            if below[1]
+            else " (the substructure's own flexibility lowers them)"
+        )
+    )
+
+
+def _add_aerodynamics(data: dict[str, Any], aero: Any, operating: Any, q: Any) -> None:
+    """The AeroDyn block into the spec data, the controller's rated power as the turbine's,
+    and what was taken from where."""
+    data["aerodynamics"] = aero[0]
+    control = aero[0]["control"]
+    rated = control.get("rated_power_kw")
+    if rated is not None:
+        data["turbine"]["rated_power_kw"] = q(
+            rated, f"VS_RtPwr ({operating.controller_file})"
+            if operating.controller_file else "VS_RtTq·VS_RtGnSp·GenEff (ServoDyn)",
+        )  # fmt: skip
+    given = [
+        f"{key} {control[field]:.6g}{unit}"
+        for key, field, unit in (
+            ("VS_TSRopt", "tip_speed_ratio", " (region-2 tip-speed ratio)"),
+            ("VS_RtPwr", "rated_power_kw", " kW (rated power)"),
+            ("PC_FinePit", "fine_pitch_deg", "° (fine pitch)"),
+        )
+        if field in control
+    ]
+    data["assumptions"].append(
+        "Aerodynamics from AeroDyn 15 (stations at HubRad + BlSpn, precone neglected; the "
+        "first table of each aerofoil file); cut-in and cut-out wind not in the deck set: "
+        "3 and 25 m/s assumed."
+        + (
+            f" From the controller ({operating.controller_file}): {', '.join(given)}."
+            if given and operating.controller_file
+            else ""
+        )
+        + "".join(f" {note}." for note in aero[2])
+    )
 
 
 #: A steel tube tower's defaults where the deck set gives no torsion (Jonkman et al. 2009 §6,
