@@ -98,29 +98,7 @@ def _to_spec_data(
     version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
     notes = [f"Imported from the {version} file {path.name}."]
     if v2:  # the windIO schema first, then what wtvib needs
-        from . import windio_schema
-
-        if windio_schema.available():
-            found = windio_schema.problems(d)
-            if found:
-                bad, message = found[0]
-                more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
-                try:  # the line, from the careful reader (only on this error path)
-                    line = parse(text, str(path)).line_of(bad)
-                except SpecError:
-                    line = None
-                raise SpecError(
-                    f"the windIO 2.x schema refuses the file: {message}{more}",
-                    path=format_path(bad) or None,
-                    line=line,
-                    source=str(path),
-                )
-            notes.append("Checked against the windIO 2.x turbine schema (the windio package's).")
-        else:
-            notes.append(
-                "Not checked against the windIO schema (the windio package is not installed: "
-                "pip install 'wtvib[windio]'); wtvib's own checks apply."
-            )
+        notes.append(_schema_checked(d, text, path))
     if doc.redefined_anchors:
         notes.append(
             "The file defines the YAML anchor(s) "
@@ -130,12 +108,7 @@ def _to_spec_data(
         )
     reader = _Reader(d, path, v2)
     asm = d.get("assembly", {})
-    blades = asm.get("number_of_blades", 3)
-    if isinstance(blades, bool) or not isinstance(blades, int) or blades < 1:
-        raise SpecError(
-            f"assembly.number_of_blades must be a whole number ≥ 1 (got {blades!r})",
-            source=str(path),
-        )
+    blades = _blade_count(asm, path)
     if rpm is None:
         found_speed, speed_note = reader.speed()
         notes.append(speed_note)
@@ -145,23 +118,7 @@ def _to_spec_data(
         speed = {}
     tower, tower_notes = reader.tower()
     if soil is not None:  # a soil profile beside the file (--soil): the pile stands on it
-        pile = reader.embedded
-        if pile is None:
-            raise SpecError(
-                "--soil needs a monopile with an embedded part below the mudline; the file "
-                "has none",
-                source=str(path),
-            )
-        tower["foundation"] = {"kind": "soil", "pile": pile, **soil}
-        tower_notes = [
-            n.replace(
-                "the foundation is clamped at the mudline (rigid soil, the default soil "
-                "treatment: no soil springs are in the file), so frequencies are an upper "
-                "bound",
-                "the embedded pile stands on the soil profile given with --soil",
-            )
-            for n in tower_notes
-        ]
+        tower_notes = _on_soil(reader, tower, tower_notes, soil, path)
     notes += tower_notes
     structure, blade_mass, blade_len = reader.blade()
     if structure is None:
@@ -227,6 +184,71 @@ def _to_spec_data(
     if structure and reader.apex:
         data["coupled"] = {**reader.apex, **reader.hub}
     return data
+
+
+def _schema_checked(d: dict[str, Any], text: str, path: Path) -> str:
+    """What the windIO 2.x schema says of the file: a refusal (its first objection, with
+    field and line) or the statement that it was checked, or could not be."""
+    from . import windio_schema
+
+    if not windio_schema.available():
+        return (
+            "Not checked against the windIO schema (the windio package is not installed: "
+            "pip install 'wtvib[windio]'); wtvib's own checks apply."
+        )
+    found = windio_schema.problems(d)
+    if found:
+        bad, message = found[0]
+        more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
+        try:  # the line, from the careful reader (only on this error path)
+            line = parse(text, str(path)).line_of(bad)
+        except SpecError:
+            line = None
+        raise SpecError(
+            f"the windIO 2.x schema refuses the file: {message}{more}",
+            path=format_path(bad) or None,
+            line=line,
+            source=str(path),
+        )
+    return "Checked against the windIO 2.x turbine schema (the windio package's)."
+
+
+def _blade_count(asm: dict[str, Any], path: Path) -> int:
+    """assembly.number_of_blades (default 3), a whole number ≥ 1."""
+    blades = asm.get("number_of_blades", 3)
+    if isinstance(blades, bool) or not isinstance(blades, int) or blades < 1:
+        raise SpecError(
+            f"assembly.number_of_blades must be a whole number ≥ 1 (got {blades!r})",
+            source=str(path),
+        )
+    return blades
+
+
+def _on_soil(
+    reader: "_Reader",
+    tower: dict[str, Any],
+    notes: list[str],
+    soil: dict[str, Any],
+    path: Path,
+) -> list[str]:
+    """The embedded pile stood on the soil profile given beside the file (``tower`` gets its
+    foundation); the tower's notes with the clamp's statement replaced."""
+    pile = reader.embedded
+    if pile is None:
+        raise SpecError(
+            "--soil needs a monopile with an embedded part below the mudline; the file has none",
+            source=str(path),
+        )
+    tower["foundation"] = {"kind": "soil", "pile": pile, **soil}
+    return [
+        n.replace(
+            "the foundation is clamped at the mudline (rigid soil, the default soil "
+            "treatment: no soil springs are in the file), so frequencies are an upper "
+            "bound",
+            "the embedded pile stands on the soil profile given with --soil",
+        )
+        for n in notes
+    ]
 
 
 class _Map(dict):  # type: ignore[type-arg]
