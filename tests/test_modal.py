@@ -154,3 +154,16 @@ def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> No
     np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
     with pytest.raises(modal.ModalError, match="defective"):
         modal.state_modes(np.diag([1.0, 1.0], k=1))
+
+
+def test_state_modes_keep_the_real_roots_of_an_overdamped_mode():
+    """Issue 40's survivor `modal` (state_modes' tolerance sign): a root with Im λ = 0 — an
+    overdamped mode's, ẍ + 3ẋ + x = 0, λ = (−3 ± √5)/2 — is listed (the .lin reader names
+    the roots it leaves out from this list), each with participation summing to 1."""
+    import math
+
+    a = np.array([[0.0, 1.0], [-1.0, -3.0]])
+    found = modal.state_modes(a)
+    expected = sorted([(-3 - math.sqrt(5)) / 2, (-3 + math.sqrt(5)) / 2])
+    np.testing.assert_allclose(sorted(found.roots.real), expected, rtol=1e-12)
+    np.testing.assert_allclose(found.participation.sum(axis=0), 1.0, rtol=1e-12)
