@@ -347,6 +347,14 @@ class _Reader:
         self.embedded: dict[str, float] | None = None  # the monopile below the mudline
         self.tower_base = 0.0  # the tower's lowest station, z [m]
 
+    @property
+    def drivetrain(self) -> dict[str, Any]:
+        """components.drivetrain (2.x), or the 1.x nacelle's; empty where neither is given."""
+        found: dict[str, Any] = self.c.get("drivetrain") or self.c.get("nacelle", {}).get(
+            "drivetrain", {}
+        )
+        return found
+
     def fail(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path))
 
@@ -593,7 +601,7 @@ class _Reader:
         """Masses the file gives twice and differently (the IEA-22 2.1.1 example's
         generator is 508 t as ``mass`` and 1,269 t as ``elastic_properties.mass``, and its
         nacelle 1,565 t against 821 t in the turbine's OpenFAST deck)."""
-        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        dt = self.drivetrain
         out = []
         hub = self.c.get("hub")
         if not (isinstance(hub, dict) and "mass" in (hub.get("elastic_properties") or {})):
@@ -634,7 +642,7 @@ class _Reader:
         structure: dict[str, Any] | None,
         head_mass: float | None,
     ) -> tuple[dict[str, float], str]:
-        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        dt = self.drivetrain
         shape = dt.get("outer_shape", dt)
         tilt = math.radians(float(shape.get("uptilt", shape.get("uptilt_angle", 0.0)) or 0.0))
         if not self.v2 and tilt > 0.5:  # 1.x gives radians; 2.x degrees
@@ -696,11 +704,7 @@ class _Reader:
             )
         j_polar = 0.0
         if blade_mass and structure:
-            span = np.asarray(structure["span_m"])
-            per_length = np.asarray(structure["mass_per_length_kg_m"])
-            j_polar = blades * float(
-                np.trapezoid(per_length * (structure["hub_radius_m"] + span) ** 2, span)
-            )
+            j_polar = _rotor_polar(structure, blades)
             parts.append(
                 (
                     f"{blades} blades",
@@ -748,17 +752,13 @@ class _Reader:
         the shaft), read as WISDEM writes an ElastoDyn deck from the same file (GenIner,
         DTTorSpr, DTTorDmp, HubIner: the IEA-15-240-RWT's deck holds these numbers); None
         without them or the blades' mass."""
-        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        dt = self.drivetrain
         ep = dt.get("elastic_properties") or {}
         gen = (dt.get("generator") or {}).get("elastic_properties") or {}
         spring, inertia = ep.get("spring_constant"), gen.get("inertia")
         if not spring or not inertia or not structure:
             return None
-        span = np.asarray(structure["span_m"], float)
-        per_length = np.asarray(structure["mass_per_length_kg_m"], float)
-        j_blades = blades * float(
-            np.trapezoid(per_length * (structure["hub_radius_m"] + span) ** 2, span)
-        )
+        j_blades = _rotor_polar(structure, blades)
         hub_inertia = ((self.c.get("hub") or {}).get("elastic_properties") or {}).get("inertia")
         raw = {
             "drivetrain.elastic_properties.spring_constant": spring,
@@ -781,24 +781,20 @@ class _Reader:
         j_gen = values["drivetrain.generator.elastic_properties.inertia[0]"]
         j_hub = values["hub.elastic_properties.inertia[0]"]
         damping = values["drivetrain.elastic_properties.damping_coefficient"]
-        chain: list[dict[str, Any]] = [{"name": "blades", "inertia_kgm2": j_blades}]
-        shafts: list[dict[str, Any]] = [{"stiffness_nm_rad": None}]
-        if j_hub > 0:
-            chain.append({"name": "hub", "inertia_kgm2": j_hub})
-            shafts.append({"stiffness_nm_rad": None})
-        chain.append({"name": "generator", "inertia_kgm2": j_gen, "speed_ratio": gear})
-        shafts[-1] = {
-            "stiffness_nm_rad": float(spring),
-            "damping_nms_rad": max(damping, 0.0),
-        }
-        if j_hub > 0:
-            shafts[0] = {"stiffness_nm_rad": None}
+        chain: list[dict[str, Any]] = [
+            {"name": "blades", "inertia_kgm2": j_blades},
+            *([{"name": "hub", "inertia_kgm2": j_hub}] if j_hub > 0 else []),
+            {"name": "generator", "inertia_kgm2": j_gen, "speed_ratio": gear},
+        ]
+        # blades to hub: the blades' edgewise spring alone; the shaft on to the generator
+        shafts: list[dict[str, Any]] = [{"stiffness_nm_rad": None} for _ in chain[2:]]
+        shafts.append({"stiffness_nm_rad": spring, "damping_nms_rad": damping})
         note = (
             f"Drive train: blades {j_blades:,.0f} kg·m² (N·∫m·r² dr), "
             + (f"hub {j_hub:,.0f} kg·m², " if j_hub > 0 else "")
             + f"generator {j_gen:,.0f} kg·m² (its elastic inertia about the shaft; on the "
             f"{'rotor' if gear == 1 else f'{gear:g}:1 generator'} shaft), shaft "
-            f"{float(spring):.4g} N·m/rad and {damping:.4g} N·m·s/rad "
+            f"{spring:.4g} N·m/rad and {damping:.4g} N·m·s/rad "
             "(drivetrain.elastic_properties) — as WISDEM writes GenIner, HubIner, DTTorSpr and "
             "DTTorDmp into an ElastoDyn deck; the blades' edgewise flexibility between blades "
             "and hub."
@@ -806,9 +802,16 @@ class _Reader:
         return {"chain": chain, "shafts": shafts}, note
 
     def gear_ratio(self) -> float | None:
-        dt = self.c.get("drivetrain") or self.c.get("nacelle", {}).get("drivetrain", {})
+        dt = self.drivetrain
         ratio = (dt.get("gearbox") or {}).get("gear_ratio", dt.get("gear_ratio"))
         return float(ratio) if ratio else None
+
+
+def _rotor_polar(structure: dict[str, Any], blades: int) -> float:
+    """The blades' polar inertia about the rotor axis, N·∫m·r² dr [kg·m²]."""
+    span = np.asarray(structure["span_m"], float)
+    per_length = np.asarray(structure["mass_per_length_kg_m"], float)
+    return blades * float(np.trapezoid(per_length * (structure["hub_radius_m"] + span) ** 2, span))
 
 
 def _first(value: Any) -> Any:
