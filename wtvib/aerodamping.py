@@ -49,6 +49,7 @@ Structural damping is the mode's given or assumed ratio, added to the aerodynami
 stated separately.
 """
 
+import functools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
@@ -114,6 +115,12 @@ class Sections:
     c: Array  # per unit length and blade [N·s/m²], (K, S, 2, 2)
     lift: Array  # the lift slope's part of c (section_lift), (K, S, 2, 2)
     rate: Array  # each section's reduced rate 2W/c [1/s], (K, S)
+
+    @functools.cached_property
+    def lift_rate(self) -> Array:
+        """The lift part weighted by each section's 2W/c: summed over sections and divided
+        by the lift part's sum, the lift-weighted reduced rate of a lag filter."""
+        return np.asarray(self.lift * self.rate[..., None, None])
 
     def at(self, radius: Array, table: Array | None = None) -> Array:
         """The matrices (``table``, else ``c``) at other radii (K, P, 2, 2): linear
@@ -290,7 +297,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
     d_qs = model.section_damping(c_points)
     lift = sec.at(model.rotor.radius, sec.lift) * per_length
-    rated = sec.at(model.rotor.radius, sec.lift * sec.rate[..., None, None]) * per_length
+    rated = sec.at(model.rotor.radius, sec.lift_rate) * per_length
     d_lift = model.section_damping(lift)
     lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
     d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * d_lift
@@ -406,9 +413,7 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
         return np.asarray(np.trapezoid(sec.at(r, table)[:, :, e, e] * weight, r, axis=1))
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return _single_mode(
-        gen_mass, omega, modal(sec.c), modal(sec.lift), modal(sec.lift * sec.rate[..., None, None])
-    )
+    return _single_mode(gen_mass, omega, modal(sec.c), modal(sec.lift), modal(sec.lift_rate))
 
 
 def tower_mass(spec: Spec) -> float | None:
@@ -444,9 +449,7 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
         return np.asarray(share * np.trapezoid(table[:, :, e, e], r, axis=1))
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return _single_mode(
-        gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift * sec.rate[..., None, None])
-    )
+    return _single_mode(gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate))
 
 
 def _single_mode(

@@ -719,20 +719,16 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         # the drive train's modes hold in its generator condition; the rest do in any
         return drivetrain.regimes(spec, cond) if name.startswith("drivetrain") else None
 
-    pairs: dict[str, str] = {}
-    chained: set[str] = set()
-
     def stands_for(j: int, name: str, f: float) -> str | None:
-        iso = pairs.get(name, isolated_id(name, cond))
+        # the names' counterparts (pairs, chained) are found below, before any call
+        iso = pairs[name]
         if j < kept(spec) or iso not in known or name in chained:
             return iso
         return iso if max(f, known[iso]) <= PAIRED * min(f, known[iso]) else None
 
     if spec.rotor.blades < 3:
         res = parked_named(model)
-        found, chain = counterparts(spec, res.names, cond)
-        pairs.update(found)
-        chained.update(chain)
+        pairs, chained = counterparts(spec, res.names, cond)
         return [
             Mode(
                 f"system.{n}",
@@ -752,9 +748,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
     order = np.argsort(sw.frequency_hz[0])
-    found, chain = counterparts(spec, [sw.names[j] for j in order], cond)
-    pairs.update(found)
-    chained.update(chain)
+    pairs, chained = counterparts(spec, [sw.names[j] for j in order], cond)
     weighted = strain_weighted(spec, model, sw.path.shapes[0])
     lower = default_damping(spec)
     out = []

@@ -519,20 +519,18 @@ def _name(
         merged = {g: float(v) for g, v in zip(merged_names, merged_table[:, j], strict=True)}
         top = merged_names[int(np.argmax(merged_table[:, j]))]
         whirl = _whirl(top, shapes[:, j], groups)
-        name, text = _mode_name(top, share, j, dict(counters), whirl)
         first = top
-        if name in names:  # a name taken: the next group this mode has a share in
+        trial, _ = _mode_name(top, share, j, dict(counters), whirl)
+        if _free_name(trial, names) is None:  # taken: the next group it has a share in
             top = _free_group(top, merged, share, j, names, counters)
             whirl = _whirl(top, shapes[:, j], groups)
         name, text = _mode_name(top, share, j, counters, whirl)
         if top != first:
             text = f"{text}, {merged[first]:.0%} {first} (named by its second share)"
-        if name in names and name.split(".")[-1].startswith("cyclic"):
-            # the other axis of the same cyclic pair (tilt ↔ yaw) where it is free
-            other = _other_axis(name)
-            if other not in names:
-                was, now = name.rsplit("_", 1)[1], other.rsplit("_", 1)[1]
-                name, text = other, text.replace(f"({was})", f"({now})")
+        free = _free_name(name, names)
+        if free is not None and free != name:  # the other axis of its cyclic pair
+            was, now = name.rsplit("_", 1)[1], free.rsplit("_", 1)[1]
+            name, text = free, text.replace(f"({was})", f"({now})")
         if whirl in ("forward", "backward"):
             text = f"{text}, {whirl} whirl"
         mixed = [
@@ -570,16 +568,22 @@ def _free_group(
         if group in _PARTS:
             return group
         name, _ = _mode_name(group, share, j, dict(counters), None)
-        if name not in names or (
-            name.split(".")[-1].startswith("cyclic") and _other_axis(name) not in names
-        ):
+        if _free_name(name, names) is not None:
             return group
     return top
 
 
-def _other_axis(name: str) -> str:
-    """The cyclic name of the other axis of the pair (tilt ↔ yaw)."""
-    return name[: -len("tilt")] + "yaw" if name.endswith("tilt") else name[: -len("yaw")] + "tilt"
+def _free_name(name: str, names: Sequence[str]) -> str | None:
+    """``name`` where no mode has it yet; for a cyclic mode whose axis is taken, the other
+    axis of its pair (tilt ↔ yaw) where that is free; else None."""
+    if name not in names:
+        return name
+    if name.split(".")[-1].startswith("cyclic"):
+        base, axis = name.rsplit("_", 1)
+        other = f"{base}_{'yaw' if axis == 'tilt' else 'tilt'}"
+        if other not in names:
+            return other
+    return None
 
 
 _PARTS = {
