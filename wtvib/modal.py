@@ -378,8 +378,7 @@ def oscillations_stacked(
             left = np.linalg.inv(vecs)  # rows: the left eigenvectors
         except np.linalg.LinAlgError:
             raise ModalError(DEFECTIVE) from None
-        weight = np.abs(vecs * np.swapaxes(left, -1, -2))
-        structure = weight[..., : 2 * n, :].sum(axis=-2) / np.maximum(weight.sum(axis=-2), 1e-300)
+        structure = participation(vecs, np.swapaxes(left, -1, -2))[..., : 2 * n, :].sum(axis=-2)
         own = structure < 0.5
         lams = np.where(own, 0j, lams)  # dropped below as a root of zero size
     return [
@@ -501,6 +500,13 @@ def state_modes(a: Array) -> StateModes:
         except np.linalg.LinAlgError:
             raise ModalError(DEFECTIVE) from None
     keep = lam.imag >= -1e-12 * max(1.0, float(np.abs(lam).max(initial=0.0)))
-    weight = np.abs(vec * left)[:, keep]
-    total = weight.sum(axis=0)
-    return StateModes(lam[keep], vec[:, keep], weight / np.where(total > 0, total, 1.0))
+    return StateModes(lam[keep], vec[:, keep], participation(vec[:, keep], left[:, keep]))
+
+
+def participation(vec: NDArray[np.complex128], left: NDArray[np.complex128]) -> Array:
+    """Participation factors |φ_ki·ψ_ik| of the states k in the roots i, each root's summing
+    to 1 (:func:`state_modes`): right eigenvectors φ as columns, left ones ψ as columns too
+    (stacks: the last two axes)."""
+    weight = np.abs(vec * left)
+    total = weight.sum(axis=-2, keepdims=True)
+    return np.asarray(weight / np.where(total > 0, total, 1.0))
