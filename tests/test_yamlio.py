@@ -125,3 +125,6 @@ m: "[1.0, 2.0]"
     assert type(got["a"][1]) is int and type(got["a"][0]) is float
     assert got["d"] == [0.5, 1.0] and got["l"] == [1e5, 2] and got["m"] == "[1.0, 2.0]"
     assert len(yamlio._number_lists(text)[1]) == 3  # a, c and l; the others stay with YAML
+    # an integer of more digits than any value has is still refused, with its line
+    with pytest.raises(SpecError, match=r"line 1: .*a number of 40 digits"):
+        yamlio.parse_plain("a: [1, " + "1234567890" * 4 + "]\n")

@@ -176,6 +176,8 @@ def _number_lists(text: str) -> tuple[str, dict[str, list[Any]]]:
             return m[0]
         if not all(_JSON_NUMBER.fullmatch(t) for t in items):
             return m[0]
+        if any(len(t) > MAX_DIGITS and _CORE_INT.fullmatch(t) for t in items):
+            return m[0]  # an integer too long to be a value: the YAML reader refuses it
         token = f"{prefix}{len(lists)}"
         lists[token] = json.loads("[" + ",".join(items) + "]")
         return f"{m['head']}{token}"
