@@ -170,3 +170,20 @@ def test_detail_prints_the_sensitivities_of_an_uncertainty_run():
     row = next(line for line in text.splitlines() if "youngs_modulus_pa" in line)
     assert "+0.50" in row or "+0.51" in row
     assert "Sensitivities" not in _text(report, width=120)  # --detail only
+
+
+def test_a_structural_audit_names_the_modes_it_judges_without_aerodynamic_damping():
+    """Hau 7.2.3: aerodynamic damping is large flapwise (and the rotor's thrust damps the
+    tower's fore-aft bending). A spec without an aerodynamics block says which of its modes
+    are judged without it; MOD-2, described without blades, has no flapwise resonance to
+    speak of — its headline named one before."""
+
+    def damping_row(name: str) -> str:
+        out = io.StringIO()
+        terminal(audit.run(spec.load(TURBINES / name)), Console(file=out, width=200))
+        return next(line for line in out.getvalue().splitlines() if "Damping" in line)
+
+    mod2 = damping_row("mod-2.yaml")
+    assert "tower.fa1 judged without its aerodynamic damping" in mod2 and "flap" not in mod2
+    darrieus = damping_row("darrieus.yaml")
+    assert "blade.flap1" in darrieus and "tower.fa1" in darrieus

@@ -115,7 +115,7 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
             "aerodynamics given, but no judged mode has a model to take them (blade mass or "
             "structure; tower mass and tower head)"
             if data.get("aerodynamics")
-            else "no aerodynamics: flapwise resonances judged without their aerodynamic damping"
+            else _without_aerodynamics(data["modes"])
         )
         grid.add_row("Damping", Text(f"structural only — {why}", style="yellow"))
     grid.add_row(
@@ -127,6 +127,18 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     for line in data.get("warnings", []):  # what the audit had to assume, in the headline
         grid.add_row(Text("Warning", style="yellow"), _t(line, "yellow"))
     return Panel(grid, title="wtvib audit", border_style=STYLE[verdict])
+
+
+def _without_aerodynamics(modes: list[dict]) -> str:  # type: ignore[type-arg]
+    """What an audit without an aerodynamics block judges without aerodynamic damping: the
+    blades' modes and the tower's first fore-aft bending (the rotor's thrust damps it) —
+    named, since a turbine described without blades has no blade resonance to judge."""
+    named = [m["id"] for m in modes if m["subsystem"] == "blade" or m["id"] == "tower.fa1"]
+    if not named:
+        return "no aerodynamics block (no mode here that aerodynamic damping acts on)"
+    shown = ", ".join(named[:4]) + (f" and {len(named) - 4} more" if len(named) > 4 else "")
+    their = "their" if len(named) > 1 else "its"
+    return f"no aerodynamics block: {shown} judged without {their} aerodynamic damping"
 
 
 def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
