@@ -4,7 +4,8 @@ yaw moments and gyroscopics (Hau ch. 7.4, Figs. 7.17 and 7.18).
 One-mass model: the tower head's inertia about the yaw axis on the drives' stiffness
 (n drives in parallel) in series with the tower's torsional stiffness; two-mass model when
 the tower's own torsional inertia is given. Gear play (half-gap δ) is a dead-zone spring,
-linearised by its describing function, so the frequency falls with vibration amplitude.
+linearised by its describing function: its stiffness grows with the vibration amplitude
+(none inside the gap), so the frequency falls as the amplitude shrinks toward the play.
 """
 
 import math
@@ -297,14 +298,17 @@ def _play_check(
     def hit(f: float) -> list[str]:
         return lines_met(f, lines, op, rule, "yaw")
 
-    # the amplitude at which the falling frequency first reaches a dominant line's band
+    # the play's stiffness grows with the vibration amplitude (no stiffness inside the gap),
+    # so the yaw frequency falls as the amplitude shrinks: each dominant line's band is met
+    # below the amplitude at which the frequency reaches the band's top, the first line at
+    # the largest such amplitude (below the known amplitude, where one is known and clear)
     critical: list[tuple[float, str]] = []
     for e in dominant:
         top = float(np.max(e.frequency_hz(speeds)))
         a = mdl.critical_amplitude(rule.natural_band(top)[1])
-        if a is not None:
+        if a is not None and (mdl.amplitude is None or a < mdl.amplitude):
             critical.append((a, e.id))
-    first = min(critical) if critical else None
+    first = max(critical) if critical else None
     gap = math.degrees(mdl.half_gap)
     numbers: dict[str, object] = {
         "half_gap_deg": round(gap, 6),
@@ -321,7 +325,7 @@ def _play_check(
         if first:
             text += (
                 f"; the yaw frequency falls from {f0:.3g} Hz onto {first[1]} once the "
-                f"amplitude exceeds {math.degrees(first[0]):.3g}°"
+                f"amplitude is below {math.degrees(first[0]):.3g}°"
             )
         return Check("yaw.play", "yaw", status, text, _play_rule(rule), numbers)  # type: ignore[arg-type]
     f_a = mdl.at_amplitude(mdl.amplitude)
@@ -352,7 +356,7 @@ def _play_check(
         status = "pass"
         text = f"with play ±{gap:.2g}° the yaw frequency spans {band}, clear of the dominant lines"
         if first:
-            text += f"; it would meet {first[1]} above {math.degrees(first[0]):.3g}° amplitude"
+            text += f"; it would meet {first[1]} below {math.degrees(first[0]):.3g}° amplitude"
     return Check("yaw.play", "yaw", status, text, _play_rule(rule), numbers)  # type: ignore[arg-type]
 
 

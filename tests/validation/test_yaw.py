@@ -102,6 +102,46 @@ def test_aeroman_play_is_the_cause_and_the_retrofit_passes():
     assert all(c.status in ("pass", "info") for c in fixed.checks if c.subsystem == "yaw")
 
 
+def _dead_zone(r: float) -> float:
+    """Gelb & Vander Velde's dead-zone describing function N/k at A/δ = r (> 1)."""
+    x = 1 / r
+    return 1 - (2 / math.pi) * (math.asin(x) + x * math.sqrt(1 - x * x))
+
+
+def test_play_meets_the_first_line_as_the_amplitude_shrinks(write_spec):
+    """The play's stiffness grows with the vibration amplitude, so the yaw frequency falls
+    as the amplitude shrinks toward the gap. Aeroman (2.6 Hz without play, ±0.5° play, fixed
+    56 rpm, 10 % band): the first dominant line met is 2P, whose band top 1.1·2·56/60 Hz the
+    frequency reaches at A with f₀·√N(A/δ) = 2.0533 Hz — 1.666° by hand (1P's band is met
+    only below 0.68°). Without a known amplitude the check warns with it; at a known 3° the
+    frequency is clear and the check says below which amplitude 2P would be met."""
+    from scipy.optimize import brentq
+
+    text = (TURBINES / "aeroman.yaml").read_text()
+    no_amplitude = "\n".join(ln for ln in text.splitlines() if "yaw_moment_amplitude_nm" not in ln)
+    play = next(
+        c for c in audit.run(spec.load(write_spec(no_amplitude))).checks if c.id == "yaw.play"
+    )
+    f0 = play.numbers["frequency_no_play_hz"]
+    target = 1.1 * 2 * 56 / 60
+    expected = 0.5 * brentq(lambda r: _dead_zone(r) - (target / f0) ** 2, 1 + 1e-9, 1e6)
+    assert play.status == "warn" and "onto 2P once the amplitude is below 1.67°" in play.message
+    assert play.numbers["critical_amplitude_deg"] == pytest.approx(expected, rel=1e-5)
+    known = no_amplitude.replace(
+        "    half_gap_deg:",
+        "    amplitude_deg: {value: 3.0, provenance: representative}\n    half_gap_deg:",
+    )
+    play = next(
+        c
+        for c in audit.run(spec.load(write_spec(known, name="k.yaml"))).checks
+        if c.id == "yaw.play"
+    )
+    assert play.numbers["frequency_with_play_hz"] == pytest.approx(
+        f0 * math.sqrt(_dead_zone(6.0)), rel=1e-6
+    )
+    assert play.status == "pass" and "it would meet 2P below 1.67° amplitude" in play.message
+
+
 def test_nrel5mw_yaw_frequency_from_the_yaw_spring(shared):
     # ServoDyn YawSpr 9.02832e9 N·m/rad (DOMAIN.md §5) with the tower head's yaw inertia
     # assembled from the ElastoDyn deck (NacYIner, rotor about a diameter, hub and blade
