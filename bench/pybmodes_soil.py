@@ -3,7 +3,8 @@ reference numbers (tests/data/soil/pybmodes.json): the OC3 monopile deck (SubDyn
 the ElastoDyn tower, OpenFAST r-test, tests/data/openfast_decks/rtest.tar.gz) clamped, on
 pyBModes' mudline coupled springs (Shadlou & Bhattacharya 2016; Psaroudakis et al. 2021 —
 a Winkler pile in homogeneous soil), a 36 m embedded pile (OC3: 6 m × 60 mm, E 210 GPa) in
-homogeneous soil of E_s 20, 50 and 100 MPa (ν 0.3), and a stiff-spring limit.
+homogeneous soil of E_s 20, 50 and 100 MPa (ν 0.3), and a stiff-spring limit; Shadlou's
+closed forms for the parabolic and linear profiles and rigid piles too.
 
 Needs pyBModes (the bench extra: pip install 'wtvib[bench]'); run from the repository:
 
@@ -76,6 +77,20 @@ def main() -> None:
                         "frequencies_hz": list(np.round(freq, 6)),
                     }
                 )
+    # Shadlou & Bhattacharya's closed forms for every soil profile and pile behaviour (the
+    # coefficient table, Yu & Amdahl 2023 Table 1, as pyBModes holds it): the OC3 pile as
+    # flexible, a 24 m pile (L/D = 4) as rigid, in soil of 50 MPa at one diameter's depth
+    out["shadlou_closed_forms"] = []
+    for embedded, behaviour in ((PILE["embedded_m"], "flexible"), (24.0, "rigid")):
+        for profile in ("homogeneous", "parabolic", "linear"):
+            f = MudlineFoundation.from_soil_properties(
+                pile_diameter=d, pile_length_embedded=embedded, pile_EI=ei, soil_E=50e6,
+                soil_nu=0.3, soil_profile=profile, pile_behaviour=behaviour, formula="shadlou",
+            )  # fmt: skip
+            out["shadlou_closed_forms"].append(
+                {"embedded_m": embedded, "profile": profile, "behaviour": behaviour,
+                 "soil_E_pa": 50e6, "K_hh": f.K_hh, "K_hr": f.K_hr, "K_rr": f.K_rr}
+            )  # fmt: skip
     json.dump(out, sys.stdout, indent=1)
     sys.stdout.write("\n")
 

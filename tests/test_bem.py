@@ -155,6 +155,12 @@ def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nr
     hub = factor(b * (radius - rot.hub_radius) / (rot.hub_radius * s))
     np.testing.assert_allclose(bem._losses(rot, phi), np.maximum(tip * hub, 1e-6), rtol=1e-14)
     assert np.all(bem._losses(rot, phi)[:, [0, -1]] == 1e-6)
+    # either loss alone (AeroDyn's TipLoss or HubLoss switched off) is its own factor
+    for alone, expected in (("hub_loss", tip), ("tip_loss", hub)):
+        one = dataclasses.replace(rot, **{alone: False})
+        np.testing.assert_allclose(bem._losses(one, phi), np.maximum(expected, 1e-6), rtol=1e-14)
+    neither = dataclasses.replace(rot, tip_loss=False, hub_loss=False)
+    assert np.all(bem._losses(neither, phi) == 1.0)
 
 
 def test_momentum_theory_gives_the_induction_in_both_of_its_paths():

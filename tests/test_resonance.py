@@ -5,13 +5,14 @@ Forbidden speed intervals follow from the band rule by hand: with natural freque
 and harmonic k, the margin m is violated for k·n/60 in (f_n/(1+m), f_n/(1−m)).
 """
 
+import dataclasses
 import math
 
 import pytest
 
 from wtvib.excitation import Excitation, OperatingRange, harmonic_energy
 from wtvib.resonance import assess, regime_of, resonance_checks
-from wtvib.results import Mode, Southwell
+from wtvib.results import Mode, Sampled, Southwell
 from wtvib.rules import MarginRule
 from wtvib.units import rad_s_to_rpm, rpm_to_rad_s
 
@@ -179,6 +180,14 @@ def test_regime_of_speed():
     assert regime_of(float(rpm_to_rad_s(12)), o) == "steady"
     assert regime_of(float(rpm_to_rad_s(14.5)), o) == "quick-pass"
     assert regime_of(float(rpm_to_rad_s(22)), o) == "overspeed"
+    # a crossing computed at a range's edge carries round-off (a bisection, f/k): within
+    # 1e-9 of the overspeed it belongs to the range it touches, beyond 1e-7 it does not
+    top = o.overspeed
+    for (a, b), regime in ((o.quick_pass[0], "quick-pass"), (o.steady[0], "steady")):
+        assert regime_of(a - 5e-10 * top, o) == regime and regime_of(b + 5e-10 * top, o) == regime
+    assert regime_of(o.quick_pass[0][0] - 1e-7 * top, o) == "steady"
+    assert regime_of(o.steady[0][0] - 1e-7 * top, o) == "start-up"
+    assert regime_of(o.steady[0][1] + 1e-7 * top, o) == "overspeed"
 
 
 def test_fixed_frame_lines_take_the_class_of_the_blade_harmonic_behind_them():
@@ -306,3 +315,53 @@ def test_a_crossing_mark_carries_the_damping_judged_there():
             assert mark.daf == pytest.approx(1 / (2 * mark.damping), rel=1e-9)
             seen += 1
     assert seen > 5
+
+
+def test_a_band_from_the_grids_first_speed_ends_where_the_stiffened_mode_leaves_it():
+    """A fixed-frequency line (order 0, 1 Hz) on a blade mode of 1 Hz at standstill that
+    stiffens with speed, f² = 1 + 1.2·(n/60)²: the mode is inside the 10 % band from 0 rpm
+    and leaves it where f = 1.1 Hz, n = 60·√((1.1² − 1)/1.2) = 25.100 rpm (by hand) — the
+    run starts at the grid's first speed, whose edge is not refined, and only its end is."""
+    line = Excitation("mesh", 0.0, "dominant", "test", offset_hz=1.0)
+    blade = Mode("blade.flap1", "blade", "test mode", 1.0, 0.01, Southwell(1.0, 1.2))
+    f = assess(blade, line, op([(10, 30)], 34.5), BAND, SEVERITY, 0.01)
+    ((lo, hi),) = f.violations["steady"]
+    assert rpm(lo) == pytest.approx(10.0, rel=1e-12)  # the steady range's start
+    assert rpm(hi) == pytest.approx(60 * math.sqrt((1.1**2 - 1) / 1.2), rel=1e-9)
+
+
+def test_an_imported_curve_leaving_and_reentering_a_fixed_lines_band():
+    """An imported Campbell curve (linear between its points) of 1.0 Hz at 0 rpm, 1.3 Hz at
+    15 rpm, back to 1.0 Hz at 30 rpm, against a fixed 1 Hz line: inside the 10 % band
+    (0.9–1.1 Hz) from the grid's first speed to 5 rpm and again from 25 rpm (by hand:
+    1 + 0.02·n = 1.1, 1.3 − 0.02·(n − 15) = 1.1). Two runs, the first from the grid's start:
+    each edge refined is the one of its own run."""
+    w = lambda x: float(rpm_to_rad_s(x))  # noqa: E731
+    curve = Sampled((0.0, w(15), w(30)), (1.0, 1.3, 1.0))
+    line = Excitation("mesh", 0.0, "dominant", "test", offset_hz=1.0)
+    f = assess(Mode("x.1", "tower", "test", 1.0, 0.01, curve), line, op([(2, 30)], 34.5), BAND,
+               SEVERITY, 0.01)  # fmt: skip
+    runs = [(rpm(a), rpm(b)) for a, b in f.violations["steady"]]
+    assert runs == [pytest.approx((2.0, 5.0), rel=1e-8), pytest.approx((25.0, 30.0), rel=1e-8)]
+
+
+def test_marks_of_one_line_at_one_place_are_one_mark():
+    """Two modes of one frequency on one line (a round tower's fore-aft and side-side) are
+    one resonance: marks within 2 % of each other in speed and frequency merge into the worst
+    status, naming both modes, with the larger amplification (the less damped mode); 2.1 %
+    apart in either, or on another line, they stay apart."""
+    from wtvib.resonance import Mark, _one_per_place
+
+    fa = Mark(23.0, 0.767, "warn", "crossing", "2P", ("tower.fa1",), 10.0, 0.05)
+    ss = Mark(23.3, 0.775, "fail", "crossing", "2P", ("tower.ss1",), 25.0, 0.02)
+    (one,) = _one_per_place([fa, ss])
+    assert one.status == "fail" and set(one.modes) == {"tower.fa1", "tower.ss1"}
+    assert (one.daf, one.damping) == (25.0, 0.02) and (one.rpm, one.hz) == (23.3, 0.775)
+    (one,) = _one_per_place([fa, dataclasses.replace(ss, status="warn", daf=5.0, damping=0.1)])
+    assert (one.daf, one.damping) == (10.0, 0.05)  # the first's, the less damped
+    for apart in (
+        dataclasses.replace(ss, rpm=23.0 * 1.021),
+        dataclasses.replace(ss, hz=0.767 * 1.021),
+        dataclasses.replace(ss, line="3P"),
+    ):
+        assert len(_one_per_place([fa, apart])) == 2

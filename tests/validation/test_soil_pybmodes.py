@@ -9,6 +9,9 @@ springs for a 36 m embedded pile (6 m × 60 mm, E 210 GPa) in homogeneous soil o
 (2021) — a Winkler pile of line stiffness D·E_s, which is wtvib's soil model (the pile's
 finite elements on distributed springs, condensed to the mudline) with E_py = D·E_s.
 
+Shadlou's closed forms are compared for all three soil profiles (homogeneous, parabolic,
+linear) and both pile behaviours as well (``shadlou_closed_forms`` in the same file).
+
 Where the models are the same, they agree to the digits printed: the stiffnesses exactly,
 the first and second tower frequencies within 0.2 %. Where they differ, pyBModes' own two
 paths show it: its clamped cantilever (``hub_conn = 1``) gives 0.2905 Hz, 3 % above its
@@ -108,3 +111,19 @@ def test_the_clamped_base_is_pybmodes_stiff_spring_limit(oc3):
     ours = _modes(oc3, Foundation(kind="clamped"))
     assert ours == pytest.approx(REF["stiff_springs"], rel=2e-3)
     assert REF["clamped_hub_conn_1"][0] > 1.02 * REF["stiff_springs"][0]
+
+
+@pytest.mark.parametrize(
+    "case", REF["shadlou_closed_forms"], ids=lambda c: f"{c['behaviour']}-{c['profile']}"
+)
+def test_shadlous_closed_forms_for_every_profile_are_pybmodes(case):
+    """Shadlou & Bhattacharya (2016) for the homogeneous, parabolic and linear soil profiles
+    and flexible and rigid piles (their coefficient table, Yu & Amdahl 2023 Table 1): wtvib's
+    K_L, K_LR, K_R are pyBModes' for the same pile and soil (the OC3 pile as flexible, a
+    24 m one as rigid, E_s 50 MPa at one diameter's depth), to 1e-9 — every coefficient of
+    the table is in play."""
+    pile = PILE.model_copy(update={"embedded_length_m": case["embedded_m"]})
+    k = soil.shadlou(pile, case["soil_E_pa"], case["profile"], case["behaviour"])
+    assert (k.lateral, k.coupling, k.rocking) == pytest.approx(
+        (case["K_hh"], case["K_hr"], case["K_rr"]), rel=1e-9
+    )
