@@ -441,19 +441,7 @@ def check(
             drawer.send(report, detail=figures is Figures.all)  # drawn while the text renders
         # the report rendered while the figures draw, printed once they are written (a
         # file that may not be replaced stops the check before anything is printed)
-        if format is Format.json:
-            from .report import to_json
-
-            text = to_json(report)
-        else:
-            from rich.console import Console
-
-            from .report import terminal, wrote
-
-            console = Console()
-            with console.capture() as captured:
-                terminal(report, console, show_all=show_all, detail=detail or show_all)
-            text = captured.get()
+        console, text = _rendered(report, format, show_all=show_all, detail=detail)
         if plot:
             folder = out if out is not None else Path.cwd()  # never beside the input (#21)
             with _working("drawing the figures"):
@@ -465,16 +453,35 @@ def check(
         data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
     sys.stdout.write(text)
-    if format is Format.json:
+    if console is None:
         for path in written:
             typer.echo(f"wrote {path}", err=True)
     else:
+        from .report import wrote
+
         sys.stdout.flush()
         wrote(console, written)
     for warning in report.warnings:
         typer.echo(f"warning: {warning}", err=True)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")
     raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
+
+
+def _rendered(report: Any, format: Format, *, show_all: bool, detail: bool) -> "tuple[Any, str]":
+    """The report as the text ``check`` prints: JSON (no console), or the terminal report
+    captured from the console it is then printed beside (the files written)."""
+    if format is Format.json:
+        from .report import to_json
+
+        return None, to_json(report)
+    from rich.console import Console
+
+    from .report import terminal
+
+    console = Console()
+    with console.capture() as captured:
+        terminal(report, console, show_all=show_all, detail=detail or show_all)
+    return console, captured.get()
 
 
 @app.command(cls=_Command)
