@@ -47,7 +47,10 @@ def test_the_synchronous_power_curve_is_a_result_the_figure_draws():
     curve = r.result(drivetrain.NAME, drivetrain.DrivetrainResults).power
     # Hau Fig. 7.14: the magnetic stiffness falls with power, and so does the frequency
     assert curve.frequency_hz[0] > curve.frequency_hz[-1]
-    assert [label for label, _ in curve.lines] == ["1P at 40 rpm", "2P at 40 rpm"]
+    assert curve.lines == (
+        ("1P at 40 rpm", pytest.approx(40 / 60)),
+        ("2P at 40 rpm", pytest.approx(80 / 60)),
+    )
 
 
 def test_a_pull_out_power_below_rated_is_refused_with_the_field(tmp_path):
@@ -223,3 +226,62 @@ def test_a_fluid_coupling_is_a_damper_of_its_slip_and_no_spring(tmp_path):
     data["drivetrain"]["shafts"][2] = {"speed_ratio": 45.0}  # neither stiffness nor coupling
     with pytest.raises(SpecError, match="stiffness_nm_rad is needed"):
         spec.from_data(data)
+
+
+def _chain_spec(shaft0, reference="rotor", edge_spring=True):  # type: ignore[no-untyped-def]
+    """Blades (1e6 kg·m²), hub (2e4), generator (50 kg·m² turning 80 times faster) with a
+    brake disc (10 kg·m²) rigidly on its shaft."""
+    return spec.from_data(
+        {
+            "wtvib": 1,
+            "turbine": {"name": "chain"},
+            "rotor": {
+                "blades": 3,
+                "orientation": "upwind",
+                "hub": "rigid",
+                "speed": {"fixed_rpm": 20},
+            },  # fmt: skip
+            "drivetrain": {
+                "chain": [
+                    {"name": "blades", "inertia_kgm2": 1.0e6},
+                    {"name": "hub", "inertia_kgm2": 2.0e4},
+                    {"name": "generator", "inertia_kgm2": 50, "speed_ratio": 80},
+                    {"name": "brake", "inertia_kgm2": 10, "speed_ratio": 80},
+                ],
+                "shafts": [
+                    {"stiffness_nm_rad": shaft0},
+                    {"stiffness_nm_rad": 1.0e8},
+                    {"stiffness_nm_rad": None, "speed_ratio": 80},
+                ],
+                "reference_shaft": reference,
+                "blade_edge_spring": edge_spring,
+            },
+        }
+    )
+
+
+def test_a_reduced_chain_keeps_each_masss_own_inertia_and_its_roll_coupling():
+    """Each reduced mass carries Σ J_own (on its own shaft) and Σ J_own·i/i_ref (i its speed
+    over the rotor's, i_ref the reference shaft's) — what the nacelle's roll feels of its
+    spin; rigid connections merge masses and sum both (by hand)."""
+    c = drivetrain.reduce(_chain_spec(None, edge_spring=False))
+    assert c.names == ("blades+hub", "generator+brake")
+    assert list(c.inertia) == pytest.approx([1.02e6, 60 * 80**2])
+    assert list(c.own) == pytest.approx([1.02e6, 60])
+    assert list(c.coupling) == pytest.approx([1.02e6, 60 * 80])
+    g = drivetrain.reduce(_chain_spec(None, "generator", edge_spring=False))
+    assert list(g.inertia) == pytest.approx([1.02e6 / 80**2, 60])
+    assert list(g.coupling) == pytest.approx([1.02e6 / 80, 60])
+    assert list(g.stiffness) == pytest.approx([1.0e8 / 80**2])
+
+
+def test_the_blades_edge_spring_sits_in_series_with_a_given_hub_shaft():
+    """k = 1/(1/k_b + 1/k_shaft) with the blades' edgewise spring k_b = J_b·(2π f_edge)²
+    (Hau 7.3.1: the chordwise flexibility in the train); alone where the connection is
+    rigid. By hand at f_edge = 1.2 Hz and a hub shaft of 5e7 N·m/rad."""
+    k_b = 1.0e6 * (2 * math.pi * 1.2) ** 2
+    series = drivetrain.reduce(_chain_spec(5.0e7), edge_hz=1.2)
+    assert series.stiffness[0] == pytest.approx(1 / (1 / k_b + 1 / 5.0e7), rel=1e-12)
+    alone = drivetrain.reduce(_chain_spec(None), edge_hz=1.2)
+    assert alone.stiffness[0] == pytest.approx(k_b, rel=1e-12)
+    assert drivetrain.reduce(_chain_spec(5.0e7, edge_spring=False), 1.2).stiffness[0] == 5.0e7

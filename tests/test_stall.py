@@ -37,16 +37,49 @@ def test_the_tip_sees_the_wind_slowed_by_the_induction():
     from wtvib.units import rpm_to_rad_s
 
     s = spec.load(TURBINES / "stall-rotor-1mw.yaml")
-    ae = s.blade.aeroelastic.model_copy(update={"axial_induction": 1 / 3})
+    ae = s.blade.aeroelastic
+    # a tip twisted by 2° (the stall rotor's is 0), so that the twist's sign is in play
+    twist = [*ae.planform.twist_deg[:-1], 2.0]
+    ae = ae.model_copy(
+        update={
+            "axial_induction": 1 / 3,
+            "planform": ae.planform.model_copy(update={"twist_deg": twist}),
+        }
+    )
     blade = s.blade.model_copy(update={"aeroelastic": ae})
     s = s.model_copy(update={"blade": blade, "aerodynamics": None})  # the strip-theory path
     modes = {m.id: m for m in audit.run(s).modes}
     radius = s.turbine.rotor_diameter_m / 2
     r_plan, _, twist = stall._planform(s, radius)
     theta_tip = float(np.interp(radius, r_plan, twist)) + ae.pitch_deg
+    assert theta_tip == pytest.approx(2.0 + ae.pitch_deg)
     points = stall.damping_curve(s, modes["blade.edge1"], radius)
     assert points
     for p in points[:: max(1, len(points) // 5)]:
         omega = float(rpm_to_rad_s(p.rpm))
         expected = math.degrees(math.atan2(p.wind * (2 / 3), omega * radius)) - theta_tip
         assert p.alpha_tip_deg == pytest.approx(expected, abs=1e-9)
+
+
+def test_a_variable_speed_rotor_follows_its_tip_speed_ratio_between_its_speed_limits():
+    """The strip-theory operating points of a variable-speed rotor: n = 60·λV/(2πR),
+    held at the lowest steady speed below and at rated above (by hand: the stall rotor's
+    planform as a variable-speed rotor of 10–20 rpm at λ 7)."""
+    from tests.conftest import TURBINES
+    from wtvib import spec
+
+    s = spec.load(TURBINES / "stall-rotor-1mw.yaml")
+    speed = s.rotor.speed.model_copy(update={"fixed_rpm": None, "min_rpm": 10.0, "max_rpm": 20.0})
+    ae = s.blade.aeroelastic.model_copy(update={"tip_speed_ratio": 7.0})
+    s = s.model_copy(
+        update={
+            "rotor": s.rotor.model_copy(update={"speed": speed}),
+            "blade": s.blade.model_copy(update={"aeroelastic": ae}),
+        }
+    )
+    radius = s.turbine.rotor_diameter_m / 2
+    points = stall.operating_points(s, radius)
+    assert points
+    for wind, rpm in points:
+        assert rpm == pytest.approx(min(max(60 * 7.0 * wind / (2 * math.pi * radius), 10.0), 20.0))
+    assert {rpm for _, rpm in points} >= {10.0, 20.0}  # both limits reached

@@ -205,3 +205,28 @@ def test_an_uncalibrated_concrete_tower_is_judged_as_a_band(write_spec):
     said = audit.run(bare).assumptions
     assert any("Concrete tower with no tolerance stated" in a for a in said)
     assert not any("Concrete tower" in a for a in audit.run(stated).assumptions)
+
+
+def test_rigid_share_is_one_for_the_whole_turbines_surge_and_tilt_and_below_for_bending():
+    """The rigid motions of the turbine on its platform: surge (u = 1, u′ = 0) and tilt
+    about the PRP (u = h, u′ = 1) lie wholly in their span (share 1 to 1e-12, whatever the
+    mass matrix); a cantilever's bending shape (here u = 1 − cos(πz/2L)) does not — near a
+    tilt as it is, its share stays below 1 (0.977 with a unit mass matrix)."""
+    import numpy as np
+
+    from wtvib.tower import rigid_share
+
+    heights = np.linspace(10.0, 90.0, 9)
+    n = 2 * len(heights)
+    rng = np.random.default_rng(3)
+    a = rng.normal(size=(n, n))
+    m = a @ a.T + n * np.eye(n)  # any symmetric positive-definite mass matrix
+    surge, tilt = np.zeros(n), np.zeros(n)
+    surge[0::2] = 1.0
+    tilt[0::2], tilt[1::2] = heights, 1.0
+    for x in (surge, tilt, 2.0 * surge - 0.3 * tilt):
+        assert rigid_share(x, m, heights) == pytest.approx(1.0, abs=1e-12)
+    z = (heights - 10.0) / 80.0
+    bending = np.zeros(n)
+    bending[0::2], bending[1::2] = 1 - np.cos(np.pi * z / 2), np.pi / 160 * np.sin(np.pi * z / 2)
+    assert 0.9 < rigid_share(bending, np.eye(n), heights) < 0.99

@@ -131,3 +131,33 @@ def test_coulomb_friction_damps_the_yaw_modes_by_equal_energy_per_cycle():
         assert m.damping_ratio == pytest.approx(expected, rel=1e-9), mode_id
         judged += 1
     assert judged >= 1
+
+
+def test_the_rotors_polar_inertia_is_given_or_the_chains_blades_and_hub():
+    """J_p about the shaft: the yaw block's value where given; else the drive train's first
+    two masses when the first is the blades (blades 2,400 + hub 56 kg·m² here, by hand);
+    nothing to take from a chain that does not start with its blades."""
+    from tests.conftest import TURBINES
+
+    s = spec.load(TURBINES / "aeroman-retrofit.yaml")
+    dt = s.drivetrain
+    chain = [
+        dt.chain[0].model_copy(update={"name": "blades", "inertia_kgm2": 2400.0}),
+        dt.chain[1].model_copy(update={"name": "hub", "inertia_kgm2": 56.0}),
+    ]
+    two = s.model_copy(
+        update={
+            "yaw": s.yaw.model_copy(update={"rotor_polar_inertia_kgm2": None}),
+            "drivetrain": dt.model_copy(update={"chain": chain, "shafts": dt.shafts[:1]}),
+        }
+    )
+    assert yaw.rotor_polar_inertia(two) == pytest.approx(2456.0)
+    given = two.model_copy(
+        update={"yaw": two.yaw.model_copy(update={"rotor_polar_inertia_kgm2": 3e3})}
+    )
+    assert yaw.rotor_polar_inertia(given) == 3e3
+    hub_first = [chain[1], chain[0].model_copy(update={"name": "rotor"})]
+    other = two.model_copy(
+        update={"drivetrain": two.drivetrain.model_copy(update={"chain": hub_first})}
+    )
+    assert yaw.rotor_polar_inertia(other) is None

@@ -32,6 +32,24 @@ def test_typical_section_divergence_closed_form() -> None:
     assert sweep.divergence_speed == pytest.approx(math.sqrt(8), rel=1e-6)
 
 
+def test_the_stability_charts_divergence_limit_is_the_sections_stiffness_at_its_divergence_speed() -> (
+    None
+):
+    """The chart's divergence limit at air speed U is the stiffness q·e·c·C_Lα that
+    diverges at U (q = ½ρU²). A section of 1.6 m chord (b = 0.8), its elastic axis 0.2b ahead
+    of mid-chord (e = 0.3b = 0.24 m behind the aerodynamic centre), C_Lα = 2π, ρ = 1.225,
+    k_θ = Iω_θ² = 10·40² = 16,000 N·m/rad per m (by hand): at U_D = √(2k_θ/(ρ·e·c·C_Lα))
+    the limit is k_θ, at 2U_D four times it; the blade's own point at x_θ/2 = 5 % chord."""
+    s = ae.Section(
+        0.8, -0.2, 0.1, 200.0, 10.0, 5.0, 40.0, air_density=1.225, lift_slope=2 * math.pi
+    )
+    u_d = math.sqrt(2 * 16000 / (1.225 * 0.24 * 1.6 * 2 * math.pi))
+    for factor in (1.0, 2.0):
+        chart = ae.stability_chart(s, factor * u_d, points=3)
+        assert chart.divergence_k_theta == pytest.approx(factor**2 * 16000, rel=1e-12)
+        assert (chart.blade_offset_chord, chart.blade_k_theta) == pytest.approx((0.05, 16000))
+
+
 def test_no_divergence_with_elastic_axis_ahead_of_the_aerodynamic_centre() -> None:
     # a = −0.6: EA at 0.2 c, ahead of the quarter chord; lift twists the nose down
     assert ae.divergence_pressure(section(a=-0.6)) == math.inf

@@ -17,8 +17,9 @@ from hypothesis import strategies as st
 from wtvib import audit, drivetrain, importers, modal, spec
 
 
-def two_mass(j1=1.0e6, j2=2.0e5, k=3.0e7, ratio=1.0, reference="rotor", **dt):
-    """A two-mass train; the second mass and its shaft may turn ``ratio`` times faster."""
+def two_mass(j1=1.0e6, j2=2.0e5, k=3.0e7, ratio=1.0, reference="rotor", c=0.0, **dt):
+    """A two-mass train; the second mass and its shaft may turn ``ratio`` times faster; the
+    shaft's damper ``c`` [N·m·s/rad]."""
     data = {
         "wtvib": 1,
         "turbine": {"name": "two-mass"},
@@ -28,7 +29,7 @@ def two_mass(j1=1.0e6, j2=2.0e5, k=3.0e7, ratio=1.0, reference="rotor", **dt):
                 {"name": "rotor", "inertia_kgm2": j1},
                 {"name": "generator", "inertia_kgm2": j2 / ratio**2, "speed_ratio": ratio},
             ],
-            "shafts": [{"stiffness_nm_rad": k}],
+            "shafts": [{"stiffness_nm_rad": k, "damping_nms_rad": c}],
             "reference_shaft": reference,
             **dt,
         },
@@ -163,6 +164,27 @@ def test_forced_response_peaks_at_resonance():
     # undamped free–free train: far below resonance the shaft passes J₂/(J₁+J₂) of the torque
     assert below == pytest.approx(2e5 / 1.2e6, rel=0.05)
     assert near > 10 * below
+
+
+@pytest.mark.parametrize("condition", ["free", "locked"])
+def test_shaft_torque_of_a_damped_two_mass_train_by_hand(condition):
+    """The shaft torque per unit input torque on the rotor, (k + iωc)·θ, with the shaft's
+    damper c and the modal damping 2ζω_n·μ that gives the train's elastic mode its ζ (one
+    dashpot across the shaft, μ the mode's inertia). Free: the relative twist θ obeys
+    μθ'' + (c + 2ζω_nμ)θ' + kθ = (J₂/(J₁ + J₂))·T, μ = J₁J₂/(J₁ + J₂); locked generator: the
+    rotor alone on the shaft to ground, μ = J₁ and the whole torque. By hand at 0.3, 0.9, 1
+    and 1.5 ω_n."""
+    j1, j2, k, c, zeta = 1.0e6, 2.0e5, 3.0e7, 4.0e5, 0.02
+    s = two_mass(j1, j2, k, c=c, damping_ratio=zeta)
+    chain = drivetrain.reduce(s)
+    mu, share = (j1 * j2 / (j1 + j2), j2 / (j1 + j2)) if condition == "free" else (j1, 1.0)
+    w_n = math.sqrt(k / mu)
+    for r in (0.3, 0.9, 1.0, 1.5):
+        w = r * w_n
+        theta = share / (k - w**2 * mu + 1j * w * (c + 2 * zeta * w_n * mu))
+        expected = abs((k + 1j * w * c) * theta)
+        got = drivetrain.torque_amplification(s, chain, condition, w / (2 * math.pi))
+        assert got == pytest.approx(expected, rel=1e-9), r
 
 
 def test_fixed_frequency_electrical_excitation_is_checked():
