@@ -165,4 +165,3 @@ def test_aerodynamic_damping_in_multi_blade_coordinates_is_the_dense_transformat
     np.testing.assert_allclose(stiffness, omega[:, None, None] * (t.T @ d @ t1), atol=1e-13)
     single = multiblade.fixed_frame_damping(model, d[2], 1.1)
     np.testing.assert_array_equal(single[0], damping[2])
-

@@ -240,7 +240,7 @@ def _chain_spec(shaft0, reference="rotor", edge_spring=True):  # type: ignore[no
                 "orientation": "upwind",
                 "hub": "rigid",
                 "speed": {"fixed_rpm": 20},
-            },  # fmt: skip
+            },
             "drivetrain": {
                 "chain": [
                     {"name": "blades", "inertia_kgm2": 1.0e6},
