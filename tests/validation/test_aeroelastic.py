@@ -32,9 +32,7 @@ def test_typical_section_divergence_closed_form() -> None:
     assert sweep.divergence_speed == pytest.approx(math.sqrt(8), rel=1e-6)
 
 
-def test_the_stability_charts_divergence_limit_is_the_sections_stiffness_at_its_divergence_speed() -> (
-    None
-):
+def test_the_charts_divergence_limit_is_the_sections_stiffness_at_its_divergence_speed() -> None:
     """The chart's divergence limit at air speed U is the stiffness q·e·c·C_Lα that
     diverges at U (q = ½ρU²). A section of 1.6 m chord (b = 0.8), its elastic axis 0.2b ahead
     of mid-chord (e = 0.3b = 0.24 m behind the aerodynamic centre), C_Lα = 2π, ρ = 1.225,
