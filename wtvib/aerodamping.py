@@ -58,7 +58,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from . import bem, unsteady
+from . import bem, modal, unsteady
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .results import Check, Mode, OperatingDamping, Rule
 from .rules import HEAVY_DAMPING
@@ -320,9 +320,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         _, quasi[k], qs_score = steady[k]
         # where no damped mode resembles the structural one (veering, overdamping): the
         # first-order estimate on the structural mode (eigenvalue lam) instead
-        z0 = path.damping_ratio[i]
-        w0 = 2 * np.pi * path.frequency_hz[i]
-        lam = w0 * (-z0 + 1j * np.sqrt(np.maximum(1 - z0**2, 0.0)))
+        lam = modal.eigenvalue(path.frequency_hz[i], path.damping_ratio[i])
         poor_qs = qs_score < MATCH
         if np.any(poor_qs):
             quasi[k, poor_qs] = perturbed(model, float(om), qs_points[k][1], ref, lam)[poor_qs]

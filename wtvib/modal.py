@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from .errors import WtvibError
 
@@ -282,6 +282,15 @@ class DampedModes:
     damping_ratio: Array
     shapes: Array
     rigid: int
+
+
+def eigenvalue(frequency_hz: ArrayLike, damping_ratio: ArrayLike) -> NDArray[np.complex128]:
+    """The upper root λ = ω₀(−ζ + i√(1 − ζ²)) of a mode of undamped natural frequency
+    ω₀ = 2πf and damping ratio ζ (the inverse of :class:`DampedModes`' |λ|/2π and −Re λ/|λ|;
+    ζ ≥ 1 gives the real root −ζω₀)."""
+    z = np.asarray(damping_ratio, dtype=float)
+    w0 = 2 * np.pi * np.asarray(frequency_hz, dtype=float)
+    return np.asarray(w0 * (-z + 1j * np.sqrt(np.maximum(1 - z**2, 0.0))))
 
 
 def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
