@@ -2,6 +2,7 @@
 the audit (the coupled model's validation is in tests/validation/test_aerodynamics.py)."""
 
 import numpy as np
+import pytest
 
 from wtvib import aerodamping, audit, bem
 from wtvib.results import OperatingDamping
@@ -185,3 +186,39 @@ def test_the_operating_points_thrust_and_power_agree_with_their_coefficients():
     assert s.aerodynamics is not None and s.turbine.rotor_diameter_m is not None
     rho, radius = s.aerodynamics.air_density_kg_m3, s.turbine.rotor_diameter_m / 2
     assert half_rho_area[0] * 1e3 == pytest.approx(0.5 * rho * np.pi * radius**2, rel=0.01)
+    # the message's "thrust up to" is the points' largest, in kN
+    assert f"thrust up to {max(p['thrust_kn'] for p in c.numbers['points']):,.0f} kN" in c.message
+
+
+def test_the_pitch_regulated_schedule_states_the_power_it_holds_in_kw():
+    """Euros 44 m: a pitch-regulated rotor of 2,000 kW (its aerodynamics.control) holds that
+    power above rated wind, stated in kW where the schedule is described."""
+    from tests.conftest import TURBINES
+
+    report = audit.run(load(TURBINES / "euros-44m.yaml"))
+    assert any("pitch holding 2,000 kW aerodynamic" in a for a in report.assumptions)
+
+
+def test_a_root_damped_past_critical_reports_a_damping_ratio_of_one():
+    """Operating damping from matched damped roots: a root at or past critical (ζ ≥ 0.999,
+    or a total that reaches it) is no oscillation — reported as ζ = 1 and marked
+    "overdamped"; first-order estimates are marked so; every total is at most 1."""
+    from types import SimpleNamespace
+
+    from wtvib import aerodamping
+
+    sol = SimpleNamespace(wind=np.array([5.0, 8, 11, 14]), omega=np.ones(4), pitch=np.zeros(4))
+    sch = SimpleNamespace(solution=sol)
+    roots = (
+        np.array([0.5, 0.6, 0.7, 0.8]),
+        np.array([0.05, 0.9995, 0.3, 0.2]),
+        np.array([False, False, False, True]),
+    )
+    od = aerodamping._operating(sch, np.array([0.04, 0.5, 1.2, 0.1]), 0.01, "test", roots=roots)  # type: ignore[arg-type]
+    assert od.total == pytest.approx((0.05, 1.0, 1.0, 0.11))
+    assert od.method == ("eigenvalue", "overdamped", "overdamped", "first-order")
+    # isolated estimates (no roots): the totals and the quasi-steady comparison capped at 1
+    quasi = np.array([0.02, 0.995, 1.3, 0.1])
+    iso = aerodamping._operating(sch, np.array([0.04, 0.5, 1.2, 0.1]), 0.01, "t", quasi=quasi)  # type: ignore[arg-type]
+    assert iso.total == pytest.approx((0.05, 0.51, 1.0, 0.11))
+    assert iso.quasi_steady == pytest.approx((0.03, 1.0, 1.0, 0.11))

@@ -176,3 +176,18 @@ def test_momentum_theory_gives_the_induction_in_both_of_its_paths():
     np.testing.assert_allclose(a[:3], light / (1 + light), rtol=1e-12)
     edge = bem._momentum(np.array([2 / 3 - 1e-9, 2 / 3 + 1e-9]), np.ones(2))
     assert edge == pytest.approx([0.4, 0.4], abs=1e-6)
+
+
+def test_nings_residual_in_the_momentum_and_propeller_brake_regions():
+    """Ning (2014, Wind Energy 17, eq. 15): R(φ) = sin φ/(1 − a) − cos φ/λ_r·(1 − k′) where
+    momentum theory holds (φ > 0), R(φ) = sin φ·(1 − k) − cos φ/λ_r·(1 − k′) in the propeller
+    brake region (φ < 0) — written out here at λ_r = 5, k = 0.2, k′ = 0.05, a = 0.25."""
+    phi = np.array([0.3, -0.1])
+    s, c = np.sin(phi), np.cos(phi)
+    k, kp, a, lam = np.full(2, 0.2), np.full(2, 0.05), np.full(2, 0.25), np.full(2, 5.0)
+    got = bem._balance(phi, s, c, k, kp, a, lam)
+    expected = [
+        np.sin(0.3) / 0.75 - np.cos(0.3) / 5 * 0.95,
+        np.sin(-0.1) * 0.8 - np.cos(-0.1) / 5 * 0.95,
+    ]
+    np.testing.assert_allclose(got, expected, rtol=1e-14)

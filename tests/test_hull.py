@@ -152,9 +152,16 @@ def test_a_bulkhead_at_a_step_of_diameter_closes_the_wider_side():
             bulkheads=bulkheads,
         )
 
-    bare = hull.structure(member(()))[0, 0]
-    closed = hull.structure(member((hull.Disc(0.5, plate, 7850.0),)))[0, 0]
-    assert closed - bare == pytest.approx(7850.0 * np.pi / 4 * (20.0 - 2 * t) ** 2 * plate)
+    bare = hull.structure(member(()))
+    closed = hull.structure(member((hull.Disc(0.5, plate, 7850.0),)))
+    d = 20.0 - 2 * t
+    mass = 7850.0 * np.pi / 4 * d**2 * plate
+    added = closed - bare
+    assert added[0, 0] == pytest.approx(mass)
+    # a thin disc: m·d²/8 about its axis (here yaw), m·d²/16 about a diameter, plus m·z² for
+    # roll about the origin 10 m above it (parallel axes)
+    assert added[5, 5] == pytest.approx(mass * d**2 / 8)
+    assert added[3, 3] == pytest.approx(mass * (d**2 / 16 + 10.0**2))
 
 
 def test_small_members_keep_their_end_added_mass_and_waterplane():

@@ -167,3 +167,49 @@ def test_state_modes_keep_the_real_roots_of_an_overdamped_mode():
     expected = sorted([(-3 - math.sqrt(5)) / 2, (-3 + math.sqrt(5)) / 2])
     np.testing.assert_allclose(sorted(found.roots.real), expected, rtol=1e-12)
     np.testing.assert_allclose(found.participation.sum(axis=0), 1.0, rtol=1e-12)
+
+
+def test_a_modes_eigenvalue_is_the_inverse_of_its_frequency_and_damping():
+    """λ = ω₀(−ζ + i√(1 − ζ²)): |λ| = ω₀ and −Re λ/|λ| = ζ (what DampedModes reports of a
+    root), the upper root of a single oscillator m·q̈ + c·q̇ + k·q = 0 (by hand: k = 400,
+    m = 1, c = 2 → ω₀ = 20, ζ = 0.05); a root past critical is real."""
+    import numpy as np
+
+    from wtvib import modal
+
+    lam = modal.eigenvalue(20 / (2 * np.pi), 0.05)
+    roots = np.roots([1.0, 2.0, 400.0])
+    assert complex(lam) == pytest.approx(complex(roots[np.argmax(roots.imag)]), rel=1e-12)
+    lams = modal.eigenvalue(np.array([0.3, 1.2]), np.array([0.01, 0.2]))
+    assert np.abs(lams) / (2 * np.pi) == pytest.approx([0.3, 1.2])
+    assert -lams.real / np.abs(lams) == pytest.approx([0.01, 0.2])
+    assert complex(modal.eigenvalue(1.0, 1.5)) == pytest.approx(-1.5 * 2 * np.pi)
+
+
+def test_the_lags_own_whirling_roots_are_told_from_the_structures():
+    """One oscillator (ω₀ = 10 rad/s) coupled both ways to a pair of lag states whirling at
+    −1 ± 3i (a cyclic filter's poles, the multi-blade lift lag): of the four roots of the
+    state matrix, the structure owns the pair near 10 rad/s by participation factors and the
+    filter the pair near 3 rad/s — only the structure's is an oscillation of the turbine."""
+    import numpy as np
+
+    from wtvib import modal
+
+    k, m, d = np.array([[100.0]]), np.array([[1.0]]), np.array([[0.2]])
+    rates = np.array([[-1.0, 3.0], [-3.0, -1.0]])
+    lag = (np.array([[3.0, 1.0]]), np.array([[2.0], [0.0]]), np.array([[1.0], [0.5]]), rates)
+    every = np.linalg.eigvals(modal.state_matrix(k, m, d, lag))
+    assert sorted(np.abs(every.imag)) == pytest.approx([2.93, 2.93, 10.19, 10.19], abs=0.01)
+    ((lam, _),) = modal.oscillations_stacked(k[None], m, d[None], lag=tuple(a[None] for a in lag))
+    assert len(lam) == 1 and abs(lam[0].imag) == pytest.approx(10.19, abs=0.01)
+    # strongly coupled to a filter whirling at 11.3 rad/s, the two pairs share their states
+    # 56 : 44 by participation — still one the structure's (near 10.0 rad/s), one the lag's
+    rates = np.array([[-1.9, 11.3], [-11.3, -1.9]])
+    lag = (
+        np.array([[-3.1, 0.2]]),
+        np.array([[-11.6], [-1.1]]),
+        np.array([[-1.25], [-0.73]]),
+        rates,
+    )
+    ((lam, _),) = modal.oscillations_stacked(k[None], m, d[None], lag=tuple(a[None] for a in lag))
+    assert len(lam) == 1 and lam[0].imag == pytest.approx(10.024, abs=1e-3)

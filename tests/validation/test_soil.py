@@ -334,3 +334,17 @@ def test_the_tower_modes_solved_in_pairs_are_each_planes_own():
             mode = modes[f"tower.{direction}{k}"]
             assert mode.frequency_hz == alone[0][k - 1]
             assert mode.band_hz == (alone[1][k - 1], alone[2][k - 1])
+
+
+def test_fixity_depth_for_a_modulus_growing_with_depth():
+    """Davisson & Robinson (1965) for E_py = n_h·z: 1.8·T, T = (EI/n_h)^⅕. A 6 m × 60 mm
+    steel pile (EI = 210e9·π/64·(6⁴ − 5.88⁴) = 1.0371e12 N·m², by hand) in n_h = 5 MN/m³:
+    T = 11.57 m, the fixity depth 20.83 m; a constant modulus k gives 1.4·(EI/k)^¼."""
+    import math
+
+    p = Pile(embedded_length_m=36, diameter_m=6, wall_thickness_m=0.06)
+    ei = 210e9 * math.pi / 64 * (6**4 - 5.88**4)
+    assert ei == pytest.approx(1.0371e12, rel=1e-4)
+    assert soil.fixity_depth(p, gradient_pa_m=5e6) == pytest.approx(1.8 * (ei / 5e6) ** 0.2)
+    assert soil.fixity_depth(p, gradient_pa_m=5e6) == pytest.approx(20.83, abs=0.01)
+    assert soil.fixity_depth(p, modulus_pa=5e7) == pytest.approx(1.4 * (ei / 5e7) ** 0.25)

@@ -63,6 +63,7 @@ def test_a_tip_damper_cures_the_stall_rotors_edgewise_vibration(tmp_path):
     assert {c.id: c.status for c in before.checks}["blade.stall.edge1"] == "fail"
     assert status["blade.stall.edge1"] in ("pass", "warn")
     assert any("μ = 0.0200" in a and "ζ_e = 0.0498" in a for a in after.assumptions)
+    assert any("√(1 + 2/μ) = 10," in a for a in after.assumptions)  # √101, the equal peak
 
 
 def test_the_mass_ratio_uses_the_modes_generalised_mass_at_the_tip():
