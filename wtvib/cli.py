@@ -443,7 +443,7 @@ def check(
         # file that may not be replaced stops the check before anything is printed)
         console, text = _rendered(report, format, show_all=show_all, detail=detail)
         if plot:
-            folder = out if out is not None else Path.cwd()  # never beside the input (#21)
+            folder = out if out is not None else Path.cwd()  # never beside the input
             with _working("drawing the figures"):
                 pngs = drawer.pngs(report, detail=figures is Figures.all)
             for suffix, png in pngs.items():

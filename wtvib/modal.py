@@ -120,8 +120,9 @@ DEEP_STACK = 16
 
 def _inverse_lower(lower: Array) -> Array:
     """L⁻¹ of a stack of lower-triangular matrices. A deep stack of small ones by forward
-    substitution, one row of all the inverses at a time (n vectorised steps: 0.5 ms for
-    2,000 of 6 × 6 where numpy's general inverse, a LAPACK call per matrix, takes 2.1 ms);
+    substitution, one row of all the inverses at a time (n vectorised steps, about four
+    times faster for thousands of 6 × 6 than numpy's general inverse, a LAPACK call per
+    matrix);
     any other by numpy's inverse."""
     n = lower.shape[-1]
     if lower.ndim != 3 or lower.shape[0] < DEEP_STACK * n:

@@ -173,7 +173,7 @@ def fixed_frame_damping(model: "Model", d: Array, omega: float | Array) -> tuple
     takes a rotor speed per matrix."""
     # T is the identity outside the blades' block and kron(B, I) on it, T′ is kron(B′, I)
     # there and zero elsewhere: only that block's rows and columns change (9 of the NREL
-    # deck's 52 coordinates, 9 of the IEA-22's 204: dense products cost 50 ms an IEA-22 audit)
+    # deck's 52 coordinates, 9 of the IEA-22's 204: dense products would do the rest for nothing)
     b, b1, _, _ = coleman(model.blades, 0.0)
     eye = np.eye(model.k_blades)
     tb, tb1 = np.kron(b, eye), np.kron(b1, eye)

@@ -33,7 +33,7 @@ from .units import rad_s_to_rpm
 
 Interval = tuple[float, float]
 #: (an alias, so that the functions defined inside ``assess`` for every mode and line do not
-#: subscript NDArray at each definition: typing's machinery, 2 ms an audit)
+#: subscript NDArray at each definition: typing's machinery on every call)
 Floats = NDArray[np.float64]
 
 _MILDER: dict[Status, Status] = {"fail": "warn", "warn": "info", "info": "info", "pass": "pass"}

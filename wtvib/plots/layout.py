@@ -133,7 +133,7 @@ def legend_below(  # type: ignore[no-untyped-def]
 def plain_decades(axis) -> None:  # type: ignore[no-untyped-def]
     """Label a log or symlog axis's decades as plain numbers — 100, 10, 1, 0.1, 0, −0.1 —
     rather than as powers of ten: read at a glance, and drawn without mathtext, whose
-    parser matplotlib builds at its first use in each drawing process (≈ 45 ms here).
+    parser matplotlib builds at its first use in each drawing process.
     Minor ticks keep matplotlib's labels (shown only on an axis of about one decade)."""
     from matplotlib.ticker import FuncFormatter
 

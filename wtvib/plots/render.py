@@ -90,7 +90,7 @@ def _config_home() -> None:
 def _lean_matplotlib() -> None:
     """Import matplotlib without its help text.
 
-    matplotlib spends about 40 % of its import (≈ 130 ms of ≈ 340 ms here) writing, for
+    matplotlib spends about 40 % of its import writing, for
     every artist class, the signature and docstring of its ``set`` method and the property
     lists its methods' docstrings include (``artist.kwdoc``): help for interactive use,
     which a process that draws PNGs never reads. Where matplotlib is not imported yet, both
