@@ -22,6 +22,7 @@ refer to the reference axis: the bending and torsional stiffnesses are condensed
 """
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -336,6 +337,38 @@ def _at(field: dict[str, Any], grid: np.ndarray) -> np.ndarray:
 MASS_DISAGREEMENT = 1.25
 
 
+@dataclass(frozen=True)
+class _Part:
+    """A tower-head part: its mass [kg] at x downwind and z above the tower top [m], and its
+    own inertias about its centre of mass [kg·m²]."""
+
+    name: str
+    mass: float
+    x: float
+    z: float
+    pitch: float = 0.0
+    roll: float = 0.0
+    yaw: float = 0.0
+
+
+def _assembled(parts: list[_Part]) -> dict[str, float]:
+    """The parts as one mass: its centre of mass and its inertias there (parallel axes)."""
+    mass = sum(p.mass for p in parts)
+    x = sum(p.mass * p.x for p in parts) / mass
+    z = sum(p.mass * p.z for p in parts) / mass
+    pitch = sum(p.pitch + p.mass * ((p.x - x) ** 2 + (p.z - z) ** 2) for p in parts)
+    roll = sum(p.roll + p.mass * (p.z - z) ** 2 for p in parts)
+    yaw = sum(p.yaw + p.mass * (p.x - x) ** 2 for p in parts)
+    return {
+        "mass_kg": mass,
+        "cm_downwind_m": x,
+        "cm_above_top_m": z,
+        "inertia_pitch_kgm2": max(pitch, 0.0),
+        "inertia_roll_kgm2": max(roll, 0.0),
+        "inertia_yaw_kgm2": max(yaw, 0.0),
+    }
+
+
 class _Reader:
     def __init__(self, d: dict[str, Any], path: Path, v2: bool) -> None:
         self.d, self.path, self.v2 = d, path, v2
@@ -642,13 +675,10 @@ class _Reader:
         structure: dict[str, Any] | None,
         head_mass: float | None,
     ) -> tuple[dict[str, float], str]:
-        dt = self.drivetrain
-        shape = dt.get("outer_shape", dt)
-        tilt = math.radians(float(shape.get("uptilt", shape.get("uptilt_angle", 0.0)) or 0.0))
-        if not self.v2 and tilt > 0.5:  # 1.x gives radians; 2.x degrees
-            tilt = math.radians(tilt)
-        overhang = float(shape.get("overhang", 0.0))
-        hub_x = -overhang
+        """The tower head: the hub, nacelle and yaw bearing's masses with the blades on the
+        hub, about the tower top — or the command line's mass (``head_mass``)."""
+        shape = self.drivetrain.get("outer_shape", self.drivetrain)
+        hub_x = -float(shape.get("overhang", 0.0))
         hub_z = float(shape.get("distance_tt_hub", 0.0))
         if head_mass is not None:
             return (
@@ -656,11 +686,34 @@ class _Reader:
                 f"Tower head mass {head_mass:,.0f} kg given on the command line (CM taken "
                 "half-way to the hub; inertias neglected).",
             )
-        parts: list[tuple[str, float, float, float, float, float, float]] = []
-        # name, mass, x, z, own pitch, own roll, own yaw inertia
+        parts = self._head_parts(hub_x, hub_z)
+        j_polar = 0.0
+        if blade_mass and structure:
+            j_polar = _rotor_polar(structure, blades)
+            parts.append(
+                _Part(f"{blades} blades", blades * blade_mass, hub_x, hub_z,
+                      0.5 * j_polar, j_polar, 0.5 * j_polar)
+            )  # fmt: skip
+        self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
+        head = _assembled(parts)
+        text = (
+            "Tower head assembled from its parts: "
+            + ", ".join(
+                f"{p.name} {p.mass:,.0f} kg at x = {p.x:.2f} m, z = {p.z:.2f} m" for p in parts
+            )
+            + f"; total {head['mass_kg']:,.0f} kg (rotor polar inertia {j_polar:,.0f} kg·m², "
+            "shaft tilt neglected)."
+        )
+        return head, text
+
+    def _head_parts(self, hub_x: float, hub_z: float) -> "list[_Part]":
+        """The hub (at the hub centre), the nacelle (its inertia given about the tower top:
+        moved to its own centre of mass) and the yaw bearing, where the file gives their
+        masses; the nacelle is required."""
+        parts: list[_Part] = []
         for name, comp in (
             ("hub", self.c.get("hub", {})),
-            ("nacelle", dt),
+            ("nacelle", self.drivetrain),
             ("yaw", self.c.get("yaw", {})),
         ):
             ep = comp.get("elastic_properties") if isinstance(comp, dict) else None
@@ -674,74 +727,29 @@ class _Reader:
                     source=str(self.path),
                 )
             if name == "hub":
-                x, z = hub_x, hub_z
                 ii = ep.get("inertia", [0, 0, 0])
-                parts.append((name, m, x, z, float(ii[1]), float(ii[0]), float(ii[2])))
+                parts.append(_Part(name, m, hub_x, hub_z, float(ii[1]), float(ii[0]), float(ii[2])))
                 self.hub = {"hub_mass_kg": m, "hub_inertia_kgm2": float(ii[0])}
-            elif name == "nacelle":
-                loc = ep.get("location", [0.0, 0.0, 0.0])
-                x, z = float(loc[0]), float(loc[2])
+                continue
+            loc = ep.get("location", [0.0, 0.0, 0.0])
+            x, z = float(loc[0]), float(loc[2])
+            if name == "nacelle":
                 tt = ep.get("inertia_tt", ep.get("inertia", [0, 0, 0]))
-                parts.append(
-                    (
-                        name,
-                        m,
-                        x,
-                        z,
-                        float(tt[1]) - m * (x * x + z * z),
-                        float(tt[0]) - m * z * z,
-                        float(tt[2]) - m * x * x,
-                    )
+                own = (
+                    float(tt[1]) - m * (x * x + z * z),
+                    float(tt[0]) - m * z * z,
+                    float(tt[2]) - m * x * x,
                 )
+                parts.append(_Part(name, m, x, z, *own))
             else:
-                loc = ep.get("location", [0.0, 0.0, 0.0])
-                parts.append((name, m, float(loc[0]), float(loc[2]), 0.0, 0.0, 0.0))
-        if not any(p[0] == "nacelle" for p in parts):
+                parts.append(_Part(name, m, x, z))
+        if not any(p.name == "nacelle" for p in parts):
             raise self.fail(
                 "the file gives no nacelle/hub masses (windIO files may leave them to WISDEM, "
                 "which sizes them); give the tower-head mass with --head-mass KG, or convert "
                 "and edit tower_head"
             )
-        j_polar = 0.0
-        if blade_mass and structure:
-            j_polar = _rotor_polar(structure, blades)
-            parts.append(
-                (
-                    f"{blades} blades",
-                    blades * blade_mass,
-                    hub_x,
-                    hub_z,
-                    0.5 * j_polar,
-                    j_polar,
-                    0.5 * j_polar,
-                )
-            )
-        self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
-        mass = sum(p[1] for p in parts)
-        x = sum(p[1] * p[2] for p in parts) / mass
-        z = sum(p[1] * p[3] for p in parts) / mass
-        pitch = sum(p[4] + p[1] * ((p[2] - x) ** 2 + (p[3] - z) ** 2) for p in parts)
-        roll = sum(p[5] + p[1] * (p[3] - z) ** 2 for p in parts)
-        yaw = sum(p[6] + p[1] * (p[2] - x) ** 2 for p in parts)
-        text = (
-            "Tower head assembled from its parts: "
-            + ", ".join(
-                f"{p[0]} {p[1]:,.0f} kg at x = {p[2]:.2f} m, z = {p[3]:.2f} m" for p in parts
-            )
-            + f"; total {mass:,.0f} kg (rotor polar inertia {j_polar:,.0f} kg·m², shaft tilt "
-            f"neglected)."
-        )
-        return (
-            {
-                "mass_kg": mass,
-                "cm_downwind_m": x,
-                "cm_above_top_m": z,
-                "inertia_pitch_kgm2": max(pitch, 0.0),
-                "inertia_roll_kgm2": max(roll, 0.0),
-                "inertia_yaw_kgm2": max(yaw, 0.0),
-            },
-            text,
-        )
+        return parts
 
     def chain(
         self, blades: int, structure: dict[str, Any] | None, gear: float
