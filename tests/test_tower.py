@@ -128,7 +128,11 @@ def test_a_long_station_table_is_sampled_by_a_bounded_mesh(write_spec):
 def test_the_class_gives_the_modes_frequency_where_its_separation_is_measured(shared):
     """The IEA-3.4's coupled fore-aft mode is 0.401 Hz at standstill and 0.399 Hz at
     11.75 rpm, where 2P (0.392 Hz) is nearest: "0.401 Hz … separation 1.8%" contradicted
-    itself (0.401/0.392 is 2.3 %); the message now says where the mode is there."""
+    itself (0.401/0.392 is 2.3 %); the message now says where the mode is there.
+
+    A regression snapshot: the frequencies are the ones wtvib computed for this deck when
+    the message was mended (the message's agreement with itself is the test, not the
+    numbers; the tower model is validated in tests/validation/)."""
     from wtvib import importers
 
     deck = shared / "reference" / "IEA3.4" / "IEA-3.4-130-RWT_ElastoDyn.dat"

@@ -2,6 +2,14 @@
 
 Expected classes and verdicts come from the book's statements quoted in each test; the
 numbers the specs carry are labelled there as published, derived or representative.
+
+These stories test the judgement — rules, regimes, energy classes, the verdict — not the
+models: a spec tuned to the book's figure gives that figure back by construction. WKA-60's
+DAF 4 comes from the damping ratio 0.125 its spec derives from that same 4; MOD-2's tower
+frequency sits where the book places it (between 1P and 2P), Tjæreborg's tower modulus is
+calibrated to its source's 0.81 Hz. The models are
+validated against published, analytic and other tools' numbers in the other files of
+``tests/validation/``.
 """
 
 import math
@@ -81,6 +89,7 @@ def test_every_value_has_provenance_with_a_cited_source(name):
 
 def test_wka60_resonates_with_2p_at_rated_speed_with_daf_4():
     # Hau Fig. 7.26/7.27: tower = 2P at rated speed, cyclic force amplified by a factor 4
+    # (the judgement's test: the spec's ζ = 0.125 is derived from that factor, 1/(2·4))
     c = check(report("wka-60"), "tower.resonance.2P")
     assert c.status == "fail" and c.numbers["mode"] == "tower.fa1"
     assert c.numbers["speed_rpm"] == pytest.approx(23.0, abs=0.01)
