@@ -222,3 +222,22 @@ def test_a_root_damped_past_critical_reports_a_damping_ratio_of_one():
     iso = aerodamping._operating(sch, np.array([0.04, 0.5, 1.2, 0.1]), 0.01, "t", quasi=quasi)  # type: ignore[arg-type]
     assert iso.total == pytest.approx((0.05, 0.51, 1.0, 0.11))
     assert iso.quasi_steady == pytest.approx((0.03, 1.0, 1.0, 0.11))
+
+
+def test_a_blade_modes_assumed_shape_is_the_cantilevers_first():
+    """Without a computed shape an isolated blade mode takes the uniform cantilever's first
+    bending shape, normalised to the tip: clamped at the root (φ = φ′ = 0) and free at the
+    tip — no bending moment or shear there (φ″ = φ‴ = 0, by finite differences on a fine
+    grid; Blevins Table 8-1 has β₁L = 1.87510 for exactly these four conditions)."""
+    from wtvib.results import Mode
+
+    root, tip = 2.0, 62.0
+    r = np.linspace(root, tip, 20001)
+    phi = aerodamping.blade_shape(Mode("blade.flap1", "blade", "", 1.0), r, root)
+    h = r[1] - r[0]
+    d1 = np.gradient(phi, h, edge_order=2)
+    d2 = np.gradient(d1, h, edge_order=2)
+    d3 = np.gradient(d2, h, edge_order=2)
+    assert phi[-1] == 1.0 and abs(phi[0]) < 1e-12 and abs(d1[0]) < 1e-6
+    # at the tip, against their size along the blade (the third difference is the noisier)
+    assert abs(d2[-50]) < 1e-3 * np.abs(d2).max() and abs(d3[-50]) < 2e-2 * np.abs(d3).max()

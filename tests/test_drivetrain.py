@@ -285,3 +285,15 @@ def test_the_blades_edge_spring_sits_in_series_with_a_given_hub_shaft():
     alone = drivetrain.reduce(_chain_spec(None), edge_hz=1.2)
     assert alone.stiffness[0] == pytest.approx(k_b, rel=1e-12)
     assert drivetrain.reduce(_chain_spec(5.0e7, edge_spring=False), 1.2).stiffness[0] == 5.0e7
+
+
+def test_each_mode_is_described_by_its_own_shape():
+    """Hau 7.3.3: "At the first natural frequency, the drive train vibrates around its
+    largest mass, the rotor blades" — Aeroman's first grid mode is the blades against the
+    grid; its fourth, which the second stage's mesh excites (Fig. 7.15), is the centrifugal
+    switch on the high-speed shaft against the gearbox."""
+    s = spec.load(TURBINES / "aeroman.yaml")
+    described = {m.id: m.description for m in drivetrain.build_modes(s, {"blade": []})}
+    assert "blades against the grid" in described["drivetrain.grid.1"]
+    assert "centrifugal switch against gearbox" in described["drivetrain.grid.4"]
+    assert "blades against the brake" in described["drivetrain.locked.1"]

@@ -93,6 +93,42 @@ def test_flutter_pk_and_k_methods_agree_on_the_textbook_section() -> None:
     assert pk.speed < math.sqrt(8)
 
 
+def test_the_textbook_sections_flutter_is_the_same_in_si_units() -> None:
+    """Dimensional analysis: the flutter speed is U_F = (U_F/bω_θ)·b·ω_θ and its frequency
+    (ω/ω_θ)·ω_θ for a section with the same a, x_θ, μ = m/(πρb²), r² and σ in any units —
+    here b = 0.8 m, ω_θ = 40 rad/s, ρ = 1.225 kg/m³ against the textbook's b = ω_θ = ρ = 1."""
+    a, xt, mu, r2, sig = TEXTBOOK.values()
+    b, w_theta, rho = 0.8, 40.0, 1.225
+    mass = mu * math.pi * rho * b**2
+    si = ae.Section(b, a, xt, mass, r2 * mass * b**2, sig * w_theta, w_theta, air_density=rho)
+    unit = ae.flutter(section(), 3.0)
+    scaled = ae.flutter(si, 3.0 * b * w_theta)
+    assert scaled.speed == pytest.approx(unit.speed * b * w_theta, rel=1e-6)
+    assert scaled.omega == pytest.approx(unit.omega * w_theta, rel=1e-6)
+
+
+def test_theodorsens_forces_on_a_section_pitching_about_its_three_quarter_chord() -> None:
+    """Pitching about the ¾-chord point (a = ½) the downwash there is U·θ alone, so
+    Theodorsen's forces per unit pitch (H&P eq. 5.310) reduce to
+    L = πρb²(U·θ̇ − b/2·θ̈) + ρU²b·C_Lα·C(k)·θ and
+    M = −πρb⁴(1/8 + 1/4)·θ̈ + ρU²b²·C_Lα·C(k)·θ, θ̇ = iω, θ̈ = −ω² — written out here at
+    b = 0.8 m, U = 30 m/s, k = 0.3, for the thin aerofoil's 2π and a measured 5.7 per radian
+    (the circulatory lift scaled to it); as k → 0 the forces are the steady model's."""
+    b, rho, u, k = 0.8, 1.225, 30.0, 0.3
+    w = k * u / b
+    for slope in (2 * math.pi, 5.7):
+        s = ae.Section(b, 0.5, 0.1, 200.0, 10.0, 5.0, 40.0, air_density=rho, lift_slope=slope)
+        c = ae.theodorsen(k) * slope / (2 * math.pi)
+        lift = math.pi * rho * b**2 * (u * 1j * w + b / 2 * w**2) + 2 * math.pi * rho * u**2 * b * c
+        moment = math.pi * rho * b**4 * (1 / 8 + 1 / 4) * w**2 + 2 * math.pi * rho * u**2 * b**2 * c
+        got = ae.aero_matrix(s, k, u)[:, 1]
+        assert complex(got[0]) == pytest.approx(-lift, rel=1e-12)
+        assert complex(got[1]) == pytest.approx(moment, rel=1e-12)
+        steady = ae.aero_matrix(s, 0.0, u, steady=True)
+        assert ae.aero_matrix(s, 1e-9, u) == pytest.approx(steady, rel=1e-6, abs=1e-3)
+        assert complex(steady[0, 1]) == pytest.approx(-rho * u**2 * b * slope)
+
+
 def test_steady_flow_coalescence_matches_the_analytic_root() -> None:
     # Steady-flow model: det(K − A(U) − λM) = 0 is a quadratic in λ = ω²; flutter where its
     # discriminant A1² − 4·A2·A0 first vanishes (frequency coalescence), H&P §5.3.3.

@@ -462,3 +462,20 @@ def uniform_blade(length: float, m: float, ei: float, edge_factor: float, **more
         ei_edge_nm2=[edge_factor * ei] * 2,
         **more,
     )
+
+
+def test_in_plane_a_rotating_blade_loses_omega_squared_tip_mass_included():
+    """A blade as stiff edgewise as flapwise: rotation stiffens both planes alike
+    (centrifugal tension) and softens only the in-plane motion, by −Ω²·M in the Rayleigh
+    quotient (the masses swing in the plane of rotation), so that exactly
+    f_edge² = f_flap² − (Ω/2π)² for each pair — with a tip mass as heavy as the blade too
+    (the point mass is in both planes' inertia and in the in-plane softening)."""
+    from wtvib import blade as blade_mod
+
+    length, m, ei = 30.0, 200.0, 4.0e9
+    omega = 2.5
+    for tip in (0.0, m * length):
+        s = uniform_blade(length, m, ei, 1.0, tip_mass_kg=tip, hub_radius_m=2.0)
+        _, freqs, _, _ = blade_mod.rotating_modes(s, np.array([omega]))
+        low, high = np.sort(freqs[0])[:2]
+        assert low**2 == pytest.approx(high**2 - (omega / (2 * np.pi)) ** 2, rel=1e-9)

@@ -153,3 +153,22 @@ def test_nrel5mw_yaw_frequency_from_the_yaw_spring(shared):
     f = next(m for m in audit.run(s).modes if m.id == "yaw.1").frequency_hz
     assert f == pytest.approx(math.sqrt(9.02832e9 / j) / (2 * math.pi), rel=1e-9)
     assert 2.5 < f < 3.5
+
+
+def test_two_mass_yaw_model_against_its_characteristic_equation():
+    """Head J_h on the drive k_d, the drive on the tower's torsional inertia J_t and spring
+    k_t to the ground (Hau Fig. 7.17's two-mass model): ω² are the roots of
+    J_tJ_h·ω⁴ − (J_h(k_t + k_d) + J_t·k_d)·ω² + k_t·k_d = 0 (by hand, J_h = 2e6, J_t = 5e5,
+    k_d = 4e8, k_t = 1.2e9)."""
+    jh, jt, kd, kt = 2.0e6, 5.0e5, 4.0e8, 1.2e9
+    a, b, c = jt * jh, -(jh * (kt + kd) + jt * kd), kt * kd
+    w2 = sorted(
+        (
+            (-b - math.sqrt(b * b - 4 * a * c)) / (2 * a),
+            (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a),
+        )
+    )
+    m = yaw.YawModel(jh, 0.0, kd, kt, jt, None, None)
+    assert list(m.frequencies()) == pytest.approx(
+        [math.sqrt(x) / (2 * math.pi) for x in w2], rel=1e-10
+    )
