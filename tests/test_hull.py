@@ -1,6 +1,7 @@
 """wtvib.hull against closed forms: a floating vertical cylinder, a tube's mass and inertia,
 ballast levels, the parallel-axis theorem and the trim balance."""
 
+import dataclasses
 import numpy as np
 import pytest
 
@@ -152,6 +153,18 @@ def test_a_bulkhead_at_a_step_of_diameter_closes_the_wider_side():
             bulkheads=bulkheads,
         )
 
+    # a step the other way (narrow below, wide above): the wider side still
+    up = hull.Member(
+        name="u",
+        a=np.array([0.0, 0.0, -30.0]),
+        b=np.array([0.0, 0.0, 10.0]),
+        stations=np.array([0.0, 0.5, 0.5, 1.0]),
+        diameter=np.array([10.0, 10.0, 20.0, 20.0]),
+        layers=[hull.Layer(np.full(4, t), 7850.0)],
+        bulkheads=(hull.Disc(0.5, plate, 7850.0),),
+    )
+    up_added = hull.structure(up) - hull.structure(dataclasses.replace(up, bulkheads=()))
+    assert up_added[0, 0] == pytest.approx(7850.0 * np.pi / 4 * (20.0 - 2 * t) ** 2 * plate)
     bare = hull.structure(member(()))
     closed = hull.structure(member((hull.Disc(0.5, plate, 7850.0),)))
     d = 20.0 - 2 * t
