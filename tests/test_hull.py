@@ -2,6 +2,7 @@
 ballast levels, the parallel-axis theorem and the trim balance."""
 
 import dataclasses
+
 import numpy as np
 import pytest
 
