@@ -176,6 +176,14 @@ def test_momentum_theory_gives_the_induction_in_both_of_its_paths():
     np.testing.assert_allclose(a[:3], light / (1 + light), rtol=1e-12)
     edge = bem._momentum(np.array([2 / 3 - 1e-9, 2 / 3 + 1e-9]), np.ones(2))
     assert edge == pytest.approx([0.4, 0.4], abs=1e-6)
+    # above, Buhl's a = (g1 − √g2)/g3 as Ning (2014) writes it, out here at k = 0.9 and 1.5
+    for k, f in ((0.9, 1.0), (1.5, 0.8)):
+        g1 = 2 * f * k - (10 / 9 - f)
+        g2 = 2 * f * k - f * (4 / 3 - f)
+        g3 = 2 * f * k - (25 / 9 - 2 * f)
+        buhl = (g1 - math.sqrt(g2)) / g3
+        assert bem._momentum(np.array([k]), np.array([f]))[0] == pytest.approx(buhl, rel=1e-12)
+        assert buhl != pytest.approx(k / (1 + k), rel=1e-3)  # not momentum theory's
 
 
 def test_nings_residual_in_the_momentum_and_propeller_brake_regions():

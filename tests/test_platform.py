@@ -310,6 +310,8 @@ def test_platform_modes_are_compared_with_the_wave_band_as_information() -> None
     hit = tower.wave_check(from_data(_tower_data(_platform(wave_periods_s=around))), modes)
     assert hit is not None and hit.status == "info" and len(hit.numbers["inside"]) >= 1
     assert "inside the wave band" in hit.message
+    named = [m for m in modes if m.id in hit.numbers["inside"]]
+    assert named and all(f"({1 / m.frequency_hz:.3g} s)" in hit.message for m in named)
     assert hi > lo
     with pytest.raises(ValueError, match="shortest first"):
         _platform(wave_periods_s=(20.0, 5.0))

@@ -479,3 +479,18 @@ def test_in_plane_a_rotating_blade_loses_omega_squared_tip_mass_included():
         _, freqs, _, _ = blade_mod.rotating_modes(s, np.array([omega]))
         low, high = np.sort(freqs[0])[:2]
         assert low**2 == pytest.approx(high**2 - (omega / (2 * np.pi)) ** 2, rel=1e-9)
+
+
+def test_a_constant_structural_twist_only_turns_the_principal_axes():
+    """A uniform blade twisted by the same 30° along its whole span is the untwisted blade
+    turned about its axis: at standstill its frequencies are the untwisted one's (the
+    flapwise and edgewise stiffnesses 4:1 rotated into the rotor's axes, EI_ww = EI_f·cos²β +
+    EI_e·sin²β, EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sin β·cos β)."""
+    from wtvib import blade as blade_mod
+
+    length, m, ei = 40.0, 300.0, 5.0e9
+    straight = uniform_blade(length, m, ei, 4.0)
+    twisted = uniform_blade(length, m, ei, 4.0, twist_deg=[30.0, 30.0])
+    f0 = blade_mod.rotating_modes(straight, np.array([0.0]))[1][0]
+    f30 = blade_mod.rotating_modes(twisted, np.array([0.0]))[1][0]
+    assert sorted(f30) == pytest.approx(sorted(f0), rel=1e-9)
