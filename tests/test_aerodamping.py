@@ -241,3 +241,18 @@ def test_a_blade_modes_assumed_shape_is_the_cantilevers_first():
     assert phi[-1] == 1.0 and abs(phi[0]) < 1e-12 and abs(d1[0]) < 1e-6
     # at the tip, against their size along the blade (the third difference is the noisier)
     assert abs(d2[-50]) < 1e-3 * np.abs(d2).max() and abs(d3[-50]) < 2e-2 * np.abs(d3).max()
+
+
+def test_a_rated_power_the_rotor_never_reaches_is_said_in_kw():
+    """Euros 44 m asked for 200 MW: its rotor never reaches it below cut-out, so it is
+    never pitched — said with the power in kW."""
+    from tests.conftest import TURBINES
+
+    s = load(TURBINES / "euros-44m.yaml")
+    assert s.aerodynamics is not None
+    control = s.aerodynamics.control.model_copy(update={"rated_power_kw": 2.0e5})
+    big = s.model_copy(
+        update={"aerodynamics": s.aerodynamics.model_copy(update={"control": control})}
+    )
+    said = " ".join(audit.run(big).assumptions)
+    assert "rated power 200,000 kW (aerodynamic) is not reached below cut-out" in said

@@ -213,3 +213,21 @@ def test_the_lags_own_whirling_roots_are_told_from_the_structures():
     )
     ((lam, _),) = modal.oscillations_stacked(k[None], m, d[None], lag=tuple(a[None] for a in lag))
     assert len(lam) == 1 and lam[0].imag == pytest.approx(10.024, abs=1e-3)
+
+
+def test_the_greedy_assignment_serves_the_most_certain_row_first():
+    """Greedy (more rows than the exhaustive search takes, or candidates to spare): the row
+    with the highest similarity picks first. Rows 0 and 1 both resemble column 0, row 0 more
+    (0.9 against 0.85): it takes column 0 and row 1 the next free column it resembles most —
+    by hand; serving row 1 first would give it column 0 and row 0 column 1."""
+    import numpy as np
+
+    from wtvib import modal
+
+    score = np.zeros((8, 9))
+    score[0, :2] = [0.9, 0.8]
+    score[1, :2] = [0.85, 0.1]
+    for i in range(2, 8):
+        score[i, i] = 0.95  # the others unambiguous (and above both)
+    order = modal.assign(score)
+    assert list(order[:2]) == [0, 1] and list(order[2:]) == list(range(2, 8))

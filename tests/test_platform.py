@@ -333,3 +333,24 @@ def test_a_platform_mode_on_a_rotor_line_is_at_most_a_warning() -> None:
     heave = next(m for m in report.modes if m.id == "tower.platform.heave")
     assert heave.status_cap == "warn"
     assert all(m.status_cap is None for m in report.modes if m.id in ("tower.fa1", "tower.ss1"))
+
+
+def test_a_tower_without_torsional_stiffness_yaws_rigidly_on_the_platform() -> None:
+    """A tower given without GJ turns with its platform as one body: the yaw mode is
+    √(C₆₆/(I₆₆ + A₆₆ + J_head))/2π — by hand 1e8/(3e8 + 1e8 + 5e7) here — the tower's own
+    yaw inertia left out (no torsion model)."""
+    data = _tower_data(_platform())
+    data["tower"] = {
+        "height_m": 50.0,
+        "distributed": {
+            "height_m": [0.0, 50.0],
+            "mass_per_length_kg_m": [2000.0, 2000.0],
+            "ei_fa_nm2": [1e12, 1e12],
+            "ei_ss_nm2": [1e12, 1e12],
+        },
+        "foundation": data["tower"]["foundation"],  # type: ignore[index]
+    }
+    data["tower_head"] = {"mass_kg": 1e5, "cm_above_top_m": 0.0, "inertia_yaw_kgm2": 5e7}
+    modes = {m.id: m for m in tower.structural_modes(from_data(data))}
+    expected = np.sqrt(1e8 / (3e8 + 1e8 + 5e7)) / (2 * np.pi)
+    assert modes["tower.platform.yaw"].frequency_hz == pytest.approx(expected, rel=1e-9)

@@ -110,3 +110,15 @@ def test_heavy_damping_is_one_threshold_with_its_stated_peak():
     assert AuditSettings().heavy_damping_ratio == z
     for fn in (resonance.assess, resonance.assess_all):
         assert inspect.signature(fn).parameters["heavy_damping"].default == z
+
+
+def test_the_worst_status_orders_pass_info_warn_fail():
+    """A resonance met only in start-up is information, worse than a pass: whatever the
+    order the statuses come in, the worst is the later of pass < info < warn < fail."""
+    from itertools import permutations
+
+    ladder = ["pass", "info", "warn", "fail"]
+    for top in range(1, 4):
+        for order in permutations(ladder[: top + 1]):
+            assert worst(order) == ladder[top]
+    assert worst([]) == "pass"

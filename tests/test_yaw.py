@@ -80,6 +80,12 @@ def test_the_moment_budget_carries_the_gyroscopic_moment_of_the_yawing_rotor():
     budget = next(c for c in report.checks if c.id == "yaw.moments")
     assert budget.numbers["gyroscopic_nm"] == pytest.approx(expected, rel=1e-6)
     assert f"up to {expected:,.0f} N·m about the yaw axis" in budget.message
+    # three blades: the same mean, constant, and nothing about the yaw axis
+    s = spec.load(TURBINES / "aeroman-retrofit.yaml")
+    three = s.model_copy(update={"rotor": s.rotor.model_copy(update={"blades": 3})})
+    budget = next(c for c in audit.run(three).checks if c.id == "yaw.moments")
+    assert budget.numbers["gyroscopic_nm"] == pytest.approx(expected, rel=1e-6)
+    assert f"{expected:,.0f} N·m, constant, about the tilt axis" in budget.message
 
 
 def test_a_two_bladed_rotors_yaw_inertia_swings_by_half_its_polar_inertia():
