@@ -297,3 +297,23 @@ def test_each_mode_is_described_by_its_own_shape():
     assert "blades against the grid" in described["drivetrain.grid.1"]
     assert "centrifugal switch against gearbox" in described["drivetrain.grid.4"]
     assert "blades against the brake" in described["drivetrain.locked.1"]
+
+
+def test_the_locked_train_is_the_free_one_clamped_at_the_generator():
+    """Brake applied: the generator's angle is held, so the train's M, K and D are the free
+    chain's with the generator's row and column struck out (three masses, a damper on each
+    shaft here)."""
+    import numpy as np
+
+    s = _chain_spec(5.0e7, edge_spring=False)
+    dt = s.drivetrain
+    shafts = [
+        sh.model_copy(update={"damping_nms_rad": 1e5 * (i + 1)}) for i, sh in enumerate(dt.shafts)
+    ]
+    s = s.model_copy(update={"drivetrain": dt.model_copy(update={"shafts": shafts})})
+    chain = drivetrain.reduce(s)
+    free = chain.matrices()
+    locked = drivetrain.system(chain, s, "locked")
+    for full, held in zip(free, locked, strict=True):
+        np.testing.assert_array_equal(held, full[:-1, :-1])
+    assert locked[2].shape == (2, 2) and locked[2][0, 1] != 0.0
