@@ -143,27 +143,19 @@ def test_a_bulkhead_at_a_step_of_diameter_closes_the_wider_side():
     the wider section's (its top closes the wider part, as OC4's base columns)."""
     t, plate = 0.05, 0.06
 
-    def member(bulkheads):  # type: ignore[no-untyped-def]
+    def member(bulkheads, diameter=(20.0, 20.0, 10.0, 10.0)):  # type: ignore[no-untyped-def]
         return hull.Member(
             name="s",
             a=np.array([0.0, 0.0, -30.0]),
             b=np.array([0.0, 0.0, 10.0]),
             stations=np.array([0.0, 0.5, 0.5, 1.0]),
-            diameter=np.array([20.0, 20.0, 10.0, 10.0]),
+            diameter=np.array(diameter),
             layers=[hull.Layer(np.full(4, t), 7850.0)],
             bulkheads=bulkheads,
         )
 
     # a step the other way (narrow below, wide above): the wider side still
-    up = hull.Member(
-        name="u",
-        a=np.array([0.0, 0.0, -30.0]),
-        b=np.array([0.0, 0.0, 10.0]),
-        stations=np.array([0.0, 0.5, 0.5, 1.0]),
-        diameter=np.array([10.0, 10.0, 20.0, 20.0]),
-        layers=[hull.Layer(np.full(4, t), 7850.0)],
-        bulkheads=(hull.Disc(0.5, plate, 7850.0),),
-    )
+    up = member((hull.Disc(0.5, plate, 7850.0),), (10.0, 10.0, 20.0, 20.0))
     up_added = hull.structure(up) - hull.structure(dataclasses.replace(up, bulkheads=()))
     assert up_added[0, 0] == pytest.approx(7850.0 * np.pi / 4 * (20.0 - 2 * t) ** 2 * plate)
     bare = hull.structure(member(()))
