@@ -309,29 +309,23 @@ def state_matrix(
     force −F·χ (the lift's lag, :class:`wtvib.multiblade.LiftLag`), appended after q̇:
     A = [[0, I, 0], [−M⁻¹K, −M⁻¹D, −M⁻¹F], [P, V, S]]."""
     n = k.shape[-1]
-    if lag is not None:
-        f, p, v, s = lag
-        base = state_matrix(k, m, d)
-        extra = s.shape[-1]
-        out = np.zeros((*base.shape[:-2], 2 * n + extra, 2 * n + extra))
-        out[..., : 2 * n, : 2 * n] = base
-        out[..., n : 2 * n, 2 * n :] = -(np.linalg.inv(m) @ f)
-        out[..., 2 * n :, :n] = p
-        out[..., 2 * n :, n : 2 * n] = v
-        out[..., 2 * n :, 2 * n :] = s
-        if not np.all(np.isfinite(out)):
-            raise ModalError(OUT_OF_RANGE)
-        return out
     try:
         minv = np.linalg.inv(m)
     except np.linalg.LinAlgError:
         raise ModalError("the inertia matrix is singular (a zero inertia?)") from None
     shape = np.broadcast_shapes(k.shape, m.shape, d.shape)[:-2]
-    out = np.zeros((*shape, 2 * n, 2 * n))
-    out[..., :n, n:] = np.eye(n)
+    size = 2 * n + (0 if lag is None else lag[3].shape[-1])
+    out = np.zeros((*shape, size, size))
+    out[..., :n, n : 2 * n] = np.eye(n)
     with np.errstate(over="ignore", invalid="ignore"):
-        out[..., n:, :n] = -(minv @ k)
-        out[..., n:, n:] = -(minv @ d)
+        out[..., n : 2 * n, :n] = -(minv @ k)
+        out[..., n : 2 * n, n : 2 * n] = -(minv @ d)
+        if lag is not None:
+            f, p, v, s = lag
+            out[..., n : 2 * n, 2 * n :] = -(minv @ f)
+            out[..., 2 * n :, :n] = p
+            out[..., 2 * n :, n : 2 * n] = v
+            out[..., 2 * n :, 2 * n :] = s
     if not np.all(np.isfinite(out)):
         raise ModalError(OUT_OF_RANGE)
     return out

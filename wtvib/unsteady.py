@@ -29,6 +29,8 @@ than the blade and tower modes).
 import numpy as np
 from numpy.typing import NDArray
 
+from . import modal
+
 Array = NDArray[np.float64]
 
 #: Jones's coefficients of Wagner's function: (Aᵢ, bᵢ).
@@ -67,17 +69,21 @@ def single_mode_roots(
     m, k, d, lift_d, kappa = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (mass, stiffness, damping, lift, rate))
     )
-    shape = m.shape
-    n = 2 + len(JONES)
-    a = np.zeros((*shape, n, n))
-    a[..., 0, 1] = 1.0
-    a[..., 1, 0] = -k / m
-    a[..., 1, 1] = -(d + IMMEDIATE * lift_d) / m
-    for i, (amp, b) in enumerate(JONES):
-        beta = b * kappa
-        a[..., 1, 2 + i] = -lift_d / m
-        a[..., 2 + i, 1] = beta * amp
-        a[..., 2 + i, 2 + i] = -beta
+    # one degree of freedom and Jones's two states (modal.state_matrix's lag form): the
+    # force −l·(z₁ + z₂), żᵢ = Aᵢβᵢ·ẋ − βᵢ·zᵢ; the immediate share of the lift in the damping
+    beta = np.stack([b * kappa for _, b in JONES], axis=-1)
+    amp = np.array([a for a, _ in JONES])
+    one = (*m.shape, 1, 1)
+    lag = (
+        np.repeat(lift_d[..., None, None], len(JONES), axis=-1),
+        np.zeros((*m.shape, len(JONES), 1)),
+        (amp * beta)[..., None],
+        -beta[..., None] * np.eye(len(JONES)),
+    )
+    a = modal.state_matrix(
+        k.reshape(one), m.reshape(one), (d + IMMEDIATE * lift_d).reshape(one), lag
+    )
+    shape, n = m.shape, a.shape[-1]
     lam = np.linalg.eigvals(a.reshape(-1, n, n)).reshape(*shape, n)
     # the structural root: the pair with a positive imaginary part nearest the undamped
     # frequency (the lag states' own roots are real, at −bᵢ·2W/c)
