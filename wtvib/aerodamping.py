@@ -407,11 +407,13 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     e = 0 if kind == "flap" else 1
     weight = shape**2
 
-    def modal(table: Array) -> Array:  # Σ over the span of a section table on the shape
+    def on_shape(table: Array) -> Array:  # Σ over the span of a section table on the shape
         return np.asarray(np.trapezoid(sec.at(r, table)[:, :, e, e] * weight, r, axis=1))
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return _single_mode(gen_mass, omega, modal(sec.c), modal(sec.lift), modal(sec.lift_rate))
+    return _single_mode(
+        gen_mass, omega, on_shape(sec.c), on_shape(sec.lift), on_shape(sec.lift_rate)
+    )
 
 
 def tower_mass(spec: Spec) -> float | None:
