@@ -152,6 +152,12 @@ def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> No
     j = np.lexsort((large.roots.imag, large.roots.real))
     np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
     np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
+    # the same right eigenvectors (each to a phase of its own): one shape, MAC 1
+    mac = np.abs(np.einsum("ki,ki->i", large.vectors[:, j].conj(), small.vectors[:, i])) ** 2
+    mac /= (np.abs(large.vectors[:, j]) ** 2).sum(axis=0) * (np.abs(small.vectors[:, i]) ** 2).sum(
+        axis=0
+    )
+    np.testing.assert_allclose(mac, 1.0, rtol=1e-9)
     with pytest.raises(modal.ModalError, match="defective"):
         modal.state_modes(np.diag([1.0, 1.0], k=1))
 

@@ -457,27 +457,16 @@ class StateModes:
 
 
 #: From this many states on, the left eigenvectors come from LAPACK's solve with the right
-#: ones (scipy's ``eig(left=True)``: one call, no inverse of the right vectors — 2,900
-#: states: the inverse cost a third as much again as the eigen-solution); below it
-#: numpy's eig and inverse, which keep scipy's import (0.2 s) off a small check.
+#: ones (``dgeev``: one call, no inverse of the right vectors — 2,900 states: the inverse
+#: cost a third as much again as the eigen-solution); below it numpy's eig and inverse,
+#: which keep scipy's import (0.2 s) off a small check.
 LEFT_VECTORS_STATES = 300
 DEFECTIVE = "the state matrix is defective: its eigenvectors do not span"
 
 
-def _eig_both_sides(
-    a: Array,
-) -> tuple[NDArray[np.complex128], NDArray[np.complex128], NDArray[np.complex128]]:
-    """λ, the left eigenvectors ψ (as columns, ψᵢᵀ·A = λᵢ·ψᵢᵀ: the rows of Φ⁻¹, each to a
-    scale of its own, which the participation factors' normalisation over the states
-    removes) and the right ones φ of A."""
-    import scipy.linalg
-
-    lam, left, vr = scipy.linalg.eig(a, left=True, right=True, check_finite=False)
-    np.conjugate(left, out=left)  # scipy: vl[:, i]ᴴ·A = λᵢ·vl[:, i]ᴴ (in place: 135 MB at 2,900)
-    product = np.einsum("ki,ki->i", left, vr)
-    if np.any(np.abs(product) <= 1e-12 * np.linalg.norm(left, axis=0) * np.linalg.norm(vr, axis=0)):
-        raise ModalError(DEFECTIVE)
-    return lam, left, vr
+def _roots_upper(lam: NDArray[np.complex128]) -> NDArray[np.bool_]:
+    """The roots with Im λ ≥ 0 (to rounding): one of each complex pair, and the real ones."""
+    return np.asarray(lam.imag >= -1e-12 * max(1.0, float(np.abs(lam).max(initial=0.0))))
 
 
 def state_modes(a: Array) -> StateModes:
@@ -494,17 +483,64 @@ def state_modes(a: Array) -> StateModes:
     applications to electric power systems, part I", IEEE Trans. PAS-101(9), 1982.
     """
     if a.shape[0] >= LEFT_VECTORS_STATES:
-        lam, left, vec = _eig_both_sides(a)
-    else:
-        found = np.linalg.eig(a)
-        lam = found.eigenvalues.astype(np.complex128)
-        vec = found.eigenvectors.astype(np.complex128)
-        try:
-            left = np.linalg.inv(vec).T.astype(np.complex128)
-        except np.linalg.LinAlgError:
-            raise ModalError(DEFECTIVE) from None
-    keep = lam.imag >= -1e-12 * max(1.0, float(np.abs(lam).max(initial=0.0)))
+        return _state_modes_both_sides(a)
+    found = np.linalg.eig(a)
+    lam = found.eigenvalues.astype(np.complex128)
+    vec = found.eigenvectors.astype(np.complex128)
+    try:
+        left = np.linalg.inv(vec).T.astype(np.complex128)
+    except np.linalg.LinAlgError:
+        raise ModalError(DEFECTIVE) from None
+    keep = _roots_upper(lam)
     return StateModes(lam[keep], vec[:, keep], participation(vec[:, keep], left[:, keep]))
+
+
+def _state_modes_both_sides(a: Array) -> StateModes:
+    """:func:`state_modes` from LAPACK's ``dgeev`` with both eigenvector sets, called
+    directly: a real matrix's vectors come as real columns (a complex pair's vector as its
+    real and imaginary parts, in the columns of the pair's two roots), and only the kept
+    roots' are made complex — scipy's ``eig`` would make both whole sets complex first
+    (2,900 states: four seconds beside the solve's sixteen, bench/RESULTS.md). The left
+    vectors ψ (ψᵢᵀ·A = λᵢ·ψᵢᵀ) are the conjugates of LAPACK's (uᵢᴴ·A = λᵢ·uᵢᴴ), each to a
+    scale of its own, which the participation factors' normalisation removes."""
+    from scipy.linalg import lapack
+
+    n = a.shape[0]
+    lwork, _ = lapack.dgeev_lwork(n, compute_vl=1, compute_vr=1)
+    wr, wi, vl, vr, info = lapack.dgeev(a, compute_vl=1, compute_vr=1, lwork=int(lwork))
+    if info != 0:
+        raise ModalError(f"the eigen-solution of the {n}-state matrix did not converge")
+    lam = wr + 1j * wi
+    keep = np.where(_roots_upper(lam))[0]
+    # a pair's first root (Im λ > 0): vector = column j + i·column j+1; its second: the
+    # conjugate, column j−1 − i·column j; a real root: column j
+    first, second = wi[keep] > 0, wi[keep] < 0
+    real_at = np.where(second, keep - 1, keep)
+    imag_at = np.where(first, keep + 1, keep)
+    sign = np.where(first, 1.0, np.where(second, -1.0, 0.0))
+    right_re, right_im = vr[:, real_at], vr[:, imag_at] * sign
+    left_re, left_im = vl[:, real_at], vl[:, imag_at] * -sign  # ψ = conj(u)
+    del vl, vr
+    # ψᵢᵀ·φᵢ = 0 for a root whose vectors do not span (a Jordan block)
+    product = np.hypot(
+        np.einsum("ki,ki->i", left_re, right_re) - np.einsum("ki,ki->i", left_im, right_im),
+        np.einsum("ki,ki->i", left_re, right_im) + np.einsum("ki,ki->i", left_im, right_re),
+    )
+    size_left = np.sqrt(
+        np.einsum("ki,ki->i", left_re, left_re) + np.einsum("ki,ki->i", left_im, left_im)
+    )
+    size_right = np.sqrt(
+        np.einsum("ki,ki->i", right_re, right_re) + np.einsum("ki,ki->i", right_im, right_im)
+    )
+    if np.any(product <= 1e-12 * size_left * size_right):
+        raise ModalError(DEFECTIVE)
+    weight = np.hypot(left_re, left_im)
+    del left_re, left_im
+    weight *= np.hypot(right_re, right_im)
+    total = weight.sum(axis=0, keepdims=True)
+    weight /= np.where(total > 0, total, 1.0)
+    vectors = right_re + 1j * right_im
+    return StateModes(lam[keep], vectors, weight)
 
 
 def participation(vec: NDArray[np.complex128], left: NDArray[np.complex128]) -> Array:
