@@ -563,38 +563,58 @@ def mbc_average(files: list[LinFile], lay: Layout) -> Array:
     :meth:`LinFile.speed` gives them."""
     order = lay.order
     n2 = len(lay.q)
-    gq = lay.triplets_q  # positions in the reordered state: q block
-    gd = gq + n2  # their rates
-    g1 = lay.triplets_1 + 2 * n2  # first-order
-    total = np.zeros((len(order), len(order)))
+    # the rotating states' triplets (a state per blade) as rows and columns of each file's A,
+    # which is transformed in its own order and the average reordered once: the q block,
+    # their rates, the first-order states; only their rows and columns change, and they
+    # are summed over the azimuths apart (no copy of a whole A per azimuth)
+    width = max(lay.blades, 1)  # a triplet's states: one a blade
+    gq = order[lay.triplets_q].reshape(-1, width)
+    gd = order[lay.triplets_q + n2].reshape(-1, width)
+    g1 = order[lay.triplets_1 + 2 * n2].reshape(-1, width)
+    turned = np.concatenate([gq.ravel(), gd.ravel(), g1.ravel()])
+
+    def own(g: NDArray[np.intp]) -> tuple[NDArray[np.intp], ...]:
+        """A column group's entries (row, DOF, blade) in the rows of ``g``, DOF for DOF: each
+        DOF's own blades' block."""
+        return g[:, :, None], np.arange(len(g))[:, None, None], np.arange(width)[None, None, :]
+
+    total = np.zeros_like(files[0].a)
+    columns = np.zeros((total.shape[0], turned.size))  # the turned columns, summed
+    rows = np.zeros((turned.size, total.shape[0]))  # the turned rows, summed
     for f in files:
-        a = f.a[np.ix_(order, order)]
+        a = f.a
+        total += a
         if lay.blades < 3:
-            total += a
             continue
         omega, omega_dot = f.speed(lay)
         b, db, d2b, _ = coleman(lay.blades, f.azimuth)
         binv = np.linalg.inv(b)
-        m = a.copy()
-        # columns: A·L
-        if gq.size:
-            m[:, gq] = a[:, gq] @ b + omega * (a[:, gd] @ db)
-            m[:, gd] = a[:, gd] @ b
-        if g1.size:
-            m[:, g1] = a[:, g1] @ b
+        # columns: A·L, each group as (every row, DOF, blade)
+        cq, cd, c1 = a[:, gq] @ b + omega * (a[:, gd] @ db), a[:, gd] @ b, a[:, g1] @ b
         # − Ṫ terms, block by block on each DOF's own blades
-        if gq.size:
-            m[gq[:, :, None], gq[:, None, :]] -= omega * db
-            m[gd[:, :, None], gq[:, None, :]] -= omega**2 * d2b + omega_dot * db
-            m[gd[:, :, None], gd[:, None, :]] -= 2 * omega * db
-        if g1.size:
-            m[g1[:, :, None], g1[:, None, :]] -= omega * db
-        # rows: T⁻¹
+        cq[own(gq)] -= omega * db
+        cq[own(gd)] -= omega**2 * d2b + omega_dot * db
+        cd[own(gd)] -= 2 * omega * db
+        c1[own(g1)] -= omega * db
+        turned_columns = np.concatenate(
+            [cq.reshape(len(a), -1), cd.reshape(len(a), -1), c1.reshape(len(a), -1)], axis=1
+        )
+        columns += turned_columns
+        # rows: T⁻¹, over the rows with their turned columns
+        changed = a[turned]
+        changed[:, turned] = turned_columns[turned]
+        at = 0
         for g in (gq, gd, g1):
-            if g.size:
-                m[g] = np.einsum("ab,mbn->man", binv, m[g])
-        total += m
-    return total / len(files)
+            if not g.size:
+                continue
+            block = changed[at : at + g.size].reshape(g.shape[0], width, -1)
+            rows[at : at + g.size] += np.einsum("ab,mbn->man", binv, block).reshape(g.size, -1)
+            at += g.size
+    if lay.blades >= 3:
+        total[:, turned] = columns
+        total[turned] = rows
+    total /= len(files)
+    return total[np.ix_(order, order)]
 
 
 def coordinates(lay: Layout) -> tuple[str, ...]:
