@@ -21,7 +21,7 @@ DECK = (
 
 def main() -> None:
     print(machine())
-    s = importers.load(DECK, rpm=(6.9, 12.1))
+    s = importers.load(DECK, importers.ReadOptions(rpm=(6.9, 12.1)))
     bare = s.model_copy(update={"coupled": None})
     locked = coupled.build(s, "locked")
     free = coupled.build(s, "free")

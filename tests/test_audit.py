@@ -82,7 +82,7 @@ def test_a_slow_tip_speed_for_the_rotor_size_is_a_warning(shared):
     path = shared / "reference/IEA3.4/IEA-3.4-130-RWT_ElastoDyn.dat"
     slow = [w for w in audit.suspicious(importers.load(path), []) if "tip speed" in w]
     assert len(slow) == 1 and "34 m/s" in slow[0]
-    ranged = importers.load(path, rpm=(3.8, 11.75))
+    ranged = importers.load(path, importers.ReadOptions(rpm=(3.8, 11.75)))
     assert not [w for w in audit.suspicious(ranged, []) if "tip speed" in w]
 
 

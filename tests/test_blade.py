@@ -30,7 +30,7 @@ def test_blade_analysis_states_how_computed_modes_came_about(shared):
     from wtvib import importers
 
     deck = shared / "reference" / "NREL5MW" / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
-    r = audit.run(importers.load(deck, rpm=(6.9, 12.1)))
+    r = audit.run(importers.load(deck, importers.ReadOptions(rpm=(6.9, 12.1))))
     assert any(a.startswith("Blade modes computed") for a in r.assumptions)
     assert {m.origin for m in r.modes if m.subsystem == "blade"} == {"computed"}
 

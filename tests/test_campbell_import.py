@@ -47,7 +47,11 @@ def test_each_format_audits_through_the_cli(args, tool):
 def test_a_table_is_judged_with_its_damping_and_negative_damping_fails(tmp_path):
     """The edge mode's ζ = −0.002 at 12.1 rpm is an instability: system.stability fails
     with the mode and speed; the tower's DAF at 3P uses the table's ζ there."""
-    r = audit.run(importers.load(write(tmp_path, TABLE.format(last="-0.002")), blades=3))
+    r = audit.run(
+        importers.load(
+            write(tmp_path, TABLE.format(last="-0.002")), importers.ReadOptions(blades=3)
+        )
+    )
     stab = next(c for c in r.checks if c.id == "system.stability")
     assert stab.status == "fail"
     assert stab.numbers["unstable"] == [
@@ -55,7 +59,11 @@ def test_a_table_is_judged_with_its_damping_and_negative_damping_fails(tmp_path)
     ]
     fa = next(m for m in r.modes if m.id == "system.tower.fa1")
     assert fa.damping_at(6.9 * 3.14159265 / 30, 0.0) == pytest.approx(0.05, rel=1e-3)
-    ok = audit.run(importers.load(write(tmp_path, TABLE.format(last="0.003"), "d.csv"), blades=3))
+    ok = audit.run(
+        importers.load(
+            write(tmp_path, TABLE.format(last="0.003"), "d.csv"), importers.ReadOptions(blades=3)
+        )
+    )
     assert next(c for c in ok.checks if c.id == "system.stability").status == "pass"
 
 

@@ -30,7 +30,7 @@ def test_every_catalogue_report_validates(name):
     [DATA / "openfast", DATA / "hawcstab2" / "steady.cmb", DATA / "hawcstab2" / "blade.cmb"],
 )
 def test_imported_results_reports_validate(source):
-    validate(audit.run(importers.load(source, blades=3)).to_dict())
+    validate(audit.run(importers.load(source, importers.ReadOptions(blades=3))).to_dict())
 
 
 def test_a_deck_with_aerodynamics_and_an_uncertainty_run_validate(shared):

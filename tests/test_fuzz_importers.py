@@ -67,7 +67,7 @@ def _audit_cleanly(data: dict[str, Any], source: str) -> None:
 
 def _import_cleanly(path: Path, **options: Any) -> None:
     try:
-        data = importers.to_data(path, **options)
+        data = importers.to_data(path, importers.ReadOptions(**options))
     except WtvibError as exc:
         assert "\n" not in str(exc).strip(), "a wtvib error is one line"
         return

@@ -72,7 +72,7 @@ def _reject_constant(name: str) -> Any:
 def _audit_cleanly(path: Path, **options: Any) -> None:
     """Import and audit: a typed error in one line, or a strict-JSON report."""
     try:
-        data = importers.to_data(path, **options)
+        data = importers.to_data(path, importers.ReadOptions(**options))
         report = audit.run(spec.from_data(data, source=str(path)))
     except WtvibError as exc:
         assert "\n" not in str(exc).strip(), "a wtvib error is one line"

@@ -30,7 +30,7 @@ def test_head_mass_is_for_windio_files_only(tmp_path):
     p = tmp_path / "t.yaml"
     p.write_text("wtvib: 1\n")
     with pytest.raises(SpecError, match="--head-mass applies to windIO files only"):
-        importers.load(p, head_mass=1000.0)
+        importers.load(p, importers.ReadOptions(head_mass=1000.0))
 
 
 def test_the_headline_says_where_imported_speeds_come_from(shared):
@@ -38,13 +38,13 @@ def test_the_headline_says_where_imported_speeds_come_from(shared):
     rpm; the report says they are the file's (operation.source, and the headline's Speed
     row), and a range given on the command line says so instead."""
     from wtvib import audit
-    from wtvib.importers import load
+    from wtvib.importers import ReadOptions, load
 
     path = shared / "reference/IEA3.4/IEA-3.4-130-RWT.yaml"
-    doc = audit.run(load(path, head_mass=1.5e5)).to_dict()
+    doc = audit.run(load(path, ReadOptions(head_mass=1.5e5))).to_dict()
     assert "control.supervisory" in doc["operation"]["source"]
     assert "IEA-3.4-130-RWT.yaml" in doc["operation"]["source"]
-    doc = audit.run(load(path, head_mass=1.5e5, rpm=(3.8, 11.75))).to_dict()
+    doc = audit.run(load(path, ReadOptions(head_mass=1.5e5, rpm=(3.8, 11.75)))).to_dict()
     assert doc["operation"]["source"] == "the command line (--rpm/--rated)"
 
 
@@ -54,7 +54,7 @@ def test_a_deck_on_a_platform_says_its_tower_is_clamped_at_its_base(shared):
     bending of 0.23 Hz where tower and monopile have 0.17–0.18 (Gaertner et al. 2020) — the
     headline says the frequencies are upper bounds; it said so in an assumption only."""
     deck = "reference/IEA15/IEA-15-240-RWT-Monopile/IEA-15-240-RWT-Monopile_ElastoDyn.dat"
-    spec = importers.load(shared / deck, rpm=(5.0, 7.56))
+    spec = importers.load(shared / deck, importers.ReadOptions(rpm=(5.0, 7.56)))
     said = [w for w in spec.warnings if w.startswith("tower.foundation")]
     assert said and "PtfmSgDOF" in said[0] and "TowerBsHt = 15 m" in said[0]
     assert "upper bounds" in said[0]
@@ -74,7 +74,7 @@ def test_a_floating_deck_set_is_refused_unless_clamped(shared, tmp_path):
     refused = r"floating turbine \(moorings \(CompMooring\)\) whose platform wtvib cannot model"
     with pytest.raises(SpecError, match=refused + ": no HydroDyn"):
         importers.load(fst)
-    spec = importers.load(fst, clamped_base=True)
+    spec = importers.load(fst, importers.ReadOptions(clamped_base=True))
     said = [w for w in spec.warnings if w.startswith("tower.foundation")]
     assert said and "moorings' own modes are missing" in said[0]
 

@@ -371,13 +371,10 @@ def test_a_figure_is_titled_with_its_own_judgement(shared):
     """The NREL 5-MW deck set: its tower figure said "verdict FAIL, resonant tower" and drew
     no band or marker (its modes are judged as coupled ones); the failure is on the system
     figure. Each figure now says what it judges."""
-    from wtvib.importers import load
+    from wtvib.importers import ReadOptions, load
 
-    report = audit.run(
-        load(
-            shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", rpm=(6.9, 12.1)
-        )
-    )
+    deck = shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    report = audit.run(load(deck, ReadOptions(rpm=(6.9, 12.1))))
     tower = campbell.campbell_plot(report, campbell.DIAGRAMS["campbell"]).axes[0]
     system_ = campbell.campbell_plot(report, campbell.DIAGRAMS["campbell-system"]).axes[0]
     assert "FAIL" not in tower.get_title()

@@ -89,7 +89,7 @@ def test_resonant_class_names_the_speed_where_the_margin_is_violated(shared):
     from wtvib import audit, importers
 
     deck = shared / "reference" / "NREL5MW" / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
-    r = audit.run(importers.load(deck, rpm=(6.9, 12.1)))
+    r = audit.run(importers.load(deck, importers.ReadOptions(rpm=(6.9, 12.1))))
     c = next(c for c in r.checks if c.id == "tower.class")
     assert c.status == "fail" and "within the margin of 3P at 6.9" in c.message
     assert "3P = 0.345 Hz at 6.9 rpm" in c.message and "12.1 rpm" not in c.message
@@ -136,7 +136,7 @@ def test_the_class_gives_the_modes_frequency_where_its_separation_is_measured(sh
     from wtvib import importers
 
     deck = shared / "reference" / "IEA3.4" / "IEA-3.4-130-RWT_ElastoDyn.dat"
-    r = audit.run(importers.load(deck, rpm=(3.8, 11.75)))
+    r = audit.run(importers.load(deck, importers.ReadOptions(rpm=(3.8, 11.75))))
     c = next(c for c in r.checks if c.id == "tower.class")
     assert "first bending 0.401 Hz" in c.message
     assert "2P = 0.392 Hz at 11.8 rpm, the mode at 0.399 Hz: separation 1.8%" in c.message

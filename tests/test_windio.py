@@ -266,7 +266,7 @@ def test_a_windio_file_without_a_speed_range_takes_the_command_lines(tmp_path):
     p.write_text(yaml.safe_dump(doc, sort_keys=False))
     with pytest.raises(SpecError, match="give --rpm MIN:MAX"):
         importers.load(p)
-    spec = importers.load(p, rpm=(5.0, 7.56))
+    spec = importers.load(p, importers.ReadOptions(rpm=(5.0, 7.56)))
     assert spec.rotor.speed.steady_rpm == [(5.0, 7.56)]
     assert spec.rotor.speed.source == "the command line (--rpm/--rated)"
 

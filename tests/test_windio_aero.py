@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from wtvib.errors import SpecError
-from wtvib.importers import load
+from wtvib.importers import ReadOptions, load
 
 
 def _examples() -> Path:
@@ -32,7 +32,7 @@ def test_windio2_iea15_aerodynamics():
 
 
 def test_windio1_twist_is_converted_from_radians(shared: Path):
-    spec = load(shared / "reference/IEA15/IEA-15-240-RWT.yaml", head_mass=1.0e6)
+    spec = load(shared / "reference/IEA15/IEA-15-240-RWT.yaml", ReadOptions(head_mass=1.0e6))
     aero = spec.aerodynamics
     assert aero is not None
     assert np.degrees(0.2722) == pytest.approx(aero.stations.twist_deg[0], abs=0.05)

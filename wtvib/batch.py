@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .errors import WtvibError
+from .importers import ReadOptions
 from .rules import STATUS_ORDER, worst_check
 
 if TYPE_CHECKING:
@@ -39,17 +40,11 @@ EXIT_INTERNAL = 3
 
 @dataclass(frozen=True)
 class Options:
-    """What ``check``, ``report`` and ``batch`` share: the operating range for imports
-    (``rpm`` [rpm] MIN, MAX; ``rated`` [rpm]), the windIO tower-head mass ``head_mass`` [kg],
-    ``clamped_base`` for a floating windIO turbine, the audit overrides ``margin``,
+    """What ``check``, ``report`` and ``batch`` share: how a file is read (``read``: the
+    import options, :class:`~wtvib.importers.ReadOptions`), the audit overrides ``margin``,
     ``rule``, ``preset``, and the uncertainty study (``samples``, ``seed``)."""
 
-    rpm: tuple[float, float] | None = None
-    rated: float | None = None
-    head_mass: float | None = None
-    clamped_base: bool = False
-    soil: Path | None = None
-    blades: int | None = None
+    read: ReadOptions = field(default_factory=ReadOptions)
     margin: float | None = None
     rule: str | None = None
     preset: str | None = None
@@ -57,18 +52,10 @@ class Options:
     seed: int = 0
 
     def load(self, path: str | Path) -> Any:
-        """The turbine at ``path`` with the import options applied."""
+        """The turbine at ``path``, read with the import options."""
         from . import importers
 
-        return importers.load(
-            path,
-            rpm=self.rpm,
-            rated=self.rated,
-            head_mass=self.head_mass,
-            clamped_base=self.clamped_base,
-            blades=self.blades,
-            soil=self.soil,
-        )
+        return importers.load(path, self.read)
 
     def settings(self, turbine: Any) -> Any:
         """The turbine's audit settings with the overrides applied."""

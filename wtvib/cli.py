@@ -201,14 +201,18 @@ def _options(
     preset: PresetName | None,
 ) -> "batch.Options":  # type: ignore[name-defined]  # noqa: F821
     from .batch import Options
+    from .importers import ReadOptions
 
-    return Options(
+    read = ReadOptions(
         rpm=_rpm_range(rpm),
         rated=rated,
         head_mass=head_mass,
         clamped_base=clamped_base,
-        soil=soil,
         blades=blades,
+        soil=soil,
+    )
+    return Options(
+        read=read,
         margin=margin,
         rule=rule.value if rule is not None else None,
         preset=preset.value if preset is not None else None,
@@ -950,9 +954,10 @@ def convert(
     from .outputs import write_atomic
     from .spec import from_data
 
-    data = importers.to_data(
-        source, rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass, clamped_base=clamped_base
+    read = importers.ReadOptions(
+        rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass, clamped_base=clamped_base
     )
+    data = importers.to_data(source, read)
     from_data(data, source=str(source))  # refuse to write a spec that would not load
     text = f"# wtvib spec converted from {source.name}\n" + yaml.safe_dump(
         data, sort_keys=False, allow_unicode=True, width=100

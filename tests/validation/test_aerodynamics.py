@@ -26,7 +26,7 @@ import pytest
 
 from tests.conftest import edited_reference
 from wtvib import aerodamping, audit, bem, stall, unsteady
-from wtvib.importers import load
+from wtvib.importers import ReadOptions, load
 from wtvib.results import Mode
 
 ROSCO_TABLE = "reference/NREL5MW/Cp_Ct_Cq.NREL5MW.txt"
@@ -424,7 +424,7 @@ def test_a_negative_isolated_edge_estimate_in_attached_flow_warns_and_says_why(s
     motion's −C_L·sin φ·cos φ at a high lift and a small inflow angle — the isolated estimate
     leaves out the mode's out-of-plane share — so both checks warn and say so. The stall
     rotor, whose edge damping goes negative past stall, still fails (test_catalogue.py)."""
-    s = load(shared / "reference/IEA15/IEA-15-240-RWT.yaml", head_mass=1.017e6)
+    s = load(shared / "reference/IEA15/IEA-15-240-RWT.yaml", ReadOptions(head_mass=1.017e6))
     report = audit.run(s)
     checks = {c.id: c for c in report.checks}
     edge = next(m for m in report.modes if m.id == "blade.edge1")

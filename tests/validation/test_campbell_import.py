@@ -48,7 +48,9 @@ def test_hawcstab2_blade_modes_named_as_casetoolbox_names_them():
     """DTU 10 MW blade, HAWCStab2: the .amp names the .cmb's modes 1F, 1E, 2F, 2E, 3F, 3E, 4F,
     1T, 5F as CASEToolBox's comparison does; the standstill frequencies are the .cmb's first
     row (0.610448, 0.930865, 1.73908 Hz)."""
-    s = importers.load(DATA / "hawcstab2" / "blade.cmb", blades=3, rpm=(6.0, 9.6))
+    s = importers.load(
+        DATA / "hawcstab2" / "blade.cmb", importers.ReadOptions(blades=3, rpm=(6.0, 9.6))
+    )
     modes = [m for m in audit.run(s).modes if m.origin == "imported"]
     names = [m.id for m in modes]
     expected = ["flap1", "edge1", "flap2", "edge2", "flap3", "edge3", "flap4", "tor1", "flap5"]
@@ -61,7 +63,7 @@ def test_hawcstab2_rated_points_merge_and_speeds_come_from_the_pwr():
     """The steady-state .cmb is over wind speed: the .pwr of the same name gives the rotor
     speed (6–9.6 rpm); the points above rated share 9.6 rpm and merge into one (mean
     frequency, lowest damping), said in the assumptions."""
-    s = importers.load(DATA / "hawcstab2" / "steady.cmb", blades=3)
+    s = importers.load(DATA / "hawcstab2" / "steady.cmb", importers.ReadOptions(blades=3))
     assert s.rotor.speed.min_rpm == pytest.approx(6.0)
     assert s.rotor.speed.max_rpm == pytest.approx(9.6)
     assert s.results is not None
@@ -107,7 +109,7 @@ def test_the_public_iea15_hawcstab2_example_audits(run, tmp_path):
     fore-aft (mode 2, tower-top y) and side-side (mode 3, x) first, then the first flap
     modes backward < collective < forward, each frequency the .cmb's own."""
     folder = _iea15_hawcstab2(tmp_path)
-    s = importers.load(folder / f"{run}_entire_turbine.cmb", blades=3)
+    s = importers.load(folder / f"{run}_entire_turbine.cmb", importers.ReadOptions(blades=3))
     assert s.results is not None
     modes = s.results.modes
     assert str(folder / "operation_1_25_windspeed.opt") in s.results.files
@@ -141,8 +143,12 @@ def test_hawcstab2_damping_in_operation_is_the_aeroelastic_runs(tmp_path):
     with the rotor's aerodynamics — the aeroelastic run's own, the lowest of the winds
     merged at 5 rpm (the .cmb's mode 2, % of critical)."""
     folder = _iea15_hawcstab2(tmp_path)
-    st = importers.load(folder / "structural_entire_turbine.cmb", blades=3).results
-    ae = importers.load(folder / "aeroelastic_entire_turbine.cmb", blades=3).results
+    st = importers.load(
+        folder / "structural_entire_turbine.cmb", importers.ReadOptions(blades=3)
+    ).results
+    ae = importers.load(
+        folder / "aeroelastic_entire_turbine.cmb", importers.ReadOptions(blades=3)
+    ).results
     assert st is not None and ae is not None
     assert st.modes["tower.fa1"].damping_ratio is not None
     assert ae.modes["tower.fa1"].damping_ratio is not None

@@ -43,7 +43,7 @@ TABLE_9_1 = {
 
 @pytest.fixture(scope="module")
 def nrel(shared: Any) -> spec.Spec:
-    return importers.load(shared / NREL, rpm=(6.9, 12.1))
+    return importers.load(shared / NREL, importers.ReadOptions(rpm=(6.9, 12.1)))
 
 
 def parked(s: spec.Spec, condition: str = "locked") -> dict[str, float]:
@@ -324,7 +324,10 @@ def test_the_dampers_add_to_every_coupled_modes_material_damping(shared, deck):
     15/50's first side-side mode moves the gearbox enough for ζ = 0.0011 from the dampers,
     and was judged with that alone (DAF 450 at a crossing instead of ≤ 1/(2·0.03)); the
     IEA-3.4's second side-side likewise (0.00017)."""
-    s = importers.load(shared / "reference" / deck, rpm=(3.8, 11.75) if "IEA" in deck else None)
+    s = importers.load(
+        shared / "reference" / deck,
+        importers.ReadOptions(rpm=(3.8, 11.75) if "IEA" in deck else None),
+    )
     default = coupled.default_damping(s).ratio
     system = [m for m in audit.run(s).modes if m.subsystem == "system"]
     assert system

@@ -119,7 +119,8 @@ def test_mode_names_say_who_swings_against_whom():
 @pytest.fixture(scope="module")
 def nrel(shared):
     s = importers.load(
-        shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", rpm=(6.9, 12.1)
+        shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
+        importers.ReadOptions(rpm=(6.9, 12.1)),
     )
     return s, {m.id: m for m in audit.run(s).modes}
 

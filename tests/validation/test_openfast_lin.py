@@ -184,7 +184,7 @@ def test_a_floating_linearisations_platform_modes_are_not_called_implausible(tmp
 
     _case("5MW_OC4Semi_Linear", tmp_path)
     lin = tmp_path / "5MW_OC4Semi_Linear" / "5MW_OC4Semi_Linear.1.lin"
-    report = audit.run(importers.load(lin, rpm=(6.0, 12.1)))
+    report = audit.run(importers.load(lin, importers.ReadOptions(rpm=(6.0, 12.1))))
     surge = next(m for m in report.modes if m.id == "system.platform.surge")
     assert surge.frequency_hz == pytest.approx(0.00887, rel=0.01)
     assert not [w for w in report.warnings if "platform" in w and "implausible" in w]

@@ -31,7 +31,8 @@ def test_windio_reference_heads_raise_no_scaling_warning(name, tmp_path):
 
 def test_a_head_mass_in_tonnes_is_far_off(shared):
     s = importers.load(
-        shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", rpm=(6.9, 12.1)
+        shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
+        importers.ReadOptions(rpm=(6.9, 12.1)),
     )
     head = s.tower_head
     assert head is not None

@@ -147,7 +147,7 @@ def test_iea15_monopile_on_soft_sand_against_clamped(tmp_path):
         "  - {bottom_m: 80, kind: sand, friction_angle_deg: 33}\n"
     )
     clamped = importers.load(path)
-    soft = importers.load(path, soil=profile)
+    soft = importers.load(path, importers.ReadOptions(soil=profile))
     pile = soft.tower.foundation.pile
     assert pile is not None and pile.embedded_length_m == pytest.approx(45.0)
     f = {m.id: m for m in audit.run(clamped).modes}["tower.fa1"].frequency_hz
@@ -164,7 +164,7 @@ def test_soil_is_refused_where_it_cannot_apply(tmp_path, shared):
     profile.write_text("soil:\n  - {bottom_m: 50, kind: sand, friction_angle_deg: 35}\n")
     deck = shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
     with pytest.raises(spec.SpecError, match="--soil applies to windIO files"):
-        importers.load(deck, soil=profile)
+        importers.load(deck, importers.ReadOptions(soil=profile))
 
 
 @pytest.mark.parametrize(
@@ -303,7 +303,7 @@ def test_a_mistake_in_a_soil_file_names_that_file_and_its_line(tmp_path):
         "  - {bottom_m: 80, kind: clay, undrained_shear_strength_pa: abc}\n"
     )
     with pytest.raises(spec.SpecError) as err:
-        importers.load(path, soil=profile)
+        importers.load(path, importers.ReadOptions(soil=profile))
     text = str(err.value)
     assert text.startswith(f"{profile}:3: soil[1].undrained_shear_strength_pa")
     tolerant = tmp_path / "tolerant.yaml"  # quantities with tolerances still pass through
@@ -311,7 +311,7 @@ def test_a_mistake_in_a_soil_file_names_that_file_and_its_line(tmp_path):
         "soil:\n  - {bottom_m: 80, kind: sand, friction_angle_deg: "
         "{value: 33, provenance: representative, tolerance: 0.05}}\n"
     )
-    s = importers.load(path, soil=tolerant)
+    s = importers.load(path, importers.ReadOptions(soil=tolerant))
     assert "tower.foundation.soil[0].friction_angle_deg" in s.provenance
 
 

@@ -43,7 +43,7 @@ def test_the_iea15_on_hawc2s_soil_stands_lower_than_clamped():
     soil."""
     windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
     path = Path(windio.__file__).parent / "examples/turbine/IEA-15-240-RWT.yaml"
-    on_soil = audit.run(importers.load(path, soil=SOIL))
+    on_soil = audit.run(importers.load(path, importers.ReadOptions(soil=SOIL)))
     clamped = audit.run(importers.load(path))
     soft = {m.id: m for m in on_soil.modes}
     stiff = {m.id: m.frequency_hz for m in clamped.modes}

@@ -58,4 +58,4 @@ def test_catalogue_verdicts_are_coherent(path: Path):
 
 @pytest.mark.parametrize(("deck", "rpm"), DECKS, ids=[d for d, _ in DECKS])
 def test_reference_deck_verdicts_are_coherent(shared, deck, rpm):
-    coherent(audit.run(importers.load(shared / "reference" / deck, rpm=rpm)))
+    coherent(audit.run(importers.load(shared / "reference" / deck, importers.ReadOptions(rpm=rpm))))

@@ -153,7 +153,7 @@ def test_the_floating_turbine_s_platform_modes_match_raft(name):
     from wtvib.tower import modes
 
     head, (surge, heave, pitch, yaw) = RAFT_SYSTEM[name]
-    spec = importers.load(windio_example(name), head_mass=head)
+    spec = importers.load(windio_example(name), importers.ReadOptions(head_mass=head))
     found = {m.id.split(".")[-1]: m.frequency_hz for m in modes(spec)}
     assert found["surge"] == pytest.approx(surge, rel=0.025)
     assert found["heave"] == pytest.approx(heave, rel=0.025)
@@ -174,7 +174,9 @@ def test_the_iea22_floater_against_its_openfast_deck():
     them to one level, a part-filled pontoon's water in the segment below its axis."""
     from wtvib import importers
 
-    spec = importers.load(windio_example("IEA-22-280-RWT_Floater.yaml"), head_mass=1217711.0)
+    spec = importers.load(
+        windio_example("IEA-22-280-RWT_Floater.yaml"), importers.ReadOptions(head_mass=1217711.0)
+    )
     p = spec.tower.foundation.platform
     assert p is not None
     assert p.mass_kg == pytest.approx(21192874.0 + 6.4516e6 / 9.80665, rel=0.01)

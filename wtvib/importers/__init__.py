@@ -8,6 +8,7 @@ it out as an editable spec.
 import math
 import re
 import stat
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -97,27 +98,33 @@ def _holds_specs(folder: Path) -> bool:
     return any(n.endswith((".yaml", ".yml")) for n in names)
 
 
-def to_data(
-    path: str | Path,
-    *,
-    rpm: tuple[float, float] | None = None,
-    rated: float | None = None,
-    head_mass: float | None = None,
-    clamped_base: bool = False,
-    blades: int | None = None,
-    soil: Path | None = None,
-) -> dict[str, Any]:
-    """The wtvib-format dictionary of any supported file (for ``wtvib convert``).
+@dataclass(frozen=True)
+class ReadOptions:
+    """What a file's format may not say, given by the user (the command line's import
+    options): ``rpm`` [rpm] (MIN, MAX) and ``rated`` [rpm] set the operating range;
+    ``head_mass`` [kg] replaces a windIO file's tower-head assembly (1.x files hold no hub
+    or nacelle masses); ``clamped_base`` reads a floating turbine's tower as clamped at its
+    base; ``blades`` is the number of blades of Campbell results that do not say; ``soil``
+    a soil profile (YAML: ``soil`` layers and optional ``bounds``, or HAWC2's soil file)
+    for a windIO monopile."""
 
-    ``head_mass`` [kg] replaces the tower-head assembly of a windIO file (needed for 1.x
-    files, which hold no hub or nacelle masses).
-    """
+    rpm: tuple[float, float] | None = None
+    rated: float | None = None
+    head_mass: float | None = None
+    clamped_base: bool = False
+    blades: int | None = None
+    soil: Path | None = None
+
+
+def to_data(path: str | Path, options: ReadOptions = ReadOptions()) -> dict[str, Any]:
+    """The wtvib-format dictionary of any supported file (for ``wtvib convert``)."""
     p = Path(path)
     results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
     text = "" if results_files else read_text(p)
     kind = detect(p, text)
-    _check_options(p, kind, rpm, rated, head_mass)
-    if soil is not None and kind != "windio":
+    _check_options(p, kind, options)
+    rpm = options.rpm
+    if options.soil is not None and kind != "windio":
         raise SpecError(
             "--soil applies to windIO files (their monopile); a wtvib spec gives its soil in "
             "tower.foundation",
@@ -126,60 +133,43 @@ def to_data(
     if kind == "openfast-lin":
         from . import openfast_lin
 
-        data = openfast_lin.to_spec_data(p, blades, rpm)
+        data = openfast_lin.to_spec_data(p, options.blades, rpm)
     elif kind == "hawcstab2":
         from . import hawcstab2
 
-        data = hawcstab2.to_spec_data(p, text, blades, rpm)
+        data = hawcstab2.to_spec_data(p, text, options.blades, rpm)
     elif kind == "campbell-table":
         from . import campbell_table
 
-        data = campbell_table.to_spec_data(p, text, blades, rpm)
+        data = campbell_table.to_spec_data(p, text, options.blades, rpm)
     elif kind == "elastodyn":
         from . import elastodyn
 
-        data = elastodyn.to_spec_data(p, text, clamped_base, speed_given=rpm is not None)
+        data = elastodyn.to_spec_data(p, text, options.clamped_base, speed_given=rpm is not None)
     elif kind == "windio":
         from . import windio
 
-        data = windio.to_spec_data(p, text, head_mass, clamped_base, _soil_profile(soil), rpm)
+        soil = _soil_profile(options.soil)
+        data = windio.to_spec_data(p, text, options.head_mass, options.clamped_base, soil, rpm)
     else:
         doc = load_document(p, text)
         data = doc.data
-    return _with_speed(data, rpm, rated) if (rpm or rated) else data
+    speed_given = rpm is not None or options.rated is not None
+    return _with_speed(data, rpm, options.rated) if speed_given else data
 
 
-def load(
-    path: str | Path,
-    *,
-    rpm: tuple[float, float] | None = None,
-    rated: float | None = None,
-    head_mass: float | None = None,
-    clamped_base: bool = False,
-    blades: int | None = None,
-    soil: Path | None = None,
-) -> Spec:
-    """Any supported file as a validated spec; ``rpm``/``rated`` set the operating range,
-    ``blades`` the number of blades of Campbell results that do not say, ``soil`` a soil
-    profile (YAML: ``soil`` layers and optional ``bounds``) for a windIO monopile."""
+def load(path: str | Path, options: ReadOptions = ReadOptions()) -> Spec:
+    """Any supported file as a validated spec, read with ``options``."""
     p = Path(path)
     results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
     text = "" if results_files else read_text(p)
     kind = detect(p, text)
-    _check_options(p, kind, rpm, rated, head_mass)
-    if kind == "wtvib" and rpm is None and rated is None and soil is None:
+    _check_options(p, kind, options)
+    if kind == "wtvib" and options.rpm is None and options.rated is None and options.soil is None:
         from ..spec import from_document
 
         return from_document(load_document(p, text)).fingerprinted(fingerprint(text))
-    data = to_data(
-        p,
-        rpm=rpm,
-        rated=rated,
-        head_mass=head_mass,
-        clamped_base=clamped_base,
-        blades=blades,
-        soil=soil,
-    )
+    data = to_data(p, options)
     spec = from_data(data, source=str(p))
     if p.is_dir():  # a folder of results: the hash of its files' hashes, in order
         files = spec.results.files if spec.results is not None else []
@@ -191,14 +181,9 @@ def load(
     return spec.fingerprinted(fingerprint(text))
 
 
-def _check_options(
-    path: Path,
-    kind: str,
-    rpm: tuple[float, float] | None,
-    rated: float | None,
-    head_mass: float | None,
-) -> None:
+def _check_options(path: Path, kind: str, options: ReadOptions) -> None:
     """The import options, one rule and one message each, for every format."""
+    rpm, rated, head_mass = options.rpm, options.rated, options.head_mass
     if head_mass is not None:
         if kind != "windio":
             what = "the deck's" if kind == "elastodyn" else "the spec's"
