@@ -9,9 +9,14 @@ between 0.05 and 5 Hz, coupled weakly and densely to every other state — so th
 as a full-system linearisation's is), written in OpenFAST's number format. wtvib must find
 the same structural modes in the grown files as in the originals (printed side by side):
 the added states are not structural, and their coupling (10⁻² s⁻¹ in all) moves a
-structural root by about 10⁻⁴ s⁻¹.
+structural root by about 10⁻⁴ s⁻¹. Issue 42's goal is for four azimuths: the fourth grown
+file is the first a revolution later (:func:`later`).
 
-Run: ``.venv/bin/python bench/bench_lin.py [--states 2900] [--runs 3]``; prints the machine
+Each side runs from the set's folder, never from a checkout (``python -c`` puts the working
+folder ahead of PYTHONPATH on sys.path).
+
+Run: ``.venv/bin/python bench/bench_lin.py [--states 2900] [--azimuths 4] [--runs 3]
+[--before <checkout>]``; prints the machine
 line, the wall time and peak memory (``/usr/bin/time``'s maximum resident set) of each run
 and their medians.
 """
@@ -80,6 +85,18 @@ def grow(text: str, states: int, rng: np.random.Generator) -> str:
     return "\n".join([*head, f"A: {states} x {states}", body, ""])
 
 
+def later(text: str, turns: int) -> str:
+    """The linearisation ``text`` ``turns`` revolutions later: its azimuth + 2π·turns. The
+    source has three azimuths; a fourth file costs what any azimuth costs (read, MBC3, its
+    share of the average), and its average weighs that azimuth twice, which moves the
+    structural roots by a hundredth of a hertz at most."""
+
+    def turned(m: re.Match[str]) -> str:
+        return f"{m.group(1)}{float(m.group(2)) + 2 * np.pi * turns:.6f}"
+
+    return re.sub(r"(Azimuth:\s+)(\S+)", turned, text, count=1)
+
+
 def run(folder: Path, tree: Path, out: Path) -> tuple[float, float]:
     """``wtvib check`` of the set's first file with the code of ``tree``, whole process:
     wall seconds and peak resident megabytes."""
@@ -93,8 +110,12 @@ def run(folder: Path, tree: Path, out: Path) -> tuple[float, float]:
     ]
     cmd += ["check", str(folder / f"{CASE}.1.lin"), "--no-plots", "-f", "json", "--rpm", "6:12.1"]
     env = {**ENV, "PYTHONPATH": str(tree), "WTVIB_MAX_BYTES": str(4 * 10**9)}
-    with out.open("w") as stdout:
-        done = subprocess.run(cmd, env=env, stdout=stdout, stderr=subprocess.PIPE, text=True)
+    with out.open("w") as stdout:  # run from the set's folder: ``python -c`` puts the
+        # working folder first on sys.path, ahead of PYTHONPATH, and from a checkout it
+        # would import that checkout's wtvib on both sides
+        done = subprocess.run(
+            cmd, env=env, stdout=stdout, stderr=subprocess.PIPE, text=True, cwd=folder
+        )
     if done.returncode not in (0, 1):  # pass or fail: a verdict
         sys.exit(f"{tree}: {done.stderr.strip()[-2000:]}")
     seconds, kb = done.stderr.strip().splitlines()[-1].split()
@@ -105,6 +126,7 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--states", type=int, default=2900)
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--azimuths", type=int, default=4, help="files of the grown set (≥ 3)")
     ap.add_argument("--before", type=Path, help="a checkout to compare, run alternately")
     args = ap.parse_args()
     print(machine() + "; OPENBLAS_NUM_THREADS=1 on both sides; WTVIB_MAX_BYTES=4e9")
@@ -114,12 +136,16 @@ def main() -> None:
         small, big = Path(tmp, "small"), Path(tmp, "big")
         small.mkdir()
         big.mkdir()
+        grown = {}
         for k in (1, 2, 3):
             text = gzip.decompress((SOURCE / f"{CASE}.{k}.lin.gz").read_bytes()).decode()
             (small / f"{CASE}.{k}.lin").write_text(text)
-            (big / f"{CASE}.{k}.lin").write_text(grow(text, args.states, rng))
+            grown[k] = grow(text, args.states, rng)
+            (big / f"{CASE}.{k}.lin").write_text(grown[k])
+        for k in range(4, args.azimuths + 1):  # a revolution later: the same matrix
+            (big / f"{CASE}.{k}.lin").write_text(later(grown[(k - 1) % 3 + 1], k // 4))
         size = sum(p.stat().st_size for p in big.iterdir()) / 1e6
-        print(f"{args.states} states, 3 azimuths, {size:.0f} MB of text")
+        print(f"{args.states} states, {max(args.azimuths, 3)} azimuths, {size:.0f} MB of text")
         for name, folder in (("original (258 states)", small), (f"grown ({args.states})", big)):
             times: dict[str, list[float]] = {t: [] for t in trees}
             memory: dict[str, list[float]] = {t: [] for t in trees}

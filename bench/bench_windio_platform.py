@@ -47,7 +47,11 @@ print(json.dumps(out))
 
 def platform_ms(checkout: Path) -> dict[str, float]:
     env = {**os.environ, "PYTHONPATH": str(checkout)}
-    done = subprocess.run([sys.executable, "-c", INNER], env=env, capture_output=True, text=True)
+    # run from /tmp: ``python -c`` puts the working folder first on sys.path, ahead of
+    # PYTHONPATH, and from a checkout it would import that checkout's wtvib instead
+    done = subprocess.run(
+        [sys.executable, "-c", INNER], env=env, capture_output=True, text=True, cwd="/tmp"
+    )
     if done.returncode:
         raise SystemExit(done.stderr[-2000:])
     result: dict[str, float] = json.loads(done.stdout.strip().splitlines()[-1])
