@@ -151,77 +151,35 @@ def to_spec_data(
     parked deck (no controller, RotSpeed 0) needs the operating range (``speed_given``:
     the command line gives it)."""
     main, fst, servo = deck_set(path, text)
-    if fst is not None and fst.num("MHK", default=0) > 0:
-        raise SpecError(
-            f"a marine hydrokinetic (tidal) turbine (MHK = {fst.num('MHK'):g}): wtvib audits "
-            "wind turbines — the water's loads and buoyancy on the tower and rotor are not "
-            "modelled",
-            line=fst.values["MHK"][1],
-            source=str(fst.path),
-        )
+    _refuse_marine(fst)
     path = main.path
     below = platform(main, fst)
-    floater: tuple[dict[str, Any], list[str]] | None = None
-    if below is not None and below[1] and not clamped_base:
-        from .hydrodyn import platform as floating_platform
-
-        found = floating_platform(main, fst) if fst is not None else "no .fst names its modules"
-        if isinstance(found, str):
-            raise refusal(below[0], found, str(path))
-        floater = found
-    tower = parse(_file(main, "TwrFile"))
+    floater = _floater(main, fst, below, clamped_base)
+    tower_file = parse(_file(main, "TwrFile"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
-
     yaw_block = _yaw(main, servo)
-    frac, mass, ei_fa, ei_ss, torsion = _tower_tables(tower, bool(yaw_block))
-
-    ed_base = main.num("TowerBsHt", default=0.0)
-    heights = frac * tower_height
-    pile = _monopile(main, fst, below)
-    support_notes: list[str] = []
-    support_warnings: list[str] = []
-    tower_block: dict[str, Any] = {}
-    if isinstance(pile, Monopile):
-        heights, mass, ei_fa, ei_ss, torsion, tower_block = _on_pile(
-            pile, fst, ed_base, heights, mass, ei_fa, ei_ss, torsion
-        )
-        tower_height = heights[-1]
-        support_notes, support_warnings = pile.notes, pile.warnings
-    if floater is not None:
-        tower_block = {"foundation": {"kind": "platform", "platform": floater[0]}}
-        support_notes = floater[1]
+    tw = _tower_on_support(main, fst, below, floater, tower_file, tower_height, bool(yaw_block))
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
     bl = _blade(main, fst, length, n_blades)
-    span, bmass = bl.span, bl.mass
-
     q = _quantity(source)
     hub = _hub_inertia(main, hub_r, q)
-    head, breakdown = tower_head(main, span, bmass, hub_r, n_blades, hub["inertia_kgm2"]["value"])
+    head, breakdown = tower_head(
+        main, bl.span, bl.mass, hub_r, n_blades, hub["inertia_kgm2"]["value"]
+    )
     operating = operation(main, servo, fst)
     if operating.speed is None and not speed_given:
         raise SpecError(
             f"{operating.note.removesuffix('.')}; give the operating range with --rpm MIN:MAX",
             source=str(path),
         )
-    read = [d.path for d in (fst, main, servo) if d is not None]
     from .aerodyn import aerodynamics
 
     aero = aerodynamics(fst, hub_r, operating.control)
-    files = (
-        "Files read: "
-        + ", ".join(str(p) if p.parent != main.path.parent else p.name for p in dict.fromkeys(read))
-        + " (and the tower and blade files the deck names"
-        + (f"; AeroDyn: {', '.join(aero[1])}" if aero else "")
-        + ")."
-    )
-    structure: dict[str, Any] = {"hub_radius_m": hub_r, **bl.structure}
-    tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
-    if tip_mass > 0:  # tip brakes: on the blade model too, not only in the head's mass
-        structure["tip_mass_kg"] = tip_mass
+    blade = _blade_section(main, bl, length, hub_r, q)
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -240,25 +198,9 @@ def to_spec_data(
             "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
             "speed": _speed_block(operating.speed),
         },
-        "tower": {
-            "height_m": q(
-                tower_height,
-                "TowerHt − the SubDyn reaction joint's z"
-                if tower_block and floater is None
-                else "TowerHt − TowerBsHt",
-                "derived",
-            ),
-            "damping_ratio": main_damping(tower, "TwrFADmp(1)"),
-            **tower_block,
-            "distributed": _distributed(heights, mass, ei_fa, ei_ss, torsion),
-        },
+        "tower": _tower_section(tw, tower_file, floater is not None, q),
         "tower_head": _head_block(head, q),
-        "blade": {
-            "length_m": q(length, "TipRad − HubRad", "derived"),
-            "mass_kg": q(float(np.trapezoid(bmass, span)), bl.mass_source, "derived"),
-            "damping_ratio": bl.damping,
-            "structure": structure,
-        },
+        "blade": blade,
         "drivetrain": {**_drivetrain_block(main, head, hub, n_blades, q), **operating.generator},
         **yaw_block,
         "coupled": _coupled_block(main, head, q),
@@ -267,32 +209,159 @@ def to_spec_data(
             "tabulated there, with its adjustment factors applied.",
             "Tower head assembled from its parts: " + breakdown + ".",
             "Precone and shaft tilt are neglected in the head inertia"
-            + (
-                "; the tower stands on its floating platform (ElastoDyn's platform DOFs)."
-                if floater is not None
-                else "; the tower stands on its SubDyn monopile (ElastoDyn's platform DOFs are "
-                "the transition piece's motion on it)."
-                if tower_block
-                else "; the tower is clamped at its base (ElastoDyn's platform and foundation "
-                "are not read)."
-            ),
+            + _standing(floater is not None, bool(tw.block)),
             *bl.notes,
-            *support_notes,
+            *tw.notes,
             operating.note,
-            files,
+            _files_read(main, [d.path for d in (fst, main, servo) if d is not None], aero),
         ],
     }
     warnings = list(operating.warnings) + (aero[3] if aero else [])
-    warnings += bl.warnings + support_warnings
-    if below is not None and not tower_block:
-        warnings.append(_clamped_warning(below, pile, ed_base))
+    warnings += bl.warnings + tw.warnings
+    if below is not None and not tw.block:
+        warnings.append(_clamped_warning(below, tw.pile, tw.base))
     if warnings:
         data["warnings"] = warnings
-    if torsion is not None:
-        data["assumptions"].append(torsion[2])
+    if tw.torsion is not None:
+        data["assumptions"].append(tw.torsion[2])
     if aero is not None:
         _add_aerodynamics(data, aero, operating, q)
     return data
+
+
+def _refuse_marine(fst: Deck | None) -> None:
+    """A marine hydrokinetic turbine is refused: the water's loads are not modelled."""
+    if fst is not None and fst.num("MHK", default=0) > 0:
+        raise SpecError(
+            f"a marine hydrokinetic (tidal) turbine (MHK = {fst.num('MHK'):g}): wtvib audits "
+            "wind turbines — the water's loads and buoyancy on the tower and rotor are not "
+            "modelled",
+            line=fst.values["MHK"][1],
+            source=str(fst.path),
+        )
+
+
+def _floater(
+    main: Deck, fst: Deck | None, below: tuple[str, bool] | None, clamped_base: bool
+) -> tuple[dict[str, Any], list[str]] | None:
+    """A floating deck set's platform block and notes (HydroDyn, WAMIT, moorings), unless
+    the tower is read clamped at its base; a floater wtvib cannot model is refused."""
+    if below is None or not below[1] or clamped_base:
+        return None
+    from .hydrodyn import platform as floating_platform
+
+    found = floating_platform(main, fst) if fst is not None else "no .fst names its modules"
+    if isinstance(found, str):
+        raise refusal(below[0], found, str(main.path))
+    return found
+
+
+@dataclass
+class _TowerOnSupport:
+    """The tower as audited: its tables (``heights`` from its base — on a monopile, from
+    the pile's reaction joint up), its height, the spec's foundation block (empty where
+    the tower is clamped at its base), and what the support adds to the notes and
+    warnings."""
+
+    heights: np.ndarray
+    mass: np.ndarray
+    ei_fa: np.ndarray
+    ei_ss: np.ndarray
+    torsion: tuple[np.ndarray, np.ndarray, str] | None
+    height: float
+    block: dict[str, Any]
+    notes: list[str]
+    warnings: list[str]
+    pile: Any  # the Monopile read, or why there is none
+    base: float  # ElastoDyn's TowerBsHt [m]
+
+
+def _tower_on_support(
+    main: Deck,
+    fst: Deck | None,
+    below: tuple[str, bool] | None,
+    floater: tuple[dict[str, Any], list[str]] | None,
+    tower_file: Deck,
+    tower_height: float,
+    yaw: bool,
+) -> _TowerOnSupport:
+    """The tower file's tables on what the tower stands on: SubDyn's monopile, a floating
+    platform, or a clamped base."""
+    frac, mass, ei_fa, ei_ss, torsion = _tower_tables(tower_file, yaw)
+    ed_base = main.num("TowerBsHt", default=0.0)
+    heights = frac * tower_height
+    pile = _monopile(main, fst, below)
+    notes: list[str] = []
+    warnings: list[str] = []
+    block: dict[str, Any] = {}
+    if isinstance(pile, Monopile):
+        heights, mass, ei_fa, ei_ss, torsion, block = _on_pile(
+            pile, fst, ed_base, heights, mass, ei_fa, ei_ss, torsion
+        )
+        tower_height = heights[-1]
+        notes, warnings = pile.notes, pile.warnings
+    if floater is not None:
+        block = {"foundation": {"kind": "platform", "platform": floater[0]}}
+        notes = floater[1]
+    return _TowerOnSupport(
+        heights, mass, ei_fa, ei_ss, torsion, tower_height, block, notes, warnings, pile, ed_base
+    )
+
+
+def _tower_section(tw: _TowerOnSupport, tower_file: Deck, floating: bool, q: Any) -> dict[str, Any]:
+    """The spec's tower block."""
+    return {
+        "height_m": q(
+            tw.height,
+            "TowerHt − the SubDyn reaction joint's z"
+            if tw.block and not floating
+            else "TowerHt − TowerBsHt",
+            "derived",
+        ),
+        "damping_ratio": main_damping(tower_file, "TwrFADmp(1)"),
+        **tw.block,
+        "distributed": _distributed(tw.heights, tw.mass, tw.ei_fa, tw.ei_ss, tw.torsion),
+    }
+
+
+def _blade_section(
+    main: Deck, bl: "_BladeTable", length: float, hub_r: float, q: Any
+) -> dict[str, Any]:
+    """The spec's blade block; a tip brake's mass on the blade model too, not only in the
+    head's mass."""
+    structure: dict[str, Any] = {"hub_radius_m": hub_r, **bl.structure}
+    tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
+    if tip_mass > 0:
+        structure["tip_mass_kg"] = tip_mass
+    return {
+        "length_m": q(length, "TipRad − HubRad", "derived"),
+        "mass_kg": q(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
+        "damping_ratio": bl.damping,
+        "structure": structure,
+    }
+
+
+def _standing(floating: bool, on_pile: bool) -> str:
+    """The end of the assumption that says what the tower stands on."""
+    if floating:
+        return "; the tower stands on its floating platform (ElastoDyn's platform DOFs)."
+    if on_pile:
+        return (
+            "; the tower stands on its SubDyn monopile (ElastoDyn's platform DOFs are "
+            "the transition piece's motion on it)."
+        )
+    return "; the tower is clamped at its base (ElastoDyn's platform and foundation are not read)."
+
+
+def _files_read(main: Deck, read: list[Path], aero: Any) -> str:
+    """The assumption that lists the files read (beside the main deck: by name)."""
+    return (
+        "Files read: "
+        + ", ".join(str(p) if p.parent != main.path.parent else p.name for p in dict.fromkeys(read))
+        + " (and the tower and blade files the deck names"
+        + (f"; AeroDyn: {', '.join(aero[1])}" if aero else "")
+        + ")."
+    )
 
 
 def _tower_tables(tower: Deck, yaw: bool) -> tuple[Any, Any, Any, Any, Any]:
