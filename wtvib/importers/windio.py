@@ -83,40 +83,12 @@ def _to_spec_data(
     (:mod:`.windio_platform`); with ``clamped_base`` the tower is audited as if clamped at its
     base instead, and the report says so in its headline.
     """
-    doc = parse_plain(text, str(path))
-    d = _paths(doc.data, (), str(path))
-    if not isinstance(d, dict) or "components" not in d:
-        raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
+    d, v2, version, notes = _document(path, text, clamped_base)
     floating = [c for c in FLOATING if c in d["components"]]
-    if floating == ["mooring"] and not clamped_base:
-        raise refusal(
-            "components.mooring",
-            "the file has moorings but no components.floating_platform",
-            str(path),
-            path="components.mooring",
-        )
-    v2 = "outer_shape" in d["components"].get("tower", {})
-    version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
-    notes = [f"Imported from the {version} file {path.name}."]
-    if v2:  # the windIO schema first, then what wtvib needs
-        notes.append(_schema_checked(d, text, path))
-    if doc.redefined_anchors:
-        notes.append(
-            "The file defines the YAML anchor(s) "
-            + ", ".join(repr(a) for a in doc.redefined_anchors)
-            + " twice; as YAML 1.2 allows, each alias uses the latest definition (PyYAML's "
-            "safe_load would refuse the file)."
-        )
     reader = _Reader(d, path, v2)
     asm = d.get("assembly", {})
     blades = _blade_count(asm, path)
-    if rpm is None:
-        found_speed, speed_note = reader.speed()
-        notes.append(speed_note)
-        where = speed_note.split(":")[0].removeprefix("Operating range from ")
-        speed: dict[str, Any] = {**found_speed, "source": f"{where} of {path.name}"}
-    else:  # the command line's, which the caller sets (importers._with_speed)
-        speed = {}
+    speed = _speed(reader, rpm, path, notes)
     tower, tower_notes = reader.tower()
     if soil is not None:  # a soil profile beside the file (--soil): the pile stands on it
         tower_notes = _on_soil(reader, tower, tower_notes, soil, path)
@@ -127,7 +99,6 @@ def _to_spec_data(
     head, head_note = reader.head(blades, blade_mass, structure, head_mass)
     notes.append(head_note)
     mass_warnings = reader.mass_warnings() if head_mass is None else []
-    src = {"file": f"{path.name} ({version})"}
     warnings = (
         [
             "tower.foundation: a floating turbine audited with the tower clamped at its base "
@@ -152,7 +123,7 @@ def _to_spec_data(
             **_opt("rotor_diameter_m", asm.get("rotor_diameter")),
             **_opt("hub_height_m", asm.get("hub_height")),
         },
-        "sources": src,
+        "sources": {"file": f"{path.name} ({version})"},
         "rotor": {
             "blades": blades,
             "orientation": "downwind"
@@ -175,6 +146,68 @@ def _to_spec_data(
         if aero is not None:
             data["aerodynamics"] = aero[0]
             notes.append(aero[1])
+    _add_drivetrain(data, reader, blades, structure, notes)
+    if structure and reader.apex:
+        data["coupled"] = {**reader.apex, **reader.hub}
+    return data
+
+
+def _document(
+    path: Path, text: str, clamped_base: bool
+) -> tuple[dict[str, Any], bool, str, list[str]]:
+    """The file's data (with the paths of its values), whether it is windIO 2.x, its
+    version's name, and the first notes: what was imported, the schema's check (2.x), a
+    redefined YAML anchor. A file with moorings and no platform is refused (unless the
+    tower is read clamped at its base)."""
+    doc = parse_plain(text, str(path))
+    d = _paths(doc.data, (), str(path))
+    if not isinstance(d, dict) or "components" not in d:
+        raise SpecError("not a windIO turbine file (no 'components')", source=str(path))
+    floating = [c for c in FLOATING if c in d["components"]]
+    if floating == ["mooring"] and not clamped_base:
+        raise refusal(
+            "components.mooring",
+            "the file has moorings but no components.floating_platform",
+            str(path),
+            path="components.mooring",
+        )
+    v2 = "outer_shape" in d["components"].get("tower", {})
+    version = f"windIO {d.get('windIO_version', '2.x' if v2 else '1.x')}"
+    notes = [f"Imported from the {version} file {path.name}."]
+    if v2:  # the windIO schema first, then what wtvib needs
+        notes.append(_schema_checked(d, text, path))
+    if doc.redefined_anchors:
+        notes.append(
+            "The file defines the YAML anchor(s) "
+            + ", ".join(repr(a) for a in doc.redefined_anchors)
+            + " twice; as YAML 1.2 allows, each alias uses the latest definition (PyYAML's "
+            "safe_load would refuse the file)."
+        )
+    return d, v2, version, notes
+
+
+def _speed(
+    reader: "_Reader", rpm: tuple[float, float] | None, path: Path, notes: list[str]
+) -> dict[str, Any]:
+    """The rotor's operating range as the file gives it (said in ``notes``), or nothing
+    where the command line gives it (``rpm``: the caller sets it, importers._with_speed)."""
+    if rpm is not None:
+        return {}
+    found_speed, speed_note = reader.speed()
+    notes.append(speed_note)
+    where = speed_note.split(":")[0].removeprefix("Operating range from ")
+    return {**found_speed, "source": f"{where} of {path.name}"}
+
+
+def _add_drivetrain(
+    data: dict[str, Any],
+    reader: "_Reader",
+    blades: int,
+    structure: dict[str, Any] | None,
+    notes: list[str],
+) -> None:
+    """The drive train's gear ratio and its chain of inertias and shafts, where the file
+    gives them."""
     gear = reader.gear_ratio()
     if gear:
         data["drivetrain"] = {"gear_ratio": gear}
@@ -182,9 +215,6 @@ def _to_spec_data(
     if chain is not None:
         data["drivetrain"] = {**data.get("drivetrain", {}), **chain[0]}
         notes.append(chain[1])
-    if structure and reader.apex:
-        data["coupled"] = {**reader.apex, **reader.hub}
-    return data
 
 
 def _schema_checked(d: dict[str, Any], text: str, path: Path) -> str:

@@ -86,53 +86,9 @@ def aerodynamics(
             np.arange(len(grid)), np.linspace(0, len(grid) - 1, MAX_STATIONS).astype(int)
         )
     polars = {n: _polar(foils[n], v2, source) for n in {n for _, n in placed}}
-    out_foils: dict[str, dict[str, list[float]]] = {}
-    names: list[str] = []
-    where = np.array([p for p, _ in placed])
-    for s in grid[keep]:
-        k = int(np.clip(np.searchsorted(where, s, side="right") - 1, 0, len(placed) - 1))
-        a = placed[k][1]
-        b = placed[min(k + 1, len(placed) - 1)][1]
-        span = where[min(k + 1, len(placed) - 1)] - where[k]
-        t = float(np.clip((s - where[k]) / span, 0, 1)) if span > 0 else 0.0
-        if a == b or t < 1e-3 or t > 1 - 1e-3:
-            name = a if t <= 0.5 or a == b else b
-            if name not in out_foils:
-                al, cl, cd = polars[name]
-                out_foils[name] = _table(al, cl, cd)
-        else:
-            name = f"{a}|{b}@{t:.3f}"
-            if name not in out_foils:
-                out_foils[name] = _blend(polars[a], polars[b], t)
-        names.append(name)
-    ctl = d.get("control", {})
-    asm = d.get("assembly", {})
-    sup = ctl.get("supervisory", {})
-    # 2.1 names them at the top of control (degrees); 1.x and 2.0 in its torque, pitch and
-    # supervisory blocks — the pitch in radians in 1.x, in degrees in 2.0 (windIO's
-    # converter, converters/windIO2windIO.py, v1p0_to_v2p0.convert_controls)
-    tsr_key = "control.optimal_tsr" if "optimal_tsr" in ctl else "control.torque.tsr"
-    tsr = ctl.get("optimal_tsr", ctl.get("torque", {}).get("tsr"))
-    if "fine_pitch" in ctl:
-        fine = float(ctl["fine_pitch"])
-    else:
-        raw = float(ctl.get("pitch", {}).get("min_pitch", 0.0))
-        fine = raw if v2 else math.degrees(raw)
-    cut_in = asm.get("cut_in_wind_speed", sup.get("Vin"))
-    cut_out = asm.get("cut_out_wind_speed", sup.get("Vout"))
-    control: dict[str, Any] = {"regulation": "pitch", "fine_pitch_deg": fine}
-    table = ctl.get("min_pitch_table") if v2 else None
-    if table and len(table.get("wind_speed", [])) >= 2:
-        control["min_pitch"] = {
-            "wind_m_s": [float(v) for v in table["wind_speed"]],
-            "pitch_deg": [float(p) for p in table["min_pitch"]],
-        }
-    if tsr:
-        control["tip_speed_ratio"] = float(tsr)
-    if cut_in:
-        control["cut_in_wind_m_s"] = float(cut_in)
-    if cut_out:
-        control["cut_out_wind_m_s"] = float(cut_out)
+    names, out_foils = _station_foils(grid[keep], placed, polars)
+    control, tsr_key = _control(d, v2)
+    tsr = control.get("tip_speed_ratio")
     block: dict[str, Any] = {
         "air_density_kg_m3": float((d.get("environment") or {}).get("air_density", 1.225)),
         "stations": {
@@ -159,6 +115,71 @@ def aerodynamics(
         + "."
     )
     return block, note
+
+
+def _station_foils(
+    stations: np.ndarray,
+    placed: list[tuple[float, str]],
+    polars: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]],
+) -> tuple[list[str], dict[str, dict[str, list[float]]]]:
+    """Each station's aerofoil (span fractions ``stations``): the one named at or before
+    it, or a linear blend of the two named around it (``a|b@t``), with the tables of every
+    aerofoil and blend used."""
+    out_foils: dict[str, dict[str, list[float]]] = {}
+    names: list[str] = []
+    where = np.array([p for p, _ in placed])
+    for s in stations:
+        k = int(np.clip(np.searchsorted(where, s, side="right") - 1, 0, len(placed) - 1))
+        a = placed[k][1]
+        b = placed[min(k + 1, len(placed) - 1)][1]
+        span = where[min(k + 1, len(placed) - 1)] - where[k]
+        t = float(np.clip((s - where[k]) / span, 0, 1)) if span > 0 else 0.0
+        if a == b or t < 1e-3 or t > 1 - 1e-3:
+            name = a if t <= 0.5 or a == b else b
+            if name not in out_foils:
+                al, cl, cd = polars[name]
+                out_foils[name] = _table(al, cl, cd)
+        else:
+            name = f"{a}|{b}@{t:.3f}"
+            if name not in out_foils:
+                out_foils[name] = _blend(polars[a], polars[b], t)
+        names.append(name)
+    return names, out_foils
+
+
+def _control(d: Any, v2: bool) -> tuple[dict[str, Any], str]:
+    """The aerodynamics' control block (fine pitch, a minimum-pitch schedule, the region-2
+    tip-speed ratio, cut-in and cut-out winds) and the key the tip-speed ratio came from.
+
+    2.1 names them at the top of control (degrees); 1.x and 2.0 in its torque, pitch and
+    supervisory blocks — the pitch in radians in 1.x, in degrees in 2.0 (windIO's
+    converter, converters/windIO2windIO.py, v1p0_to_v2p0.convert_controls)."""
+    ctl = d.get("control", {})
+    asm = d.get("assembly", {})
+    sup = ctl.get("supervisory", {})
+    tsr_key = "control.optimal_tsr" if "optimal_tsr" in ctl else "control.torque.tsr"
+    tsr = ctl.get("optimal_tsr", ctl.get("torque", {}).get("tsr"))
+    if "fine_pitch" in ctl:
+        fine = float(ctl["fine_pitch"])
+    else:
+        raw = float(ctl.get("pitch", {}).get("min_pitch", 0.0))
+        fine = raw if v2 else math.degrees(raw)
+    cut_in = asm.get("cut_in_wind_speed", sup.get("Vin"))
+    cut_out = asm.get("cut_out_wind_speed", sup.get("Vout"))
+    control: dict[str, Any] = {"regulation": "pitch", "fine_pitch_deg": fine}
+    table = ctl.get("min_pitch_table") if v2 else None
+    if table and len(table.get("wind_speed", [])) >= 2:
+        control["min_pitch"] = {
+            "wind_m_s": [float(v) for v in table["wind_speed"]],
+            "pitch_deg": [float(p) for p in table["min_pitch"]],
+        }
+    if tsr:
+        control["tip_speed_ratio"] = float(tsr)
+    if cut_in:
+        control["cut_in_wind_m_s"] = float(cut_in)
+    if cut_out:
+        control["cut_out_wind_m_s"] = float(cut_out)
+    return control, tsr_key
 
 
 def _table(alpha: np.ndarray, cl: np.ndarray, cd: np.ndarray) -> dict[str, list[float]]:
