@@ -36,7 +36,7 @@ from .spec import check_section_inertia
 from .units import rpm_to_rad_s
 
 if TYPE_CHECKING:
-    from .results import Check, Mode
+    from .results import Check, Mode, Rule
     from .rules import Status
     from .spec import Spec
 
@@ -568,8 +568,18 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
             Check("blade.divergence", "blade", "info", text, div_rule),
             Check("blade.flutter", "blade", "info", text, flut_rule),
         ], []
-    margin = ae.speed_margin
-    # divergence: every typical section, then the whole blade as a cantilever
+    return [
+        _divergence(spec, results, ae.speed_margin, div_rule),
+        _flutter(results, ae.speed_margin, flut_rule),
+    ], results
+
+
+def _divergence(
+    spec: "Spec", results: "list[StationResult]", margin: float, rule: "Rule"
+) -> "Check":
+    """``blade.divergence``: every typical section, then the whole blade as a cantilever."""
+    from .results import Check
+
     div = [(r.divergence_speed / r.section_speed, r) for r in results]
     worst_ratio, worst = min(div, key=lambda t: t[0])
     factor = blade_divergence(spec)
@@ -590,67 +600,60 @@ def checks(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[list[Check], list[St
             )
             + ")"
         )
-    div_check = Check(
-        "blade.divergence",
-        "blade",
-        _status(ratio, margin),
-        text,
-        div_rule,
-        {
-            "speed_ratio": _finite(ratio),
-            "sections": [
-                {
-                    "radius_m": round(r.radius_m, 4),
-                    "section_speed_m_s": round(r.section_speed, 4),
-                    "divergence_speed_m_s": _finite(r.divergence_speed),
-                    "divergence_pressure_pa": _finite(divergence_pressure(r.section)),
-                }
-                for r in results
-            ],
-            "cantilever_load_factor": _finite(factor) if factor is not None else None,
-        },
-    )
+    numbers = {
+        "speed_ratio": _finite(ratio),
+        "sections": [
+            {
+                "radius_m": round(r.radius_m, 4),
+                "section_speed_m_s": round(r.section_speed, 4),
+                "divergence_speed_m_s": _finite(r.divergence_speed),
+                "divergence_pressure_pa": _finite(divergence_pressure(r.section)),
+            }
+            for r in results
+        ],
+        "cantilever_load_factor": _finite(factor) if factor is not None else None,
+    }
+    return Check("blade.divergence", "blade", _status(ratio, margin), text, rule, numbers)
+
+
+def _flutter(results: "list[StationResult]", margin: float, rule: "Rule") -> "Check":
+    """``blade.flutter``: the section that flutters first, relative to its own speed."""
+    from .results import Check
+
     fl = [(r.flutter.speed / r.section_speed, r) for r in results]
     f_ratio, fw = min(fl, key=lambda t: t[0])
     if math.isinf(f_ratio):
-        f_text = (
+        text = (
             f"no flutter up to 3× the highest section speed "
             f"({fw.section_speed:.4g} m/s at r = {fw.radius_m:.3g} m)"
         )
     else:
-        f_text = (
+        text = (
             f"flutter at {f_ratio:.2f}× the highest section speed (r = {fw.radius_m:.3g} m: "
             f"U_F = {fw.flutter.speed:.4g} m/s at {fw.flutter.omega / (2 * math.pi):.3g} Hz, "
             f"section speed {fw.section_speed:.4g} m/s)"
         )
-    flut_check = Check(
-        "blade.flutter",
-        "blade",
-        _status(f_ratio, margin),
-        f_text,
-        flut_rule,
-        {
-            "speed_ratio": _finite(f_ratio),
-            "sections": [
-                {
-                    "radius_m": round(r.radius_m, 4),
-                    "section_speed_m_s": round(r.section_speed, 4),
-                    "flutter_speed_m_s": _finite(r.flutter.speed),
-                    "flutter_frequency_hz": _finite(r.flutter.omega / (2 * math.pi)),
-                    "flutter_speed_k_method_m_s": _finite(r.flutter_k_speed),
-                    "mass_ratio": round(
-                        r.section.mass_kg_m
-                        / (math.pi * r.section.air_density * r.section.semichord_m**2),
-                        4,
-                    ),
-                }
-                for r in results
-            ],
-            "vg_section_radius_m": round(fw.radius_m, 4),
-            "vg_section_speed_m_s": round(fw.section_speed, 4),
-        },
-    )
-    return [div_check, flut_check], results
+    numbers = {
+        "speed_ratio": _finite(f_ratio),
+        "sections": [
+            {
+                "radius_m": round(r.radius_m, 4),
+                "section_speed_m_s": round(r.section_speed, 4),
+                "flutter_speed_m_s": _finite(r.flutter.speed),
+                "flutter_frequency_hz": _finite(r.flutter.omega / (2 * math.pi)),
+                "flutter_speed_k_method_m_s": _finite(r.flutter_k_speed),
+                "mass_ratio": round(
+                    r.section.mass_kg_m
+                    / (math.pi * r.section.air_density * r.section.semichord_m**2),
+                    4,
+                ),
+            }
+            for r in results
+        ],
+        "vg_section_radius_m": round(fw.radius_m, 4),
+        "vg_section_speed_m_s": round(fw.section_speed, 4),
+    }
+    return Check("blade.flutter", "blade", _status(f_ratio, margin), text, rule, numbers)
 
 
 def _finite(x: float) -> float | None:

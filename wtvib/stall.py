@@ -38,7 +38,7 @@ from .analysis import Analysis, Context, blade_damping, no_modes
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
-    from .results import Check, Mode, OperatingDamping
+    from .results import Check, Mode, OperatingDamping, Rule
     from .rules import Status
     from .spec import BladeAeroelastic, Spec
 
@@ -257,25 +257,13 @@ def judge(
     """``blade.stall.flap1`` and ``blade.stall.edge1``: total damping over the operating
     range — negative fails, aerodynamic damping eating into the structural damping warns."""
     from .aeroelastic import rotor_radius
-    from .results import Check, Rule
+    from .results import Check
 
-    ae = spec.blade.aeroelastic
-    if ae is None and spec.aerodynamics is None:
+    if spec.blade.aeroelastic is None and spec.aerodynamics is None:
         return [], {}
     radius = rotor_radius(spec)
     by_id = {m.id: m for m in modes}
-    if spec.aerodynamics is not None:
-        inflow = "the aerodynamics' polars at the BEM operating points (frozen induction)"
-    else:
-        assert ae is not None
-        polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
-        inflow = f"{polar}, axial induction a = {ae.axial_induction:g}"
-    rule = Rule(
-        "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
-        "is negative",
-        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), M. H. Hansen, "
-        "Wind Energy 10 (2007) 551–577; " + inflow,
-    )
+    rule = _rule(spec)
     out = []
     curves: dict[str, list[Point]] = {}
     for name in ("flap1", "edge1"):
@@ -289,80 +277,112 @@ def judge(
         else:
             curve = damping_curve(spec, mode, radius) if mode and radius else None
         if curve is None:
-            need = [
-                n
-                for n, ok in (
-                    (f"blade.modes.{name}", mode is not None),
-                    ("turbine.rotor_diameter_m", radius is not None),
-                    (
-                        "blade.aeroelastic.planform (or two sections)",
-                        radius is None
-                        or spec.aerodynamics is not None
-                        or _planform(spec, radius) is not None,
-                    ),
-                    (
-                        "blade.mass_kg or blade.structure",
-                        spec.blade.mass_kg is not None or spec.blade.structure is not None,
-                    ),
-                )
-                if not ok
-            ]
-            out.append(Check(cid, "blade", "info", "not analysed: needs " + ", ".join(need), rule))
+            need = ", ".join(_missing(spec, name, mode, radius))
+            out.append(Check(cid, "blade", "info", "not analysed: needs " + need, rule))
             continue
         curves[name] = curve
-        lowest = min(range(len(curve)), key=lambda i: curve[i].total)
-        low = curve[lowest]
-        low_aero = min(curve, key=lambda p: p.aero)
-        negative = [p for p in curve if p.total < 0]
-        where = f"{low.wind:.3g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
-        if ids is not None:
-            where += f", as {ids[lowest]} (the least damped {_KIND[name]} mode there)"
-        status: Status
-        attached = (
-            bool(negative) and ids is None and mode is not None and _attached(spec, mode, curve)
-        )
-        if negative:
-            status = "warn" if attached else "fail"
-            span = f"from {negative[0].wind:g} to {negative[-1].wind:g} m/s"
-            text = f"negative total damping ζ = {low.total:.4f} at {where}; " + (
-                f"negative {span}" if attached else f"unstable {span}"
-            )
-            if attached:
-                assert mode is not None
-                text += f" ({attached_flow_note(mode.id)})"
-        elif low_aero.aero < 0:
-            status = "warn"
-            text = (
-                f"aerodynamic damping negative (ζ_a = {low_aero.aero:.4f}); "
-                f"lowest total {low.total:.4f} at {where}"
-            )
-        else:
-            status = "pass"
-            text = f"lowest total damping ζ = {low.total:.3f} at {where}"
-        out.append(
-            Check(
-                cid,
-                "blade",
-                status,
-                text,
-                rule,
-                {
-                    "min_total_damping_ratio": round(low.total, 6),
-                    "at_wind_m_s": low.wind,
-                    "at_rpm": round(low.rpm, 4),
-                    "curve": [
-                        {
-                            "wind_m_s": p.wind,
-                            "rpm": round(p.rpm, 4),
-                            "aero_damping_ratio": round(p.aero, 6),
-                            "total_damping_ratio": round(p.total, 6),
-                        }
-                        for p in curve
-                    ],
-                },
-            )
-        )
+        out.append(_judged(spec, cid, name, curve, ids, mode, rule))
     return out, curves
+
+
+def _rule(spec: "Spec") -> "Rule":
+    """The rule the stall checks apply, with the inflow their damping is computed in."""
+    from .results import Rule
+
+    ae = spec.blade.aeroelastic
+    if spec.aerodynamics is not None:
+        inflow = "the aerodynamics' polars at the BEM operating points (frozen induction)"
+    else:
+        assert ae is not None
+        polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
+        inflow = f"{polar}, axial induction a = {ae.axial_induction:g}"
+    return Rule(
+        "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
+        "is negative",
+        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), M. H. Hansen, "
+        "Wind Energy 10 (2007) 551–577; " + inflow,
+    )
+
+
+def _missing(spec: "Spec", name: str, mode: "Mode | None", radius: float | None) -> list[str]:
+    """The spec fields a damping curve of ``blade.{name}`` needs and lacks."""
+    return [
+        n
+        for n, ok in (
+            (f"blade.modes.{name}", mode is not None),
+            ("turbine.rotor_diameter_m", radius is not None),
+            (
+                "blade.aeroelastic.planform (or two sections)",
+                radius is None
+                or spec.aerodynamics is not None
+                or _planform(spec, radius) is not None,
+            ),
+            (
+                "blade.mass_kg or blade.structure",
+                spec.blade.mass_kg is not None or spec.blade.structure is not None,
+            ),
+        )
+        if not ok
+    ]
+
+
+def _judged(
+    spec: "Spec",
+    cid: str,
+    name: str,
+    curve: list[Point],
+    ids: list[str] | None,
+    mode: "Mode | None",
+    rule: "Rule",
+) -> "Check":
+    """One stall check from its damping curve (``ids``: the coupled mode least damped at
+    each point, where the curve is the coupled model's): negative total damping fails —
+    warns where the flow is attached there (:func:`_attached`) — and negative aerodynamic
+    damping warns."""
+    from .results import Check
+
+    lowest = min(range(len(curve)), key=lambda i: curve[i].total)
+    low = curve[lowest]
+    low_aero = min(curve, key=lambda p: p.aero)
+    negative = [p for p in curve if p.total < 0]
+    where = f"{low.wind:.3g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
+    if ids is not None:
+        where += f", as {ids[lowest]} (the least damped {_KIND[name]} mode there)"
+    status: Status
+    attached = bool(negative) and ids is None and mode is not None and _attached(spec, mode, curve)
+    if negative:
+        status = "warn" if attached else "fail"
+        span = f"from {negative[0].wind:g} to {negative[-1].wind:g} m/s"
+        text = f"negative total damping ζ = {low.total:.4f} at {where}; " + (
+            f"negative {span}" if attached else f"unstable {span}"
+        )
+        if attached:
+            assert mode is not None
+            text += f" ({attached_flow_note(mode.id)})"
+    elif low_aero.aero < 0:
+        status = "warn"
+        text = (
+            f"aerodynamic damping negative (ζ_a = {low_aero.aero:.4f}); "
+            f"lowest total {low.total:.4f} at {where}"
+        )
+    else:
+        status = "pass"
+        text = f"lowest total damping ζ = {low.total:.3f} at {where}"
+    numbers = {
+        "min_total_damping_ratio": round(low.total, 6),
+        "at_wind_m_s": low.wind,
+        "at_rpm": round(low.rpm, 4),
+        "curve": [
+            {
+                "wind_m_s": p.wind,
+                "rpm": round(p.rpm, 4),
+                "aero_damping_ratio": round(p.aero, 6),
+                "total_damping_ratio": round(p.total, 6),
+            }
+            for p in curve
+        ],
+    }
+    return Check(cid, "blade", status, text, rule, numbers)
 
 
 # ---------------------------------------------------------------------------------------
