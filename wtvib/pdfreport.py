@@ -226,6 +226,23 @@ def build(
 
 
 def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
+    """One turbine's pages: who it is and the verdict, its warnings, the summary of checks,
+    a section a subsystem (modes, figures, checks), the uncertainty study, the inputs and
+    the assumptions."""
+    out = _identity(k, r) + _warnings(k, r) + _summary(k, r)
+    drawn: set[str] = set()
+    for sub, title in SUBSYSTEM_NAMES.items():
+        out += _subsystem(k, r, sub, title, pngs, drawn)
+    if r.get("uncertainty"):
+        out += _uncertainty(k, r["uncertainty"])
+    out += _inputs(k, r)
+    out += k.heading("Assumptions")
+    out += [k.p(f"• {a}", "BodyText") for a in r["assumptions"]]
+    return out
+
+
+def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
+    """The turbine's name, verdict and identity table (source, rotor, operation, rule)."""
     t, op, rule = r["turbine"], r["operation"], r["rule"]
     out: list[Any] = [
         k.KeepTogether(
@@ -268,15 +285,25 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         if key in t
     ]
     out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
-    if r["warnings"]:  # what an importer assumed, suspicious values: before any verdict
-        out.append(k.p("Warnings", "Heading2"))
-        out += [
-            k.raw(f'<font color="{STATUS_HEX["warn"]}">• {_esc(w)}</font>', "BodyText")
-            for w in r["warnings"]
-        ]
-        out.append(k.Spacer(1, 3 * k.mm))
+    return out
 
-    out += k.heading("Summary of checks")
+
+def _warnings(k: _Kit, r: dict[str, Any]) -> list[Any]:
+    """What an importer assumed, suspicious values: before any verdict."""
+    if not r["warnings"]:
+        return []
+    out: list[Any] = [k.p("Warnings", "Heading2")]
+    out += [
+        k.raw(f'<font color="{STATUS_HEX["warn"]}">• {_esc(w)}</font>', "BodyText")
+        for w in r["warnings"]
+    ]
+    out.append(k.Spacer(1, 3 * k.mm))
+    return out
+
+
+def _summary(k: _Kit, r: dict[str, Any]) -> list[Any]:
+    """Every check in one table: status, margin, DAF, finding."""
+    out = k.heading("Summary of checks")
     rows = [k.header("status", "check", "margin", "DAF", "finding")]
     rows += [
         [
@@ -289,77 +316,79 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
         for c in r["checks"]
     ]
     out.append(k.table(rows, [0.08, 0.2, 0.08, 0.07, 0.57]))
+    return out
 
-    drawn: set[str] = set()
-    for sub, title in SUBSYSTEM_NAMES.items():
-        modes = [m for m in r["modes"] if m["subsystem"] == sub]
-        if not modes and not any(c["subsystem"] == sub for c in r["checks"]):
+
+def _subsystem(
+    k: _Kit, r: dict[str, Any], sub: str, title: str, pngs: dict[str, bytes], drawn: set[str]
+) -> list[Any]:
+    """A subsystem's section: its modes, its figures (each once in the report: ``drawn``)
+    and its checks with their numbers, rules and sources — or where its modes are judged."""
+    modes = [m for m in r["modes"] if m["subsystem"] == sub]
+    if not modes and not any(c["subsystem"] == sub for c in r["checks"]):
+        return []
+    if sub == "aerodynamics" and r.get("damping") != "aeroelastic":
+        return []  # a structural audit: said in the identity table and the summary
+    if sub == "system" and r.get("results"):  # another tool's modes, not our model
+        title = f"Whole turbine: the modes as {r['results']['tool']} computed them"
+    out = k.heading(title)
+    in_op = any(m.get("damping_in_operation") for m in modes)
+    rows = [k.header("mode", "description", "f [Hz]", "ζ (lowest in op.)" if in_op else "ζ")]
+    rows += [
+        [
+            k.ident(m["id"], 0.22),
+            k.p(m["description"] + _judged_note(m)),
+            k.p(f"{m['frequency_hz']:.4g}"),
+            k.p(_num(m["damping_ratio"]) + _in_operation(m)),
+        ]
+        for m in modes
+    ]
+    if modes:
+        out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
+    if sub == "system":
+        out += _coupling(k, r["checks"])
+    for diagram in DIAGRAM_FOR[sub]:
+        if diagram not in pngs or diagram in drawn:
             continue
-        if sub == "aerodynamics" and r.get("damping") != "aeroelastic":
-            continue  # a structural audit: said in the identity table and the summary
-        if sub == "system" and r.get("results"):  # another tool's modes, not our model
-            title = f"Whole turbine: the modes as {r['results']['tool']} computed them"
-        out += k.heading(title)
-        in_op = any(m.get("damping_in_operation") for m in modes)
-        rows = [k.header("mode", "description", "f [Hz]", "ζ (lowest in op.)" if in_op else "ζ")]
-        rows += [
-            [
-                k.ident(m["id"], 0.22),
-                k.p(m["description"] + _judged_note(m)),
-                k.p(f"{m['frequency_hz']:.4g}"),
-                k.p(_num(m["damping_ratio"]) + _in_operation(m)),
-            ]
-            for m in modes
+        drawn.add(diagram)
+        out += [k.Spacer(1, 2 * k.mm), k.image(pngs[diagram], *_fitted(k, _aspect(pngs[diagram])))]
+    rows = [k.header("status", "check", "numbers", "rule and source")]
+    rows += [
+        [
+            k.status(c["status"]),
+            k.ident(c["id"], 0.2),
+            k.p(_numbers(c)),
+            k.p(_rule_text(c["rule"], r["rule"])),
         ]
-        if modes:
-            out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
-        if sub == "system":
-            out += _coupling(k, r["checks"])
-        for diagram in DIAGRAM_FOR[sub]:
-            if diagram not in pngs or diagram in drawn:
-                continue
-            drawn.add(diagram)
-            out += [
-                k.Spacer(1, 2 * k.mm),
-                k.image(pngs[diagram], *_fitted(k, _aspect(pngs[diagram]))),
-            ]
-        rows = [k.header("status", "check", "numbers", "rule and source")]
-        rows += [
-            [
-                k.status(c["status"]),
-                k.ident(c["id"], 0.2),
-                k.p(_numbers(c)),
-                k.p(_rule_text(c["rule"], rule)),
-            ]
-            for c in r["checks"]
-            if c["subsystem"] == sub
-        ]
-        if len(rows) > 1:
-            out += [k.Spacer(1, 2 * k.mm), k.table(rows, [0.08, 0.2, 0.36, 0.36])]
-        else:  # a table of no rows says nothing: say where its modes are judged
-            out.append(k.p(_judged_elsewhere(modes), "BodyText"))
+        for c in r["checks"]
+        if c["subsystem"] == sub
+    ]
+    if len(rows) > 1:
+        out += [k.Spacer(1, 2 * k.mm), k.table(rows, [0.08, 0.2, 0.36, 0.36])]
+    else:  # a table of no rows says nothing: say where its modes are judged
+        out.append(k.p(_judged_elsewhere(modes), "BodyText"))
+    return out
 
-    if r.get("uncertainty"):
-        out += _uncertainty(k, r["uncertainty"])
-    out += k.heading("Inputs and their provenance")
-    if r["inputs"]:
-        rows = [k.header("field", "value", "provenance", "source and note")]
-        rows += [
-            [
-                k.ident(path, 0.33),
-                k.raw(_for_people(q["value"])),
-                k.p(q["provenance"]),
-                k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
-            ]
-            for path, q in r["inputs"].items()
-        ]
-        out.append(k.table(rows, [0.33, 0.13, 0.15, 0.39]))
-    else:
+
+def _inputs(k: _Kit, r: dict[str, Any]) -> list[Any]:
+    """Every input value with its provenance, source and note."""
+    out = k.heading("Inputs and their provenance")
+    if not r["inputs"]:
         out.append(
             k.p("No provenance was recorded in the spec: all values are as given.", "BodyText")
         )
-    out += k.heading("Assumptions")
-    out += [k.p(f"• {a}", "BodyText") for a in r["assumptions"]]
+        return out
+    rows = [k.header("field", "value", "provenance", "source and note")]
+    rows += [
+        [
+            k.ident(path, 0.33),
+            k.raw(_for_people(q["value"])),
+            k.p(q["provenance"]),
+            k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
+        ]
+        for path, q in r["inputs"].items()
+    ]
+    out.append(k.table(rows, [0.33, 0.13, 0.15, 0.39]))
     return out
 
 
