@@ -464,7 +464,7 @@ def _single_mode(
     # the lift-weighted mean of the sections' rates (one filter stands for them all)
     rate = np.abs(lift_rate / np.where(lift != 0, lift, 1.0))
     root = unsteady.single_mode_roots(gen_mass, gen_mass * omega**2, c - lift, lift, rate)
-    lagged = np.where(np.isnan(root), 1.0, -root.real / np.abs(root))
+    lagged = np.where(np.isnan(root), 1.0, modal.damping_ratio(root))
     return np.asarray(lagged), quasi
 
 

@@ -294,6 +294,12 @@ def eigenvalue(frequency_hz: ArrayLike, damping_ratio: ArrayLike) -> NDArray[np.
     return np.asarray(w0 * (-z + 1j * np.sqrt(np.maximum(1 - z**2, 0.0))))
 
 
+def damping_ratio(lam: ArrayLike) -> Array:
+    """ζ = −Re λ/|λ| of roots λ (the inverse of :func:`eigenvalue`, with |λ|/2π)."""
+    root = np.asarray(lam)
+    return np.asarray(-root.real / np.abs(root))
+
+
 def state_roots(k: Array, m: Array, d: Array) -> NDArray[np.complex128]:
     """Eigenvalues λ of M q̈ + D q̇ + K q = 0 (any K, D; M invertible), first-order form."""
     return np.asarray(np.linalg.eigvals(state_matrix(k, m, d)))
@@ -442,7 +448,7 @@ def damped(k: Array, m: Array, d: Array) -> DampedModes:
         v = vec[:, j]
         v = v * np.exp(-1j * np.angle(v[np.argmax(np.abs(v))]))  # align the phase
         shapes[:, j] = v.real / np.max(np.abs(v.real))
-    return DampedModes(np.abs(lam) / (2 * np.pi), -lam.real / np.abs(lam), shapes, n - len(lam))
+    return DampedModes(np.abs(lam) / (2 * np.pi), damping_ratio(lam), shapes, n - len(lam))
 
 
 @dataclass(frozen=True)

@@ -378,7 +378,7 @@ def _selected(lam: NDArray[np.complex128], vec: NDArray[np.complex128], idx: Ind
         (),
         (),
         (),
-        damping_ratio=-lam.real / np.abs(lam),
+        damping_ratio=modal.damping_ratio(lam),
         span=span,
     )
 
@@ -943,4 +943,4 @@ def perturbed(
             num[j] += x[:, j].conj() @ (lag.force @ states)
     den = 2 * lam * quad(m) + quad(g)
     new = lam - num / den
-    return np.asarray(-new.real / np.abs(new))
+    return modal.damping_ratio(new)

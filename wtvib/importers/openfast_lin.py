@@ -45,7 +45,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
-from ..modal import ModalError, assign, mac, state_modes
+from ..modal import ModalError, assign, damping_ratio, mac, state_modes
 from ..multiblade import coleman
 from ..spec import read_bytes
 from ..spec.load import MAX_FILE_BYTES
@@ -766,7 +766,7 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
         first.wind,
         np.abs(lam[keep]) / (2 * math.pi),
         lam[keep].imag / (2 * math.pi),
-        -lam[keep].real / np.abs(lam[keep]),
+        damping_ratio(lam[keep]),
         names,
         tuple(r[1] for r in rows),
         tuple(r[2] for r in rows),
