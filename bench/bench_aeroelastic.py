@@ -7,6 +7,7 @@ flutter point), the k-method cross-check, and the stability-limit chart drawn wi
 Medians of 15 runs.
 """
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -24,7 +25,9 @@ def main() -> None:
     audit.run(full)  # warm imports (scipy.special for Theodorsen's function)
     with_ms = median_ms(lambda: audit.run(full))
     without_ms = median_ms(lambda: audit.run(bare))
-    section = aeroelastic.Section.nondimensional(-0.2, 0.1, 20, 6 / 25, 0.4)
+    # the textbook section (b = ω_θ = ρ = 1; a = −0.2, x_θ = 0.1, μ = 20, r² = 6/25, σ = 0.4)
+    m = 20 * math.pi
+    section = aeroelastic.Section(1.0, -0.2, 0.1, m, 6 / 25 * m, 0.4, 1.0, 1.0)
     pk_ms = median_ms(lambda: aeroelastic.flutter(section, 3.0))
     k_ms = median_ms(lambda: aeroelastic.k_method(section, np.geomspace(8.0, 0.05, 300)))
     chart_ms = median_ms(lambda: aeroelastic.stability_chart(section, 2.0), runs=5)

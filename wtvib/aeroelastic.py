@@ -61,14 +61,6 @@ class Section:
     air_density: float = 1.225
     lift_slope: float = THIN_AEROFOIL_LIFT_SLOPE
 
-    @classmethod
-    def nondimensional(
-        cls, a: float, x_theta: float, mu: float, r2: float, sigma: float
-    ) -> "Section":
-        """The textbook section: b = 1, ω_θ = 1, ρ = 1 (speeds come out as U/(bω_θ))."""
-        m = mu * math.pi
-        return cls(1.0, a, x_theta, m, r2 * m, sigma, 1.0, 1.0)
-
     @property
     def k_theta(self) -> float:
         return self.inertia_kgm * self.omega_theta**2

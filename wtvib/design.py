@@ -50,14 +50,6 @@ class Band:
         }
 
 
-def forbidden_bands(
-    lines: Sequence[Excitation], op: OperatingRange, rule: MarginRule, subsystem: str
-) -> list[Band]:
-    """Natural-frequency bands that dominant (and dwelt-at secondary) lines forbid in steady
-    operation, overlapping ones merged (named after every line: ``2P+3P``)."""
-    return _merge(line_bands(lines, op, rule, subsystem))
-
-
 def line_bands(
     lines: Sequence[Excitation], op: OperatingRange, rule: MarginRule, subsystem: str
 ) -> list[Band]:

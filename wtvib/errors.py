@@ -58,7 +58,3 @@ def _short(text: str) -> str:
 
 class OutputError(WtvibError, OSError):
     """An output file that could not be written (read-only folder, full disk, would overwrite)."""
-
-
-class WtvibWarning(UserWarning):
-    """A legal but suspicious input, or an assumption the user should know about."""

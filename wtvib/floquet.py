@@ -17,7 +17,6 @@ some of its applications", Physics Reports 470 (2009).
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -124,32 +123,6 @@ def propagate(
 def monodromy(a: StateMatrix, period: float, steps: int = 400) -> Array:
     """Φ(T) of Φ̇ = A(t)Φ over one period (see :func:`propagate`)."""
     return propagate(a, period, steps)
-
-
-@dataclass(frozen=True)
-class Floquet:
-    """Multipliers ρ, exponents λ = ln ρ / T and the period T of one analysis."""
-
-    multipliers: NDArray[np.complex128]
-    period: float
-
-    @property
-    def largest(self) -> float:
-        return float(np.max(np.abs(self.multipliers)))
-
-    @property
-    def exponents(self) -> NDArray[np.complex128]:
-        return np.log(self.multipliers.astype(complex)) / self.period
-
-    def frequencies_hz(self) -> Array:
-        """Principal frequencies |Im λ|/2π in [0, 1/(2T)]; each is ambiguous by k/T (k·Ω
-        for the rotor's period): the principal branch is reported, the ambiguity is real."""
-        return np.abs(self.exponents.imag) / (2 * math.pi)
-
-
-def stability(a: StateMatrix, period: float, steps: int = 400) -> Floquet:
-    """Floquet multipliers of ẋ = A(t)x over one period (the monodromy's eigenvalues)."""
-    return Floquet(np.linalg.eigvals(monodromy(a, period, steps)).astype(complex), period)
 
 
 def monodromy_batch(

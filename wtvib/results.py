@@ -73,10 +73,6 @@ class Shape:
     labels: tuple[str, ...] = ()
 
 
-#: Whirl of a fixed-frame rotor mode (three or more blades): how its blade motion travels.
-WHIRLS = ("backward", "collective", "forward", "cyclic", "alternating")
-
-
 @dataclass(frozen=True)
 class Whirl:
     """Whirl labels of a fixed-frame rotor mode at rotor speeds ``omega`` [rad/s] (the speeds

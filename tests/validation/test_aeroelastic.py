@@ -19,7 +19,10 @@ TEXTBOOK = {"a": -0.2, "x_theta": 0.1, "mu": 20.0, "r2": 6 / 25, "sigma": 0.4}
 
 
 def section(**change: float) -> ae.Section:
-    return ae.Section.nondimensional(**{**TEXTBOOK, **change})
+    p = {**TEXTBOOK, **change}
+    # the textbook section: b = 1, ω_θ = 1, ρ = 1 (speeds come out as U/(bω_θ)); m = μπ
+    m = p["mu"] * math.pi
+    return ae.Section(1.0, p["a"], p["x_theta"], m, p["r2"] * m, p["sigma"], 1.0, 1.0)
 
 
 def test_typical_section_divergence_closed_form() -> None:

@@ -18,6 +18,7 @@ from ..rules import STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
 from .layout import (
     FIGURE_DPI,
+    MAX_FIGURE_IN,
     SMALL_PT,
     TITLE_LINE_IN,
     fit,
@@ -29,7 +30,7 @@ from .layout import (
 
 #: The Campbell diagram's size [in]: printed at the PDF's text width (6.85 in) its 8-pt
 #: labels stay above 7 pt.
-FIGURE_IN = (7.5, 5.6)
+FIGURE_IN = (MAX_FIGURE_IN, 5.6)
 #: matplotlib's "large" title at its default 10-pt base.
 TITLE_PT = 12
 
@@ -482,7 +483,7 @@ def damping_plot(report: Report) -> "Figure | None":
         return None
     from matplotlib import colormaps
 
-    fig = Figure(figsize=(7.5, 4.9), dpi=FIGURE_DPI)
+    fig = Figure(figsize=(MAX_FIGURE_IN, 4.9), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
     cmap = colormaps["tab10" if len(modes) <= 10 else "tab20"]  # distinct hues while they last
     colours = [cmap(i % cmap.N) for i in range(len(modes))]

@@ -8,7 +8,7 @@ import numpy as np
 
 from .. import drivetrain as drivetrain_model
 from ..audit import Report
-from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, title_height
+from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -28,7 +28,7 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     found = report.result(drivetrain_model.NAME, drivetrain_model.DrivetrainResults)
     chain = found.chain if found is not None else None
     panels = len(conditions) + (chain is not None)
-    fig = Figure(figsize=(7.5, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
+    fig = Figure(figsize=(MAX_FIGURE_IN, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
     axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
     heading = fit(
         f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "

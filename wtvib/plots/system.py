@@ -5,7 +5,15 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
-from .layout import FIGURE_DPI, SMALL_PT, fit, legend_below, text_width, title_height
+from .layout import (
+    FIGURE_DPI,
+    MAX_FIGURE_IN,
+    SMALL_PT,
+    fit,
+    legend_below,
+    text_width,
+    title_height,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -35,7 +43,7 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     groups = list(dict.fromkeys(g for r in rows for g in r["energy"]))
     blade_groups = [g for g in groups if g.startswith("blade.")]
     colour = {**_GROUP_COLOUR, **dict(zip(blade_groups, _BLADE_COLOURS * 3, strict=False))}
-    fig = Figure(figsize=(7.5, 0.3 * len(rows) + 1.5), dpi=FIGURE_DPI)
+    fig = Figure(figsize=(MAX_FIGURE_IN, 0.3 * len(rows) + 1.5), dpi=FIGURE_DPI)
     ax = fig.subplots()
     y = np.arange(len(rows))[::-1]
     for g in groups:
@@ -52,7 +60,7 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     heading = fit(
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
         "where the energy is",
-        7.5 - margin + 0.3,
+        MAX_FIGURE_IN - margin + 0.3,
         10,
     )
     legend_below(
