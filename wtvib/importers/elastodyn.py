@@ -165,8 +165,7 @@ def to_spec_data(
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
     bl = _blade(main, fst, length, n_blades)
-    q = _quantity(source)
-    hub = _hub_inertia(main, hub_r, q)
+    hub = _hub_inertia(main, hub_r)
     head, breakdown = tower_head(
         main, bl.span, bl.mass, hub_r, n_blades, hub["inertia_kgm2"]["value"]
     )
@@ -179,13 +178,13 @@ def to_spec_data(
     from .aerodyn import aerodynamics
 
     aero = aerodynamics(fst, hub_r, operating.control)
-    blade = _blade_section(main, bl, length, hub_r, q)
+    blade = _blade_section(main, bl, length, hub_r)
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
             "name": path.stem.replace("_ElastoDyn", ""),
-            "rotor_diameter_m": q(2 * tip, "2 × TipRad", "derived"),
-            "hub_height_m": q(
+            "rotor_diameter_m": _value(2 * tip, "2 × TipRad", "derived"),
+            "hub_height_m": _value(
                 main.num("TowerHt") + head["hub_above_top"],
                 "TowerHt + Twr2Shft + OverHang·sin(ShftTilt)",
                 "derived",
@@ -198,12 +197,12 @@ def to_spec_data(
             "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
             "speed": _speed_block(operating.speed),
         },
-        "tower": _tower_section(tw, tower_file, floater is not None, q),
-        "tower_head": _head_block(head, q),
+        "tower": _tower_section(tw, tower_file, floater is not None),
+        "tower_head": _head_block(head),
         "blade": blade,
-        "drivetrain": {**_drivetrain_block(main, head, hub, n_blades, q), **operating.generator},
+        "drivetrain": {**_drivetrain_block(main, head, hub, n_blades), **operating.generator},
         **yaw_block,
-        "coupled": _coupled_block(main, head, q),
+        "coupled": _coupled_block(main, head),
         "assumptions": [
             f"Imported from the ElastoDyn deck {path.name}; tower and blade properties as "
             "tabulated there, with its adjustment factors applied.",
@@ -225,7 +224,7 @@ def to_spec_data(
     if tw.torsion is not None:
         data["assumptions"].append(tw.torsion[2])
     if aero is not None:
-        _add_aerodynamics(data, aero, operating, q)
+        _add_aerodynamics(data, aero, operating)
     return data
 
 
@@ -308,10 +307,10 @@ def _tower_on_support(
     )
 
 
-def _tower_section(tw: _TowerOnSupport, tower_file: Deck, floating: bool, q: Any) -> dict[str, Any]:
+def _tower_section(tw: _TowerOnSupport, tower_file: Deck, floating: bool) -> dict[str, Any]:
     """The spec's tower block."""
     return {
-        "height_m": q(
+        "height_m": _value(
             tw.height,
             "TowerHt − the SubDyn reaction joint's z"
             if tw.block and not floating
@@ -324,9 +323,7 @@ def _tower_section(tw: _TowerOnSupport, tower_file: Deck, floating: bool, q: Any
     }
 
 
-def _blade_section(
-    main: Deck, bl: "_BladeTable", length: float, hub_r: float, q: Any
-) -> dict[str, Any]:
+def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -> dict[str, Any]:
     """The spec's blade block; a tip brake's mass on the blade model too, not only in the
     head's mass."""
     structure: dict[str, Any] = {"hub_radius_m": hub_r, **bl.structure}
@@ -334,8 +331,8 @@ def _blade_section(
     if tip_mass > 0:
         structure["tip_mass_kg"] = tip_mass
     return {
-        "length_m": q(length, "TipRad − HubRad", "derived"),
-        "mass_kg": q(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
+        "length_m": _value(length, "TipRad − HubRad", "derived"),
+        "mass_kg": _value(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
         "damping_ratio": bl.damping,
         "structure": structure,
     }
@@ -400,71 +397,71 @@ def _distributed(
     return out
 
 
-def _head_block(head: dict[str, Any], q: Any) -> dict[str, Any]:
+def _head_block(head: dict[str, Any]) -> dict[str, Any]:
     """The tower head as one rigid body (:func:`tower_head`), each value with its source."""
     return {
-        "mass_kg": q(head["mass"], "NacMass + HubMass + blades + YawBrMass", "derived"),
-        "cm_downwind_m": q(head["x"], "mass-weighted over the parts", "derived"),
-        "cm_above_top_m": q(head["z"], "mass-weighted over the parts", "derived"),
-        "inertia_pitch_kgm2": q(
+        "mass_kg": _value(head["mass"], "NacMass + HubMass + blades + YawBrMass", "derived"),
+        "cm_downwind_m": _value(head["x"], "mass-weighted over the parts", "derived"),
+        "cm_above_top_m": _value(head["z"], "mass-weighted over the parts", "derived"),
+        "inertia_pitch_kgm2": _value(
             head["pitch"],
             "parts about the head CM; rotor about a "
             "diameter; nacelle a point mass in pitch (as ElastoDyn)",
             "derived",
         ),
-        "inertia_roll_kgm2": q(
+        "inertia_roll_kgm2": _value(
             head["roll"],
             "parts about the head CM; rotor polar inertia (rotor locked to the nacelle)",
             "derived",
         ),
-        "inertia_yaw_kgm2": q(
+        "inertia_yaw_kgm2": _value(
             head["yaw"], "NacYIner and rotor about a diameter, about the head CM", "derived"
         ),
     }
 
 
 def _drivetrain_block(
-    main: Deck, head: dict[str, Any], hub: dict[str, Any], n_blades: int, q: Any
+    main: Deck, head: dict[str, Any], hub: dict[str, Any], n_blades: int
 ) -> dict[str, Any]:
     """The drive train's chain — blades, hub, generator on the high-speed shaft — with
     ElastoDyn's equivalent shaft spring and damper (the blades' edgewise spring between
     blades and hub)."""
     return {
-        "gear_ratio": q(main.num("GBRatio"), "GBRatio"),
+        "gear_ratio": _value(main.num("GBRatio"), "GBRatio"),
         "chain": [
             {
                 "name": "blades",
-                "inertia_kgm2": q(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
+                "inertia_kgm2": _value(head["j_blades"], f"{n_blades} × ∫ m·r² dr", "derived"),
             },
             hub,
             {
                 "name": "generator",
-                "inertia_kgm2": q(main.num("GenIner"), "GenIner (HSS)"),
-                "speed_ratio": q(main.num("GBRatio"), "GBRatio"),
+                "inertia_kgm2": _value(main.num("GenIner"), "GenIner (HSS)"),
+                "speed_ratio": _value(main.num("GBRatio"), "GBRatio"),
             },
         ],
         "shafts": [
             {"stiffness_nm_rad": None},  # blades–hub: the blades' edgewise spring
             {
-                "stiffness_nm_rad": q(main.num("DTTorSpr"), "DTTorSpr (LSS equivalent)"),
-                "damping_nms_rad": q(main.num("DTTorDmp", default=0.0), "DTTorDmp"),
+                "stiffness_nm_rad": _value(main.num("DTTorSpr"), "DTTorSpr (LSS equivalent)"),
+                "damping_nms_rad": _value(main.num("DTTorDmp", default=0.0), "DTTorDmp"),
             },
         ],
     }
 
 
-def _coupled_block(main: Deck, head: dict[str, Any], q: Any) -> dict[str, Any]:
+def _coupled_block(main: Deck, head: dict[str, Any]) -> dict[str, Any]:
     """Where the coupled model's rotor apex sits on the tower top, and the hub's mass."""
     return {
-        "apex_downwind_m": q(
+        "apex_downwind_m": _value(
             main.num("OverHang") * math.cos(math.radians(main.num("ShftTilt", default=0.0))),
             "OverHang·cos(ShftTilt)",
             "derived",
         ),
-        "apex_above_top_m": q(
+        "apex_above_top_m": _value(
             head["hub_above_top"], "Twr2Shft + OverHang·sin(ShftTilt)", "derived"
         ),
-        "hub_mass_kg": q(main.num("HubMass"), "HubMass"),
+        "hub_mass_kg": _value(main.num("HubMass"), "HubMass"),
     }
 
 
@@ -483,14 +480,14 @@ def _clamped_warning(below: tuple[str, bool], pile: Any, base: float) -> str:
     )
 
 
-def _add_aerodynamics(data: dict[str, Any], aero: Any, operating: Any, q: Any) -> None:
+def _add_aerodynamics(data: dict[str, Any], aero: Any, operating: Any) -> None:
     """The AeroDyn block into the spec data, the controller's rated power as the turbine's,
     and what was taken from where."""
     data["aerodynamics"] = aero[0]
     control = aero[0]["control"]
     rated = control.get("rated_power_kw")
     if rated is not None:
-        data["turbine"]["rated_power_kw"] = q(
+        data["turbine"]["rated_power_kw"] = _value(
             rated, f"VS_RtPwr ({operating.controller_file})"
             if operating.controller_file else "VS_RtTq·VS_RtGnSp·GenEff (ServoDyn)",
         )  # fmt: skip
@@ -817,13 +814,13 @@ def _on_pile(
     )
 
 
-def _hub_inertia(main: Deck, hub_radius: float, q: Any) -> dict[str, Any]:
+def _hub_inertia(main: Deck, hub_radius: float) -> dict[str, Any]:
     """The hub in the drive train: HubIner; where a deck gives 0 (OpenFAST's rigid test
     turbines), a disc of HubMass and HubRad, ½·m·r², said — a chain mass of no inertia
     would leave its shafts without a mass between them."""
     given = main.num("HubIner", default=0.0)
     if given > 0:
-        return {"name": "hub", "inertia_kgm2": q(given, "HubIner")}
+        return {"name": "hub", "inertia_kgm2": _value(given, "HubIner")}
     mass = main.num("HubMass", default=0.0)
     disc = 0.5 * mass * hub_radius**2
     if disc <= 0:
@@ -838,7 +835,7 @@ def _hub_inertia(main: Deck, hub_radius: float, q: Any) -> dict[str, Any]:
         )
     return {
         "name": "hub",
-        "inertia_kgm2": q(
+        "inertia_kgm2": _value(
             disc, "HubIner = 0 in the deck: a disc of HubMass and HubRad, ½·m·r²", "representative"
         ),
     }
@@ -891,16 +888,14 @@ def _list(a: np.ndarray) -> list[float]:
     return [float(f"{v:.10g}") for v in a]
 
 
-def _quantity(source_key_text: str):  # type: ignore[no-untyped-def]
-    def q(value: float, note: str, provenance: str = "published") -> dict[str, Any]:
-        # a value computed from the deck's numbers (derived) keeps the deck's precision,
-        # six digits: TowerHt + Twr2Shft + OverHang·sin(ShftTilt) is 90.0, not 90.00000339
-        digits = 6 if provenance == "derived" else 10
-        return {
-            "value": float(f"{value:.{digits}g}"),
-            "provenance": provenance,
-            "source": "deck",
-            "note": note,
-        }
-
-    return q
+def _value(value: float, note: str, provenance: str = "published") -> dict[str, Any]:
+    """A spec quantity read from the deck (``note``: the keys it comes from)."""
+    # a value computed from the deck's numbers (derived) keeps the deck's precision,
+    # six digits: TowerHt + Twr2Shft + OverHang·sin(ShftTilt) is 90.0, not 90.00000339
+    digits = 6 if provenance == "derived" else 10
+    return {
+        "value": float(f"{value:.{digits}g}"),
+        "provenance": provenance,
+        "source": "deck",
+        "note": note,
+    }
