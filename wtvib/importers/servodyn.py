@@ -42,14 +42,13 @@ UNUSED = 9998.0
 class Operation:
     """The rotor's operation as the deck set gives it: the spec's ``rotor.speed`` block
     (None: parked and not given), where it came from, warnings; the ``aerodynamics.control``
-    entries; the drive train's generator entries; the controller inputs read."""
+    entries; the drive train's generator entries; the controller input file read."""
 
     speed: dict[str, Any] | None
     note: str
     warnings: list[str] = field(default_factory=list)
     control: dict[str, Any] = field(default_factory=dict)
     generator: dict[str, Any] = field(default_factory=dict)
-    controller: dict[str, tuple[float, int]] = field(default_factory=dict)
     controller_file: str | None = None
 
 
@@ -130,10 +129,10 @@ def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
     ratio = ctrl.get("WE_GearboxRatio", (gb, 0))[0]
     low = ctrl.get("VS_MinOMSpd")
     rated = ctrl.get("VS_RefSpd", ctrl.get("PC_RefSpd"))
-    found = Operation(None, "", control=control, controller=ctrl, controller_file=dll.name)
+    found = Operation(None, "", control=control, controller_file=dll.name)
     if low is None or rated is None:
         fallback = _initial(main, f"{dll.name} gives no VS_MinOMSpd and VS_RefSpd", control)
-        fallback.controller, fallback.controller_file = ctrl, dll.name
+        fallback.controller_file = dll.name
         return fallback
     if not (0 < low[0] < rated[0] and ratio > 0):
         raise SpecError(
