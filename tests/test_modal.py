@@ -162,6 +162,49 @@ def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> No
         modal.state_modes(np.diag([1.0, 1.0], k=1))
 
 
+def test_a_defective_complex_pair_is_refused_on_both_paths() -> None:
+    """A Jordan block of an oscillating pair — λ = ±i twice, one eigenvector each:
+    A = [[R, I], [0, R]], R = [[0, 1], [−1, 0]] — is refused by the small path (numpy's
+    vectors, their inverse: ψᵢ of norm ~10¹⁶ where ψᵢᵀ·φᵢ = 1) and by the large one
+    (LAPACK's left and right vectors, ψᵢᵀ·φᵢ ~ 10⁻¹⁶) alike; the same matrix with the
+    coupling block zero (two distinct copies of the pair: diagonalisable) is not."""
+    r = np.array([[0.0, 1.0], [-1.0, 0.0]])
+    jordan = np.block([[r, np.eye(2)], [np.zeros((2, 2)), r]])
+    plain = np.block([[r, np.zeros((2, 2))], [np.zeros((2, 2)), r]])
+    for states in (modal.LEFT_VECTORS_STATES, 1):
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(modal, "LEFT_VECTORS_STATES", states)
+            with pytest.raises(modal.ModalError, match="defective"):
+                modal.state_modes(jordan)
+            np.testing.assert_allclose(modal.state_modes(plain).roots, [1j, 1j], atol=1e-12)
+
+
+def test_a_pair_within_rounding_of_the_real_axis_keeps_both_roots_on_both_paths() -> None:
+    """Roots −1 ± 10⁻¹³·i lie within the Im λ ≥ 0 tolerance: both are listed, the second
+    with the conjugate vector — LAPACK stores the pair's vector once, as its real and
+    imaginary parts in the first root's two columns — on the large path as on the small
+    one; beside them an oscillator (λ = −0.05 ± 1.9994i) and a real root (−2)."""
+    import scipy.linalg
+
+    b = 1e-13
+    a = scipy.linalg.block_diag([[-1.0, b], [-b, -1.0]], [[0.0, 1.0], [-4.0, -0.1]], [[-2.0]])
+    a[0, 2] = a[1, 4] = 0.3  # one-way couplings: the same roots, vectors over several states
+    small = modal.state_modes(a)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(modal, "LEFT_VECTORS_STATES", 1)
+        large = modal.state_modes(a)
+    assert len(large.roots) == len(small.roots) == 4
+    i = np.lexsort((small.roots.imag, small.roots.real))
+    j = np.lexsort((large.roots.imag, large.roots.real))
+    np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
+    np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
+    mac = np.abs(np.einsum("ki,ki->i", large.vectors[:, j].conj(), small.vectors[:, i])) ** 2
+    mac /= (np.abs(large.vectors[:, j]) ** 2).sum(axis=0) * (np.abs(small.vectors[:, i]) ** 2).sum(
+        axis=0
+    )
+    np.testing.assert_allclose(mac, 1.0, rtol=1e-9)
+
+
 def test_state_modes_keep_the_real_roots_of_an_overdamped_mode():
     """Issue 40's survivor `modal` (state_modes' tolerance sign): a root with Im λ = 0 — an
     overdamped mode's, ẍ + 3ẋ + x = 0, λ = (−3 ± √5)/2 — is listed (the .lin reader names

@@ -497,8 +497,22 @@ def state_modes(a: Array) -> StateModes:
         left = np.linalg.inv(vec).T.astype(np.complex128)
     except np.linalg.LinAlgError:
         raise ModalError(DEFECTIVE) from None
+    # ψᵢᵀ·φᵢ = 1 by construction: vectors that do not span show as a huge ψᵢ instead
+    _refuse_defective(
+        np.abs(np.einsum("ki,ki->i", left, vec)),
+        np.linalg.norm(left, axis=0),
+        np.linalg.norm(vec, axis=0),
+    )
     keep = _roots_upper(lam)
     return StateModes(lam[keep], vec[:, keep], participation(vec[:, keep], left[:, keep]))
+
+
+def _refuse_defective(product: Array, size_left: Array, size_right: Array) -> None:
+    """A ModalError where a root's left and right eigenvectors are orthogonal to rounding,
+    |ψᵢᵀ·φᵢ| ≤ 10⁻¹²·|ψᵢ|·|φᵢ|: its eigenvectors do not span (a Jordan block), and the
+    participation factors of that root mean nothing."""
+    if np.any(product <= 1e-12 * size_left * size_right):
+        raise ModalError(DEFECTIVE)
 
 
 def _state_modes_both_sides(a: Array) -> StateModes:
@@ -527,7 +541,7 @@ def _state_modes_both_sides(a: Array) -> StateModes:
     right_re, right_im = vr[:, real_at], vr[:, imag_at] * sign
     left_re, left_im = vl[:, real_at], vl[:, imag_at] * -sign  # ψ = conj(u)
     del vl, vr
-    # ψᵢᵀ·φᵢ = 0 for a root whose vectors do not span (a Jordan block)
+    # ψᵢᵀ·φᵢ, 0 for a root whose vectors do not span
     product = np.hypot(
         np.einsum("ki,ki->i", left_re, right_re) - np.einsum("ki,ki->i", left_im, right_im),
         np.einsum("ki,ki->i", left_re, right_im) + np.einsum("ki,ki->i", left_im, right_re),
@@ -538,8 +552,7 @@ def _state_modes_both_sides(a: Array) -> StateModes:
     size_right = np.sqrt(
         np.einsum("ki,ki->i", right_re, right_re) + np.einsum("ki,ki->i", right_im, right_im)
     )
-    if np.any(product <= 1e-12 * size_left * size_right):
-        raise ModalError(DEFECTIVE)
+    _refuse_defective(product, size_left, size_right)
     weight = np.hypot(left_re, left_im)
     del left_re, left_im
     weight *= np.hypot(right_re, right_im)
