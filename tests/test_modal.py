@@ -136,6 +136,19 @@ def test_roots_beyond_double_precision_are_refused_not_returned():
         modal.oscillations(np.diag([1.0, 1e30]), m, d, floor=1e-3)
 
 
+def _same_modes(large: modal.StateModes, small: modal.StateModes) -> None:
+    """The two paths' roots and participation factors equal to rounding, and their right
+    eigenvectors one shape each (each to a phase of its own: MAC 1)."""
+    i = np.lexsort((small.roots.imag, small.roots.real))
+    j = np.lexsort((large.roots.imag, large.roots.real))
+    np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
+    np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
+    a, b = large.vectors[:, j], small.vectors[:, i]
+    mac = np.abs(np.einsum("ki,ki->i", a.conj(), b)) ** 2
+    mac /= (np.abs(a) ** 2).sum(axis=0) * (np.abs(b) ** 2).sum(axis=0)
+    np.testing.assert_allclose(mac, 1.0, rtol=1e-9)
+
+
 def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> None:
     """From LEFT_VECTORS_STATES states on, the left eigenvectors come from LAPACK with the
     right ones: the roots and participation factors equal the small path's (Φ⁻¹) to
@@ -148,16 +161,7 @@ def test_state_modes_large_path_matches_the_inverse_of_the_right_vectors() -> No
         large = modal.state_modes(a)
         with pytest.raises(modal.ModalError, match="defective"):
             modal.state_modes(np.diag([1.0, 1.0], k=1))
-    i = np.lexsort((small.roots.imag, small.roots.real))
-    j = np.lexsort((large.roots.imag, large.roots.real))
-    np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
-    np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
-    # the same right eigenvectors (each to a phase of its own): one shape, MAC 1
-    mac = np.abs(np.einsum("ki,ki->i", large.vectors[:, j].conj(), small.vectors[:, i])) ** 2
-    mac /= (np.abs(large.vectors[:, j]) ** 2).sum(axis=0) * (np.abs(small.vectors[:, i]) ** 2).sum(
-        axis=0
-    )
-    np.testing.assert_allclose(mac, 1.0, rtol=1e-9)
+    _same_modes(large, small)
     with pytest.raises(modal.ModalError, match="defective"):
         modal.state_modes(np.diag([1.0, 1.0], k=1))
 
@@ -194,15 +198,7 @@ def test_a_pair_within_rounding_of_the_real_axis_keeps_both_roots_on_both_paths(
         patch.setattr(modal, "LEFT_VECTORS_STATES", 1)
         large = modal.state_modes(a)
     assert len(large.roots) == len(small.roots) == 4
-    i = np.lexsort((small.roots.imag, small.roots.real))
-    j = np.lexsort((large.roots.imag, large.roots.real))
-    np.testing.assert_allclose(large.roots[j], small.roots[i], rtol=1e-12)
-    np.testing.assert_allclose(large.participation[:, j], small.participation[:, i], atol=1e-10)
-    mac = np.abs(np.einsum("ki,ki->i", large.vectors[:, j].conj(), small.vectors[:, i])) ** 2
-    mac /= (np.abs(large.vectors[:, j]) ** 2).sum(axis=0) * (np.abs(small.vectors[:, i]) ** 2).sum(
-        axis=0
-    )
-    np.testing.assert_allclose(mac, 1.0, rtol=1e-9)
+    _same_modes(large, small)
 
 
 def test_state_modes_keep_the_real_roots_of_an_overdamped_mode():
