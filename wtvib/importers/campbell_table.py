@@ -53,6 +53,33 @@ def to_spec_data(
     """The wtvib-format dictionary of a Campbell table."""
     numbered = _rows(path, text)
     first, rows = numbered[0], numbered[1:]
+    col = _columns(first, path)
+    modes: dict[str, dict[str, Any]] = {}
+    for line, row in rows:
+        if not any(c.strip() for c in row):
+            continue
+        if len(row) != len(col):
+            raise SpecError(
+                f"{len(row)} cells, the header has {len(col)}", line=line, source=str(path)
+            )
+        _add_point(modes, {name: row[i].strip() for name, i in col.items()}, line, path)
+    if not modes:
+        raise SpecError("no data rows under the header", source=str(path))
+    for name, m in modes.items():
+        _by_speed(name, m, path)
+    return results_spec(
+        path,
+        f"the Campbell table {path.name}",
+        modes,
+        blades,
+        [str(path)],
+        f"Campbell table {path.name}",
+        rpm=rpm,
+    )
+
+
+def _columns(first: tuple[int, list[str]], path: Path) -> dict[str, int]:
+    """The header's columns by name: known ones only, each once."""
     header = [c.strip().lower() for c in first[1]]
     unknown = [c for c in header if c not in REQUIRED + OPTIONAL + IGNORED]
     if unknown:
@@ -68,81 +95,71 @@ def to_spec_data(
             line=first[0],
             source=str(path),
         )
-    col = {name: header.index(name) for name in header}
-    modes: dict[str, dict[str, Any]] = {}
-    for line, row in rows:
-        if not any(c.strip() for c in row):
-            continue
-        if len(row) != len(header):
-            raise SpecError(
-                f"{len(row)} cells, the header has {len(header)}", line=line, source=str(path)
-            )
-        cell = {name: row[i].strip() for name, i in col.items()}
-        name = cell["mode"]
-        if not _ID.match(name):
-            raise SpecError(
-                f"column mode: {name!r} is not a mode id (lower-case words joined by dots, "
-                "e.g. tower.fa1, blade.flap1.backward)",
-                line=line,
-                source=str(path),
-            )
-        if name not in modes and len(modes) >= MAX_MODES:
-            raise SpecError(
-                f"more than {MAX_MODES} modes: a whole-turbine Campbell diagram has tens; "
-                "wtvib reads at most that many",
-                line=line,
-                source=str(path),
-            )
-        m = modes.setdefault(
-            name,
-            {
-                "description": cell.get("description") or name,
-                "frame": cell.get("frame") or "fixed",
-                "rpm": [],
-                "frequency_hz": [],
-                "damping_ratio": [],
-                "whirl": [],
-                "wind_m_s": [],
-            },
+    return {name: header.index(name) for name in header}
+
+
+def _add_point(
+    modes: dict[str, dict[str, Any]], cell: dict[str, str], line: int, path: Path
+) -> None:
+    """One row's point onto its mode's curve (a new mode where the id is new)."""
+    name = cell["mode"]
+    if not _ID.match(name):
+        raise SpecError(
+            f"column mode: {name!r} is not a mode id (lower-case words joined by dots, "
+            "e.g. tower.fa1, blade.flap1.backward)",
+            line=line,
+            source=str(path),
         )
-        m["rpm"].append(_number(cell["rpm"], line, "rpm", path))
-        hz = _number(cell["frequency_hz"], line, "frequency_hz", path)
-        if hz <= 0:
+    if name not in modes and len(modes) >= MAX_MODES:
+        raise SpecError(
+            f"more than {MAX_MODES} modes: a whole-turbine Campbell diagram has tens; "
+            "wtvib reads at most that many",
+            line=line,
+            source=str(path),
+        )
+    m = modes.setdefault(
+        name,
+        {
+            "description": cell.get("description") or name,
+            "frame": cell.get("frame") or "fixed",
+            "rpm": [],
+            "frequency_hz": [],
+            "damping_ratio": [],
+            "whirl": [],
+            "wind_m_s": [],
+        },
+    )
+    m["rpm"].append(_number(cell["rpm"], line, "rpm", path))
+    hz = _number(cell["frequency_hz"], line, "frequency_hz", path)
+    if hz <= 0:
+        raise SpecError(
+            f"column frequency_hz: {hz:g} Hz — a natural frequency is positive",
+            line=line,
+            source=str(path),
+        )
+    m["frequency_hz"].append(hz)
+    for opt in ("damping_ratio", "wind_m_s"):
+        value = cell.get(opt, "")
+        m[opt].append(_number(value, line, opt, path) if value else None)
+    m["whirl"].append(cell.get("whirl") or None)
+
+
+def _by_speed(name: str, m: dict[str, Any], path: Path) -> None:
+    """A mode's points in order of speed; an optional column given at every point of the
+    mode or at none (dropped)."""
+    order = sorted(range(len(m["rpm"])), key=lambda i: m["rpm"][i])
+    for key in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s"):
+        m[key] = [m[key][i] for i in order]
+    for key in ("damping_ratio", "whirl", "wind_m_s"):
+        given = [v is not None for v in m[key]]
+        if not any(given):
+            del m[key]
+        elif not all(given):
             raise SpecError(
-                f"column frequency_hz: {hz:g} Hz — a natural frequency is positive",
-                line=line,
+                f"column {key}: mode {name} has it at some speeds only; give it at every "
+                "point of the mode or at none",
                 source=str(path),
             )
-        m["frequency_hz"].append(hz)
-        for opt in ("damping_ratio", "wind_m_s"):
-            value = cell.get(opt, "")
-            m[opt].append(_number(value, line, opt, path) if value else None)
-        m["whirl"].append(cell.get("whirl") or None)
-    if not modes:
-        raise SpecError("no data rows under the header", source=str(path))
-    for name, m in modes.items():
-        order = sorted(range(len(m["rpm"])), key=lambda i: m["rpm"][i])
-        for key in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s"):
-            m[key] = [m[key][i] for i in order]
-        for key in ("damping_ratio", "whirl", "wind_m_s"):
-            given = [v is not None for v in m[key]]
-            if not any(given):
-                del m[key]
-            elif not all(given):
-                raise SpecError(
-                    f"column {key}: mode {name} has it at some speeds only; give it at every "
-                    "point of the mode or at none",
-                    source=str(path),
-                )
-    return results_spec(
-        path,
-        f"the Campbell table {path.name}",
-        modes,
-        blades,
-        [str(path)],
-        f"Campbell table {path.name}",
-        rpm=rpm,
-    )
 
 
 #: The longest cell (Python's csv limit).
