@@ -349,6 +349,50 @@ class Water:
     note: str
 
 
+@dataclass(frozen=True)
+class _Sea:
+    """What the water adds to a member, HydroDyn's way: density, still-water level, marine
+    growth by depth, added-mass coefficients and the member's coefficient model."""
+
+    rho: float
+    swl: float
+    growth: tuple[np.ndarray, np.ndarray, np.ndarray] | None
+    ca: Any
+    kind: int
+
+
+def _member_mass(
+    mid: Any,
+    za: float,
+    zb: float,
+    at_a: tuple[float, float],
+    at_b: tuple[float, float],
+    fill: tuple[float, float] | None,
+    sea: _Sea,
+    z_grid: np.ndarray,
+) -> np.ndarray:
+    """One member's mass per length moving with the pile on ``z_grid`` [kg/m]: added mass
+    Ca·ρ_w·π(D+2t_MG)²/4 below the still-water level, its marine growth and the water
+    filling it (``fill``: level and density) — diameter and wall (``at_a``, ``at_b``)
+    linear between its joints, zero outside them."""
+    lo, hi = sorted((za, zb))
+    inside = (z_grid >= lo) & (z_grid <= hi)
+    s = (z_grid - za) / (zb - za) if zb != za else np.zeros_like(z_grid)
+    d = at_a[0] + s * (at_b[0] - at_a[0])
+    t = at_a[1] + s * (at_b[1] - at_a[1])
+    mg_t, mg_rho = _growth(sea.growth, z_grid, sea.swl)
+    outer = d + 2 * mg_t
+    wet = z_grid <= sea.swl
+    added = sea.ca.along(sea.kind, mid, z_grid, s) * sea.rho * math.pi / 4 * outer**2 * wet
+    grown = mg_rho * math.pi / 4 * (outer**2 - d**2)
+    filled = (
+        fill[1] * math.pi / 4 * np.clip(d - 2 * t, 0, None) ** 2 * (z_grid <= fill[0])
+        if fill is not None
+        else np.zeros_like(z_grid)
+    )
+    return np.asarray(inside * (added + grown + filled))
+
+
 def water(fst: Deck, pile: Monopile) -> Water | str:
     """HydroDyn's added mass, filled-member water and marine growth along the pile, or
     why there is none (a sentence for the assumptions)."""
@@ -418,24 +462,9 @@ def water(fst: Deck, pile: Monopile) -> Water | str:
         if pa not in prop or pb not in prop:
             raise SpecError(f"member {mid} names a property set HydroDyn does not have",
                             line=members.lines[i], source=str(hd.path))  # fmt: skip
-        lo, hi = sorted((za, zb))
-        inside = (z_grid >= lo) & (z_grid <= hi)
-        s = (z_grid - za) / (zb - za) if zb != za else np.zeros_like(z_grid)
-        d = prop[pa][0] + s * (prop[pb][0] - prop[pa][0])
-        t = prop[pa][1] + s * (prop[pb][1] - prop[pa][1])
-        mg_t, mg_rho = _growth(depth_mg, z_grid, swl)
-        outer = d + 2 * mg_t
-        wet = z_grid <= swl
         kind = int(kinds[i]) if kinds is not None else 1
-        added = ca.along(kind, mid, z_grid, s) * rho * math.pi / 4 * outer**2 * wet
-        grown = mg_rho * math.pi / 4 * (outer**2 - d**2)
-        fill = fills.get(mid)
-        filled = (
-            fill[1] * math.pi / 4 * np.clip(d - 2 * t, 0, None) ** 2 * (z_grid <= fill[0])
-            if fill is not None
-            else np.zeros_like(z_grid)
-        )
-        total += inside * (added + grown + filled)
+        around = _Sea(rho, swl, depth_mg, ca, kind)
+        total += _member_mass(mid, za, zb, prop[pa], prop[pb], fills.get(mid), around, z_grid)
         used.append(mid)
     if not used:
         return f"HydroDyn ({hd.path.name}) has no strip-theory member on the pile: no added mass"
