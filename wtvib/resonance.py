@@ -163,24 +163,11 @@ def _judge(
     energy = severity[line_energy]
     if line_energy == "secondary" and not any(gap(w) < 0 for w in op.dwell):
         energy = _MILDER[energy]  # swept through in partial load, not dwelt at (Hau 7.5.2)
-    regime_status: dict[str, Status] = {
-        "steady": energy,
-        "quick-pass": _MILDER[energy],
-        "overspeed": _MILDER[energy],
-        "start-up": "info" if line_energy != "minor" and energy != "pass" else "pass",
-    }
     # the damping where the line meets the mode (in operation: the aerodynamics' lowest
     # at that rotor speed, structural included)
     zeta_met = mode.damping_at(at, default_damping)
     heavily_damped = zeta_met >= heavy_damping
-    if heavily_damped:
-        # no resonant peak to speak of: report, do not judge (see AuditSettings)
-        regime_status = {k: ("info" if v != "pass" else v) for k, v in regime_status.items()}
-    if mode.status_cap is not None:  # damping beyond the model: at most the cap
-        cap = STATUS_ORDER[mode.status_cap]
-        regime_status = {
-            k: (mode.status_cap if STATUS_ORDER[v] > cap else v) for k, v in regime_status.items()
-        }
+    regime_status = _regime_statuses(energy, line_energy, heavily_damped, mode.status_cap)
     hit = [name for name in regime_status if violations[name]]
     status = worst([regime_status[name] for name in hit])
     # The governing regime: the first (most steady) one whose status is the worst.
@@ -219,6 +206,28 @@ def _judge(
             for c in crossings
         ),
     )
+
+
+def _regime_statuses(
+    energy: Status, line_energy: str, heavily_damped: bool, cap: Status | None
+) -> dict[str, Status]:
+    """The status a violation in each regime gets: the line's own (``energy``) in steady
+    operation, one milder where the speed is passed quickly or only in overspeed, info at
+    start-up; info only where the mode is heavily damped (no resonant peak to speak of:
+    report, do not judge — see AuditSettings); at most ``cap`` where the mode's damping is
+    beyond its model."""
+    status: dict[str, Status] = {
+        "steady": energy,
+        "quick-pass": _MILDER[energy],
+        "overspeed": _MILDER[energy],
+        "start-up": "info" if line_energy != "minor" and energy != "pass" else "pass",
+    }
+    if heavily_damped:
+        status = {k: ("info" if v != "pass" else v) for k, v in status.items()}
+    if cap is not None:
+        most = STATUS_ORDER[cap]
+        status = {k: (cap if STATUS_ORDER[v] > most else v) for k, v in status.items()}
+    return status
 
 
 @dataclass(frozen=True)
