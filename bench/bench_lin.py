@@ -127,6 +127,7 @@ def main() -> None:
     ap.add_argument("--states", type=int, default=2900)
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--azimuths", type=int, default=4, help="files of the grown set (≥ 3)")
+    ap.add_argument("--floor", action="store_true", help="time the floor too (see floor())")
     ap.add_argument("--before", type=Path, help="a checkout to compare, run alternately")
     args = ap.parse_args()
     print(machine() + "; OPENBLAS_NUM_THREADS=1 on both sides; WTVIB_MAX_BYTES=4e9")
@@ -156,6 +157,8 @@ def main() -> None:
                     seconds, megabytes = run(folder, tree, reports[label])
                     times[label].append(seconds)
                     memory[label].append(megabytes)
+            if folder == big and args.floor:
+                print(floor(big))
             for label in trees:
                 t = times[label]
                 print(
@@ -164,6 +167,45 @@ def main() -> None:
                     f"peak {max(memory[label]):,.0f} MB; "
                     f"modes {_modes(reports[label])}"
                 )
+
+
+FLOOR = """
+import re, sys, time
+from pathlib import Path
+import numpy as np
+from scipy.linalg import lapack
+from wtvib.importers import openfast_lin as ol
+paths = sorted(Path(sys.argv[1]).glob("*.lin"))
+t = time.perf_counter()
+raw = [p.read_bytes() for p in paths]
+read = time.perf_counter() - t
+t = time.perf_counter()
+for text in raw:
+    start = re.search(rb"^[ \\t]*A:", text, re.MULTILINE).end()
+    np.fromstring(text[text.index(b"\\n", start) + 1 :], sep=" ")
+parse = time.perf_counter() - t
+files = [ol.read(p) for p in paths]
+lay = ol.layout(files[0].states, files[0].path, files[0].rotor_speed, files[0].a)
+a = ol.mbc_average(files, lay)
+lwork = int(lapack.dgeev_lwork(len(a), compute_vl=1, compute_vr=1)[0])
+t = time.perf_counter()
+lapack.dgeev(a, compute_vl=1, compute_vr=1, lwork=lwork)
+solve = time.perf_counter() - t
+print(f"floor in this phase: the files' bytes {read:.1f} s, numpy's parse of A {parse:.1f} s, "
+      f"LAPACK dgeev with both vector sets {solve:.1f} s: {read + parse + solve:.1f} s")
+"""
+
+
+def floor(folder: Path) -> str:
+    """What no reader of these files avoids, timed in this phase of the machine: their
+    bytes, numpy's C parser over A, and LAPACK's dense two-sided eigen-solution of the
+    averaged A."""
+    env = {**ENV, "PYTHONPATH": str(ROOT), "WTVIB_MAX_BYTES": str(4 * 10**9)}
+    done = subprocess.run(
+        [sys.executable, "-c", FLOOR, str(folder)],
+        env=env, capture_output=True, text=True, cwd=folder, check=False,
+    )  # fmt: skip
+    return done.stdout.strip() or done.stderr.strip()[-500:]
 
 
 def _modes(report: Path) -> str:
