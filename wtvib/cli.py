@@ -992,4 +992,23 @@ def schema(
 
 def main() -> None:
     """Console entry point."""
+    _reuse_freed_memory()
     app()
+
+
+def _reuse_freed_memory() -> None:
+    """Ask glibc's allocator to serve large blocks from its heap and to keep freed ones for
+    the next (``mallopt``: M_MMAP_THRESHOLD 1 GiB, M_TRIM_THRESHOLD 2 GiB) instead of mapping
+    fresh pages for each block over 32 MB and unmapping it when freed. A full-system
+    linearisation's check allocates dozens of 30–70 MB arrays one after another; where a
+    fresh page is dear (the benchmark machine: ~4 ms a megabyte) that was 3 s of 24
+    (bench/RESULTS.md). The command's process only — wtvib used as a library leaves the
+    allocator alone — and nothing where the C library is not glibc."""
+    import ctypes
+
+    try:
+        mallopt = ctypes.CDLL(None).mallopt
+    except (OSError, AttributeError):
+        return
+    mallopt(-3, 1 << 30)  # M_MMAP_THRESHOLD
+    mallopt(-1, (1 << 31) - 1)  # M_TRIM_THRESHOLD (a C int)
