@@ -175,15 +175,18 @@ from pathlib import Path
 import numpy as np
 from scipy.linalg import lapack
 from wtvib.importers import openfast_lin as ol
+from wtvib.cli import _reuse_freed_memory
+_reuse_freed_memory()  # as the command does
 paths = sorted(Path(sys.argv[1]).glob("*.lin"))
-t = time.perf_counter()
-raw = [p.read_bytes() for p in paths]
-read = time.perf_counter() - t
-t = time.perf_counter()
-for text in raw:
+read = parse = 0.0
+for p in paths:  # one file at a time, as the reader
+    t = time.perf_counter()
+    text = p.read_bytes()
+    read += time.perf_counter() - t
+    t = time.perf_counter()
     start = re.search(rb"^[ \\t]*A:", text, re.MULTILINE).end()
     np.fromstring(text[text.index(b"\\n", start) + 1 :], sep=" ")
-parse = time.perf_counter() - t
+    parse += time.perf_counter() - t
 files = [ol.read(p) for p in paths]
 lay = ol.layout(files[0].states, files[0].path, files[0].rotor_speed, files[0].a)
 a = ol.mbc_average(files, lay)
@@ -197,9 +200,9 @@ print(f"floor in this phase: the files' bytes {read:.1f} s, numpy's parse of A {
 
 
 def floor(folder: Path) -> str:
-    """What no reader of these files avoids, timed in this phase of the machine: their
-    bytes, numpy's C parser over A, and LAPACK's dense two-sided eigen-solution of the
-    averaged A."""
+    """What no reader of these files avoids, timed in this phase of the machine and with
+    the command's allocator settings: their bytes, numpy's C parser over A, and LAPACK's
+    dense two-sided eigen-solution of the averaged A."""
     env = {**ENV, "PYTHONPATH": str(ROOT), "WTVIB_MAX_BYTES": str(4 * 10**9)}
     done = subprocess.run(
         [sys.executable, "-c", FLOOR, str(folder)],
