@@ -1,6 +1,7 @@
 """Benchmarks of issue 7: CLI start-up, catalogue batch, results-only throughput.
 
-Run: ``.venv/bin/python bench/bench_batch.py`` (from the repository root). Prints medians
+Run: ``.venv/bin/python bench/bench_batch.py [--scaling]`` (from the repository root;
+``--scaling``: the fleet's throughput over 1 … cores processes and Dask workers). Prints medians
 over repeated runs; record the figures with the machine in bench/RESULTS.md. Not a test:
 speed is measured here, never asserted in the test suite.
 """
@@ -77,12 +78,13 @@ def main() -> None:
         dask_throughput(many, count)
 
 
-def dask_throughput(folder: Path, count: int) -> None:
-    """The same specs through ``batch --scheduler`` on a local Dask cluster (one worker
-    process per core, one thread each, started as a user would: ``dask scheduler`` and
-    ``dask worker``), against the local process pool above."""
+def dask_throughput(folder: Path, count: int, workers: int | None = None, repeat: int = 3) -> None:
+    """The same specs through ``batch --scheduler`` on a local Dask cluster (``workers``
+    worker processes, default one per core, one thread each, started as a user would:
+    ``dask scheduler`` and ``dask worker``), against the local process pool above."""
     import os
 
+    workers = workers or os.cpu_count() or 1
     dask = str(Path(sys.executable).with_name("dask"))
     if not Path(dask).exists():
         print("dask: not installed (pip install 'wtvib[distributed]'); skipped")
@@ -99,7 +101,7 @@ def dask_throughput(folder: Path, count: int) -> None:
             "worker",
             address,
             "--nworkers",
-            str(os.cpu_count() or 1),
+            str(workers),
             "--nthreads",
             "1",
             "--no-dashboard",
@@ -110,10 +112,10 @@ def dask_throughput(folder: Path, count: int) -> None:
         time.sleep(6)  # the scheduler and its workers start
         cmd = [WTVIB, "batch", str(folder), "--no-plots", "-f", "json", "--scheduler", address]
         timed(cmd, 1)  # workers import wtvib once
-        runs = timed(cmd, 3)
+        runs = timed(cmd, repeat)
         med = statistics.median(runs)
         print(
-            f"results-only batch on a local Dask cluster ({count} specs, {os.cpu_count()} "
+            f"results-only batch on a local Dask cluster ({count} specs, {workers} "
             f"worker processes): median {med:.2f} s = {count / med:.0f} turbines/s"
         )
     finally:
@@ -123,5 +125,28 @@ def dask_throughput(folder: Path, count: int) -> None:
         scheduler.wait(timeout=30)
 
 
+def scaling() -> None:
+    """Issue 42: results-only throughput of the 1,003-spec fleet over 1 … cores local
+    processes (``--jobs``) and Dask workers, one run each after the workers' warm-up."""
+    import os
+
+    with tempfile.TemporaryDirectory() as tmp:
+        many = Path(tmp) / "many"
+        many.mkdir()
+        n = len(list((ROOT / "turbines").glob("*.yaml")))
+        copies = -(-1000 // n)
+        for i in range(copies):
+            for spec in (ROOT / "turbines").glob("*.yaml"):
+                shutil.copy(spec, many / f"{spec.stem}-{i:02d}.yaml")
+        count = copies * n
+        for jobs in range(1, (os.cpu_count() or 1) + 1):
+            cmd = [WTVIB, "batch", str(many), "--no-plots", "-f", "json", "--jobs", str(jobs)]
+            (t,) = timed(cmd, 1)
+            print(f"results-only batch ({count} specs), {jobs} local process(es): {t:.1f} s "
+                  f"= {count / t:.0f} turbines/s")  # fmt: skip
+        for workers in range(1, (os.cpu_count() or 1) + 1):
+            dask_throughput(many, count, workers, repeat=1)
+
+
 if __name__ == "__main__":
-    main()
+    scaling() if "--scaling" in sys.argv else main()
