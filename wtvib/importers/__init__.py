@@ -118,11 +118,21 @@ class ReadOptions:
 
 def to_data(path: str | Path, options: ReadOptions = ReadOptions()) -> dict[str, Any]:
     """The wtvib-format dictionary of any supported file (for ``wtvib convert``)."""
-    p = Path(path)
+    return _to_data(*_opened(Path(path), options), options)
+
+
+def _opened(p: Path, options: ReadOptions) -> tuple[Path, str, str]:
+    """The file, its text (none for Campbell results, which their reader reads) and its
+    format, the options checked against that format."""
     results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
     text = "" if results_files else read_text(p)
     kind = detect(p, text)
     _check_options(p, kind, options)
+    return p, text, kind
+
+
+def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, Any]:
+    """:func:`to_data` of a file already read and told apart (:func:`_opened`)."""
     rpm = options.rpm
     if options.soil is not None and kind != "windio":
         raise SpecError(
@@ -160,23 +170,19 @@ def to_data(path: str | Path, options: ReadOptions = ReadOptions()) -> dict[str,
 
 def load(path: str | Path, options: ReadOptions = ReadOptions()) -> Spec:
     """Any supported file as a validated spec, read with ``options``."""
-    p = Path(path)
-    results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
-    text = "" if results_files else read_text(p)
-    kind = detect(p, text)
-    _check_options(p, kind, options)
+    p, text, kind = _opened(Path(path), options)
     if kind == "wtvib" and options.rpm is None and options.rated is None and options.soil is None:
         from ..spec import from_document
 
         return from_document(load_document(p, text)).fingerprinted(fingerprint(text))
-    data = to_data(p, options)
+    data = _to_data(p, text, kind, options)
     spec = from_data(data, source=str(p))
     if p.is_dir():  # a folder of results: the hash of its files' hashes, in order
         files = spec.results.files if spec.results is not None else []
         return spec.fingerprinted(
             fingerprint("\n".join(file_fingerprint(f) for f in sorted(files)))
         )
-    if results_files:  # a linearisation: its bytes hashed a megabyte at a time
+    if p.suffix.lower() == ".lin":  # a linearisation: its bytes hashed a megabyte at a time
         return spec.fingerprinted(file_fingerprint(p))
     return spec.fingerprinted(fingerprint(text))
 
