@@ -83,8 +83,7 @@ def _to_spec_data(
     (:mod:`.windio_platform`); with ``clamped_base`` the tower is audited as if clamped at its
     base instead, and the report says so in its headline.
     """
-    d, v2, version, notes = _document(path, text, clamped_base)
-    floating = [c for c in FLOATING if c in d["components"]]
+    d, floating, v2, version, notes = _document(path, text, clamped_base)
     reader = _Reader(d, path, v2)
     asm = d.get("assembly", {})
     blades = _blade_count(asm, path)
@@ -154,11 +153,11 @@ def _to_spec_data(
 
 def _document(
     path: Path, text: str, clamped_base: bool
-) -> tuple[dict[str, Any], bool, str, list[str]]:
-    """The file's data (with the paths of its values), whether it is windIO 2.x, its
-    version's name, and the first notes: what was imported, the schema's check (2.x), a
-    redefined YAML anchor. A file with moorings and no platform is refused (unless the
-    tower is read clamped at its base)."""
+) -> tuple[dict[str, Any], list[str], bool, str, list[str]]:
+    """The file's data (with the paths of its values), its floating components, whether it
+    is windIO 2.x, its version's name, and the first notes: what was imported, the schema's
+    check (2.x), a redefined YAML anchor. A file with moorings and no platform is refused
+    (unless the tower is read clamped at its base)."""
     doc = parse_plain(text, str(path))
     d = _paths(doc.data, (), str(path))
     if not isinstance(d, dict) or "components" not in d:
@@ -183,7 +182,7 @@ def _document(
             + " twice; as YAML 1.2 allows, each alias uses the latest definition (PyYAML's "
             "safe_load would refuse the file)."
         )
-    return d, v2, version, notes
+    return d, floating, v2, version, notes
 
 
 def _speed(
