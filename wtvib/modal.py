@@ -556,16 +556,20 @@ def _state_modes_both_sides(a: Array) -> StateModes:
     weight = np.hypot(left_re, left_im)
     del left_re, left_im
     weight *= np.hypot(right_re, right_im)
-    total = weight.sum(axis=0, keepdims=True)
-    weight /= np.where(total > 0, total, 1.0)
     vectors = right_re + 1j * right_im
-    return StateModes(lam[keep], vectors, weight)
+    return StateModes(lam[keep], vectors, _per_root(weight))
 
 
 def participation(vec: NDArray[np.complex128], left: NDArray[np.complex128]) -> Array:
     """Participation factors |φ_ki·ψ_ik| of the states k in the roots i, each root's summing
     to 1 (:func:`state_modes`): right eigenvectors φ as columns, left ones ψ as columns too
     (stacks: the last two axes)."""
-    weight = np.abs(vec * left)
+    return _per_root(np.abs(vec * left))
+
+
+def _per_root(weight: Array) -> Array:
+    """Participation weights |φ_ki·ψ_ik| as each root's shares, in place (states: the
+    second-last axis)."""
     total = weight.sum(axis=-2, keepdims=True)
-    return np.asarray(weight / np.where(total > 0, total, 1.0))
+    weight /= np.where(total > 0, total, 1.0)
+    return weight
