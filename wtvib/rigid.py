@@ -1,4 +1,5 @@
-"""Rigid bodies on the tower top: the nacelle as the tower head less its rotor.
+"""Rigid bodies on the tower top: the tower head assembled from its parts (the importers),
+the nacelle as the tower head less its rotor.
 
 Shared by the spec's load-time check of a ``coupled`` block (so that a mistake is one line
 naming field and file line) and the coupled model (:mod:`wtvib.coupled`), without either
@@ -13,6 +14,45 @@ from numpy.typing import NDArray
 
 from . import beam
 from .errors import SpecError
+
+
+@dataclass(frozen=True)
+class Part:
+    """A rigid part on the tower top: its mass [kg] at x downwind of the tower axis and z
+    above the top [m], and its own inertias about its centre of mass [kg·m²]."""
+
+    name: str
+    mass: float
+    x: float
+    z: float
+    pitch: float = 0.0
+    roll: float = 0.0
+    yaw: float = 0.0
+
+    def as_head(self) -> dict[str, float]:
+        """The spec's ``tower_head`` entries of this body."""
+        return {
+            "mass_kg": self.mass,
+            "cm_downwind_m": self.x,
+            "cm_above_top_m": self.z,
+            "inertia_pitch_kgm2": self.pitch,
+            "inertia_roll_kgm2": self.roll,
+            "inertia_yaw_kgm2": self.yaw,
+        }
+
+
+def assembled(parts: "list[Part]", name: str = "tower head") -> Part:
+    """The parts as one rigid body: its mass, centre of mass and its inertias there — each
+    part's own plus its mass times the square of its offset from the common centre
+    (parallel axes); an inertia a part's own negative share (a measured total less a
+    parallel-axis term) would make negative is held at zero."""
+    mass = sum(p.mass for p in parts)
+    x = sum(p.mass * p.x for p in parts) / mass
+    z = sum(p.mass * p.z for p in parts) / mass
+    pitch = sum(p.pitch + p.mass * ((p.x - x) ** 2 + (p.z - z) ** 2) for p in parts)
+    roll = sum(p.roll + p.mass * (p.z - z) ** 2 for p in parts)
+    yaw = sum(p.yaw + p.mass * (p.x - x) ** 2 for p in parts)
+    return Part(name, mass, x, z, max(pitch, 0.0), max(roll, 0.0), max(yaw, 0.0))
 
 
 class Head(Protocol):

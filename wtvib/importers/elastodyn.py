@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..rigid import rotor_points
+from ..rigid import Part, assembled, rotor_points
 from . import beamdyn
 from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
@@ -593,45 +593,46 @@ def tower_head(
     j_blades = n_blades * (points.polar() + tip * (hub_r + float(span[-1])) ** 2)
     if hub_iner is None:
         hub_iner = main.num("HubIner", default=0.0)
-    parts = [  # name, mass, x, z
-        (
+    j_polar = j_blades + hub_iner
+    nac_mass, nac_x = main.num("NacMass"), main.num("NacCMxn", default=0.0)
+    parts = [
+        # NacYIner is about the yaw axis: the nacelle's own, about its CM, less m·x²
+        Part(
             "nacelle",
-            main.num("NacMass"),
-            main.num("NacCMxn", default=0.0),
+            nac_mass,
+            nac_x,
             main.num("NacCMzn", default=0.0),
+            yaw=main.num("NacYIner", default=0.0) - nac_mass * nac_x**2,
         ),
         # at the apex, as the coupled model places it (HubCM, a few per cent of the
         # overhang, neglected — said in the breakdown)
-        ("hub", main.num("HubMass"), x_apex, z_apex),
-        (f"{n_blades} blades", n_blades * m_blade, x_apex, z_apex),
-        ("yaw bearing", main.num("YawBrMass", default=0.0), 0.0, 0.0),
+        Part("hub", main.num("HubMass"), x_apex, z_apex),
+        # the rotor's polar inertia (roll, rotor locked) and about a diameter J_p/2
+        Part(
+            f"{n_blades} blades",
+            n_blades * m_blade,
+            x_apex,
+            z_apex,
+            0.5 * j_polar,
+            j_polar,
+            0.5 * j_polar,
+        ),
+        Part("yaw bearing", main.num("YawBrMass", default=0.0), 0.0, 0.0),
     ]
-    mass = sum(p[1] for p in parts)
-    x = sum(p[1] * p[2] for p in parts) / mass
-    z = sum(p[1] * p[3] for p in parts) / mass
-    j_polar = j_blades + hub_iner
-    pitch = sum(p[1] * ((p[2] - x) ** 2 + (p[3] - z) ** 2) for p in parts) + 0.5 * j_polar
-    roll = sum(p[1] * (p[3] - z) ** 2 for p in parts) + j_polar
-    nac_yaw = main.num("NacYIner", default=0.0)
-    nac = parts[0]
-    yaw = (
-        (nac_yaw - nac[1] * nac[2] ** 2)
-        + sum(p[1] * (p[2] - x) ** 2 for p in parts)
-        + 0.5 * j_polar
-    )
+    head = assembled(parts)
     text = ", ".join(
-        f"{name} {m:,.0f} kg at x = {px:.2f} m, z = {pz:.2f} m" for name, m, px, pz in parts
+        f"{p.name} {p.mass:,.0f} kg at x = {p.x:.2f} m, z = {p.z:.2f} m" for p in parts
     )
-    text += f"; total {mass:,.0f} kg; rotor polar inertia {j_polar:,.0f} kg·m²"
+    text += f"; total {head.mass:,.0f} kg; rotor polar inertia {j_polar:,.0f} kg·m²"
     if main.num("HubCM", default=0.0):
         text += f" (the hub at the apex: HubCM {main.num('HubCM'):g} m neglected)"
     return {
-        "mass": mass,
-        "x": x,
-        "z": z,
-        "pitch": pitch,
-        "roll": roll,
-        "yaw": max(yaw, 0.0),
+        "mass": head.mass,
+        "x": head.x,
+        "z": head.z,
+        "pitch": head.pitch,
+        "roll": head.roll,
+        "yaw": head.yaw,
         "hub_above_top": z_apex,
         "j_blades": j_blades,
     }, text

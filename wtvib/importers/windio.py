@@ -22,13 +22,13 @@ refer to the reference axis: the bending and torsional stiffnesses are condensed
 """
 
 import math
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from ..errors import SpecError
+from ..rigid import Part, assembled
 from ..yamlio import format_path, parse, parse_plain
 from .floating import refusal
 
@@ -366,38 +366,6 @@ def _at(field: dict[str, Any], grid: np.ndarray) -> np.ndarray:
 MASS_DISAGREEMENT = 1.25
 
 
-@dataclass(frozen=True)
-class _Part:
-    """A tower-head part: its mass [kg] at x downwind and z above the tower top [m], and its
-    own inertias about its centre of mass [kg·m²]."""
-
-    name: str
-    mass: float
-    x: float
-    z: float
-    pitch: float = 0.0
-    roll: float = 0.0
-    yaw: float = 0.0
-
-
-def _assembled(parts: list[_Part]) -> dict[str, float]:
-    """The parts as one mass: its centre of mass and its inertias there (parallel axes)."""
-    mass = sum(p.mass for p in parts)
-    x = sum(p.mass * p.x for p in parts) / mass
-    z = sum(p.mass * p.z for p in parts) / mass
-    pitch = sum(p.pitch + p.mass * ((p.x - x) ** 2 + (p.z - z) ** 2) for p in parts)
-    roll = sum(p.roll + p.mass * (p.z - z) ** 2 for p in parts)
-    yaw = sum(p.yaw + p.mass * (p.x - x) ** 2 for p in parts)
-    return {
-        "mass_kg": mass,
-        "cm_downwind_m": x,
-        "cm_above_top_m": z,
-        "inertia_pitch_kgm2": max(pitch, 0.0),
-        "inertia_roll_kgm2": max(roll, 0.0),
-        "inertia_yaw_kgm2": max(yaw, 0.0),
-    }
-
-
 class _Reader:
     def __init__(self, d: dict[str, Any], path: Path, v2: bool) -> None:
         self.d, self.path, self.v2 = d, path, v2
@@ -720,11 +688,11 @@ class _Reader:
         if blade_mass and structure:
             j_polar = _rotor_polar(structure, blades)
             parts.append(
-                _Part(f"{blades} blades", blades * blade_mass, hub_x, hub_z,
+                Part(f"{blades} blades", blades * blade_mass, hub_x, hub_z,
                       0.5 * j_polar, j_polar, 0.5 * j_polar)
             )  # fmt: skip
         self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
-        head = _assembled(parts)
+        head = assembled(parts).as_head()
         text = (
             "Tower head assembled from its parts: "
             + ", ".join(
@@ -735,11 +703,11 @@ class _Reader:
         )
         return head, text
 
-    def _head_parts(self, hub_x: float, hub_z: float) -> "list[_Part]":
+    def _head_parts(self, hub_x: float, hub_z: float) -> "list[Part]":
         """The hub (at the hub centre), the nacelle (its inertia given about the tower top:
         moved to its own centre of mass) and the yaw bearing, where the file gives their
         masses; the nacelle is required."""
-        parts: list[_Part] = []
+        parts: list[Part] = []
         for name, comp in (
             ("hub", self.c.get("hub", {})),
             ("nacelle", self.drivetrain),
@@ -757,7 +725,7 @@ class _Reader:
                 )
             if name == "hub":
                 ii = ep.get("inertia", [0, 0, 0])
-                parts.append(_Part(name, m, hub_x, hub_z, float(ii[1]), float(ii[0]), float(ii[2])))
+                parts.append(Part(name, m, hub_x, hub_z, float(ii[1]), float(ii[0]), float(ii[2])))
                 self.hub = {"hub_mass_kg": m, "hub_inertia_kgm2": float(ii[0])}
                 continue
             loc = ep.get("location", [0.0, 0.0, 0.0])
@@ -769,9 +737,9 @@ class _Reader:
                     float(tt[0]) - m * z * z,
                     float(tt[2]) - m * x * x,
                 )
-                parts.append(_Part(name, m, x, z, *own))
+                parts.append(Part(name, m, x, z, *own))
             else:
-                parts.append(_Part(name, m, x, z))
+                parts.append(Part(name, m, x, z))
         if not any(p.name == "nacelle" for p in parts):
             raise self.fail(
                 "the file gives no nacelle/hub masses (windIO files may leave them to WISDEM, "
