@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from tests.tolerances import frequency_and_damping_bounds, root_bounds
 from wtvib import audit, importers
 from wtvib.importers import openfast_lin
 
@@ -20,9 +21,16 @@ def test_openfast_mbc3_matches_openfast_toolbox():
     at standstill: 0.312, 0.324, 0.6205 Hz)."""
     files = openfast_lin.files_of(DATA / "openfast" / "ws03.0.1.lin")["ws03.0"]
     assert len(files) == 3
-    pm, blades = openfast_lin.operating_point([openfast_lin.read(p) for p in files])
+    lins = [openfast_lin.read(p) for p in files]
+    pm, blades = openfast_lin.operating_point(lins)
     assert blades == 3
-    np.testing.assert_allclose(pm.frequency_hz[:3], [0.31402747, 0.33140717, 0.6263423], atol=1e-7)
+    # to 1e-7 Hz: the toolbox's own test values differ from this MBC3 by up to 7.6e-8 Hz
+    # (the drive-train mode: a difference of method, the same on any machine), plus what
+    # rounding may do to each root on any machine (tolerances.py: ~2e-12 Hz here)
+    lay = openfast_lin.layout(lins[0].states, lins[0].path, lins[0].rotor_speed, lins[0].a)
+    f, df, _, _ = frequency_and_damping_bounds(*root_bounds(openfast_lin.mbc_average(lins, lay)))
+    for got, want in zip(pm.frequency_hz[:3], [0.31402747, 0.33140717, 0.6263423], strict=True):
+        assert abs(got - want) <= 1e-7 + df[np.argmin(np.abs(f - want))], want
     np.testing.assert_allclose(
         100 * pm.damping_ratio[:3], [0.43860177, 6.03443072, 2.48116647], atol=5e-4
     )

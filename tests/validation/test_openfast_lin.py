@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from tests.tolerances import frequency_and_damping_bounds, half_unit, root_bounds
 from wtvib.importers import openfast_lin as ol
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "openfast_lin"
@@ -31,25 +32,23 @@ def _case(name: str, folder: Path) -> list[ol.LinFile]:
     return [ol.read(p) for p in sorted(out.glob("*.lin"))]
 
 
-def _roots(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    lam = np.linalg.eigvals(a)
-    lam = lam[lam.imag > 0]
-    return np.abs(lam) / (2 * math.pi), -lam.real / np.abs(lam)
-
-
 @pytest.mark.parametrize("case", CASES)
 def test_mbc3_gives_openfast_toolboxs_roots(case, tmp_path):
-    """Every root the reference finds is a root of wtvib's averaged multi-blade matrix, to
-    1e-7 in frequency (relative) and damping ratio: the same transformation (Bir 2008),
-    the same rotor speed (the operating point's rates of generator azimuth and drive-train
-    twist, as NREL's MBC3 takes it), the same state order.
+    """Every root the reference finds is a root of wtvib's averaged multi-blade matrix: the
+    same transformation (Bir 2008), the same rotor speed (the operating point's rates of
+    generator azimuth and drive-train twist, as NREL's MBC3 takes it), the same state order
+    — to what the arithmetic can promise on any machine: the reference's written digits
+    (half a unit in the last) plus how far rounding may move each root of this matrix (its
+    condition number on the balanced matrix, tests/tolerances.py). On most roots that is
+    1e-9–1e-8 relative; on the free-free beam's near-rigid-body roots (0.089 Hz in a matrix
+    of norm 4e10) it is 1e-2: their digits past the third are rounding, whatever the CPU.
 
     5MW_Land_BD_Linear: OpenFAST writes each BeamDyn node's three rotations under one name
     ("rotational displacement in X" thrice); openfast_toolbox pairs them across blades out
     of order (its triplet [12, 42, 70]: the third rotation of blade 1 and 2 with the first
     of blade 3) and finds 25 of the 30 triplets. wtvib pairs the k-th rotation with the
     k-th (the reference's numbers differ from its own by up to 1.5 %); with the
-    reference's pairing put in, the arithmetic agrees to the same 1e-7."""
+    reference's pairing put in, the arithmetic agrees to the same bound."""
     files = _case(case, tmp_path)
     ref = REFERENCE[case]
     lay = ol.layout(files[0].states, files[0].path, files[0].rotor_speed, files[0].a)
@@ -57,11 +56,17 @@ def test_mbc3_gives_openfast_toolboxs_roots(case, tmp_path):
         ours = lay.triplets_q
         assert ours.shape == (30, 3)  # every BeamDyn DOF of every blade, once
         lay = replace(lay, triplets_q=np.asarray(ref["triplets"], dtype=np.intp))
-    f, z = _roots(ol.mbc_average(files, lay))
+    f, df, z, dz = frequency_and_damping_bounds(*root_bounds(ol.mbc_average(files, lay)))
     for f_ref, z_ref, _ in ref["modes"]:
-        k = int(np.argmin(np.abs(f - f_ref) / f_ref + np.abs(z - z_ref)))
-        assert abs(f[k] - f_ref) <= 1e-7 * f_ref, (case, f_ref, f[k])
-        assert abs(z[k] - z_ref) <= 1e-7, (case, f_ref, z_ref, z[k])
+        # the root nearest in the metric of the bounds themselves
+        k = int(
+            np.argmin(
+                np.abs(f - f_ref) / (df + half_unit(f_ref))
+                + np.abs(z - z_ref) / (dz + half_unit(z_ref))
+            )
+        )
+        assert abs(f[k] - f_ref) <= df[k] + half_unit(f_ref), (case, f_ref, f[k], df[k])
+        assert abs(z[k] - z_ref) <= dz[k] + half_unit(z_ref), (case, f_ref, z_ref, z[k], dz[k])
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -69,17 +74,21 @@ def test_every_reference_root_is_a_mode_or_said_left_out(case, tmp_path):
     """No root is lost: each of the reference's roots is a structural mode of the report
     or among the roots it lists as left out (inflow, unsteady aerodynamics, radiation,
     rigid-body motion) — whatever their number (5MW_Land_Linear_Aero: 78 inflow roots,
-    the lowest 0.13 Hz, below every structural mode but the tower's)."""
+    the lowest 0.13 Hz, below every structural mode but the tower's) — to the rounding the
+    arithmetic allows each root (tests/tolerances.py)."""
     files = _case(case, tmp_path)
     point, _ = ol.operating_point(files)
     left = point.left_out.get("roots", np.zeros(0, complex))
     found = np.concatenate([point.frequency_hz, np.abs(left) / (2 * math.pi)])
-    # BeamDyn: the reference's own blade pairing moves its roots up to 1.5 % (above)
-    tol = 0.02 if case == "5MW_Land_BD_Linear" else 1e-6
+    lay = ol.layout(files[0].states, files[0].path, files[0].rotor_speed, files[0].a)
+    f, df, _, _ = frequency_and_damping_bounds(*root_bounds(ol.mbc_average(files, lay)))
     for f_ref, z_ref, _ in REFERENCE[case]["modes"]:
         if z_ref > 0.999:  # a real root the reference keeps for an Im λ of 1e-15: no mode
             continue
-        assert np.min(np.abs(found - f_ref)) <= tol * f_ref, (case, f_ref)
+        # BeamDyn: the reference's own blade pairing moves its roots up to 1.5 % (above)
+        rounding = df[np.argmin(np.abs(f - f_ref))] + half_unit(f_ref)
+        tol = 0.02 * f_ref if case == "5MW_Land_BD_Linear" else rounding
+        assert np.min(np.abs(found - f_ref)) <= tol, (case, f_ref, tol)
     assert len(point.names) >= 1  # every r-test case has a structural mode to judge
 
 
