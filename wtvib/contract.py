@@ -75,6 +75,10 @@ CHECK_NUMBERS: dict[str, str] = {
     "regime": "steady, start-up, overspeed or quick-pass: where the governing finding lies.",
     "energy": "The line's energy class (dominant, secondary, minor).",
     "energy_on_mode": "The energy class on the governing mode's whirl.",
+    "heavily_damped": (
+        "True where the governing resonance is told as info because the mode is heavily "
+        "damped there (no resonant peak)."
+    ),
     "crossings_rpm": "Speeds where the line crosses the mode's curve [rpm].",
     "exclude_rpm": (
         "Speed bands to exclude to clear the check: those of its modes that warn or fail "

@@ -839,6 +839,15 @@ def isolated_id(name: str, condition: str) -> str:
     return "blade." + name.split(".")[1]
 
 
+def _judged_names(spec: Spec) -> dict[str, str]:
+    """The judged modes' names (their whirl in operation) by their names at standstill
+    (the axis a cyclic pair turns the rotor about); two blades: the same names."""
+    if spec.rotor.blades < 3:
+        return {}
+    sw = rotating_sweep(spec)
+    return dict(zip(sw.path.first.names, sw.names, strict=True))
+
+
 def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     """Coupled frequencies at standstill against the isolated subsystems' (Hau §7.6).
 
@@ -856,16 +865,21 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
     by_id = {m.id: m.frequency_hz for m in isolated}
     rows: list[dict[str, Any]] = []
     pairs, _ = counterparts(spec, res.names, cond)
+    judged = _judged_names(spec)
     for j, (f, name) in enumerate(zip(res.frequency_hz, res.names, strict=True)):
         if name.startswith(PLATFORM):
             continue
         iso = pairs[name]
         f_iso = by_id.get(iso)
-        # the judged mode's own standstill value (damped |λ|, as in the modes list)
-        f = by_id.get(f"system.{name}", float(f))
+        # the judged mode's id and its own standstill value (damped |λ|, as in the modes
+        # list): a cyclic pair is named at standstill by the axis it turns the rotor about,
+        # in the report by its whirl in operation — one name per mode
+        mode_id = f"system.{judged.get(name, name)}"
+        f = by_id.get(mode_id, float(f))
         rows.append(
             {
-                "id": f"system.{name}",
+                "id": mode_id,
+                **({"standstill_shape": name} if judged.get(name, name) != name else {}),
                 "coupled_hz": round(float(f), 6),
                 "isolated_id": iso if f_iso is not None else None,
                 "isolated_hz": round(f_iso, 6) if f_iso is not None else None,

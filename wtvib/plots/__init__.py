@@ -15,6 +15,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from .. import __version__, png
+from . import headline
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -23,7 +24,9 @@ if TYPE_CHECKING:
 
 
 def png_bytes(fig: "Figure") -> bytes:
-    """The figure as an RGB PNG, tagged as written by wtvib (see :mod:`wtvib.outputs`).
+    """The figure as an RGB PNG, tagged as written by wtvib (see :mod:`wtvib.outputs`),
+    with its title and judgement as text chunks where it was stamped
+    (:func:`.headline.stamp`: ``Title``, ``wtvib:status``, ``wtvib:checks``).
 
     The pixels Agg draws, without its alpha channel (wtvib's figures are opaque: RGB is a
     tenth smaller and spares the PDF a soft mask per image), written here rather than by
@@ -41,12 +44,23 @@ def png_bytes(fig: "Figure") -> bytes:
     assert np.may_share_memory(pixels, rows)
     pixels[...] = np.asarray(canvas.buffer_rgba())[:, :, :3]
     per_metre = round(fig.dpi / 0.0254)
+    stamped = headline.stamp_of(fig)
+    meta = (
+        [
+            png.text("Title", stamped[0]),
+            png.text("wtvib:status", stamped[1].status),
+            png.text("wtvib:checks", ",".join(stamped[1].checks)),
+        ]
+        if stamped is not None
+        else []
+    )
     return b"".join(
         [
             png.SIGNATURE,
             png.chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)),
             png.chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
             png.chunk(b"tEXt", b"Software\x00" + f"wtvib {__version__}".encode("latin-1")),
+            *meta,
             png.chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)),
             png.chunk(b"IEND", b""),
         ]
@@ -68,6 +82,10 @@ def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Fi
     from .rotor import floquet_plot
     from .system import coupled_energy_plot
 
+    if report.spec.rotor.speed.parked:  # a standstill audit: no speed to draw over
+        from .campbell import standstill_plot
+
+        return {"standstill": functools.partial(standstill_plot, report)}
     # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
     # diagram of its own: the system diagram shows them where they are judged
     present = {m.subsystem for m in report.modes if m.judged}

@@ -7,6 +7,7 @@ import numpy as np
 
 from .. import aeroelastic, stall
 from ..audit import Report
+from . import headline
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, plain_decades, title_height
 
 if TYPE_CHECKING:
@@ -24,12 +25,13 @@ def flutter_plot(report: Report) -> "Figure | None":
     worst, required = found.worst, found.required_speed_m_s
     fig = Figure(figsize=(7.2, 5.1), dpi=FIGURE_DPI)
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
-    heading = fit(
+    judged = headline.of_checks(report, ("blade.flutter",), headline.STATUS_ONLY)
+    title = (
         f"{report.spec.turbine.name}\nblade flutter at r = {worst.radius_m:.3g} m, "
-        f"Theodorsen p-k ({check.status.upper()})",
-        6.0,
-        10,
+        f"Theodorsen p-k ({judged.words})"
     )
+    heading = fit(title, 6.0, 10)
+    headline.stamp(fig, title.replace("\n", " — "), judged)
     fixed_layout(fig, left=1.0, top=0.2 + title_height(heading, 10), gap=0.15)
     colours = ("#1f77b4", "#d62728")
     names = ("bending branch", "torsion branch")
@@ -93,12 +95,13 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     kilo = 1e-3
     fig = Figure(figsize=(7.2, 4.5), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    heading = fit(
+    judged = headline.of_checks(report, ("blade.divergence", "blade.flutter"), {})
+    title = (
         f"{report.spec.turbine.name}\nblade stability limits at {speed:.3g} m/s "
-        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6)",
-        6.2,
-        10,
+        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6): {judged.words}"
     )
+    heading = fit(title, 6.2, 10)
+    headline.stamp(fig, title.replace("\n", " — "), judged)
     fixed_layout(fig, left=0.85, top=0.2 + title_height(heading, 10))  # log tick labels
     flutter_k = chart.flutter_k_theta * kilo
     top = 3 * max(
@@ -175,12 +178,13 @@ def stall_damping_plot(report: Report) -> "Figure | None":
         return None
     fig = Figure(figsize=(7.2, 4.2), dpi=FIGURE_DPI)
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
-    heading = fit(
+    judged = headline.of_checks(report, tuple(c.id for c in curves.values()), {})
+    title = (
         f"{report.spec.turbine.name}\nstall-induced vibration: quasi-steady damping "
-        "(Hau ch. 7.2.3)",
-        7.0,
-        10,
+        f"(Hau ch. 7.2.3): {judged.words}"
     )
+    heading = fit(title, 7.0, 10)
+    headline.stamp(fig, title.replace("\n", " — "), judged)
     fixed_layout(fig, top=0.47 + title_height(heading, 10), gap=0.3)  # each panel's title
     colours = {"pass": "#2e7d32", "warn": "#ef6c00", "fail": "#c62828", "info": "#1565c0"}
     for ax, (name, check) in zip(axes, curves.items(), strict=True):

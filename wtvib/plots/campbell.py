@@ -13,15 +13,18 @@ import numpy as np
 from .. import aerodamping
 from .. import tower as tower_model
 from ..audit import Report
-from ..results import Sampled
-from ..rules import STATUS_ORDER
+from ..results import Mode, Sampled
+from ..rules import NEGATIVE, STATUS_ORDER
 from ..units import rad_s_to_rpm, rpm_to_rad_s
+from . import headline
+from .headline import Headline
 from .layout import (
     FIGURE_DPI,
     MAX_FIGURE_IN,
     SMALL_PT,
     TITLE_LINE_IN,
     fit,
+    fixed_layout,
     legend_below,
     plain_decades,
     text_width,
@@ -84,7 +87,10 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     right = _draw_lines(ax, findings, rpm, omega, f_top, shown)
     _draw_modes(ax, modes, report, rpm, omega, shown)
     marks = [m for m in report.marks if set(m.modes) & ids and m.hz <= f_top]
-    _draw_marks(ax, marks, rpm_top, f_top, shown)
+    spans = {m.id: computed_rpm(m) for m in covered}
+    held = [m for m in marks if _on_held_values(m, spans)]
+    _draw_marks(ax, [m for m in marks if m not in held], rpm_top, f_top, shown)
+    _draw_held_marks(ax, held, shown)
 
     ax.set_xlim(0, rpm_top)
     low = min((m.frequency_hz for m in modes), default=f_top)
@@ -98,8 +104,9 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
     ax.set_xlabel("rotor speed [rpm]")
     ax.set_ylabel("frequency [Hz]")
     ax.grid(True, alpha=0.3)
-    heading, status = _title(report, subsystems, covered, findings)
-    ax.set_title(heading, color=STATUS_COLOUR[status], fontweight="bold", y=1.0)
+    heading, plain, judged = _title(report, subsystems, covered)
+    ax.set_title(heading, color=STATUS_COLOUR[judged.status], fontweight="bold", y=1.0)
+    headline.stamp(fig, plain, judged)
     notes = []
     if hidden:
         low_hz, high_hz = (f"{g(m.frequency_hz for m in hidden):.3g}" for g in (min, max))
@@ -125,6 +132,15 @@ def campbell_plot(report: Report, subsystems: Sequence[str] = ("tower", "blade")
         )
     _legend(ax, report.rule.label, shown, title_lines=heading.count("\n") + 1, right=right)
     return fig
+
+
+def computed_rpm(mode: Mode) -> tuple[float, float] | None:
+    """The speeds [rpm] another tool computed a mode at (its first and last point), None
+    for wtvib's own modes (computed at every speed drawn)."""
+    if mode.origin != "imported" or not isinstance(mode.curve, Sampled):
+        return None
+    rpm = np.asarray(mode.curve.omega) * 30 / np.pi
+    return float(rpm.min()), float(rpm.max())
 
 
 def _top_frequency(modes, findings, blades: int, rpm_top: float, omega) -> float:  # type: ignore[no-untyped-def]
@@ -205,13 +221,20 @@ def _draw_modes(ax, modes, report: Report, rpm, omega, shown: set[str]) -> None:
         # a mode on top of one drawn before (fa1 and ss1 of a round tower) is dashed, so
         # that both stay visible
         under = any(np.allclose(f_n, g, rtol=5e-3) for g in drawn)
-        ax.plot(rpm, f_n, color=colour, lw=2.2, label=label, ls=(0, (4, 3)) if under else "-")
         drawn.append(f_n)
-        if mode.origin == "imported" and isinstance(mode.curve, Sampled):
-            # another tool's operating points: the line between and beyond them is drawn
-            # as it is judged (linear between, held beyond); the points are the data
-            pts = np.asarray(mode.curve.omega)
-            ax.plot(pts * 30 / np.pi, mode.curve.hz, "o", color=colour, ms=4, mec="white")
+        span = computed_rpm(mode)
+        if span is None:
+            ax.plot(rpm, f_n, color=colour, lw=2.2, label=label, ls=(0, (4, 3)) if under else "-")
+            continue
+        # another tool's operating points: solid where it computed (between its first and
+        # last point), thin and dotted where the audit holds its values (beyond them)
+        inside = (rpm >= span[0]) & (rpm <= span[1])
+        ax.plot(rpm, np.where(inside, np.nan, f_n), color=colour, lw=0.9, ls=":")
+        ax.plot(rpm, np.where(inside, f_n, np.nan), color=colour, lw=2.2, label=label)
+        assert isinstance(mode.curve, Sampled)
+        pts = np.asarray(mode.curve.omega)
+        ax.plot(pts * 30 / np.pi, mode.curve.hz, "o", color=colour, ms=5, mec="white")
+        shown.add("held")
     spread = (report.uncertainty or {}).get("modes", {})
     for mode in modes:
         if "p5_hz" in spread.get(mode.id, {}):  # the 5–95 % band of the sampled frequency
@@ -284,6 +307,33 @@ def _draw_marks(ax, marks, rpm_top: float, f_top: float, shown: set[str]) -> Non
         )
 
 
+def _on_held_values(mark, spans) -> bool:  # type: ignore[no-untyped-def]
+    """Whether a resonance is judged where no mode behind it was computed: another tool's
+    modes beyond their first and last points, where the audit holds their values."""
+    out = [spans.get(m) for m in mark.modes]
+    tol = 1e-6 * max(mark.rpm, 1.0)
+    return all(s is not None and not s[0] - tol <= mark.rpm <= s[1] + tol for s in out)
+
+
+def _draw_held_marks(ax, marks, shown: set[str]) -> None:  # type: ignore[no-untyped-def]
+    """The resonances judged on held values, hollow in their status's colour: where the
+    tool computed nothing, the judgement rests on the audit's assumption alone."""
+    for m in marks:
+        ax.plot(
+            m.rpm,
+            m.hz,
+            ls="",
+            marker="o",
+            ms=7,
+            mfc="white",
+            mec=STATUS_COLOUR[m.status],
+            mew=1.6,
+            zorder=5,
+        )
+    if marks:
+        shown.add("held mark")
+
+
 def _daf_label(daf: float, damping: float | None) -> str:
     """``DAF 95.4``; below 1 with the damping that explains it (ζ > 0.5 at resonance)."""
     if not np.isfinite(daf):
@@ -293,39 +343,33 @@ def _daf_label(daf: float, damping: float | None) -> str:
     return f"DAF {daf:.3g}"
 
 
-def _title(report: Report, subsystems: Sequence[str], covered, findings) -> tuple[str, str]:  # type: ignore[no-untyped-def]
-    """What the diagram shows, and its own judgement: the worst finding of the modes it
-    judges (with the line and mode behind it), or where its modes are judged instead."""
+def campbell_headline(report: Report, subsystems: Sequence[str]) -> Headline:
+    """The judgement a Campbell diagram of ``subsystems`` draws (:mod:`.headline`): the
+    resonance checks of its modes — and of the coupled modes its isolated ones are judged
+    as — and the tower's class where its classified mode is drawn."""
+    covered = [m for m in report.modes if m.subsystem in subsystems]
+    ids = {m.id for m in covered} | {m.superseded_by for m in covered if m.superseded_by}
+    found = report.result(tower_model.NAME, tower_model.TowerResults)
+    return headline.of_modes(report, ids, found.classification.mode_id if found else None)
+
+
+def _title(report: Report, subsystems: Sequence[str], covered) -> tuple[str, str, Headline]:  # type: ignore[no-untyped-def]
+    """What the diagram shows and its own judgement (:func:`campbell_headline`): in lines
+    that fit the figure, on one line (its PNG's Title), and the judgement."""
     spec = report.spec
     held = [SUBSYSTEM_TITLE[s] for s in subsystems if any(m.subsystem == s for m in covered)]
     what = " and ".join(held or [SUBSYSTEM_TITLE[s] for s in subsystems])
     if spec.results is not None and "system" in subsystems:
-        what = f"whole turbine as {spec.results.tool} computed it"
+        what = spec.results.tool
     if spec.rotor.orientation == "vertical-axis" and "tower" in subsystems:
         what = "Darrieus rotor"
-    judged = [f for f in findings if f.mode.judged]
-    tower_found = report.result(tower_model.NAME, tower_model.TowerResults)
-    tower = tower_found.classification if tower_found is not None else None
-    cls = (
-        f"; tower {tower.tower_class}"
-        if tower is not None and any(m.id == tower.mode_id for m in covered)
-        else ""
-    )
-    if judged:
-        # the worst, the least margin among equals (the first mode where both are equal)
-        worst_finding = max(judged, key=lambda f: (STATUS_ORDER[f.status], -f.margin))
-        status = worst_finding.status
-        judgement = (
-            f"{status.upper()}: {worst_finding.excitation.id} on {worst_finding.mode.id}"
-            if STATUS_ORDER[status] >= STATUS_ORDER["warn"]
-            else "PASS: no resonance in operation"
-        )
-    else:
-        status, judgement = "info", "nothing judged here"
+    judged = campbell_headline(report, subsystems)
     first = f"{spec.turbine.name} — Campbell diagram, {what}"
-    if text_width(first, TITLE_PT, bold=True) > FIGURE_IN[0] - 0.4:  # the name alone
+    width = FIGURE_IN[0] - 0.4
+    if text_width(first, TITLE_PT, bold=True) > width:  # the name on a line of its own
         first = f"{spec.turbine.name}\nCampbell diagram, {what}"
-    return f"{first}\n{judgement}{cls}", ("pass" if status == "info" and judged else status)
+    plain = f"{spec.turbine.name} — Campbell diagram, {what}: {judged.words}"
+    return fit(f"{first}\n{judged.words}", width, TITLE_PT), plain, judged
 
 
 def _palette(n: int) -> list[str]:
@@ -408,6 +452,16 @@ def _legend(  # type: ignore[no-untyped-def]
             Line2D([], [], marker="s", ls="", color="#9e9e9e", mec="black"),
             "margin violated, line and mode never meet",
         ),
+        (
+            "held",
+            Line2D([], [], color="#616161", lw=0.9, ls=":", marker="o", mec="white"),
+            "another tool's points (dotted: its values held beyond them)",
+        ),
+        (
+            "held mark",
+            Line2D([], [], marker="o", ls="", mfc="white", mec="#616161", mew=1.6),
+            "judged on a held value: no point computed there",
+        ),
         *(
             (
                 f"crossing: {status}",
@@ -470,6 +524,10 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
         )
     heading = ax.get_title().replace("Campbell diagram,", "allowed tower windows,", 1)
     ax.set_title(heading, color=ax.title.get_color(), fontweight="bold", y=1.0)
+    stamped = headline.stamp_of(fig)
+    if stamped is not None:
+        title = stamped[0].replace("Campbell diagram,", "allowed tower windows,", 1)
+        headline.stamp(fig, title, stamped[1])
     return fig
 
 
@@ -544,10 +602,77 @@ def damping_plot(report: Report) -> "Figure | None":
         if tool
         else "aerodynamic + structural; lift lagged by the shed wake, frozen induction"
     )
-    heading = fit(f"{report.spec.turbine.name} — damping in operation ({how})", 7.1)
-    ax.set_title(heading, fontweight="bold", y=1.0)
+    judged = headline.of_checks(
+        report,
+        ("aerodynamics.stability", "system.stability"),
+        {
+            "pass": "PASS: no mode negatively damped",
+            "warn": "WARN: {check}",
+            "fail": "FAIL: {check} — negatively damped in operation",
+        },
+    )
+    title = f"{report.spec.turbine.name} — damping in operation ({how}): {judged.words}"
+    heading = fit(title, 7.1)
+    ax.set_title(heading, fontweight="bold", y=1.0, color=STATUS_COLOUR[judged.status])
+    headline.stamp(fig, title, judged)
     handles, labels = ax.get_legend_handles_labels()
     legend_below(
         fig, ax, handles, labels, columns=3, fontsize=SMALL_PT, top=0.2 + title_height(heading)
     )
+    return fig
+
+
+#: The most modes a standstill chart names, lowest first (a BeamDyn beam has 48).
+STANDSTILL_MODES = 30
+
+
+def standstill_plot(report: Report) -> "Figure | None":
+    """A standstill audit's modes (another tool's parked results): each mode's frequency
+    and damping ratio, the negatively damped side shaded — what was computed, where it was
+    computed (0 rpm), and no excitation line, which a parked rotor has none of."""
+    from matplotlib.figure import Figure
+
+    if not report.spec.rotor.speed.parked:
+        return None
+    modes = sorted((m for m in report.modes if m.judged), key=lambda m: m.frequency_hz)
+    shown, rest = modes[:STANDSTILL_MODES], modes[STANDSTILL_MODES:]
+    if not shown:
+        return None
+    rows = len(shown)
+    fig = Figure(figsize=(MAX_FIGURE_IN, 1.9 + 0.22 * rows), dpi=FIGURE_DPI)
+    ax = fig.add_subplot()
+    zeta = np.array([100 * (m.damping_ratio or 0.0) for m in shown])
+    y = np.arange(rows)[::-1]
+    # negatively damped beyond rounding's sign (imported.NEGATIVE, as system.stability)
+    colours = [
+        STATUS_COLOUR["fail"] if z < -100 * NEGATIVE else STATUS_COLOUR["pass"] for z in zeta
+    ]
+    ax.scatter(zeta, y, c=colours, s=30, zorder=3, edgecolors="white")
+    names = [f"{m.id}  {m.frequency_hz:.4g} Hz" for m in shown]
+    ax.set_yticks(y, names)
+    ax.tick_params(axis="y", labelsize=SMALL_PT)
+    ax.set_xscale("symlog", linthresh=0.1)
+    plain_decades(ax.xaxis)
+    low, high = min(-0.5, float(zeta.min()) * 1.5), max(10.0, float(zeta.max()) * 1.5)
+    ax.set_xlim(low, high)
+    ax.axvspan(low, 0, color="#ffcdd2", alpha=0.6, lw=0)
+    ax.axvline(0, color="#c62828", lw=1.0)
+    ax.set_xlabel("damping ratio ζ [% of critical], as the tool computed it")
+    ax.grid(True, which="both", alpha=0.3)
+    tool = report.spec.results.tool if report.spec.results is not None else "the tool"
+    judged = headline.of_checks(
+        report,
+        ("system.stability",),
+        {"pass": "PASS: no mode negatively damped", "fail": "FAIL: negatively damped modes"},
+    )
+    more = f" ({len(rest)} higher modes not drawn)" if rest else ""
+    title = (
+        f"{report.spec.turbine.name} — modes at standstill (0 rpm) as {tool} computed "
+        f"them{more}: {judged.words}"
+    )
+    margin = 0.3 + max(text_width(t, SMALL_PT) for t in names)
+    heading = fit(title, MAX_FIGURE_IN - margin + 0.2, 10)
+    fixed_layout(fig, left=margin, top=0.2 + title_height(heading, 10), bottom=0.55)
+    ax.set_title(heading, fontweight="bold", fontsize=10, y=1.0, color=STATUS_COLOUR[judged.status])
+    headline.stamp(fig, title, judged)
     return fig

@@ -8,6 +8,7 @@ import numpy as np
 
 from .. import drivetrain as drivetrain_model
 from ..audit import Report
+from . import headline
 from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
@@ -30,11 +31,12 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     panels = len(conditions) + (chain is not None)
     fig = Figure(figsize=(MAX_FIGURE_IN, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
     axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
-    heading = fit(
+    title = (
         f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
-        f"{report.spec.drivetrain.reference_shaft} shaft)",
-        7.3,
+        f"{report.spec.drivetrain.reference_shaft} shaft)"
     )
+    heading = fit(title, 7.3)
+    headline.stamp(fig, title, headline.NOTHING)  # shapes: no judgement drawn
     # the suptitle and each panel's title above it; the mass names under each panel
     # the stiffness axis on the right of the distribution panel needs its own margin
     right = 0.85 if chain is not None else 0.3
@@ -114,11 +116,12 @@ def power_curve_plot(report: Report) -> "Figure | None":
         )
     ax.set_xlabel("electrical power [% of rated]")
     ax.set_ylabel("frequency [Hz]")
-    heading = fit(
-        f"{report.spec.turbine.name} — drive train on the grid: frequency vs power "
-        f"({check.status.upper()})",
-        6.6,
+    judged = headline.of_checks(report, ("drivetrain.grid.power",), headline.STATUS_ONLY)
+    title = (
+        f"{report.spec.turbine.name} — drive train on the grid: frequency vs power ({judged.words})"
     )
+    heading = fit(title, 6.6)
+    headline.stamp(fig, title, judged)
     fixed_layout(fig, top=0.2 + title_height(heading))
     ax.set_title(heading, fontweight="bold", y=1.0)
     ax.grid(True, alpha=0.3)

@@ -6,6 +6,7 @@ import numpy as np
 
 from .. import rotor
 from ..audit import Report
+from . import headline
 from .layout import FIGURE_DPI, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
@@ -25,12 +26,13 @@ def floquet_plot(report: Report) -> "Figure | None":
     speed = report.spec.rotor.speed
     fig = Figure(figsize=(7.2, 3.85), dpi=FIGURE_DPI)
     ax = fig.add_subplot()
-    heading = fit(
+    judged = headline.of_checks(report, ("rotor.floquet",), headline.STATUS_ONLY)
+    title = (
         f"{report.spec.turbine.name} — {check.numbers['hub']} two-bladed rotor on the "
-        f"tower head: stability map ({check.status.upper()})",
-        6.8,
-        10,
+        f"tower head: stability map ({judged.words})"
     )
+    heading = fit(title, 6.8, 10)
+    headline.stamp(fig, title, judged)
     fixed_layout(fig, top=0.2 + title_height(heading, 10))
     for a, b in speed.steady_rpm:
         if b > a:

@@ -5,6 +5,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..audit import Report
+from . import headline
 from .layout import (
     FIGURE_DPI,
     MAX_FIGURE_IN,
@@ -57,12 +58,12 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("share of the mode's kinetic energy")
     handles, labels = ax.get_legend_handles_labels()
     margin = 0.3 + max(text_width(t, SMALL_PT) for t in names)  # the tick labels' width
-    heading = fit(
+    title = (
         f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
-        "where the energy is",
-        MAX_FIGURE_IN - margin + 0.3,
-        10,
+        "where the energy is"
     )
+    heading = fit(title, MAX_FIGURE_IN - margin + 0.3, 10)
+    headline.stamp(fig, title, headline.NOTHING)  # energy shares: no judgement drawn
     legend_below(
         fig,
         ax,
