@@ -169,6 +169,7 @@ class Report:
             "verdict": self.verdict,
             "tower_class": self.tower_class,
             "operation": {
+                **({"parked": True} if speed.parked else {}),
                 "steady_rpm": [list(p) for p in speed.steady_rpm],
                 "variable_speed": speed.fixed_rpm is None,
                 "overspeed_rpm": round(speed.overspeed, 6),
@@ -316,7 +317,7 @@ def _run(
             results[sub.NAME] = analysis.results
         assumptions += analysis.assumptions
     _assert_finite(all_modes)
-    if not any(f.mode.judged for f in findings):
+    if not any(f.mode.judged for f in findings) and not spec.rotor.speed.parked:
         # a verdict on nothing is no pass (every mode in no operating regime, or none)
         raise SpecError(
             f"no natural frequency to judge: of {len(all_modes)} mode(s), none exists in an "
@@ -332,10 +333,13 @@ def _run(
         checks=tuple(checks),
         findings=tuple(findings),
         assumptions=tuple(_assumptions(spec, rule, all_modes, assumptions, damping)),
+        # a warning said once, however many parts found it
         warnings=tuple(
-            suspicious(spec, all_modes)
-            + _no_tolerance(spec, samples)
-            + _uncertainty_warnings(spread)
+            dict.fromkeys(
+                suspicious(spec, all_modes)
+                + _no_tolerance(spec, samples)
+                + _uncertainty_warnings(spread)
+            )
         ),
         uncertainty=spread,
         results=results,
@@ -574,7 +578,7 @@ def _assumptions(
 ) -> list[str]:
     out = [f"Margin rule: {rule.label} — {rule.source}."]
     speed = spec.rotor.speed
-    if speed.overspeed_rpm is None and speed.overspeed_factor is None:
+    if speed.overspeed_rpm is None and speed.overspeed_factor is None and not speed.parked:
         out.append(
             f"No overspeed given: a transient overspeed of {DEFAULT_OVERSPEED_FACTOR:.0%} of "
             f"the highest steady speed ({speed.overspeed:.4g} rpm) is checked."

@@ -9,6 +9,7 @@ import contextlib
 import functools
 import inspect
 import json
+import math
 import os
 import sys
 import warnings
@@ -820,7 +821,7 @@ def window(
 
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
-    found = design.all_windows(turbine, report.modes, report.rule)
+    found = design.all_windows(report)
     doc = design.windows_document(turbine, found, report.rule)
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
@@ -835,7 +836,8 @@ def window(
         from .plots import png_bytes
         from .plots.campbell import windows_plot
 
-        tower_w = next((w.allowed for w in found if w.subsystem == "tower"), ())
+        tw = design.tower_windows(found)
+        tower_w = tw.allowed if tw is not None else ()
         folder = out if out is not None else Path.cwd()  # never beside the input
         path = write_atomic(
             folder / f"{spec_file.stem}.windows.png",
@@ -870,10 +872,11 @@ def size_command(
     turbine = options.load(spec_file)
     if (target is None) == (target_hz is None):
         raise typer.BadParameter("give --target WINDOW or --target-hz HZ")
+    design.require_sections(turbine)
     goal = target_hz
     if target is not None:
         report = audit.run(turbine, options.settings(turbine))
-        found = design.all_windows(turbine, report.modes, report.rule)
+        found = design.all_windows(report)
         goal = design.window_goal(found, target.value)
     assert goal is not None
     result = design.size(turbine, goal, scale.value)  # type: ignore[arg-type]
@@ -887,6 +890,8 @@ def size_command(
         f"{result.mass_before_kg:,.0f} → {result.mass_after_kg:,.0f} kg "
         f"({doc['mass_change_percent']:+.1f} %)"
     )
+    for line in result.warnings:
+        typer.echo(f"warning: {line}", err=True)
 
 
 def _rpm_range(text: str | None) -> tuple[float, float] | None:
@@ -901,8 +906,11 @@ def _rpm_range(text: str | None) -> tuple[float, float] | None:
         ) from None
     if len(parts) == 1:
         parts *= 2
-    if len(parts) != 2 or not 0 < parts[0] <= parts[1]:
-        raise typer.BadParameter(f"--rpm takes MIN:MAX with 0 < MIN <= MAX (got {text!r})")
+    if len(parts) != 2 or not (math.isfinite(parts[1]) and 0 <= parts[0] <= parts[1] > 0):
+        raise typer.BadParameter(
+            f"--rpm takes MIN:MAX with 0 <= MIN <= MAX and MAX above 0 (got {text!r}); a "
+            "standstill linearisation is audited as one without --rpm"
+        )
     return parts[0], parts[1]
 
 

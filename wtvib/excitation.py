@@ -244,7 +244,10 @@ def electrical(spec: Spec) -> list[Excitation]:
 
 
 def excitations(spec: Spec) -> list[Excitation]:
-    """Every excitation the audit checks for this turbine."""
+    """Every excitation the audit checks for this turbine (none for a parked rotor: every
+    line is at 0 Hz at standstill)."""
+    if spec.rotor.speed.parked:
+        return []
     return (
         rotor_harmonics(spec.rotor.blades, spec.audit.harmonics)
         + gear_mesh(spec)

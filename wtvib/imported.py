@@ -14,12 +14,9 @@ import math
 
 from .analysis import Analysis, Context
 from .results import Check, Mode, OperatingDamping, Rule, Sampled, Whirl
+from .rules import NEGATIVE
 from .spec import Spec
 from .spec.results import ResultMode
-
-#: A damping ratio counts as negative below −this: the tools write a mode without any
-#: damping (a platform yaw with no hydrodynamic damping) as −0.000000…, rounding's sign.
-NEGATIVE = 1e-6
 
 #: The subsystem each frame's modes belong to.
 SUBSYSTEM = {"fixed": "system", "rotating": "blade"}
@@ -63,19 +60,15 @@ def _mode(mode_id: str, subsystem: str, m: ResultMode, tool: str) -> Mode:
 
 
 def stability(spec: Spec, ctx: Context) -> Analysis:
-    """``system.stability``: the imported modes' damping over the operating range."""
+    """``system.stability``: the imported modes' damping at the tool's points.
+
+    A mode negatively damped at a point in the operating range (steady speeds and
+    overspeed), or at the only points it has (held over the range: a parked linearisation
+    audited over ``--rpm``), fails; negatively damped only outside the range judged, it
+    warns — an instability at a speed the audit does not cover is still one."""
     r = spec.results
     if r is None:
         return Analysis()
-    # the steady range and overspeed (rpm, with a little slack for rounded speeds)
-    low, high = ctx.op.lowest * 30 / math.pi - 1e-6, ctx.op.overspeed * 30 / math.pi + 1e-6
-    rows = [
-        (f"{SUBSYSTEM[m.frame]}.{name}", z, rpm)
-        for name, m in r.modes.items()
-        if m.damping_ratio is not None
-        for z, rpm in zip(m.damping_ratio, m.rpm, strict=True)
-        if z < -NEGATIVE and low <= rpm <= high
-    ]
     damped = [m for m in r.modes.values() if m.damping_ratio is not None]
     statements = (
         f"Modes as computed by {r.tool} ({len(r.modes)} modes from {len(r.files)} file(s): "
@@ -87,23 +80,35 @@ def stability(spec: Spec, ctx: Context) -> Analysis:
             else "no damping given: each subsystem's default is assumed."
         ),
     )
+    lead = (_standstill(r.tool),) if spec.rotor.speed.parked else ()
     if not damped:
-        return Analysis(assumptions=statements)
+        return Analysis(lead=lead, assumptions=statements)
+    inside, outside = _negative(spec, ctx)
     worst = min(
         (z, f"{SUBSYSTEM[m.frame]}.{name}", rpm)
         for name, m in r.modes.items()
         if m.damping_ratio
         for z, rpm in zip(m.damping_ratio, m.rpm, strict=True)
     )
-    unstable = sorted({n for n, _, _ in rows})
-    status = "fail" if rows else "pass"
-    message = (
-        f"{len(unstable)} mode(s) negatively damped in the operating range per {r.tool}: "
-        + "; ".join(f"{n} ζ = {z:.4f} at {rpm:.3g} rpm" for n, z, rpm in rows[:4])
-        if rows
-        else f"every mode positively damped at the tool's operating points (lowest ζ = "
-        f"{worst[0]:.4f}, {worst[1]} at {worst[2]:.3g} rpm)"
-    )
+    if inside:
+        status = "fail"
+        message = (
+            f"{len({n for n, _, _ in inside})} mode(s) negatively damped in the operating "
+            f"range per {r.tool}: " + _listed(inside)
+        )
+    elif outside:
+        status = "warn"
+        message = (
+            f"{len({n for n, _, _ in outside})} mode(s) negatively damped outside the "
+            f"operating range judged, per {r.tool}: " + _listed(outside)
+        )
+    else:
+        status = "pass"
+        message = (
+            f"no mode negatively damped at the tool's operating points (lowest ζ = "
+            f"{max(worst[0], 0.0):.4f}, {worst[1]} at {worst[2]:.3g} rpm)"
+        )
+    rows = inside or outside
     check = Check(
         id="system.stability",
         subsystem="system",
@@ -118,4 +123,46 @@ def stability(spec: Spec, ctx: Context) -> Analysis:
             "unstable": [{"mode": n, "damping_ratio": z, "rpm": rpm} for n, z, rpm in rows],
         },
     )
-    return Analysis(checks=(check,), assumptions=statements)
+    return Analysis(lead=lead, checks=(check,), assumptions=statements)
+
+
+def _standstill(tool: str) -> Check:
+    """What a standstill audit does not judge, said as a check of its own (info)."""
+    return Check(
+        id="system.resonance",
+        subsystem="system",
+        status="info",
+        message=(
+            f"a standstill audit: {tool}'s results are of a parked rotor (0 rpm), which no "
+            "rotor harmonic excites — the modes' stability is judged, no resonance; give "
+            "--rpm MIN:MAX to judge the parked modes against an operating range"
+        ),
+        rule=Rule("no rotor harmonic at standstill", "kP = k·Ω/2π is 0 Hz at Ω = 0"),
+    )
+
+
+def _negative(
+    spec: Spec, ctx: Context
+) -> tuple[list[tuple[str, float, float]], list[tuple[str, float, float]]]:
+    """The negatively damped points (mode id, ζ, rpm): those judged in the operating range
+    (or held over it, a mode with no point in it), and those outside it."""
+    assert spec.results is not None
+    # the steady range and overspeed (rpm, with a little slack for rounded speeds)
+    low, high = ctx.op.lowest * 30 / math.pi - 1e-6, ctx.op.overspeed * 30 / math.pi + 1e-6
+    inside: list[tuple[str, float, float]] = []
+    outside: list[tuple[str, float, float]] = []
+    for name, m in spec.results.modes.items():
+        if m.damping_ratio is None:
+            continue
+        held = not any(low <= rpm <= high for rpm in m.rpm)
+        for z, rpm in zip(m.damping_ratio, m.rpm, strict=True):
+            if z < -NEGATIVE:
+                row = (f"{SUBSYSTEM[m.frame]}.{name}", z, rpm)
+                (inside if held or low <= rpm <= high else outside).append(row)
+    return inside, outside
+
+
+def _listed(rows: list[tuple[str, float, float]]) -> str:
+    return "; ".join(f"{n} ζ = {z:.4f} at {rpm:.3g} rpm" for n, z, rpm in rows[:4]) + (
+        f" and {len(rows) - 4} more" if len(rows) > 4 else ""
+    )

@@ -15,6 +15,7 @@ from rich.panel import Panel
 from rich.table import Table
 from rich.text import Text
 
+from . import words
 from .audit import Report
 
 STYLE = {"pass": "green", "info": "cyan", "warn": "yellow", "fail": "bold red"}
@@ -85,20 +86,14 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     t = data["turbine"]
     op = data["operation"]
     verdict = data["verdict"]
-    # numbers for people: four significant digits (the JSON keeps them all)
-    speeds = (
-        f"{op['steady_rpm'][0][0]:.4g}–{op['steady_rpm'][-1][1]:.4g} rpm (variable)"
-        if op["variable_speed"]
-        else ", ".join(f"{a:.4g}" for a, _ in op["steady_rpm"]) + " rpm (fixed)"
-    )
     grid = Table.grid(padding=(0, 2))
     grid.add_column(style="bold")
     grid.add_column(overflow="fold")  # a long path wraps, never ends in "…"
     grid.add_row("Turbine", _t(t["name"]))
     grid.add_row("File", _t(t["source_file"]))
     grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")
-    source = f" — from {op['source']}" if op.get("source") else ""
-    grid.add_row("Speed", _t(f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm{source}"))
+    # numbers for people: four significant digits (the JSON keeps them all)
+    grid.add_row("Speed", _t(words.operation(op)))
     grid.add_row("Tower class", str(data["tower_class"] or "—"))
     camp = data.get("campbell", {})
     if data.get("damping") == "aeroelastic" and camp.get("wind_m_s"):
@@ -182,9 +177,16 @@ def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
     pass."""
     order = {"fail": 0, "warn": 1}
     shown = sorted((c for c in checks if c["status"] in order), key=lambda c: order[c["status"]])
+    # one entry for one finding: checks that say word for word the same are named together
+    same: dict[tuple[str, str], list[str]] = {}
+    for c in shown:
+        same.setdefault((c["status"], c["message"]), []).append(c["id"])
     lines: list[Any] = [Text("Findings", style="bold")]
     for c in shown:
-        line = Text(c["id"], style="bold")
+        ids = same.pop((c["status"], c["message"]), None)
+        if ids is None:
+            continue  # named with the first that said it
+        line = Text(", ".join(ids), style="bold")
         numbers = [f"margin {c['margin']:.1%}"] if c.get("margin") is not None else []
         if c.get("daf") is not None:
             numbers.append(f"DAF {c['daf']:.2g}")
@@ -198,7 +200,8 @@ def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
             _hanging(Text("info", style=STYLE["info"]), _t(", ".join(infos), STYLE["info"]))
         )
     passed = sum(1 for c in checks if c["status"] == "pass")
-    lines.append(Text(f"  {passed} checks pass.", style="green" if passed else "dim"))
+    said = f"  {passed} check passes." if passed == 1 else f"  {passed} checks pass."
+    lines.append(Text(said, style="green" if passed else "dim"))
     return Group(*lines)
 
 

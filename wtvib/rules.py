@@ -41,6 +41,13 @@ HEAVY_DAMPING = 0.3
 
 STATUS_ORDER: dict[str, int] = {"pass": 0, "info": 1, "warn": 2, "fail": 3}
 
+#: A damping ratio counts as negative below −this: the tools write a mode without any
+#: damping (a platform yaw with no hydrodynamic damping) as −0.000000…, rounding's sign, and
+#: a computed one lands within rounding of zero likewise. One threshold for every check that
+#: judges a sign of damping (``system.stability``, ``aerodynamics.stability``, the stall
+#: checks) and every figure that colours one.
+NEGATIVE = 1e-6
+
 
 def worst(statuses: "list[Status] | tuple[Status, ...]") -> Status:
     """The most severe of some statuses (``pass`` when there are none)."""

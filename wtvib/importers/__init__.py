@@ -242,7 +242,16 @@ def _with_speed(
         else:
             speed["rated_rpm"] = rated
     speed["source"] = "the command line (--rpm/--rated)"
-    notes = [*data.get("assumptions", []), "Operating speeds set on the command line."]
+    # the file's own range, which the command line replaces, is no longer the audit's: one
+    # statement of where the speeds come from (an importer's begins "Operating range")
+    replaced = [a for a in data.get("assumptions", []) if a.startswith("Operating range")]
+    kept = [a for a in data.get("assumptions", []) if a not in replaced]
+    said = "Operating speeds set on the command line (--rpm/--rated)" + (
+        f", in place of the file's: {replaced[0][0].lower()}{replaced[0][1:].rstrip('.')}."
+        if replaced
+        else "."
+    )
+    notes = [*kept, said]
     # a range given on the command line answers the importer's "speed not found"
     warnings = [w for w in data.get("warnings", []) if "--rpm" not in w]
     out = {**data, "rotor": {**data["rotor"], "speed": speed}, "assumptions": notes}

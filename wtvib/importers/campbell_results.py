@@ -55,10 +55,12 @@ def results_spec(
     speeds = sorted({round(r, 4) for m in modes.values() for r in m["rpm"]})
     running = [r for r in speeds if r > 0]
     if not running and rpm is None:
-        raise SpecError(
-            "the results hold standstill points only; give the operating range with --rpm MIN:MAX",
-            source=str(path),
+        assumptions.append(
+            "A standstill audit: the results are of a parked rotor (0 rpm) and no operating "
+            "range is given — no rotor harmonic is judged (--rpm MIN:MAX judges the parked "
+            "modes against one); the modes' stability is."
         )
+        return _document(name, n, {"parked": True}, tool, files, modes, assumptions, warnings)
     if not running:
         assert rpm is not None
         warnings.append(
@@ -83,10 +85,23 @@ def results_spec(
         + (f"–{running[-1]:.4g}" if len(running) > 1 else "")
         + " rpm (--rpm to set it); rotor upwind with a rigid hub assumed."
     )
+    return _document(name, n, speed, tool, files, modes, assumptions, warnings)
+
+
+def _document(
+    name: str,
+    blades: int,
+    speed: dict[str, Any],
+    tool: str,
+    files: list[str],
+    modes: dict[str, dict[str, Any]],
+    assumptions: list[str],
+    warnings: list[str],
+) -> dict[str, Any]:
     return {
         "wtvib": 1,
         "turbine": {"name": name},
-        "rotor": {"blades": n, "orientation": "upwind", "hub": "rigid", "speed": speed},
+        "rotor": {"blades": blades, "orientation": "upwind", "hub": "rigid", "speed": speed},
         "results": {"tool": tool, "files": files, "modes": modes},
         "assumptions": assumptions,
         "warnings": warnings,

@@ -93,6 +93,12 @@ STRUCTURAL = frozenset({"ED", "BD", "SD", "ExtPtfm", "SrvD"})
 #: sign (it carries the drive-train torsion of a BeamDyn rotor).
 FREE_BELOW_HZ = (("nacelle yaw", 0.05), ("furl", 0.05), ("teeter", 0.05), ("platform", 0.001))
 RIGID_SHARE, FREE_SHARE, TURNING_SHARE = 0.5, 0.25, 0.05
+#: Two roots are mirror images (λ and −λ̄, :func:`_mirror_images`) within this share of
+#: |λ|: rounding keeps the symmetry of an undamped motion to ~κ·ε; a damped structure's
+#: roots are nowhere near it.
+MIRROR = 1e-6
+#: A root grows where ζ < −this (rounding writes an undamped root as ±1e-12 or so).
+GROWING = 1e-6
 #: The modules of the non-structural states, as a reader knows them.
 MODULE_WORDS = {
     "AD": "AeroDyn (inflow, unsteady aerodynamics)",
@@ -100,6 +106,7 @@ MODULE_WORDS = {
     "MD": "MoorDyn (mooring lines)",
     "IfW": "InflowWind",
     "rigid": "rigid-body motion (the rotor turning, a free nacelle yaw)",
+    "images": "numerical images of rigid-body motion (pairs λ, −λ̄ below the first elastic mode)",
 }
 
 
@@ -136,6 +143,7 @@ class LinFile:
     states: tuple[State, ...]
     a: Array
     rates: Array | None = None  # the operating point's state derivatives ẋ_op (where given)
+    description: str | None = None  # the deck's title, as the header quotes it
 
     def speed(self, lay: "Layout") -> tuple[float, float]:
         """Rotor speed Ω [rad/s] and its rate Ω̇ [rad/s²] at this azimuth, as MBC3 takes
@@ -247,7 +255,22 @@ def read(path: Path) -> LinFile:
     if marker is None:
         raise fail("no state matrix 'A:' (linearise with continuous states)")
     a = _matrix(raw, marker, n, fail)
-    return LinFile(path, speed, azimuth, wind, states, a, rates)
+    return LinFile(path, speed, azimuth, wind, states, a, rates, _description(lines))
+
+
+#: The header line that carries the deck's own title (the .fst file's second line).
+_DESCRIBED = "Description from the FAST input file:"
+
+
+def _description(lines: list[str]) -> str | None:
+    """The deck's title as the header quotes it (``NREL 5.0 MW Baseline Wind Turbine
+    (Onshore), Linearization with AeroDyn + ED``), None where it gives none."""
+    for ln in lines[:20]:
+        text = ln.strip()
+        if text.startswith(_DESCRIBED):
+            found = " ".join(text.removeprefix(_DESCRIBED).split())[:120]
+            return found or None
+    return None
 
 
 def _rates(lines: list[str], n: int) -> Array | None:
@@ -747,11 +770,12 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
     s_q = part[:n2] + part[n2 : 2 * n2]  # a coordinate's displacement and rate together
     structural = (s_q * structural_q[:, None]).sum(axis=0)
     oscillating = _oscillating(lam)
+    images = _mirror_images(lam, oscillating & (structural >= STRUCTURAL_SHARE))
     rigid = _rigid(s_q, lay, lam)
-    elastic = (structural >= STRUCTURAL_SHARE) & ~rigid
+    elastic = (structural >= STRUCTURAL_SHARE) & ~rigid & ~images
     keep = np.where(oscillating & elastic)[0]
     keep = keep[np.argsort(np.abs(lam[keep]))]
-    left_out = _left_out(lam, part, oscillating & ~elastic, lay, n2)
+    left_out = _left_out(lam, part, oscillating & ~elastic, lay, rigid, images)
     coords = coordinates(lay)
     rows = [_name_one(lam[j], vec[:, j], s_q[:, j], structural_q, lay, coords, first) for j in keep]
     names = _ordinals([r[0] for r in rows], np.abs(lam[keep]))
@@ -908,23 +932,59 @@ def _rigid(s_q: Array, lay: Layout, lam: NDArray[np.complex128]) -> NDArray[np.b
     )
 
 
+def _mirror_images(lam: NDArray[np.complex128], candidates: NDArray[np.bool_]) -> NDArray[np.bool_]:
+    """Which roots are the numerical image of rigid-body motion: pairs λ, −λ̄ — the same
+    frequency, damping ratios equal and opposite — below the lowest other structural root.
+
+    A free body's displacement has a double zero root per DOF; the linearisation's
+    finite-difference stiffness and rounding move the pair off zero as λ² = δ, so they come
+    back as ±√δ: one root damped, its mirror image growing by as much, with no damping in
+    the motion to break the symmetry (OpenFAST r-test Ideal_Beam_Free_Free_Linear: 0.0888
+    Hz, ζ = ±0.2601, twice, where the beam's first bending is 3.57 Hz). A physical
+    oscillation of a damped structure has no such twin; an undamped flutter would — which
+    is why each left out is said (:func:`to_spec_data`)."""
+    idx = np.where(candidates)[0]
+    out = np.zeros(lam.shape, dtype=bool)
+    if idx.size < 2:
+        return out
+    z = lam[idx]
+    # λ_k = −conj(λ_j): equal imaginary parts, opposite real parts beyond rounding
+    twin = np.abs(z[:, None] + np.conj(z)[None, :]) <= MIRROR * np.abs(z)[:, None]
+    damped = np.abs(z.real) > MIRROR * np.abs(z)
+    paired = (twin & ~np.eye(idx.size, dtype=bool)).any(axis=1) & damped
+    if not paired.any() or paired.all():  # all of them twins: no rigid body beside them
+        return out
+    lowest_other = np.abs(z[~paired]).min()
+    out[idx[paired & (np.abs(z) < lowest_other)]] = True
+    return out
+
+
 def _left_out(
-    lam: NDArray[np.complex128], part: Array, mask: NDArray[np.bool_], lay: Layout, n2: int
+    lam: NDArray[np.complex128],
+    part: Array,
+    mask: NDArray[np.bool_],
+    lay: Layout,
+    rigid: NDArray[np.bool_],
+    images: NDArray[np.bool_],
 ) -> dict[str, Any]:
-    """The oscillating roots that are not structural: how many, their frequency range, and
-    the modules holding them."""
+    """The oscillating roots that are not structural: how many, their frequency range, the
+    modules holding them, and those among them that grow (ζ < 0)."""
     idx = np.where(mask)[0]
     if idx.size == 0:
         return {}
     modules = [*lay.q_modules, *lay.q_modules, *lay.first_modules]
-    rigid = _rigid(part[:n2] + part[n2 : 2 * n2], lay, lam)
     owners: dict[str, int] = defaultdict(int)
+    growing: list[tuple[str, float, float]] = []  # (owner, natural frequency [Hz], ζ)
     for j in idx:
-        if rigid[j]:
-            owners["rigid"] += 1  # the rotor turning with a free nacelle: no vibration
-            continue
-        k = int(np.argmax(part[:, j]))
-        owners[modules[k]] += 1
+        if images[j]:
+            owner = "images"  # a free body's zero roots moved off zero: no vibration
+        elif rigid[j]:
+            owner = "rigid"  # the rotor turning with a free nacelle: no vibration
+        else:
+            owner = modules[int(np.argmax(part[:, j]))]
+        owners[owner] += 1
+        if lam[j].real > GROWING * abs(lam[j]):
+            growing.append((owner, abs(lam[j]) / (2 * math.pi), float(damping_ratio(lam[j]))))
     f = np.abs(lam[idx]) / (2 * math.pi)
     return {
         "count": int(idx.size),
@@ -932,6 +992,7 @@ def _left_out(
         "high_hz": float(f.max()),
         "modules": dict(sorted(owners.items())),
         "roots": lam[idx],
+        "growing": sorted(growing, key=lambda g: g[2]),
     }
 
 
@@ -1013,9 +1074,13 @@ def to_spec_data(
     read_files: list[str] = []
     uneven: list[str] = []
     left: list[str] = []
+    growing: list[str] = []
+    titles: dict[str, None] = {}
     for root, paths in sorted(groups.items()):
         lins = [read(p) for p in paths]
         read_files += [str(p) for p in paths]
+        if lins[0].description:
+            titles[lins[0].description] = None
         pm, nb = operating_point(lins)
         points.append(pm)
         nbs.add(nb)
@@ -1024,9 +1089,16 @@ def to_spec_data(
         if pm.left_out:
             lo = pm.left_out
             owners = ", ".join(f"{MODULE_WORDS.get(m, m)} {c}" for m, c in lo["modules"].items())
-            left.append(
-                f"{root}: {lo['count']} ({lo['low_hz']:.3g}–{lo['high_hz']:.3g} Hz; {owners})"
+            grows = (
+                f"; growing, lowest ζ = {lo['growing'][0][2]:.4f} at {lo['growing'][0][1]:.3g} Hz"
+                if lo["growing"]
+                else ""
             )
+            left.append(
+                f"{root}: {lo['count']} ({lo['low_hz']:.3g}–{lo['high_hz']:.3g} Hz; {owners}"
+                f"{grows})"
+            )
+            growing += _growing(root, lo["growing"])
     if not any(len(p.names) for p in points):
         what = "; ".join(left) if left else "no oscillating root"
         raise SpecError(
@@ -1046,7 +1118,7 @@ def to_spec_data(
         modes,
         blades,
         read_files,
-        f"OpenFAST linearisation {path.name}",
+        _name(path, groups, list(titles)),
         blades_found=found or None,
         rpm=rpm,
     )
@@ -1061,6 +1133,7 @@ def to_spec_data(
             "Roots left out, no structural vibration (inflow, unsteady aerodynamics, "
             "radiation, mooring lines, rigid-body motion): " + "; ".join(left) + "."
         )
+    data["warnings"] += growing
     mixed = sorted({n for n, m in modes.items() if m["description"].startswith("mixed")})
     if mixed:
         data["assumptions"].append(
@@ -1082,6 +1155,41 @@ def to_spec_data(
     if outside:
         data["warnings"].append(f"files read outside the named folder: {', '.join(outside)}")
     return data
+
+
+def _name(path: Path, groups: dict[str, list[Path]], titles: list[str]) -> str:
+    """The turbine's name: the deck's own title the files quote (one title for all), else
+    the case the files are named after (``5MW_Land_Linear_Aero``), else the folder."""
+    if len(titles) == 1:
+        return titles[0]
+    roots = sorted(groups)
+    case = roots[0] if len(roots) == 1 else path.name
+    return f"OpenFAST linearisation {case}"
+
+
+def _growing(root: str, found: list[tuple[str, float, float]]) -> list[str]:
+    """What the report says of the roots left out that grow: the images of rigid-body motion
+    as what they are, any other as the instability of the linear model it is (a growing
+    inflow or radiation root is not a structural mode, but not a stable system either)."""
+    out = []
+    images = [(f, z) for owner, f, z in found if owner == "images"]
+    if images:
+        out.append(
+            f"system.stability: {root}: {len(images)} root(s) left out as the numerical image "
+            f"of rigid-body motion, each the twin of a damped one (ζ down to {images[0][1]:.4f} "
+            f"at {images[0][0]:.4g} Hz) — a free body's zero roots, not a vibration; an "
+            "undamped flutter would look the same: check the model has its rigid-body freedom"
+        )
+    # a rigid-body root that grows is the one-azimuth artefact FREE_BELOW_HZ describes
+    others = [(owner, f, z) for owner, f, z in found if owner not in ("images", "rigid")]
+    if others:
+        owner, f, z = others[0]
+        out.append(
+            f"system.stability: {root}: {len(others)} root(s) left out as no structural "
+            f"vibration grow (ζ down to {z:.4f} at {f:.4g} Hz, {MODULE_WORDS.get(owner, owner)})"
+            " — the linear model is unstable there; wtvib judges the structural modes only"
+        )
+    return out
 
 
 def _even(files: list[LinFile]) -> bool:

@@ -20,12 +20,22 @@ class TurbineInfo(_Strict):
 
 
 class RotorSpeed(_Strict):
-    """Rotor speed: a fixed speed (or several, for pole-changing generators) or a range."""
+    """Rotor speed: a fixed speed (or several, for pole-changing generators), a range, or
+    parked (a standstill audit of another tool's parked results: no rotor excitation)."""
 
+    parked: bool = Field(
+        False,
+        description="A standstill audit: the rotor does not turn (another tool's results "
+        "at 0 rpm, `results`); no rotor harmonic is judged, the modes' stability is.",
+    )
     fixed_rpm: Rpm | Annotated[list[Rpm], Field(min_length=1)] | None = Field(
         None, description="Fixed operating speed(s). [rpm]"
     )
-    min_rpm: Rpm | None = Field(None, description="Lowest steady speed (variable). [rpm]")
+    min_rpm: Annotated[float, Field(ge=0, le=1e4)] | None = Field(
+        None,
+        description="Lowest steady speed (variable); 0: steady operation from standstill, "
+        "no start-up regime. [rpm]",
+    )
     rated_rpm: Rpm | None = Field(None, description="Rated speed (variable). [rpm]")
     max_rpm: Rpm | None = Field(None, description="Highest steady speed (variable). [rpm]")
     overspeed_rpm: Rpm | None = Field(None, description="Transient overspeed limit. [rpm]")
@@ -52,8 +62,13 @@ class RotorSpeed(_Strict):
     def _consistent(self) -> "RotorSpeed":
         fixed = self.fixed_rpm is not None
         ranged = self.min_rpm is not None or self.max_rpm is not None
+        if self.parked:
+            given = [k for k, v in self if k not in ("parked", "source") and v not in (None, [])]
+            if given:
+                raise ValueError(f"parked: true takes no speeds ({', '.join(given)} given)")
+            return self
         if fixed == ranged:
-            raise ValueError("give either fixed_rpm, or min_rpm and max_rpm")
+            raise ValueError("give either fixed_rpm, or min_rpm and max_rpm (or parked: true)")
         if ranged:
             if self.min_rpm is None or self.max_rpm is None:
                 raise ValueError("a variable-speed rotor needs both min_rpm and max_rpm")
@@ -79,7 +94,10 @@ class RotorSpeed(_Strict):
 
     @property
     def steady_rpm(self) -> list[tuple[float, float]]:
-        """Steady operating speeds as closed intervals (a fixed speed is a point). [rpm]"""
+        """Steady operating speeds as closed intervals (a fixed speed is a point; parked:
+        standstill, 0 rpm). [rpm]"""
+        if self.parked:
+            return [(0.0, 0.0)]
         if self.fixed_rpm is not None:
             speeds = self.fixed_rpm if isinstance(self.fixed_rpm, list) else [self.fixed_rpm]
             return [(s, s) for s in sorted(speeds)]
@@ -101,6 +119,8 @@ class RotorSpeed(_Strict):
     @property
     def overspeed(self) -> float:
         """Transient overspeed limit, explicit or from the factor (default 1.15). [rpm]"""
+        if self.parked:
+            return 0.0
         if self.overspeed_rpm is not None:
             return self.overspeed_rpm
         return self.top_rpm * (self.overspeed_factor or DEFAULT_OVERSPEED_FACTOR)
