@@ -61,7 +61,7 @@ from numpy.typing import NDArray
 from . import bem, modal, unsteady
 from .analysis import Analysis, Context, Damping, no_modes, section_damping
 from .results import Check, Mode, OperatingDamping, Rule
-from .rules import HEAVY_DAMPING
+from .rules import HEAVY_DAMPING, NEGATIVE
 from .spec import Spec
 
 Array = NDArray[np.float64]
@@ -772,6 +772,12 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     )
 
 
+def _winds(winds: Sequence[float]) -> str:
+    """Where a damping is negative, in words: ``at 10.3 m/s`` or ``at 9.4–11.2 m/s``."""
+    a, b = f"{winds[0]:.3g}", f"{winds[-1]:.3g}"
+    return f"at {a} m/s" if a == b else f"at {a}–{b} m/s"
+
+
 def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     """Negative total damping of a judged mode at any operating point is an instability —
     an isolated estimate's in attached flow a warning (:func:`attached_flow_note`; with
@@ -797,7 +803,7 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     for m in damped:
         op = m.operating
         assert op is not None
-        at = [k for k, z in enumerate(op.total) if z < 0]
+        at = [k for k, z in enumerate(op.total) if z < -NEGATIVE]  # beyond rounding's sign
         if not at:
             continue
         bad = [op.wind[k] for k in at]
@@ -827,29 +833,25 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     shown, hidden = [], {}
     for m in modes:
         op = m.operating
-        if m.judged or op is None or min(op.total) >= 0:
+        if m.judged or op is None or min(op.total) >= -NEGATIVE:
             continue
         j = int(np.argmin(op.total))
+        # said without its number beside a pass (the JSON keeps it): the verdict is the
+        # judged model's, which stays positive
         shown.append(
-            f"{m.id}'s own estimate reaches ζ = {op.total[j]:.4f} at {op.wind[j]:.3g} m/s "
-            f"(judged on {m.superseded_by or 'another model'})"
+            f"{m.id}'s own isolated estimate falls below zero at {op.wind[j]:.3g} m/s "
+            f"(judged on {m.superseded_by or 'another model'}, which stays positive)"
         )
         hidden[m.id] = round(op.total[j], 6)
     if hidden:
         numbers["negative_where_not_judged"] = hidden
     if unstable:
-        text = "; ".join(
-            f"{m.id} negative total damping at {bad[0]:.3g}–{bad[-1]:.3g} m/s"
-            for m, bad in unstable
-        )
+        text = "; ".join(f"{m.id} negative total damping {_winds(bad)}" for m, bad in unstable)
         return Check(
             f"{NAME}.stability", NAME, "fail", f"aeroelastic instability: {text}", rule, numbers
         )
     if attached:
-        text = "; ".join(
-            f"{m.id} negative total damping at {bad[0]:.3g}–{bad[-1]:.3g} m/s"
-            for m, bad in attached
-        )
+        text = "; ".join(f"{m.id} negative total damping {_winds(bad)}" for m, bad in attached)
         notes = "; ".join(attached_flow_note(m.id) for m, _ in attached)
         return Check(f"{NAME}.stability", NAME, "warn", f"{text} ({notes})", rule, numbers)
     return Check(
@@ -857,7 +859,7 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
         NAME,
         "pass",
         f"every judged mode positively damped in operation; lowest: {low.id} ζ = "
-        f"{lop.total[i]:.4f} (aerodynamic {lop.aero[i]:+.4f}) at {lop.wind[i]:.3g} m/s"
+        f"{max(lop.total[i], 0.0):.4f} at {lop.wind[i]:.3g} m/s"
         + ("; " + "; ".join(shown) if shown else ""),
         rule,
         numbers,

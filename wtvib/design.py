@@ -1,9 +1,12 @@
 """Design-stage answers (Hau ch. 7.6): allowed frequency windows and tower sizing.
 
-*Windows*: from the speed range, blade number, harmonics and margin rule, the bands in which
-a subsystem's first natural frequency would pass — the complement of the bands the dominant
-lines (1P, N_b·P, gear mesh) and, at a dwell speed, the secondary lines (2P on three blades)
-forbid in steady operation. For the tower they are the soft-soft, soft and stiff windows.
+*Windows*: the bands in which a subsystem's first natural frequency would pass, as the
+resonance routine judges it (:func:`wtvib.resonance.assess_all`, the one ``check`` uses):
+the mode moved to each candidate frequency and judged against every line over the whole
+operating range — steady operation, quick-pass bands, overspeed, start-up — with its
+damping, energy classes and the margin rule; a band is forbidden where that would warn or
+fail. So 2P swept in partial load by a variable-speed three-bladed rotor (warn) forbids
+its band as ``check`` does. For the tower they are the soft-soft, soft and stiff windows.
 
 *Sizing*: the uniform scale factor on the tower's wall thickness (or diameter, or both) that
 puts the first bending frequency at a target, found by a bracketing root finder on the real
@@ -12,17 +15,22 @@ model, with the tower mass it costs — the book's point that soft towers save s
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
-from typing import Literal
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
+from numpy.typing import NDArray
 
 from . import beam, tower
 from .errors import WtvibError
-from .excitation import Excitation, OperatingRange, excitations, operating_range
+from .excitation import OperatingRange, excitations
+from .resonance import Finding, assess_all
 from .results import Mode
-from .rules import MarginRule
+from .rules import STATUS_ORDER, MarginRule, Status, worst
 from .spec import Spec
+
+if TYPE_CHECKING:
+    from .audit import Report
 
 Scale = Literal["wall", "diameter", "both"]
 
@@ -50,72 +58,24 @@ class Band:
         }
 
 
-def line_bands(
-    lines: Sequence[Excitation], op: OperatingRange, rule: MarginRule, subsystem: str
-) -> list[Band]:
-    """The band each dominant (and dwelt-at secondary) line forbids in steady operation,
-    one per line and steady piece; quick-pass bands are not steady operation."""
-    pieces = _steady_pieces(op)
-    out = []
-    for e in lines:
-        if not e.acts_on(subsystem) or e.energy == "minor":
-            continue
-        speeds = pieces if e.energy == "dominant" else [(w, w) for w in op.dwell]
-        for a, b in speeds:
-            lo = rule.natural_band(float(e.frequency_hz(a)))[0]
-            hi = rule.natural_band(float(e.frequency_hz(b)))[1]
-            out.append(Band(e.id, lo, hi))
-    return out
-
-
-def _steady_pieces(op: OperatingRange) -> list[tuple[float, float]]:
-    pieces: list[tuple[float, float]] = []
-    for a, b in op.steady:
-        cuts = sorted(q for q in op.quick_pass if a <= q[0] and q[1] <= b)
-        start = a
-        for qa, qb in cuts:
-            if qa > start:
-                pieces.append((start, qa))
-            start = qb
-        if b >= start:
-            pieces.append((start, b))
-    return pieces
-
-
-def _merge(bands: list[Band]) -> list[Band]:
-    out: list[Band] = []
-    for band in sorted(bands, key=lambda x: x.low):
-        if out and band.low <= out[-1].high:
-            last = out[-1]
-            out[-1] = Band(f"{last.name}+{band.name}", last.low, max(last.high, band.high))
-        else:
-            out.append(band)
-    return out
-
-
-def windows(forbidden: Sequence[Band], blades: int, tower_names: bool = False) -> list[Band]:
-    """Allowed windows between the forbidden bands; tower windows are named by class."""
-    edges = [0.0, *[x for b in forbidden for x in (b.low, b.high)], math.inf]
-    out = []
-    for i in range(0, len(edges), 2):
-        lo, hi = edges[i], edges[i + 1]
-        if hi > lo:
-            out.append(Band("", lo, hi))
+def windows(edges: Sequence[tuple[float, float]], tower_names: bool = False) -> list[Band]:
+    """Allowed windows (low, high) [Hz] named: tower windows by class (soft-soft below
+    every forbidden band, stiff above them all, soft between), others numbered."""
     named = []
-    for i, w in enumerate(out):
+    for i, (lo, hi) in enumerate(edges):
         if tower_names:
             name = (
                 "soft-soft"
-                if i == 0
+                if i == 0 and lo == 0.0
                 else "stiff"
-                if math.isinf(w.high)
+                if math.isinf(hi)
                 else f"soft ({i})"
-                if len(out) > 3
+                if len(edges) > 3
                 else "soft"
             )
         else:
             name = f"window {i + 1}"
-        named.append(Band(name, w.low, w.high))
+        named.append(Band(name, lo, hi))
     return named
 
 
@@ -138,23 +98,6 @@ class Position:
             "distance_hz": round(self.distance_hz, 6),
             "distance_percent": round(100 * self.distance_hz / self.frequency_hz, 3),
         }
-
-
-def position(
-    f: float, allowed: Sequence[Band], forbidden: Sequence[Band], by_line: Sequence[Band] = ()
-) -> Position:
-    """Where ``f`` [Hz] sits: its window, or the forbidden band that holds it — named after
-    the lines whose own bands hold it (``by_line``; a merged band "2P+3P" forbids a mode
-    that only 2P's band reaches in the name of 2P), and the nearest edge of a forbidden
-    band."""
-    inside = next((w for w in allowed if w.low <= f <= w.high), None)
-    blocked = next((b for b in forbidden if b.contains(f)), None)
-    holding = [b.name for b in by_line if b.contains(f)]
-    if blocked is not None and holding:
-        blocked = Band("+".join(dict.fromkeys(holding)), blocked.low, blocked.high)
-    edges = [x for b in forbidden for x in (b.low, b.high)]
-    edge = min(edges, key=lambda x: abs(x - f)) if edges else math.inf
-    return Position(f, inside, blocked, edge, abs(edge - f))
 
 
 @dataclass(frozen=True)
@@ -188,6 +131,113 @@ FIRST_MODES = {
     "yaw": ("yaw.1",),
 }
 
+#: Candidate frequencies per decade the windows are first judged at; each edge found
+#: between two of them is then bisected to :data:`EDGE_REL`.
+PER_DECADE = 120
+EDGE_REL = 1e-10
+
+
+@dataclass(frozen=True)
+class _Scaled:
+    """A mode's curve over rotor speed scaled by ``k`` (a candidate frequency)."""
+
+    mode: Mode
+    k: float
+
+    def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        return self.k * self.mode.frequency_at(omega)
+
+
+def _candidate(mode: Mode, k: float) -> Mode:
+    """The mode moved to ``k`` times its frequency at every speed — its damping, regimes,
+    whirl and status cap kept: what the design would be judged as, frequency aside."""
+    band = mode.band_hz
+    return replace(
+        mode,
+        frequency_hz=k * mode.frequency_hz,
+        curve=_Scaled(mode, k),
+        band_hz=(k * band[0], k * band[1]) if band is not None else None,
+    )
+
+
+def _judged(report: "Report", mode: Mode, ks: NDArray[np.float64]) -> list[tuple[Status, str]]:
+    """The resonance routine's judgement of the mode moved to each factor ``ks``: the
+    worst status over every line acting on it, and the lines that warn or fail there —
+    exactly what ``check`` would say of a design with that frequency."""
+    lines = [e for e in excitations(report.spec) if e.acts_on(mode.subsystem)]
+    candidates = [_candidate(mode, float(k)) for k in ks]
+    found = assess_all(
+        candidates,
+        lines,
+        report.operating_range,
+        report.rule,
+        report.settings.severities(),
+        mode.damping_ratio or 0.0,
+        report.settings.heavy_damping_ratio,
+    )
+    by_mode: dict[int, list[Finding]] = {}
+    for f in found:
+        by_mode.setdefault(id(f.mode), []).append(f)
+    out = []
+    for c in candidates:
+        fs = by_mode.get(id(c), [])
+        status = worst([f.status for f in fs])
+        bad = [f.excitation.id for f in fs if STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]]
+        out.append((status, "+".join(dict.fromkeys(bad))))
+    return out
+
+
+def _blocked(judged: tuple[Status, str]) -> bool:
+    return STATUS_ORDER[judged[0]] >= STATUS_ORDER["warn"]
+
+
+def _edges(report: "Report", mode: Mode) -> tuple[list[tuple[float, float]], list[Band]]:
+    """The allowed windows and forbidden bands [Hz] of a mode's frequency (at the dwell
+    speed), found by the resonance routine on a log grid and bisected at each edge."""
+    op = report.operating_range
+    f0 = steady_frequency(mode, op)
+    if f0 <= 0:
+        return [(0.0, math.inf)], []
+    lines = [e for e in excitations(report.spec) if e.acts_on(mode.subsystem)]
+    top = max((float(e.frequency_hz(op.overspeed)) for e in lines), default=f0)
+    low_line = min(
+        (float(e.frequency_hz(max(op.lowest, 0.05 * op.highest))) for e in lines if e.order),
+        default=f0,
+    )
+    f_lo, f_hi = 0.3 * min(low_line, f0), 1.5 * max(top, f0)
+    n = max(2, int(PER_DECADE * math.log10(f_hi / f_lo)) + 1)
+    ks = np.geomspace(f_lo, f_hi, n) / f0
+    judged = _judged(report, mode, ks)
+    flips = [i for i in range(n - 1) if _blocked(judged[i]) != _blocked(judged[i + 1])]
+    lo_k, hi_k = ks[flips].copy(), ks[[i + 1 for i in flips]].copy()
+    while flips and np.max(hi_k / lo_k) > 1 + EDGE_REL:  # every edge bisected at once
+        mid = np.sqrt(lo_k * hi_k)
+        at = _judged(report, mode, mid)
+        for j, i in enumerate(flips):
+            if _blocked(at[j]) == _blocked(judged[i]):
+                lo_k[j] = mid[j]
+            else:
+                hi_k[j] = mid[j]
+    cuts = [f0 * math.sqrt(a * b) for a, b in zip(lo_k, hi_k, strict=True)]
+    bounds = [0.0, *cuts, math.inf]
+    allowed, forbidden = [], []
+    blocked = _blocked(judged[0])
+    for j in range(len(bounds) - 1):
+        lo, hi = bounds[j], bounds[j + 1]
+        if not blocked:
+            allowed.append((lo, hi))
+        else:
+            first, last = (flips[j - 1] + 1 if j else 0), (flips[j] if j < len(flips) else n - 1)
+            names = [judged[i][1] for i in range(first, last + 1)]
+            forbidden.append(Band(_joined(names), lo, hi))
+        blocked = not blocked
+    return allowed, forbidden
+
+
+def _joined(names: Sequence[str]) -> str:
+    """The lines of a forbidden band, each once, in the order they appear (``2P+3P``)."""
+    return "+".join(dict.fromkeys(n for part in names for n in part.split("+") if n))
+
 
 def steady_frequency(mode: Mode, op: OperatingRange) -> float:
     """A mode's frequency where the windows hold: at the dwell speed (rated or fixed), else
@@ -196,35 +246,55 @@ def steady_frequency(mode: Mode, op: OperatingRange) -> float:
     return float(mode.frequency_at([speed])[0]) if mode.curve is not None else mode.frequency_hz
 
 
-def all_windows(
-    spec: Spec, modes: Sequence[Mode], rule: MarginRule | None = None
-) -> list[SubsystemWindows]:
+def all_windows(report: "Report") -> list[SubsystemWindows]:
     """Windows of every subsystem with modes the audit judges in steady operation, and the
-    position of each such mode (the same modes ``check`` judges, under the same rule)."""
-    rule = rule or spec.audit.margin_rule()
-    op = operating_range(spec.rotor.speed)
-    lines = excitations(spec)
+    position of each such mode — judged by the resonance routine itself, as ``check``
+    judges (the same lines, regimes, energy classes, damping and rule): a window is where
+    the subsystem's first mode, moved there, would be judged pass (or info); a band is
+    forbidden where it would warn or fail, named by the lines that make it so. A mode's
+    own position is its own findings' judgement."""
     out = []
-    order = [*FIRST_MODES, "system"]
-    for sub in order:
+    for sub in [*FIRST_MODES, "system"]:
         judged = [
             m
-            for m in modes
+            for m in report.modes
             if m.subsystem == sub and m.judged and (m.regimes is None or "steady" in m.regimes)
         ]
         if not judged:
             continue
-        by_line = line_bands(lines, op, rule, sub)
-        forbidden = _merge(by_line)
-        allowed = windows(forbidden, spec.rotor.blades, tower_names=(sub == "tower"))
-        placed = tuple(
-            (m.id, position(steady_frequency(m, op), allowed, forbidden, by_line)) for m in judged
-        )
-        first = [p for p in placed if p[1].blocked_by is not None]
-        first += [p for i in FIRST_MODES.get(sub, ()) for p in placed if p[0] == i]
-        gov = (first or list(placed))[0]
+        first = next((m for i in FIRST_MODES.get(sub, ()) for m in judged if m.id == i), None)
+        if sub == "system":
+            first = next((m for m in judged if m.id.startswith("system.tower.")), first)
+        lead = first or judged[0]
+        edges, forbidden = _edges(report, lead)
+        allowed = windows(edges, tower_names=sub in ("tower", "system"))
+        placed = tuple((m.id, _position(report, m, allowed, forbidden)) for m in judged)
+        gov = next((p for p in placed if p[1].blocked_by is not None), None)
+        gov = gov or next((p for p in placed if p[0] == lead.id), placed[0])
         out.append(SubsystemWindows(sub, gov[0], tuple(forbidden), tuple(allowed), gov[1], placed))
     return out
+
+
+def _position(
+    report: "Report", mode: Mode, allowed: Sequence[Band], forbidden: Sequence[Band]
+) -> "Position":
+    """Where a judged mode sits: its window, or the lines whose findings on it warn or fail
+    (the report's own), and the nearest edge of a forbidden band."""
+    f = steady_frequency(mode, report.operating_range)
+    bad = [
+        x.excitation.id
+        for x in report.findings
+        if x.mode.id == mode.id and STATUS_ORDER[x.status] >= STATUS_ORDER["warn"]
+    ]
+    holding = next((b for b in forbidden if b.low <= f <= b.high), None)
+    blocked = None
+    if bad:
+        lo, hi = (holding.low, holding.high) if holding is not None else (f, f)
+        blocked = Band("+".join(dict.fromkeys(bad)), lo, hi)
+    inside = None if bad else next((w for w in allowed if w.low <= f <= w.high), None)
+    edges = [x for b in forbidden for x in (b.low, b.high) if math.isfinite(x)]
+    edge = min(edges, key=lambda x: abs(x - f)) if edges else math.inf
+    return Position(f, inside, blocked, edge, abs(edge - f))
 
 
 WINDOWS_SCHEMA = "wtvib-windows/1"
@@ -241,10 +311,25 @@ def windows_document(spec: Spec, found: Sequence[SubsystemWindows], rule: Margin
     }
 
 
+def tower_windows(found: Sequence[SubsystemWindows]) -> SubsystemWindows | None:
+    """The tower's windows: its own, or — where the coupled model judges the tower's modes
+    (a deck set) — those of the coupled tower mode (named by class as well)."""
+    own = next((w for w in found if w.subsystem == "tower"), None)
+    coupled = next(
+        (
+            w
+            for w in found
+            if w.subsystem == "system" and (w.mode_id or "").startswith("system.tower")
+        ),
+        None,
+    )
+    return own or coupled
+
+
 def window_goal(found: Sequence[SubsystemWindows], target: str) -> float:
     """The first-bending frequency [Hz] in the middle of the tower's ``target`` window
     (soft-soft, soft or stiff; a split soft window: its first part)."""
-    tw = next((w for w in found if w.subsystem == "tower"), None)
+    tw = tower_windows(found)
     if tw is None:
         raise DesignError("the turbine has no tower mode to place in a window")
     match = [w for w in tw.allowed if w.name == target or w.name.startswith(f"{target} (")]
@@ -266,9 +351,13 @@ class Sizing:
     mass_before_kg: float
     mass_after_kg: float
     what: Scale
+    #: where the scaled tower leaves the range a tower can be built in (with the limit's
+    #: source): a frequency reached is not a design
+    warnings: tuple[str, ...] = ()
 
     def to_dict(self) -> dict[str, object]:
         return {
+            "warnings": list(self.warnings),
             "scale": round(self.scale, 6),
             "applied_to": self.what,
             "target_hz": round(self.target_hz, 6),
@@ -279,11 +368,88 @@ class Sizing:
         }
 
 
-def scaled(spec: Spec, s: float, what: Scale) -> Spec:
-    """The spec with the tower's wall thickness and/or diameter scaled by s."""
+def require_sections(spec: Spec) -> None:
+    """Sizing scales tube sections: say so where the tower is given otherwise."""
+    tower_ = spec.tower
+    if tower_.sections is not None and tower_.material is not None:
+        return
+    given = (
+        "as distributed properties (mass and stiffness per length: an ElastoDyn tower table, "
+        "a windIO layup)"
+        if tower_.distributed is not None
+        else "by its natural frequencies"
+        if tower_.modes
+        else "without a structure"
+    )
+    how = (
+        "convert it (wtvib convert) and give its sections to size it"
+        if tower_.distributed is not None
+        else "give its sections to size it"
+    )
+    raise DesignError(
+        "sizing scales a tower's tube sections (tower.sections + tower.material); this one "
+        f"is given {given} — {how}"
+    )
+
+
+#: The slenderest steel tube wall ``size`` accepts without a warning, D/t. At D/t = 400
+#: (r/t = 200) the classical elastic critical meridional buckling stress of a cylinder,
+#: σ_cr = 0.605·E·t/r (Timoshenko & Gere 1961 §11.4; EN 1993-1-6 Annex D.1.2.1), is 635 MPa
+#: for steel — under twice the yield stress of S355, so that with the imperfection
+#: reduction EN 1993-1-6 applies to a fabricated shell, local buckling, not stiffness,
+#: sizes the wall there. Reference towers lie inside it: the NREL 5-MW's 157–171 (6 m /
+#: 35.1 mm to 3.87 m / 24.7 mm, Jonkman et al. 2009 §6), the IEA-15's 253–327 (its windIO
+#: 2.1.1 tower, the windio package's example: 10 m / 39.5 mm at the base).
+STEEL_MAX_D_T = 400.0
+#: The thinnest concrete tower wall ``size`` accepts without a warning [m]: two layers of
+#: reinforcement with their concrete cover on both faces — EN 1992-1-1 §4.4.1 (Table 4.4N:
+#: 25–45 mm minimum cover for outdoor exposure XC4–XD3, plus a 10 mm tolerance) and the bars
+#: themselves leave little below 0.15 m; built concrete towers have 0.25–0.5 m walls.
+CONCRETE_MIN_WALL_M = 0.15
+
+
+def is_concrete(spec: Spec) -> bool:
+    """Whether the tower is concrete: said so (``tower.construction``), else by its modulus
+    (concrete 25–50 GPa, steel 200–210 GPa)."""
+    t = spec.tower
+    if t.construction is not None:
+        return t.construction == "concrete"
+    return t.material is not None and t.material.youngs_modulus_pa < 1.0e11
+
+
+def plausibility(spec: Spec) -> list[str]:
+    """Where a tower's tube sections leave what can be built: a steel wall slenderer than
+    :data:`STEEL_MAX_D_T`, a concrete wall thinner than :data:`CONCRETE_MIN_WALL_M`."""
     sec = spec.tower.sections
     if sec is None:
-        raise DesignError("sizing needs the tower as tube sections (tower.sections + material)")
+        return []
+    d = np.asarray(sec.outer_diameter_m, dtype=float)
+    t = np.asarray(sec.wall_thickness_m, dtype=float)
+    if is_concrete(spec):
+        i = int(np.argmin(t))
+        if t[i] < CONCRETE_MIN_WALL_M:
+            return [
+                f"tower.sections.wall_thickness_m[{i}]: a {100 * t[i]:.3g} cm concrete wall is "
+                f"under {100 * CONCRETE_MIN_WALL_M:.0f} cm — too thin for its reinforcement and "
+                "cover on both faces (EN 1992-1-1 §4.4.1): not a tower that can be built"
+            ]
+        return []
+    ratio = d / t
+    i = int(np.argmax(ratio))
+    if ratio[i] > STEEL_MAX_D_T:
+        return [
+            f"tower.sections: D/t = {ratio[i]:.0f} at {sec.height_m[i]:g} m is beyond "
+            f"{STEEL_MAX_D_T:.0f} — local shell buckling (0.605·E·t/r, EN 1993-1-6 Annex D) "
+            "would size that wall, not its stiffness: check it before taking this design"
+        ]
+    return []
+
+
+def scaled(spec: Spec, s: float, what: Scale) -> Spec:
+    """The spec with the tower's wall thickness and/or diameter scaled by s."""
+    require_sections(spec)
+    sec = spec.tower.sections
+    assert sec is not None
     t = [w * s for w in sec.wall_thickness_m] if what in ("wall", "both") else sec.wall_thickness_m
     d = (
         [x * s for x in sec.outer_diameter_m]
@@ -361,7 +527,9 @@ def size(spec: Spec, target_hz: float, what: Scale = "wall") -> Sizing:
             f"no {what} scaling reaches {target_hz:.4g} Hz: the nearest is {reached:.4g} Hz "
             f"at a scale of {s:.4g} (the tower near its buckling limit)"
         )
-    return Sizing(s, target_hz, reached, tower_mass(spec), tower_mass(best), what)
+    return Sizing(
+        s, target_hz, reached, tower_mass(spec), tower_mass(best), what, tuple(plausibility(best))
+    )
 
 
 def window_target(w: Band) -> float:

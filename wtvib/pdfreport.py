@@ -2,14 +2,19 @@
 
 Built from the report's JSON (``to_dict()``) and the Campbell PNGs (150 dpi), so a batch
 can assemble one document from the results of its worker processes. Tables are real text.
-The file is reproducible: reportlab's invariant mode drops creation dates and random ids.
+Its document id is fixed (reportlab's invariant mode) and its creation date the real one,
+or ``SOURCE_DATE_EPOCH`` where set: with that, the same inputs give the same bytes. An
+outline (bookmarks) leads to each turbine and each of its sections.
 """
 
 import io
+import os
+import re
+import time
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from . import __version__, png
+from . import __version__, png, words
 
 STATUS_HEX = {
     "pass": "#2e7d32",
@@ -97,6 +102,9 @@ class _Kit:
         # table after it: a page-long table left the page before it half empty
         self.styles["Heading1"].keepWithNext = 1
         self.small = self.styles["BodyText"].clone("small", fontSize=8, leading=9.6)
+        # a number is never broken inside (reportlab splits a word longer than its cell
+        # by default: "1899.1" / "%"); its cell is made wide enough instead
+        self.numbers = self.small.clone("numbers", splitLongWords=0)
         self.width = A4[0] - 36 * mm
         #: the tallest figure a page takes (its frame is 265 mm): a taller one (a legend of
         #: many rows makes the figure taller) is drawn narrower, never too large for a page
@@ -109,6 +117,11 @@ class _Kit:
         if len(text) > MAX_TEXT:
             text = f"{text[:MAX_TEXT]}… ({len(text) - MAX_TEXT:,} characters more)"
         return self.raw(_esc(text), style)
+
+    def num(self, text: str) -> Any:
+        """A cell of numbers: never broken inside a number, nor between a number and its
+        unit ("6.54 m/s" stays on one line)."""
+        return self.Paragraph(_UNIT_SPACE.sub("\\1&nbsp;", _esc(text)), self.numbers)
 
     def raw(self, markup: str, style: str | None = None) -> Any:
         """A paragraph of reportlab mini-markup."""
@@ -152,6 +165,9 @@ class _Kit:
     def header(self, *names: str) -> list[Any]:
         return [self.raw(f"<b>{_esc(n)}</b>") for n in names]
 
+
+#: A space between a number and its unit or per cent sign, to be a non-breaking one.
+_UNIT_SPACE = re.compile(r"(\d) (?=[%a-zA-Zζ°/])")
 
 #: The longest text one paragraph of the PDF shows (a page holds about 6,000 characters of
 #: its small type): a longer name or note is cut there, saying so.
@@ -197,7 +213,7 @@ def build(
                 k.p(r["tower_class"] or "—"),
                 k.status(r["verdict"], "*" if r["warnings"] else ""),
                 k.ident(worst["id"], 0.24) if worst else k.p("—"),
-                k.p(_pct(worst.get("margin")) if worst else ""),
+                k.num(_pct(worst.get("margin")) if worst else ""),
             ]
         )
     for file, message, outcome in errors:
@@ -209,7 +225,7 @@ def build(
         story += [k.PageBreak(), *_turbine(k, r, pngs)]
 
     buf = io.BytesIO()
-    doc = k.SimpleDocTemplate(
+    doc = _outlined(k.SimpleDocTemplate)(
         buf,
         pagesize=k.A4,
         leftMargin=18 * k.mm,
@@ -221,8 +237,56 @@ def build(
         creator=f"wtvib {__version__}",
         subject="Vibration audit after Hau, Wind Turbines, ch. 7",
     )
-    doc.build(story, onFirstPage=_footer, onLaterPages=_footer)
+    doc.build(story, onFirstPage=_footer, onLaterPages=_footer, canvasmaker=_dated())
     return buf.getvalue()
+
+
+def created() -> time.struct_time:
+    """When the document is made (UTC): now, or ``SOURCE_DATE_EPOCH`` where it is set
+    (reproducible builds: https://reproducible-builds.org/specs/source-date-epoch/)."""
+    given = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    try:
+        return time.gmtime(int(given)) if given else time.gmtime()
+    except (ValueError, OverflowError, OSError):  # not a time: the present one
+        return time.gmtime()
+
+
+def _dated() -> type:
+    """A canvas that writes the document's real creation date (:func:`created`) — reportlab's
+    invariant mode, kept for its fixed document id, would write 2000-01-01."""
+    from reportlab.pdfgen.canvas import Canvas
+
+    stamp = time.strftime("D:%Y%m%d%H%M%S+00'00'", created())
+
+    class Dated(Canvas):  # type: ignore[misc]
+        def __init__(self, *args: Any, **kwargs: Any) -> None:
+            super().__init__(*args, **kwargs)
+            self._doc.setDateFormatter(lambda *_: stamp)
+
+    return Dated
+
+
+def _outlined(template: type) -> type:
+    """The document template with an outline (bookmarks): each turbine (its Heading1) and,
+    under it, each of its sections (Heading2)."""
+
+    class Outlined(template):  # type: ignore[misc,valid-type]
+        _marks = 0
+
+        def afterFlowable(self, flowable: Any) -> None:  # noqa: N802 (reportlab's hook)
+            style = getattr(getattr(flowable, "style", None), "name", None)
+            level = {"Heading1": 0, "Heading2": 1}.get(style or "")
+            if level is None:
+                return
+            self._marks += 1
+            key = f"mark{self._marks}"
+            text = flowable.getPlainText()
+            if level == 1 and text.startswith("Verdict:"):
+                return  # the verdict line under the turbine's name is no section
+            self.canv.bookmarkPage(key)
+            self.canv.addOutlineEntry(text, key, level=level, closed=level == 0)
+
+    return Outlined
 
 
 def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
@@ -256,19 +320,18 @@ def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
             ]
         )
     ]
-    speeds = (
-        f"{op['steady_rpm'][0][0]:g}–{op['steady_rpm'][-1][1]:g} rpm, variable"
-        if op["variable_speed"]
-        else ", ".join(f"{a:g}" for a, _ in op["steady_rpm"]) + " rpm, fixed"
-    )
     ident = [
         ["source file", t["source_file"]],
         ["input SHA-256", (r.get("produced_by", {}).get("input", {}).get("sha256") or "—")],
         ["rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub"],
         [
             "operation",
-            f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm; quick-pass bands "
-            f"{op['quick_pass_rpm'] or 'none'}",
+            words.operation(op)
+            + (
+                f"; quick-pass bands {op['quick_pass_rpm'] or 'none'}"
+                if not op.get("parked")
+                else ""
+            ),
         ],
         ["tower class", r["tower_class"] or "—"],
         [
@@ -279,13 +342,19 @@ def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
     ]
     if r.get("damping") == "aeroelastic":  # a structural audit says so in its checks
         ident.append(["damping", "aeroelastic (aerodynamic + structural, at the operating points)"])
-    ident += [
-        [key.replace("_", " "), t[key]]
-        for key in ("manufacturer", "year", "rated_power_kw", "rotor_diameter_m", "hub_height_m")
-        if key in t
-    ]
+    ident += [[label, how(t[key])] for key, label, how in _IDENTITY if key in t]
     out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
     return out
+
+
+#: The turbine's identity as the report writes it: (JSON key, label, value with its unit).
+_IDENTITY: tuple[tuple[str, str, Any], ...] = (
+    ("manufacturer", "manufacturer", str),
+    ("year", "year", str),
+    ("rated_power_kw", "rated power", lambda v: f"{v:,.6g} kW"),
+    ("rotor_diameter_m", "rotor diameter", lambda v: f"{v:,.6g} m"),
+    ("hub_height_m", "hub height", lambda v: f"{v:,.6g} m"),
+)
 
 
 def _warnings(k: _Kit, r: dict[str, Any]) -> list[Any]:
@@ -309,13 +378,13 @@ def _summary(k: _Kit, r: dict[str, Any]) -> list[Any]:
         [
             k.status(c["status"]),
             k.ident(c["id"], 0.2),
-            k.p(_pct(c.get("margin"))),
-            k.p(_num(c.get("daf"))),
+            k.num(_pct(c.get("margin"))),
+            k.num(_num(c.get("daf"))),
             k.p(c["message"]),
         ]
         for c in r["checks"]
     ]
-    out.append(k.table(rows, [0.08, 0.2, 0.08, 0.07, 0.57]))
+    out.append(k.table(rows, [0.08, 0.2, 0.09, 0.07, 0.56]))
     return out
 
 
@@ -338,8 +407,8 @@ def _subsystem(
         [
             k.ident(m["id"], 0.22),
             k.p(m["description"] + _judged_note(m)),
-            k.p(f"{m['frequency_hz']:.4g}"),
-            k.p(_num(m["damping_ratio"]) + _in_operation(m)),
+            k.num(f"{m['frequency_hz']:.4g}"),
+            k.num(_num(m["damping_ratio"]) + _in_operation(m)),
         ]
         for m in modes
     ]
@@ -382,7 +451,7 @@ def _inputs(k: _Kit, r: dict[str, Any]) -> list[Any]:
     rows += [
         [
             k.ident(path, 0.33),
-            k.raw(_for_people(q["value"])),
+            k.Paragraph(_for_people(q["value"]), k.numbers),
             k.p(q["provenance"]),
             k.p("; ".join(x for x in (q.get("source"), q.get("note")) if x)),
         ]
@@ -406,7 +475,7 @@ def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
         if "unstable" in s:
             risks.insert(0, f"buckles {s['unstable']['probability']:.1%}")
         spread = [_num(s.get(q)) for q in ("p5_hz", "p50_hz", "p95_hz")]
-        rows.append([k.ident(mode, 0.25), *map(k.p, spread), k.p(", ".join(risks) or "none")])
+        rows.append([k.ident(mode, 0.25), *map(k.num, spread), k.p(", ".join(risks) or "none")])
     out.append(k.table(rows, [0.25, 0.11, 0.11, 0.11, 0.42]))
     if u.get("sensitivities"):
         out.append(
@@ -419,7 +488,7 @@ def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
         rows = [k.header("input", "mode", "(∂f/∂p)·(p/f)")]
         for path, per_mode in u["sensitivities"].items():
             for mode, s in sorted(per_mode.items(), key=lambda kv: -abs(kv[1])):
-                rows.append([k.ident(path, 0.45), k.ident(mode, 0.35), k.p(f"{s:+.3f}")])
+                rows.append([k.ident(path, 0.45), k.ident(mode, 0.35), k.num(f"{s:+.3f}")])
         out.append(k.table(rows, [0.45, 0.35, 0.2]))
     return out
 
@@ -477,10 +546,10 @@ def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
         rows.append(
             [
                 k.ident(row["id"], 0.34),
-                k.p(f"{row['coupled_hz']:.4g}"),
+                k.num(f"{row['coupled_hz']:.4g}"),
                 k.ident(row["isolated_id"], 0.3) if row["isolated_id"] else k.p("—"),
-                k.p("—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}"),
-                k.p("—" if shift is None else f"{shift:+.1%}"),
+                k.num("—" if row["isolated_hz"] is None else f"{row['isolated_hz']:.4g}"),
+                k.num("—" if shift is None else f"{shift:+.1%}"),
             ]
         )
     return [
@@ -618,7 +687,10 @@ def _for_people(value: Any) -> str:
 
 
 def _pct(x: float | None) -> str:
-    return "" if x is None else f"{x:.1%}"
+    """A margin in per cent: one decimal, none from 1000 % (``1899 %``, not ``1899.1 %``)."""
+    if x is None:
+        return ""
+    return f"{x:.0%}" if abs(x) >= 10 else f"{x:.1%}"
 
 
 def _num(x: float | None) -> str:

@@ -28,7 +28,15 @@ from numpy.typing import NDArray
 
 from .excitation import Excitation, OperatingRange
 from .results import Check, Mode, Rule
-from .rules import HEAVY_DAMPING, STATUS_ORDER, MarginRule, Status, dynamic_amplification, worst
+from .rules import (
+    HEAVY_DAMPING,
+    NEGATIVE,
+    STATUS_ORDER,
+    MarginRule,
+    Status,
+    dynamic_amplification,
+    worst,
+)
 from .units import rad_s_to_rpm
 
 Interval = tuple[float, float]
@@ -168,6 +176,11 @@ def _judge(
     zeta_met = mode.damping_at(at, default_damping)
     heavily_damped = zeta_met >= heavy_damping
     regime_status = _regime_statuses(energy, line_energy, heavily_damped, mode.status_cap)
+    if zeta_met < -NEGATIVE:  # negatively damped where it is met: any line's energy grows
+        regime_status = {
+            k: (v if k == "start-up" or STATUS_ORDER[v] >= STATUS_ORDER["warn"] else "warn")
+            for k, v in regime_status.items()
+        }
     hit = [name for name in regime_status if violations[name]]
     status = worst([regime_status[name] for name in hit])
     # The governing regime: the first (most steady) one whose status is the worst.
@@ -675,6 +688,7 @@ def _check(
             else {}
         ),
         "regime": gov.regime,
+        **({"heavily_damped": True} if gov.heavily_damped and gov.regime else {}),
         "energy_on_mode": gov.energy,
         **({"driven_by": gov.driven_by} if gov.driven_by else {}),
         "crossings_rpm": [_r(float(rad_s_to_rpm(c))) for c in gov.crossings],
@@ -751,17 +765,25 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
         if f.damping_in_operation:
             text += f" (ζ = {f.damping:.3f} {_damped_by(f)})"
+        if f.damping_met < -NEGATIVE:
+            text += (
+                "; negatively damped where the line meets it — an unstable mode amplifies "
+                "any excitation, whatever its energy"
+            )
         blades = f.excitation.blades
+        dominant = f"the dominant 1P and {blades}P" if blades else "the dominant lines"
+        told = f" ({f.status})" if f.status in ("info", "pass") else ""
         if f.driven_by and blades and round(f.excitation.order) % blades:
             text += (
                 "; reaches the rotor modes only through rotor asymmetry (not a multiple of "
-                f"{blades}P): minor"
+                f"{blades}P): a low-energy excitation beside {dominant}{told}"
             )
         elif f.energy == "minor":
             text += (
-                "; a low-energy harmonic (Hau 7.2.2)"
+                f"; a low-energy harmonic, little excitation energy beside {dominant} (Hau "
+                f"7.2.2){told}"
                 if f.excitation.blades is not None
-                else f"; a low-energy line ({f.excitation.description})"
+                else f"; a low-energy line ({f.excitation.description}){told}"
             )
         elif f.energy == "secondary":
             dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])

@@ -35,6 +35,7 @@ from .aerodamping import (
     isolated_in_attached_flow,
 )
 from .analysis import Analysis, Context, blade_damping, no_modes
+from .rules import NEGATIVE
 from .units import rad_s_to_rpm, rpm_to_rad_s
 
 if TYPE_CHECKING:
@@ -344,7 +345,8 @@ def _judged(
     lowest = min(range(len(curve)), key=lambda i: curve[i].total)
     low = curve[lowest]
     low_aero = min(curve, key=lambda p: p.aero)
-    negative = [p for p in curve if p.total < 0]
+    # below zero beyond rounding's sign (a ζ of −1e-9 at one point is no band of instability)
+    negative = [p for p in curve if p.total < -NEGATIVE]
     where = f"{low.wind:.3g} m/s wind at {low.rpm:.3g} rpm (α_tip = {low.alpha_tip_deg:.1f}°)"
     if ids is not None:
         where += f", as {ids[lowest]} (the least damped {_KIND[name]} mode there)"
@@ -352,14 +354,19 @@ def _judged(
     attached = bool(negative) and ids is None and mode is not None and _attached(spec, mode, curve)
     if negative:
         status = "warn" if attached else "fail"
-        span = f"from {negative[0].wind:g} to {negative[-1].wind:g} m/s"
+        first, last = negative[0].wind, negative[-1].wind
+        span = (
+            f"at {first:.4g} m/s"
+            if f"{first:.4g}" == f"{last:.4g}"
+            else (f"from {first:.4g} to {last:.4g} m/s")
+        )
         text = f"negative total damping ζ = {low.total:.4f} at {where}; " + (
             f"negative {span}" if attached else f"unstable {span}"
         )
         if attached:
             assert mode is not None
             text += f" ({attached_flow_note(mode.id)})"
-    elif low_aero.aero < 0:
+    elif low_aero.aero < -NEGATIVE:
         status = "warn"
         text = (
             f"aerodynamic damping negative (ζ_a = {low_aero.aero:.4f}); "
@@ -367,7 +374,7 @@ def _judged(
         )
     else:
         status = "pass"
-        text = f"lowest total damping ζ = {low.total:.3f} at {where}"
+        text = f"lowest total damping ζ = {max(low.total, 0.0):.3f} at {where}"
     numbers = {
         "min_total_damping_ratio": round(low.total, 6),
         "at_wind_m_s": low.wind,

@@ -713,6 +713,7 @@ def _spec_bending(spec: Spec, b: Beam, soil_factor: float = 1.0) -> Pair:
 def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
     given = spec.tower.modes.get(name)
     zeta = given.damping_ratio if isinstance(given, spec_mod.ModeSpec) else None
+    zeta = spec.tower.damping_by_mode.get(name, zeta)
     full = np.zeros(len(nodes))
     full[len(nodes) - len(shape) :] = shape
     peak = full[np.argmax(np.abs(full))] or 1.0

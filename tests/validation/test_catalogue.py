@@ -207,7 +207,7 @@ def test_wka60_concrete_tower_uncertainty_and_the_size_that_clears_2p():
     )
     assert masses == pytest.approx(-0.5, abs=0.01)
     assert 0.8 < u["modes"]["tower.fa1"]["in_margin_band"]["2P"]["probability"] < 0.97
-    goal = design.window_goal(design.all_windows(s, r.modes, r.rule), "soft")
+    goal = design.window_goal(design.all_windows(r), "soft")
     sized = design.scaled(s, design.size(s, goal, "wall").scale, "wall")
     assert check(audit.run(sized), "tower.resonance.2P").status != "fail"
 

@@ -367,6 +367,12 @@ class Tower(_Strict):
     damping_ratio: Ratio = Field(
         0.01, description="Default modal damping ratio of the tower modes. [-]"
     )
+    damping_by_mode: dict[TowerModeName, Ratio] = Field(
+        default_factory=dict,
+        description="Damping ratios of single computed tower modes, in place of "
+        "damping_ratio (a measured fore-aft ratio that holds the rotor's aerodynamic "
+        "damping, which the side-side and torsion modes lack). [-]",
+    )
     sections: TubularSections | None = Field(None, description="Tapered tube geometry.")
     material: Material | None = Field(None, description="Material of the tube sections.")
     distributed: DistributedTower | None = Field(
@@ -392,6 +398,11 @@ class Tower(_Strict):
             raise ValueError("give either sections (with material) or distributed, not both")
         if self.sections is not None and self.material is None:
             raise ValueError("tube sections need a material")
+        if self.damping_by_mode and not self.has_structure:
+            raise ValueError(
+                "damping_by_mode damps modes the tower's structure computes; with given "
+                "frequencies, give each mode's damping_ratio in tower.modes"
+            )
         return self
 
     @property
