@@ -29,7 +29,7 @@ def test_pdf_text_names_turbine_verdict_and_every_check(wka60_pdf):
     report = audit.run(spec.load(TURBINES / "wka-60.yaml"))
     for check in report.checks:
         assert check.id in text, check.id
-    assert "Inputs and their provenance" in text and "derived" in text
+    assert "Inputs and their provenance" in text and "tuned" in text
     assert "Assumptions" in text
 
 
@@ -44,13 +44,70 @@ def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
     assert images[0].image.size[0] >= 1500  # 10 in at 150 dpi
 
 
-def test_pdf_is_marked_as_wtvib_output_and_reproducible(wka60_pdf, tmp_path):
+def test_pdf_is_marked_as_wtvib_output_and_reproducible(wka60_pdf, tmp_path, monkeypatch):
+    """The same inputs give the same bytes where SOURCE_DATE_EPOCH fixes the date (the
+    reproducible-builds convention); without it the PDF carries the day it was made."""
     from wtvib.outputs import is_ours
 
     assert is_ours(wka60_pdf)
-    again = tmp_path / "again.pdf"
-    runner.invoke(app, ["report", str(TURBINES / "wka-60.yaml"), "-o", str(again)])
-    assert again.read_bytes() == wka60_pdf.read_bytes()
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1733300000")  # 2024-12-04 08:13:20 UTC
+    made = []
+    for name in ("one.pdf", "two.pdf"):
+        runner.invoke(app, ["report", str(TURBINES / "wka-60.yaml"), "-o", str(tmp_path / name)])
+        made.append((tmp_path / name).read_bytes())
+    assert made[0] == made[1]
+    assert PdfReader(io.BytesIO(made[0])).metadata["/CreationDate"].startswith("D:20241204081320")
+
+
+def test_pdf_is_dated_the_day_it_is_made(wka60_pdf, monkeypatch):
+    """It said 2000-01-01 (reportlab's invariant mode): its date is the real one now."""
+    import time
+
+    monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)
+    created = PdfReader(io.BytesIO(wka60_pdf.read_bytes())).metadata["/CreationDate"]
+    assert created.startswith("D:" + time.strftime("%Y", time.gmtime()))
+
+
+def test_pdf_has_an_outline_of_turbines_and_sections(tmp_path):
+    """A 115-page batch PDF had no bookmarks: each turbine is an outline entry, its
+    sections under it."""
+    result = runner.invoke(
+        app,
+        [
+            "batch",
+            str(TURBINES / "wka-60.yaml"),
+            str(TURBINES / "mod-2.yaml"),
+            "--out-dir",
+            str(tmp_path / "out"),
+        ],
+    )
+    assert result.exit_code in (0, 1), result.stdout
+    outline = PdfReader(tmp_path / "out" / "audit.pdf").outline
+    tops = [x.title for x in outline if not isinstance(x, list)]
+    assert "WKA-60 (Helgoland)" in tops and any("MOD-2" in t for t in tops)
+    sections = [
+        x.title
+        for x in outline[
+            outline.index(
+                next(o for o in outline if getattr(o, "title", "") == "WKA-60 (Helgoland)")
+            )
+            + 1
+        ]
+    ]
+    assert "Summary of checks" in sections and "Tower" in sections
+
+
+def test_pdf_labels_carry_their_units_and_numbers_stay_whole(shared, tmp_path):
+    """The identity table said "rated power kw 5000.0"; a margin of 1899.1 % was broken
+    into "1899.1" and "%" on two lines, a damping "0.068" from its wind."""
+    out = tmp_path / "nrel.pdf"
+    deck = shared / "reference/NREL5MW/NREL-5MW.fst"
+    runner.invoke(app, ["report", str(deck), "-o", str(out)])
+    text = "\n".join(page.extract_text() for page in PdfReader(out).pages)
+    assert "rated power\n5,000 kW" in text and "rotor diameter\n126 m" in text
+    assert "kw 5000" not in text
+    assert "1899%" in text  # whole, on one line
+    assert not any(line.strip() == "%" for line in text.splitlines())
 
 
 def test_report_of_a_bad_spec_is_one_line(tmp_path):

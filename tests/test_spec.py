@@ -53,7 +53,7 @@ CASES = [
         lambda t: t.replace("fa1: 0.5", "fa1: {value: 0.5, provenance: guessed}"),
         "tower.modes.fa1.provenance",
         12,
-        "'published', 'derived' or 'representative'",
+        "'published', 'derived', 'tuned' or 'representative'",
     ),
     (
         lambda t: t.replace("fa1: 0.5", "fa1: {value: 0.5, provenance: published, source: x}"),

@@ -614,6 +614,15 @@ def _assumptions(
     if given:
         out.append(f"Natural frequencies taken as given in the spec: {', '.join(given)}.")
     out += spec.assumptions
+    tuned = sorted(path for path, q in spec.provenance.items() if q.provenance == "tuned")
+    if tuned:
+        out.append(
+            "Tuned to the source's statements (provenance tuned): "
+            + ", ".join(tuned[:8])
+            + (f" and {len(tuned) - 8} more" if len(tuned) > 8 else "")
+            + " — set so that the audit reproduces what the source says; where the audit "
+            "then agrees with those statements, that agreement is built in, no validation."
+        )
     if spec.rotor.orientation == "vertical-axis":
         out.append(
             "Vertical-axis rotor: no stiff/soft tower classification; resonance checks "

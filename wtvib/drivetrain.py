@@ -552,7 +552,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         checks=checks,
         refine=torque_refiner(spec, ctx.modes),
         results=DrivetrainResults(curve, chain) if curve or chain else None,
-        assumptions=(shares_statement(shares),) if shares else (),
+        assumptions=(shares_statement(shares, _tuned_chain(spec)),) if shares else (),
     )
 
 
@@ -633,12 +633,27 @@ def inertia_shares(spec: Spec) -> dict[str, float] | None:
     return {k: v / total for k, v in out.items()} if total > 0 else None
 
 
-def shares_statement(shares: dict[str, float]) -> str:
-    """The inertia shares as the report states them, beside the book's examples."""
+def _tuned_chain(spec: Spec) -> bool:
+    """Whether the chain's inertias were set after the book's shares (provenance tuned)."""
+    return any(
+        q.provenance == "tuned" and p.startswith("drivetrain.chain[") and p.endswith("inertia_kgm2")
+        for p, q in spec.provenance.items()
+    )
+
+
+def shares_statement(shares: dict[str, float], tuned: bool = False) -> str:
+    """The inertia shares as the report states them, beside the book's examples (and, where
+    the spec's chain was split after them — ``tuned`` — that the likeness is built in)."""
     parts = ", ".join(f"{k} {100 * v:.0f} %" for k, v in shares.items())
     return (
         f"Drive-train inertia on the rotor shaft (Hau Table 7.8): {parts} — the book's "
         "examples: Aeroman 87/2/9/2, WKA-60 91/1/7/1, Growian 85/8/5/2 (blades/hub/"
         "generator/rest); the blades dominate, the generator's share grows with the gear "
         "ratio squared."
+        + (
+            " This chain's inertias were split after the table (provenance tuned): its "
+            "likeness to it is built in."
+            if tuned
+            else ""
+        )
     )

@@ -112,7 +112,7 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
             if data.get("aerodynamics")
             else _without_aerodynamics(data["modes"])
         )
-        grid.add_row("Damping", Text(f"structural only — {why}", style="yellow"))
+        grid.add_row("Damping", Text(f"the ratios given or assumed — {why}", style="yellow"))
     grid.add_row(
         "Rule",
         f"{data['rule']['kind']} margin {data['rule']['margin']:.0%} "
@@ -125,15 +125,26 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
 
 
 def _without_aerodynamics(modes: list[dict]) -> str:  # type: ignore[type-arg]
-    """What an audit without an aerodynamics block judges without aerodynamic damping: the
-    blades' modes and the tower's first fore-aft bending (the rotor's thrust damps it) —
-    named, since a turbine described without blades has no blade resonance to judge."""
-    named = [m["id"] for m in modes if m["subsystem"] == "blade" or m["id"] == "tower.fa1"]
-    if not named:
+    """What an audit without an aerodynamics block says of the modes aerodynamic damping
+    acts on (the blades' and the tower's first fore-aft bending, which the rotor's thrust
+    damps): judged on a ratio the spec gives them (which may hold it, as a measured one
+    does), or without it where their ratio is their subsystem's default."""
+    acted = [m for m in modes if m["subsystem"] == "blade" or m["id"] == "tower.fa1"]
+    if not acted:
         return "no aerodynamics block (no mode here that aerodynamic damping acts on)"
-    shown = ", ".join(named[:4]) + (f" and {len(named) - 4} more" if len(named) > 4 else "")
-    their = "their" if len(named) > 1 else "its"
-    return f"no aerodynamics block: {shown} judged without {their} aerodynamic damping"
+    own = [m["id"] for m in acted if not m.get("damping_source")]
+    rest = [m["id"] for m in acted if m.get("damping_source")]
+    parts = []
+    if own:
+        parts.append(f"{_listed(own)} judged on the ratio{'s' if len(own) > 1 else ''} given")
+    if rest:
+        their = "their" if len(rest) > 1 else "its"
+        parts.append(f"{_listed(rest)} judged without {their} aerodynamic damping")
+    return "no aerodynamics block: " + "; ".join(parts)
+
+
+def _listed(ids: list[str]) -> str:
+    return ", ".join(ids[:4]) + (f" and {len(ids) - 4} more" if len(ids) > 4 else "")
 
 
 def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]

@@ -669,7 +669,7 @@ def _check(
     own = _merge(gov.violations["steady"] + gov.violations["quick-pass"])
     notes = [f"also: {', '.join(others)}"] if others else []
     if exclude and own and exclude != own and op.variable:  # the governing mode's are not all
-        notes.append(f"all together: exclude {', '.join(_span(iv) for iv in exclude)}")
+        notes.append(f"all together: exclude {', '.join(speed_span(iv) for iv in exclude)}")
     if notes:
         message += f" ({'; '.join(notes)})"
     numbers = {
@@ -729,9 +729,11 @@ def _rpm(omega: float) -> str:
     return f"{float(rad_s_to_rpm(omega)):.3g} rpm"
 
 
-def _span(iv: Interval) -> str:
-    a, b = (float(rad_s_to_rpm(x)) for x in iv)
-    return f"{a:.3g} rpm" if abs(b - a) < 1e-9 else f"{a:.3g}–{b:.3g} rpm"
+def speed_span(iv: Interval) -> str:
+    """A band of speeds as a reader reads it; one that rounds to a single speed is that
+    speed ("6.72 rpm", never "6.72–6.72 rpm")."""
+    a, b = (f"{float(rad_s_to_rpm(x)):.3g}" for x in iv)
+    return f"{a} rpm" if a == b else f"{a}–{b} rpm"
 
 
 def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
@@ -753,7 +755,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         else:
             where = "at the operating speed" if not op.variable else "over the operating range"
         return f"{name} clear of {exc} by {f.margin:.1%} {where} ({need})"
-    spans = ", ".join(_span(iv) for iv in f.violations[f.regime])
+    spans = ", ".join(speed_span(iv) for iv in f.violations[f.regime])
     if f.heavily_damped and f.regime not in (None, "start-up"):
         where = f" {_damped_by(f)}" if f.damping_in_operation else ""
         return (

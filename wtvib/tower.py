@@ -19,7 +19,7 @@ from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes
 from .modal import ModalError
-from .resonance import Finding, assess
+from .resonance import Finding, assess, speed_span
 from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule, Status
 from .spec import Spec
@@ -110,12 +110,7 @@ def _violated(f: Finding, headline_hz: float) -> str:
     the speed of least separation — with the mode's frequency there where its curve has
     moved from the headline's standstill value (the separation is measured there)."""
     regime = f.regime or "steady"
-    spans = ", ".join(
-        f"{rad_s_to_rpm(a):.3g} rpm"
-        if abs(b - a) < 1e-9
-        else f"{rad_s_to_rpm(a):.3g}–{rad_s_to_rpm(b):.3g} rpm"
-        for a, b in f.violations[regime]
-    )
+    spans = ", ".join(speed_span(iv) for iv in f.violations[regime])
     there = (
         f", the mode at {f.natural_hz:.3g} Hz"
         if f"{f.natural_hz:.3g}" != f"{headline_hz:.3g}"

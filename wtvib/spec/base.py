@@ -45,10 +45,11 @@ class Quantity(_Strict):
         description="The number itself, in the unit its key names (a whole number where a "
         "count goes: teeth, pole pairs)."
     )
-    provenance: Literal["published", "derived", "representative"] = Field(
+    provenance: Literal["published", "derived", "tuned", "representative"] = Field(
         description="published: printed in the source; derived: computed or read from a "
-        "statement in the source; representative: a plausible value where the source gives "
-        "none."
+        "statement in the source; tuned: set so that the audit reproduces a statement of "
+        "the source (its agreement with that statement is by construction, no validation); "
+        "representative: a plausible value where the source gives none."
     )
     source: str | None = Field(None, description="Key of the top-level `sources` mapping.")
     note: str | None = Field(None, description="How the value was obtained.")
