@@ -82,3 +82,25 @@ def test_broken_aerodyn_inputs_name_file_and_line(
 def test_no_aerodyn_no_aerodynamics(deck: Path):
     _edit(deck / "NREL-5MW.fst", "2   CompAero", "0   CompAero")
     assert load(deck / "NREL-5MW.fst").aerodynamics is None
+
+
+def test_the_shed_wake_follows_the_decks_unsteady_aerofoil_model(shared, tmp_path):
+    """AeroDyn's UA_Mod decides whether wtvib lags the lift by the shed wake: the ROSCO
+    NREL-5MW deck's Minnema/Pierce Beddoes–Leishman model (3) does; quasi-steady (0) and
+    Øye's model (6), which lags only the separation point, do not."""
+    from tests.conftest import edited_reference
+    from wtvib import importers
+
+    s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
+    assert s.aerodynamics is not None and s.aerodynamics.shed_wake
+    for mod in ("0", "6"):
+        folder = edited_reference(
+            shared,
+            tmp_path / mod,
+            "NREL5MW",
+            "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
+            "3                      UA_Mod",
+            f"{mod}                      UA_Mod",
+        )
+        quasi = importers.load(folder / "NREL-5MW.fst")
+        assert quasi.aerodynamics is not None and not quasi.aerodynamics.shed_wake, mod

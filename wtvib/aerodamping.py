@@ -298,21 +298,24 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     d_qs = model.section_damping(c_points)
     lift = sec.at(model.rotor.radius, sec.lift) * per_length
     rated = sec.at(model.rotor.radius, sec.lift_rate) * per_length
-    d_lift = model.section_damping(lift)
-    lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
-    d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * d_lift
-    d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
-    extras: list[Extra] = [
-        (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
-    ]
     refs = [path.shapes[i] for i in where]
-    points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
-    damped = matched(model, points, refs, reduced=path.basis)
     qs_d, qs_k = fixed_frame_damping(model, d_qs, sol.omega)
     qs_points: list[tuple[float, Extra]] = [
         (float(om), (d, k)) for om, d, k in zip(sol.omega, qs_d, qs_k, strict=True)
     ]
     steady = matched(model, qs_points, refs, reduced=path.basis)
+    if _shed_wake(spec):  # the lift's part lagged by the shed wake, through lag states
+        d_lift = model.section_damping(lift)
+        lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
+        d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * d_lift
+        d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
+        extras: list[Extra] = [
+            (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
+        ]
+        points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
+        damped = matched(model, points, refs, reduced=path.basis)
+    else:  # quasi-steady: the judged damping is the quasi-steady one
+        extras, damped = [extra for _, extra in qs_points], steady
     quasi = np.empty((len(sol.omega), kept))
     for k, (om, i) in enumerate(zip(sol.omega, where, strict=True)):
         ref, extra = refs[k], extras[k]
@@ -412,7 +415,12 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
     return _single_mode(
-        gen_mass, omega, on_shape(sec.c), on_shape(sec.lift), on_shape(sec.lift_rate)
+        gen_mass,
+        omega,
+        on_shape(sec.c),
+        on_shape(sec.lift),
+        on_shape(sec.lift_rate),
+        _shed_wake(spec),
     )
 
 
@@ -449,18 +457,37 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
         return np.asarray(share * np.trapezoid(table[:, :, e, e], r, axis=1))
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
-    return _single_mode(gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate))
+    return _single_mode(
+        gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate), _shed_wake(spec)
+    )
+
+
+def _lift(spec: Spec) -> str:
+    return "lift lagged" if _shed_wake(spec) else "lift quasi-steady"
+
+
+def _shed_wake(spec: Spec) -> bool:
+    """Whether the lift is lagged by the shed wake (``aerodynamics.shed_wake``)."""
+    return spec.aerodynamics is not None and spec.aerodynamics.shed_wake
 
 
 def _single_mode(
-    gen_mass: float, omega: Array, c: Array, lift: Array, lift_rate: Array
+    gen_mass: float,
+    omega: Array,
+    c: Array,
+    lift: Array,
+    lift_rate: Array,
+    shed_wake: bool = True,
 ) -> tuple[Array, Array]:
     """ζ_a of one mode (generalised mass, circular frequency ω at each operating point) with
     the modal damping coefficient c of the blade-element forces, ``lift`` its lift-slope
     part and ``lift_rate`` that part weighted by each section's 2W/c: the root with the
     lift lagged by the shed wake (:func:`wtvib.unsteady.single_mode_roots`; 1 where it
-    does not oscillate) and the quasi-steady c/(2ωm), which may exceed 1."""
+    does not oscillate) — or, without ``shed_wake``, the quasi-steady ratio, at most 1 —
+    and the quasi-steady c/(2ωm), which may exceed 1."""
     quasi = np.asarray(c / (2 * omega * gen_mass))
+    if not shed_wake:
+        return np.minimum(quasi, 1.0), quasi
     # the lift-weighted mean of the sections' rates (one filter stands for them all)
     rate = np.abs(lift_rate / np.where(lift != 0, lift, 1.0))
     root = unsteady.single_mode_roots(gen_mass, gen_mass * omega**2, c - lift, lift, rate)
@@ -523,14 +550,19 @@ def in_operation(
             )
         out[sub] = done
     notes = [*sch.assumptions, _statement(spec, sch)]
+    lift = (
+        "the lift's response lagged by the shed wake (Jones's approximation of Wagner's "
+        "function at each section's 2W/c; the quasi-steady damping is kept beside it in the "
+        "Campbell data)"
+        if _shed_wake(spec)
+        else "the lift quasi-steady, following the angle of attack at once (no shed-wake "
+        "lag: aerodynamics.shed_wake false — an OpenFAST deck's UA_Mod 0, 6 or 7)"
+    )
     notes.append(
         "Aerodynamic damping: blade-element forces linearised at each operating point with "
         "frozen induction (no dynamic inflow or dynamic stall), lift and drag slopes over "
-        f"±{bem.SLOPE_STEP_DEG:g}°, the lift's response lagged by the shed wake (Jones's "
-        "approximation of Wagner's function at each section's 2W/c; the quasi-steady "
-        "damping is kept beside it in the Campbell data); aerodynamic stiffness (tilt, yaw, "
-        "torsion) and apparent mass neglected; total damping = aerodynamic + the mode's "
-        "structural ratio."
+        f"±{bem.SLOPE_STEP_DEG:g}°, {lift}; aerodynamic stiffness (tilt, yaw, torsion) and "
+        "apparent mass neglected; total damping = aerodynamic + the mode's structural ratio."
     )
     if cpl is not None:
         notes.append(
@@ -620,14 +652,14 @@ def _isolated(spec: Spec, m: Mode, sec: Sections) -> tuple[Estimate | None, str]
         aero = isolated_blade(spec, m, sec)
         if aero is None:
             return None, NO_BLADE_MASS
-        return aero, "isolated blade mode, section damping on its shape, lift lagged"
+        return aero, f"isolated blade mode, section damping on its shape, {_lift(spec)}"
     if m.subsystem == "tower" and m.id in ("tower.fa1", "tower.ss1"):
         aero = isolated_tower(spec, m, sec)
         if aero is None:
             return None, NO_TOWER_MASS
         return aero, (
             "isolated tower mode: the rotor's damping of the hub's translation on the head + "
-            "33/140 of the tower, lift lagged (tilt and blade flexibility left out: low)"
+            f"33/140 of the tower, {_lift(spec)} (tilt and blade flexibility left out: low)"
         )
     return None, NO_MODEL
 
@@ -782,11 +814,15 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     """Negative total damping of a judged mode at any operating point is an instability —
     an isolated estimate's in attached flow a warning (:func:`attached_flow_note`; with
     ``spec``, whose operating points tell)."""
+    lift = (
+        "the lift lagged by the shed wake (Jones's approximation of Wagner's function)"
+        if spec is None or _shed_wake(spec)
+        else "the lift quasi-steady"
+    )
     rule = Rule(
         "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
         "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; blade-element section damping "
-        "(M. H. Hansen, Wind Energy 10 (2007) 551–577), the lift lagged by the shed wake "
-        "(Jones's approximation of Wagner's function), frozen induction",
+        f"(M. H. Hansen, Wind Energy 10 (2007) 551–577), {lift}, frozen induction",
     )
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:

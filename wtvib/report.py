@@ -47,7 +47,8 @@ def terminal(
     line with its number, then (``detail``) the tables of modes and checks, and the
     assumptions. Ids are never cut."""
     data = report.to_dict()
-    console.print(_summary(data))
+    aero = report.spec.aerodynamics
+    console.print(_summary(data, shed_wake=aero is None or aero.shed_wake))
     console.print(_findings(data["checks"]))
     if detail:
         console.print(_modes(data["modes"]))
@@ -82,7 +83,7 @@ def wrote(console: Console, written: Sequence[Path]) -> None:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 
 
-def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
+def _summary(data: dict, shed_wake: bool = True) -> Panel:  # type: ignore[type-arg]
     t = data["turbine"]
     op = data["operation"]
     verdict = data["verdict"]
@@ -98,10 +99,11 @@ def _summary(data: dict) -> Panel:  # type: ignore[type-arg]
     camp = data.get("campbell", {})
     if data.get("damping") == "aeroelastic" and camp.get("wind_m_s"):
         winds = camp["wind_m_s"]
+        lift = "the lift lagged by the shed wake" if shed_wake else "the lift quasi-steady"
         grid.add_row(
             "Damping",
             f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "
-            "(aerodynamic + structural, the lift lagged by the shed wake)",
+            f"(aerodynamic + structural, {lift})",
         )
     elif data.get("damping") == "imported":
         grid.add_row("Damping", f"as computed by {data['results']['tool']} at its operating points")

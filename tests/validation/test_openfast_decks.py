@@ -198,15 +198,12 @@ LINEAR_AERO_8MS = {
 
 
 def test_aerodynamic_damping_against_openfasts_linearisation_at_its_own_point(decks):
-    """Issue 37: wtvib on the very deck set OpenFAST linearised (r-test 5MW_Land_Linear_Aero:
-    fixed 12.1 rpm, pitch 0 — not the controller's 9.2 rpm at 8 m/s, against which the
-    flap damping had looked 25 % low), interpolated to 8 m/s. OpenFAST's damping lies
-    between wtvib's two: the quasi-steady one 7–19 % above it, the judged one (the lift
-    lagged by the shed wake) 11 % below to 1 % above — closer on average (5.5 % against
-    14 %), though OpenFAST's aerofoils are quasi-steady there (UA_Mod 0); what else lowers
-    OpenFAST's (its DBEMT inflow states, τ₁ = 4 s, are nearly frozen at these frequencies)
-    is not traced. Measured per mode: fa1 +17 / +1 %, flap1 +7…+11 / −11…−7 %, flap2
-    +18…+19 / −5…−3 %."""
+    """wtvib on the very deck set OpenFAST linearised (r-test 5MW_Land_Linear_Aero: fixed
+    12.1 rpm, pitch 0), interpolated to 8 m/s. The deck's aerofoils are quasi-steady
+    (UA_Mod 0), and so is wtvib's lift on it (aerodynamics.shed_wake false): the damping
+    judged is the quasi-steady one. OpenFAST's lies below it by 5–17 %: its DBEMT inflow
+    (τ₁ = 4 s; the near-wake filter τ₂ = τ₁·(0.39 − 0.26·(r/R)²), 0.5–1.6 s) follows the
+    blades' motion in part, which frozen induction — wtvib's, the upper bound — does not."""
     import gzip
 
     from wtvib.importers import openfast_lin as ol
@@ -222,16 +219,12 @@ def test_aerodynamic_damping_against_openfasts_linearisation_at_its_own_point(de
     s = importers.load(
         decks / "rtest_aero/glue-codes/openfast/5MW_Land_Linear_Aero/5MW_Land_Linear_Aero.fst"
     )
+    assert s.aerodynamics is not None and s.aerodynamics.shed_wake is False  # UA_Mod 0
     modes = {m.id: m for m in audit.run(s).modes}
-    errors = []
     for name, zeta in LINEAR_AERO_8MS.items():
         op = modes[f"system.{name}"].operating
         assert op is not None and op.quasi_steady is not None
         assert op.omega[0] == pytest.approx(12.1 * np.pi / 30)
-        steady = float(np.interp(8.0, op.wind, op.quasi_steady))
-        lagged = float(np.interp(8.0, op.wind, op.total))
-        assert zeta < steady < 1.2 * zeta, (name, steady, zeta)
-        assert lagged == pytest.approx(zeta, rel=0.12), (name, lagged, zeta)
-        errors.append((abs(lagged / zeta - 1), abs(steady / zeta - 1)))
-    lag_error, steady_error = np.mean(errors, axis=0)
-    assert lag_error < 0.5 * steady_error
+        judged = float(np.interp(8.0, op.wind, op.total))
+        assert judged == pytest.approx(float(np.interp(8.0, op.wind, op.quasi_steady)))
+        assert zeta < judged < 1.2 * zeta, (name, judged, zeta)

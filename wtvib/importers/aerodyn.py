@@ -175,6 +175,27 @@ def _airfoil_files(deck: Deck) -> list[Path]:
     return out
 
 
+#: AeroDyn's unsteady aerofoil models that lag the lift in attached flow by the shed wake
+#: (UA_Mod; AFAeroMod 2 in older files): the Beddoes–Leishman family — Gonzalez (2),
+#: Minnema/Pierce (3), Hansen–Gaunaa–Madsen (4, 5), whose attached-flow part is the
+#: circulatory lift through Jones's indicial function (AeroDyn theory manual, "Unsteady
+#: Aerodynamics"). Øye's model (6) lags only the separation point — in attached flow its
+#: lift is the quasi-steady one — and Boeing–Vertol's (7) corrects the angle of attack for
+#: its rate, no shed wake either.
+SHED_WAKE_UA = frozenset({2, 3, 4, 5})
+
+
+def shed_wake(ad: Deck) -> bool:
+    """Whether the AeroDyn file asks for an unsteady aerofoil model with a shed-wake lag
+    (:data:`SHED_WAKE_UA`); quasi-steady where it says UA_Mod 0 (AFAeroMod 1)."""
+    if "UA_Mod" in ad.values:
+        return ad.whole("UA_Mod", low=0) in SHED_WAKE_UA
+    if "AFAeroMod" in ad.values:  # older AeroDyn 15: 1 steady, 2 Beddoes–Leishman (UAMod)
+        model = ad.whole("UAMod", low=1) if "UAMod" in ad.values else 3
+        return ad.whole("AFAeroMod", low=1) == 2 and model in SHED_WAKE_UA | {1}
+    return False
+
+
 def aerodynamics(
     fst: Deck | None, hub_radius: float, control: dict[str, Any]
 ) -> tuple[dict[str, Any], list[str], list[str], list[str]] | None:
@@ -208,6 +229,7 @@ def aerodynamics(
         },
         "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
         "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
+        "shed_wake": shed_wake(ad),
         "stations": stations,
         "airfoils": airfoils,
         "control": dict(control),

@@ -152,6 +152,14 @@ class Aerodynamics(_Strict):
     control: Control = Field(default_factory=Control)
     tip_loss: bool = Field(True, description="Prandtl's tip-loss factor. [-]")
     hub_loss: bool = Field(True, description="Prandtl's hub-loss factor. [-]")
+    shed_wake: bool = Field(
+        True,
+        description="Lag the lift behind the angle of attack by the shed wake (Jones's "
+        "approximation of Wagner's function), as unsteady aerofoil models do in attached "
+        "flow; false: quasi-steady, the lift follows at once (AeroDyn with UA_Mod = 0). The "
+        "lag stiffens heavily damped flap modes (Theodorsen's G < 0) and lowers their "
+        "damping.",
+    )
 
     @model_validator(mode="after")
     def _named(self) -> "Aerodynamics":
