@@ -15,6 +15,7 @@ from . import (
     campbell,
     coupled,
     drivetrain,
+    polynomials,
     rotor,
     scaling,
     stall,
@@ -49,6 +50,7 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     rotor,
     aeroelastic,
     stall,
+    polynomials,
 )
 
 #: What changes every judged mode once the models are built (:class:`wtvib.analysis.Modifier`),

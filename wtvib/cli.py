@@ -978,6 +978,83 @@ def convert(
     typer.echo(f"wrote {output}")
 
 
+@app.command("shapes", cls=_Command)
+@_user_errors
+def shapes_command(
+    deck: Annotated[
+        Path,
+        typer.Argument(
+            metavar="DECK", help="ElastoDyn main file (.dat), or the OpenFAST .fst that names it."
+        ),
+    ],
+    output: Annotated[
+        Path | None,
+        typer.Option(
+            "--output",
+            "-o",
+            metavar="DIR",
+            help="Folder to write the tower and blade files with the computed polynomials "
+            "into (never over the deck's own).",
+        ),
+    ] = None,
+    rpm: Annotated[
+        float | None,
+        typer.Option(
+            min=0.0,
+            metavar="RPM",
+            help="Rotor speed [rpm] of the blade shapes (default: the highest steady speed).",
+        ),
+    ] = None,
+    format: FormatOption = Format.text,
+    no_plots: NoPlotsOption = False,
+    force: ForceOption = False,
+    help_all: HelpAllOption = False,
+    debug: DebugOption = False,
+) -> None:
+    """ElastoDyn's mode-shape polynomials: computed from the deck's tower and blade, the
+    deck's own audited, corrected files written with -o."""
+    from . import importers, polynomials
+    from .errors import OutputError
+    from .outputs import write_atomic
+
+    if importers.kind(deck) != "elastodyn":
+        raise typer.BadParameter(
+            f"{deck} is not an ElastoDyn deck: shapes takes an ElastoDyn main file or the .fst "
+            "that names it"
+        )
+    speed = (rpm, rpm) if rpm is not None and rpm > 0 else None
+    spec = importers.load(deck, importers.ReadOptions(rpm=speed))
+    result = polynomials.compute(spec, rpm)
+    written: list[str] = []
+    if output is not None:
+        for original, text in polynomials.corrected(result).items():
+            target = output / Path(original).name
+            if target.resolve() == Path(original).resolve():
+                raise OutputError(f"{target} is the deck's own file: give another folder")
+            write_atomic(target, text.encode("utf-8"), force=force)
+            written.append(str(target))
+    if not no_plots:
+        from .plots import png_bytes
+        from .plots.polynomials import polynomials_plot
+
+        folder = output if output is not None else Path.cwd()
+        path = write_atomic(
+            folder / f"{deck.stem}.shapes.png",
+            png_bytes(polynomials_plot(result, spec)),
+            force=force,
+        )
+        written.append(str(path))
+    doc = polynomials.document(spec, result, written)
+    if format is Format.json:
+        sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
+        return
+    from rich.console import Console
+
+    from .report import shapes_table
+
+    shapes_table(Console(), doc)
+
+
 @app.command(cls=_Command)
 @_user_errors
 def schema(

@@ -366,6 +366,47 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
             )
 
 
+def shapes_table(console: Console, doc: dict[str, Any]) -> None:
+    """``wtvib shapes``: each ElastoDyn polynomial, the deck's and the computed one, with
+    the frequency each implies on the same finite-element model and their MAC."""
+    console.print(
+        _t(
+            f"{doc['turbine']} — ElastoDyn mode shapes (blade at {doc['blade_rpm']:.4g} rpm)",
+            "bold",
+        )
+    )
+    table = Table(show_lines=True)
+    for col in ("set", "f FE [Hz]", "deck: c₂ … c₆", "implies", "computed: c₂ … c₆", "implies",
+                "MAC old↔new", ""):  # fmt: skip
+        table.add_column(col, justify="left" if col in ("set", "") else "right")
+    for row in [*doc["tower"], *doc["blade"]]:
+        f = row["frequency_hz"]
+
+        def coeffs(values: list[float] | None) -> str:
+            return "—" if values is None else " ".join(f"{v:.4g}" for v in values)
+
+        def implied(hz: float | None, f: float = f) -> str:
+            return "—" if hz is None else f"{hz:.4g} ({hz / f - 1:+.1%})"
+
+        status = row["status"].upper() if row["deck"] is not None else "new"
+        table.add_row(
+            f"{row['name']}\n{row['mode']}",
+            f"{f:.4g}",
+            coeffs(row["deck"]),
+            implied(row["deck_implied_hz"]),
+            coeffs(row["computed"]),
+            implied(row["computed_implied_hz"]),
+            "—" if row["mac_old_new"] is None else f"{row['mac_old_new']:.4f}",
+            Text(status, style=STYLE.get(row["status"], "")),
+        )
+    console.print(table)
+    for row in [*doc["tower"], *doc["blade"]]:
+        if row.get("why"):
+            console.print(_t(f"  {row['name']}: {row['why']}", "yellow"))
+    for path in doc["written"]:
+        console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
+
+
 def _blade_stability(checks: list[dict[str, Any]]) -> Table | None:
     """Per-section divergence and flutter speeds, and the stall damping minima."""
     by_id = {c["id"]: c for c in checks}

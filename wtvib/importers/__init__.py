@@ -131,6 +131,11 @@ def _opened(p: Path, options: ReadOptions) -> tuple[Path, str, str]:
     return p, text, kind
 
 
+def kind(path: str | Path) -> str:
+    """The format of a file (:func:`detect`), read as :func:`load` reads it."""
+    return _opened(Path(path), ReadOptions())[2]
+
+
 def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, Any]:
     """:func:`to_data` of a file already read and told apart (:func:`_opened`)."""
     rpm = options.rpm

@@ -12,7 +12,7 @@ OpenFAST ElastoDyn input-file documentation (same keys).
 """
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +20,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..rigid import Part, assembled, rotor_points
+from ..spec.base import SHAPE_SUM_TOLERANCE
 from . import beamdyn
 from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
@@ -179,6 +180,8 @@ def to_spec_data(
 
     aero = aerodynamics(fst, hub_r, operating.control)
     blade = _blade_section(main, bl, length, hub_r)
+    if bl.polynomials:
+        blade["polynomials"] = bl.polynomials
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -197,7 +200,7 @@ def to_spec_data(
             "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
             "speed": _speed_block(operating.speed),
         },
-        "tower": _tower_section(tw, tower_file, floater is not None),
+        "tower": _tower_section(tw, tower_file, floater is not None, tower_height),
         "tower_head": _head_block(head),
         "blade": blade,
         "drivetrain": {**_drivetrain_block(main, head, hub, n_blades), **operating.generator},
@@ -307,9 +310,14 @@ def _tower_on_support(
     )
 
 
-def _tower_section(tw: _TowerOnSupport, tower_file: Deck, floating: bool) -> dict[str, Any]:
-    """The spec's tower block."""
+def _tower_section(
+    tw: _TowerOnSupport, tower_file: Deck, floating: bool, flexible: float
+) -> dict[str, Any]:
+    """The spec's tower block; ``flexible`` ElastoDyn's tower length (TowerHt − TowerBsHt),
+    over which its polynomials run — on a pile, from the pile's top."""
     return {
+        "polynomials": polynomials(tower_file, TOWER_POLYNOMIALS),
+        **({"polynomial_base_m": tw.height - flexible} if tw.height > flexible + 1e-9 else {}),
         "height_m": _value(
             tw.height,
             "TowerHt − the SubDyn reaction joint's z"
@@ -649,6 +657,38 @@ class _BladeTable:
     mass_source: str
     notes: list[str]
     warnings: list[str]
+    polynomials: dict[str, Any] = field(default_factory=dict)
+
+
+#: ElastoDyn's mode-shape polynomials: the spec's name of each set, by the deck's key.
+TOWER_POLYNOMIALS = {"TwFAM1Sh": "fa1", "TwFAM2Sh": "fa2", "TwSSM1Sh": "ss1", "TwSSM2Sh": "ss2"}
+BLADE_POLYNOMIALS = {"BldFl1Sh": "flap1", "BldFl2Sh": "flap2", "BldEdgSh": "edge1"}
+
+
+def polynomials(deck: Deck, keys: dict[str, str]) -> dict[str, Any]:
+    """The mode-shape polynomials of a tower or blade file (``keys``: the deck's key → the
+    spec's name): c₂ … c₆ of each, with the file and the line of its first coefficient. A
+    set that does not add to 1 is refused as ElastoDyn refuses it (ElastoDyn_IO.f90,
+    ValidateModeShapeCoeffs); a coefficient missing or not a number names its key."""
+    out = {}
+    for key, name in keys.items():
+        coeffs = [deck.num(f"{key}({k})") for k in range(2, 7)]
+        first = f"{key}(2)"
+        total = sum(coeffs)
+        if not all(math.isfinite(c) for c in coeffs) or abs(total - 1.0) > SHAPE_SUM_TOLERANCE:
+            raise SpecError(
+                f"{key}: its coefficients add to {total:.6g}, not 1 (φ(1) = 1) — ElastoDyn "
+                f"stops on a sum more than {SHAPE_SUM_TOLERANCE:g} from 1",
+                line=deck.values[first][1],
+                source=str(deck.path),
+            )
+        out[name] = {
+            "coefficients": coeffs,
+            "name": key,
+            "file": str(deck.path),
+            "line": deck.values[first][1],
+        }
+    return out
 
 
 def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _BladeTable:
@@ -679,7 +719,7 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
             structure["twist_deg"] = _list(twist)
         return _BladeTable(
             span, mass, structure, main_damping(ed, "BldFlDmp(1)"), "∫ BMassDen·AdjBlMs", [],
-            _blades_differ(main, ed, n_blades),
+            _blades_differ(main, ed, n_blades), polynomials(ed, BLADE_POLYNOMIALS),
         )  # fmt: skip
     assert fst is not None
     bd = beamdyn.blade(fst)
@@ -728,8 +768,8 @@ def _compare(ed: Deck, bd: beamdyn.Blade, length: float) -> str:
     span = ed.fractions("BlFract") * length
     ed_mass = float(np.trapezoid(ed.column("BlFract", "BMassDen"), span))
     out = []
-    for key, field in (("FlpStff", "ei_flap_nm2"), ("EdgStff", "ei_edge_nm2")):
-        theirs = np.interp(span, bd.span, bd.structure[field])
+    for key, column in (("FlpStff", "ei_flap_nm2"), ("EdgStff", "ei_edge_nm2")):
+        theirs = np.interp(span, bd.span, bd.structure[column])
         diff = np.abs(ed.column("BlFract", key) / theirs - 1)
         out.append(
             f"{key} within {100 * float(np.max(diff)):.2g} % "

@@ -1,6 +1,7 @@
 """Building blocks of the spec schema: strict models, quantities with provenance, given modes."""
 
 import itertools
+import math
 from collections.abc import Mapping
 from typing import Annotated, Any, Literal
 
@@ -63,6 +64,36 @@ class Quantity(_Strict):
     distribution: Literal["normal", "uniform", "lognormal"] = Field(
         "normal", description="Distribution of the uncertain value."
     )
+
+
+#: ElastoDyn stops on a mode-shape polynomial whose coefficients do not add to 1 within
+#: this (ElastoDyn_IO.f90, ValidateModeShapeCoeffs).
+SHAPE_SUM_TOLERANCE = 0.0015
+
+
+class ShapePolynomial(_Strict):
+    """An ElastoDyn mode-shape polynomial φ(x) = Σ c_k·x^k, k = 2 … 6, over the flexible
+    length (x = 0 at the root, 1 at the tip), as a tower or blade file gives it: φ(1) = 1,
+    φ(0) = φ′(0) = 0."""
+
+    coefficients: Annotated[list[float], Field(min_length=5, max_length=5)] = Field(
+        description="c₂ … c₆, the coefficients of x² … x⁶ (they add to 1). [-]"
+    )
+    name: str | None = Field(None, max_length=40, description="The deck's key (TwFAM1Sh …).")
+    file: str | None = Field(None, max_length=4096, description="The file that gives it.")
+    line: int | None = Field(None, ge=1, description="The line of its first coefficient.")
+
+    @model_validator(mode="after")
+    def _adds_to_one(self) -> "ShapePolynomial":
+        if not all(math.isfinite(c) for c in self.coefficients):
+            raise ValueError("the coefficients must be finite numbers")
+        total = sum(self.coefficients)
+        if abs(total - 1.0) > SHAPE_SUM_TOLERANCE:
+            raise ValueError(
+                f"the coefficients add to {total:.6g}, not 1 (φ(1) = 1): ElastoDyn stops on "
+                f"a sum more than {SHAPE_SUM_TOLERANCE:g} from 1"
+            )
+        return self
 
 
 class SpeedTable(_Strict):

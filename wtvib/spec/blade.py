@@ -10,6 +10,7 @@ from .base import (
     ModeEntry,
     Positive,
     Ratio,
+    ShapePolynomial,
     _increasing,
     _same_length,
     _Strict,
@@ -222,4 +223,9 @@ class Blade(_Strict):
     )
     tip_damper: TipDamper | None = Field(
         None, description="A tuned mass damper in each blade's tip (adds damping to the mode)."
+    )
+    polynomials: dict[Literal["flap1", "flap2", "edge1"], ShapePolynomial] = Field(
+        default_factory=dict,
+        description="An ElastoDyn deck's blade mode-shape polynomials (BldFl1Sh, BldFl2Sh, "
+        "BldEdgSh), audited against the modes the structure computes.",
     )

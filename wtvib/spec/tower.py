@@ -11,6 +11,7 @@ from .base import (
     ModeEntry,
     Positive,
     Ratio,
+    ShapePolynomial,
     TowerModeName,
     TowerSize,
     _increasing,
@@ -390,6 +391,17 @@ class Tower(_Strict):
         default_factory=dict,
         description="Natural frequencies [Hz]: fa1, fa2 (fore-aft), ss1, ss2 (side-side), "
         "tor1 (torsion). Ignored for modes the structural model computes.",
+    )
+    polynomials: dict[Literal["fa1", "fa2", "ss1", "ss2"], ShapePolynomial] = Field(
+        default_factory=dict,
+        description="An ElastoDyn deck's tower mode-shape polynomials (TwFAM1Sh … "
+        "TwSSM2Sh), audited against the modes the structure computes.",
+    )
+    polynomial_base_m: float = Field(
+        0.0,
+        ge=0,
+        description="Where the polynomials' x = 0 is, above the tower's base (ElastoDyn's "
+        "tower on a SubDyn pile starts at TowerBsHt, above the pile). [m]",
     )
 
     @model_validator(mode="after")
