@@ -215,6 +215,7 @@ def test_paragraphs_wrapped_once_give_the_same_document(monkeypatch):
         (audit.run(spec.load(TURBINES / f"{name}.yaml")).to_dict(), {})
         for name in ("aeroman", "mod-0")
     ]
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")  # the two builds the same second
     once = pdfreport.build(entries)
     monkeypatch.setattr(pdfreport, "once_wrapped", lambda paragraph: paragraph)
     plain = pdfreport.build(entries)
@@ -288,3 +289,46 @@ def test_pdf_of_an_uncertainty_run_has_its_spread_and_sensitivities(tmp_path):
     text = "".join(page.extract_text() for page in PdfReader(out).pages)
     assert "Uncertainty (200 samples, seed 0)" in text
     assert "youngs_modulus_pa" in text.replace("\n", "") and "(∂f/∂p)·(p/f)" in text
+
+
+def _pdf_text(path) -> str:  # type: ignore[no-untyped-def]
+    return "\n".join(page.extract_text() for page in PdfReader(path).pages)
+
+
+def test_every_check_and_figure_of_a_deck_is_in_its_pdf(shared, tmp_path):
+    """An ElastoDyn deck's polynomials are checks of their own subsystem: the PDF had no
+    section for them (its checks and the shapes figure left out). Every check id is in the
+    text, the shapes figure on the section's page, the sets' numbers in words."""
+    deck = shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    out = tmp_path / "nrel.pdf"
+    result = runner.invoke(app, ["report", str(deck), "-o", str(out), "--rpm", "6.9:12.1"])
+    assert result.exit_code == 1, result.stdout  # its tower fails
+    text = _pdf_text(out)
+    from wtvib import importers
+
+    report = audit.run(importers.load(deck, importers.ReadOptions(rpm=(6.9, 12.1))))
+    for check in report.checks:
+        assert check.id in text, check.id
+    assert "ElastoDyn's mode-shape polynomials" in text
+    flat = " ".join(text.split())
+    assert "TwFAM1Sh MAC 0.9999, implies 0.3297 Hz (+3.3 % on the computed 0.3193 Hz)" in flat
+    pages = PdfReader(out).pages
+    (page,) = [p for p in pages if "the deck's own against the" in p.extract_text()]
+    assert page.images  # the figure drawn there
+
+
+def test_a_standstill_audits_figure_is_in_its_pdf(tmp_path):
+    """The standstill figure of a parked linearisation was drawn as a PNG and left out of
+    the PDF (no section listed it)."""
+    import gzip
+    from pathlib import Path
+
+    lin = Path(__file__).resolve().parent / "data" / "openfast_lin"
+    for gz in sorted(lin.glob("WP_Stationary_Linear.*.lin.gz")):
+        (tmp_path / gz.name.removesuffix(".gz")).write_bytes(gzip.decompress(gz.read_bytes()))
+    out = tmp_path / "wp.pdf"
+    result = runner.invoke(
+        app, ["report", str(tmp_path / "WP_Stationary_Linear.1.lin"), "-o", str(out)]
+    )
+    assert result.exit_code in (0, 1), result.stdout
+    assert sum(len(p.images) for p in PdfReader(out).pages) >= 1

@@ -1027,12 +1027,23 @@ def shapes_command(
     result = polynomials.compute(spec, rpm)
     written: list[str] = []
     if output is not None:
-        for original, text in polynomials.corrected(result).items():
-            target = output / Path(original).name
+        files = polynomials.corrected(result)
+        targets = {original: output / Path(original).name for original in files}
+        for original, target in targets.items():  # all refused before any is written
             if target.resolve() == Path(original).resolve():
                 raise OutputError(f"{target} is the deck's own file: give another folder")
-            write_atomic(target, text.encode("utf-8"), force=force)
-            written.append(str(target))
+            if target.exists() and not force:  # an ElastoDyn file carries no mark of wtvib's
+                raise OutputError(f"{target} exists; use --force to replace it")
+        names = [t.name for t in targets.values()]
+        twice = next((n for n in names if names.count(n) > 1), None)
+        if twice is not None:
+            raise OutputError(
+                f"the tower and blade files share the name {twice}: they would be written "
+                "over each other in one folder"
+            )
+        for original, text in files.items():
+            write_atomic(targets[original], text.encode("utf-8"), force=force)
+            written.append(str(targets[original]))
     if not no_plots:
         from .plots import png_bytes
         from .plots.polynomials import polynomials_plot

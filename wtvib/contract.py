@@ -130,6 +130,23 @@ CHECK_NUMBERS: dict[str, str] = {
     ),
     "wave_periods_s": "The site's wave band (shortest, longest period) [s].",
     "inside": "The platform modes inside the wave band.",
+    "driven_by": (
+        "The rotating-frame harmonic behind a fixed-frame rotor mode's resonance (a cyclic "
+        "mode met by 6P is the blades' 7P or 5P) [-]."
+    ),
+    "condition": "system.coupling: the generator condition the coupled modes hold in.",
+    "model": "system.coupling: what the coupled model holds and neglects, in words.",
+    "parked": (
+        "system.coupling: the coupled modes in the other generator condition (condition, "
+        "modes: name, frequency [Hz])."
+    ),
+    "sets": (
+        "An ElastoDyn deck's mode-shape polynomials (polynomials.tower, .blade): each set's "
+        "name (TwFAM1Sh …), mode, file and line, the finite-element frequency [Hz], the "
+        "frequency the deck's and the computed polynomial imply [Hz], the deck's MAC against "
+        "the computed shape and against the other mode of its plane, and both coefficient "
+        "lists (c₂ … c₆)."
+    ),
     "pairs": (
         "Subsystems' modes the chapter names as coupled, at their closest: the two ids and "
         "frequencies [Hz], the rotor speed [rpm], the separation |f₁ − f₂|/min [-] and the "

@@ -32,6 +32,7 @@ SUBSYSTEM_NAMES = {
     "rotor": "Rotor on the tower head (periodic coefficients, Floquet)",
     "system": "Whole turbine: coupled rotor–tower model (Hau §7.6)",
     "aerodynamics": "In operation: aerodynamic damping of every mode (Hau §7.5.1)",
+    "polynomials": "ElastoDyn's mode-shape polynomials: the deck's own against the computed",
 }
 DIAGRAM_FOR = {
     "tower": ("campbell",),
@@ -39,8 +40,9 @@ DIAGRAM_FOR = {
     "drivetrain": ("campbell-drivetrain", "drivetrain-modes", "drivetrain-power"),
     "yaw": ("campbell-yaw",),
     "rotor": ("floquet",),
-    "system": ("campbell-system", "system-energy"),
+    "system": ("campbell-system", "standstill", "system-energy"),
     "aerodynamics": ("damping",),
+    "polynomials": ("shapes",),
 }
 
 
@@ -295,7 +297,10 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
     the assumptions."""
     out = _identity(k, r) + _warnings(k, r) + _summary(k, r)
     drawn: set[str] = set()
-    for sub, title in SUBSYSTEM_NAMES.items():
+    others = dict.fromkeys(
+        c["subsystem"] for c in r["checks"] if c["subsystem"] not in SUBSYSTEM_NAMES
+    )
+    for sub, title in {**SUBSYSTEM_NAMES, **{o: f"Checks of {o}" for o in others}}.items():
         out += _subsystem(k, r, sub, title, pngs, drawn)
     if r.get("uncertainty"):
         out += _uncertainty(k, r["uncertainty"])
@@ -416,7 +421,7 @@ def _subsystem(
         out.append(k.table(rows, [0.22, 0.5, 0.14, 0.14]))
     if sub == "system":
         out += _coupling(k, r["checks"])
-    for diagram in DIAGRAM_FOR[sub]:
+    for diagram in DIAGRAM_FOR.get(sub, ()):
         if diagram not in pngs or diagram in drawn:
             continue
         drawn.add(diagram)
@@ -633,6 +638,14 @@ def _numbers(c: dict[str, Any]) -> str:
             + (f", at {', '.join(where)}" if where else "")
             + ")"
         )
+    for row in c.get("sets") or []:  # an ElastoDyn deck's polynomials
+        if row.get("implied_hz") and row.get("computed_implied_hz"):
+            stiff = row["implied_hz"] / row["computed_implied_hz"] - 1
+            parts.append(
+                f"{row['name']} MAC {row['mac']:.4f}, implies {row['implied_hz']:.4g} Hz "
+                f"({words.signed_percent(stiff)} on the computed "
+                f"{row['computed_implied_hz']:.4g} Hz)"
+            )
     unstable = c.get("unstable")
     if isinstance(unstable, dict) and unstable:  # mode → winds [m/s]
         parts += [

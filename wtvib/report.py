@@ -10,6 +10,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from rich import box
 from rich.console import Console, Group
 from rich.panel import Panel
 from rich.table import Table
@@ -368,41 +369,49 @@ def windows_table(console: Console, doc: dict[str, Any]) -> None:
 
 def shapes_table(console: Console, doc: dict[str, Any]) -> None:
     """``wtvib shapes``: each ElastoDyn polynomial, the deck's and the computed one, with
-    the frequency each implies on the same finite-element model and their MAC."""
+    the frequency each implies on the same finite-element model (and how far from the
+    finite element's), the deck's MAC against the computed shape and its status."""
     console.print(
         _t(
-            f"{doc['turbine']} — ElastoDyn mode shapes (blade at {doc['blade_rpm']:.4g} rpm)",
+            f"{doc['turbine']} — ElastoDyn mode shapes (blade at {doc['blade_rpm']:.4g} rpm): "
+            "the finite element's frequency, the deck's and the computed coefficients "
+            "(c₂ … c₆ downwards), the frequency each implies [Hz] and how far from the finite "
+            "element's, the deck's MAC against the computed shape",
             "bold",
         )
     )
-    table = Table(show_lines=True)
-    for col in ("set", "f FE [Hz]", "deck: c₂ … c₆", "implies", "computed: c₂ … c₆", "implies",
-                "MAC old↔new", ""):  # fmt: skip
-        table.add_column(col, justify="left" if col in ("set", "") else "right")
+    table = Table(box=box.SIMPLE_HEAD, padding=(0, 1), show_edge=False)
+    for col in ("set", "f [Hz]", "deck", "implies", "computed", "implies", "MAC", ""):
+        table.add_column(
+            col, justify="left" if col in ("set", "") else "right", no_wrap=True,
+            min_width=4 if not col else None,
+        )  # fmt: skip
     for row in [*doc["tower"], *doc["blade"]]:
         f = row["frequency_hz"]
 
         def coeffs(values: list[float] | None) -> str:
-            return "—" if values is None else " ".join(f"{v:.4g}" for v in values)
+            return "—" if values is None else "\n".join(f"{v:.4g}" for v in values)
 
         def implied(hz: float | None, f: float = f) -> str:
-            return "—" if hz is None else f"{hz:.4g} ({hz / f - 1:+.1%})"
+            return "—" if hz is None else f"{hz:.4g}\n{words.signed_percent(hz / f - 1)}"
 
         status = row["status"].upper() if row["deck"] is not None else "new"
         table.add_row(
-            f"{row['name']}\n{row['mode']}",
+            f"{row['name']}\n{row['mode']}\n",
             f"{f:.4g}",
             coeffs(row["deck"]),
             implied(row["deck_implied_hz"]),
             coeffs(row["computed"]),
             implied(row["computed_implied_hz"]),
-            "—" if row["mac_old_new"] is None else f"{row['mac_old_new']:.4f}",
+            "—" if row["mac_deck"] is None else f"{row['mac_deck']:.4f}",
             Text(status, style=STYLE.get(row["status"], "")),
         )
     console.print(table)
     for row in [*doc["tower"], *doc["blade"]]:
         if row.get("why"):
             console.print(_t(f"  {row['name']}: {row['why']}", "yellow"))
+    for said in doc["assumptions"][1:]:  # the first is the model, in the JSON
+        console.print(_t(f"  {said}", "dim"))
     for path in doc["written"]:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 

@@ -19,3 +19,10 @@ def operation(op: Mapping[str, Any], digits: int = 4) -> str:
     )
     source = f" — from {op['source']}" if op.get("source") else ""
     return f"{speeds}; overspeed {op['overspeed_rpm']:.4g} rpm{source}"
+
+
+def signed_percent(value: float, digits: int = 1) -> str:
+    """A relative difference as a reader reads it: +3.3 %, −1.2 %, 0 % (never −0.0 %)."""
+    if abs(value) < 0.5 * 10.0 ** (-digits - 2):
+        return "0 %"
+    return f"{100 * value:+.{digits}f} %".replace("-", "−")

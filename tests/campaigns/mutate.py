@@ -56,6 +56,7 @@ TESTS: dict[str, tuple[str, ...]] = {
     "aerodamping": ("tests/validation/test_aerodynamics.py",),
     "unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
     "tuned_damper": ("tests/validation/test_tuned_damper.py",),
+    "polynomials": ("tests/test_polynomials.py", "tests/validation/test_polynomials.py"),
 }
 
 

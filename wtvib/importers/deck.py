@@ -127,6 +127,17 @@ class Deck:
             return default
         raise SpecError(f"{keys[0]} is missing from the deck", source=str(self.path))
 
+    def factor(self, key: str) -> float:
+        """An adjustment factor (AdjTwMa, AdjFlSt …): positive, 1 where absent."""
+        value = self.num(key, default=1.0)
+        if not value > 0:
+            raise SpecError(
+                f"{key} must be positive (got {value:g}): it scales a mass or stiffness",
+                line=self.values[key][1] if key in self.values else None,
+                source=str(self.path),
+            )
+        return value
+
     def fractions(self, table: str) -> np.ndarray:
         """The table's first column (HtFract, BlFract): increasing from 0 to 1 — a table cut
         short (a truncated file) would otherwise describe part of the member as all of it."""
@@ -179,6 +190,22 @@ class Deck:
             )
         if found is None:
             raise SpecError(f"the {table} table has no {names[0]} column", source=str(self.path))
+        return found
+
+    def positive(self, table: str, name: str) -> np.ndarray:
+        """A column of distributed mass or stiffness: every value above 0 — a station with
+        none is a beam that is not there, named by file, line and column."""
+        found = self.column(table, name)
+        bad = np.flatnonzero(~(found > 0))
+        if bad.size:
+            k = int(bad[0])
+            head = self.table_lines.get(table)
+            raise SpecError(
+                f"{name} must be positive (got {found[k]:g} at {table} "
+                f"{self.column(table, table)[k]:g})",
+                line=head + 2 + k if head is not None else None,
+                source=str(self.path),
+            )
         return found
 
     def optional_column(self, table: str, *names: str) -> np.ndarray | None:

@@ -374,9 +374,9 @@ def _tower_tables(tower: Deck, yaw: bool) -> tuple[Any, Any, Any, Any, Any]:
     with its adjustment factors, and its torsion (:func:`_tower_torsion`; ``yaw``: the deck
     set has a yaw drive); a single station is a uniform tower."""
     frac = tower.fractions("HtFract")
-    mass = tower.column("HtFract", "TMassDen") * tower.num("AdjTwMa", default=1.0)
-    ei_fa = tower.column("HtFract", "TwFAStif") * tower.num("AdjFASt", default=1.0)
-    ei_ss = tower.column("HtFract", "TwSSStif") * tower.num("AdjSSSt", default=1.0)
+    mass = tower.positive("HtFract", "TMassDen") * tower.factor("AdjTwMa")
+    ei_fa = tower.positive("HtFract", "TwFAStif") * tower.factor("AdjFASt")
+    ei_ss = tower.positive("HtFract", "TwSSStif") * tower.factor("AdjSSSt")
     torsion = _tower_torsion(tower, mass, ei_fa, yaw)
     if len(frac) == 1:  # one station (NTwInpSt = 1): a uniform tower
         frac = np.array([0.0, 1.0])
@@ -672,8 +672,19 @@ def polynomials(deck: Deck, keys: dict[str, str]) -> dict[str, Any]:
     ValidateModeShapeCoeffs); a coefficient missing or not a number names its key."""
     out = {}
     for key, name in keys.items():
-        coeffs = [deck.num(f"{key}({k})") for k in range(2, 7)]
-        first = f"{key}(2)"
+        names = [f"{key}({k})" for k in range(2, 7)]
+        absent = [n for n in names if n not in deck.values]
+        if absent:
+            near = [deck.values[n][1] for n in names if n in deck.values]
+            raise SpecError(
+                f"{absent[0]} is missing (ElastoDyn reads five coefficients of {key}, "
+                "x² … x⁶, one a line)"
+                + (f"; the others of the set are on lines {min(near)}–{max(near)}" if near else ""),
+                line=None,
+                source=str(deck.path),
+            )
+        coeffs = [deck.num(n) for n in names]
+        first = names[0]
         total = sum(coeffs)
         if not all(math.isfinite(c) for c in coeffs) or abs(total - 1.0) > SHAPE_SUM_TOLERANCE:
             raise SpecError(
@@ -707,12 +718,12 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
             _file(main, *ed_keys)  # the one-line error naming the key
         assert ed is not None
         span = ed.fractions("BlFract") * length
-        mass = ed.column("BlFract", "BMassDen") * ed.num("AdjBlMs", default=1.0)
+        mass = ed.positive("BlFract", "BMassDen") * ed.factor("AdjBlMs")
         structure: dict[str, Any] = {
             "span_m": _list(span),
             "mass_per_length_kg_m": _list(mass),
-            "ei_flap_nm2": _list(ed.column("BlFract", "FlpStff") * ed.num("AdjFlSt", default=1.0)),
-            "ei_edge_nm2": _list(ed.column("BlFract", "EdgStff") * ed.num("AdjEdSt", default=1.0)),
+            "ei_flap_nm2": _list(ed.positive("BlFract", "FlpStff") * ed.factor("AdjFlSt")),
+            "ei_edge_nm2": _list(ed.positive("BlFract", "EdgStff") * ed.factor("AdjEdSt")),
         }
         twist = ed.optional_column("BlFract", "StrcTwst")
         if twist is not None:

@@ -68,8 +68,9 @@ def png_bytes(fig: "Figure") -> bytes:
 
 
 #: The figures a reader looks at first: the Campbell diagrams and the damping in operation.
-#: The others (mode shapes, power sweep, Floquet and stability charts, V–g, energy shares)
-#: are detail: ``check --figures all``, and always in ``report`` and ``batch``.
+#: The others (mode shapes, power sweep, Floquet and stability charts, V–g, energy shares,
+#: an ElastoDyn deck's polynomials) are detail: ``check --figures all``, and always in
+#: ``report`` and ``batch``.
 MAIN = ("campbell", "damping")
 
 
@@ -79,13 +80,15 @@ def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Fi
     from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
     from .campbell import DIAGRAMS, campbell_plot, damping_plot
     from .drivetrain import drivetrain_shapes_plot, power_curve_plot
+    from .polynomials import shapes_plot
     from .rotor import floquet_plot
     from .system import coupled_energy_plot
 
+    shapes = {"shapes": functools.partial(shapes_plot, report)} if detail else {}
     if report.spec.rotor.speed.parked:  # a standstill audit: no speed to draw over
         from .campbell import standstill_plot
 
-        return {"standstill": functools.partial(standstill_plot, report)}
+        return {"standstill": functools.partial(standstill_plot, report), **shapes}
     # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
     # diagram of its own: the system diagram shows them where they are judged
     present = {m.subsystem for m in report.modes if m.judged}
@@ -107,7 +110,7 @@ def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Fi
     for name, make in makers.items():
         if detail or name in MAIN:
             out[name] = functools.partial(make, report)
-    return out
+    return out | shapes
 
 
 def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:

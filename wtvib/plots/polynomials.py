@@ -5,7 +5,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..polynomials import Row, Shapes
+from .. import words
+from ..polynomials import NAME, Row, Shapes
 from ..rules import Status
 from ..spec import Spec
 from . import headline
@@ -14,6 +15,15 @@ from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, titl
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+
+    from ..audit import Report
+
+
+def shapes_plot(report: "Report") -> "Figure | None":
+    """``check``'s figure of an ElastoDyn deck's polynomials (:func:`polynomials_plot`),
+    where the audit judged any."""
+    found = report.result(NAME, Shapes)
+    return polynomials_plot(found, report.spec) if found is not None else None
 
 
 def polynomials_plot(result: Shapes, spec: Spec) -> "Figure":
@@ -72,8 +82,8 @@ def _panel(ax, row: Row, x) -> None:  # type: ignore[no-untyped-def]
         ax.plot(x, _scaled(row.deck.value(x)), ls="--", color=colour, lw=1.4, label="deck")
     ax.axhline(0, color="#9e9e9e", lw=0.6)
     said = (
-        f"MAC {row.mac_deck:.4f}, {(row.deck_hz or 0) / row.frequency_hz - 1:+.1%}"
-        if row.deck is not None and row.mac_deck is not None
+        f"MAC {row.mac_deck:.4f}, {words.signed_percent(row.stiffer)}"
+        if row.mac_deck is not None and row.stiffer is not None
         else "no deck polynomial"
     )
     ax.set_title(f"{row.key}: {row.frequency_hz:.3g} Hz\n{said}", fontsize=SMALL_PT, y=1.0)
