@@ -509,6 +509,13 @@ class _Chain:
     hub_polar: float
 
 
+def hub_polar(spec: Spec) -> float:
+    """The hub's polar inertia about the shaft the coupled model takes: the coupled block's
+    ``hub_inertia_kgm2``, else the drive-train chain's hub (0 without a chain). [kg·m²]"""
+    assert spec.coupled is not None
+    return _chain(spec, spec.coupled.parked_condition, []).hub_polar
+
+
 def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
     cm = spec.coupled
     assert cm is not None

@@ -52,7 +52,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, blade, modal, tower
+from . import beam, blade, coupled, modal, tower
 from .analysis import Analysis, Context, Damping, no_modes
 from .errors import SpecError
 from .results import Check, Rule
@@ -242,7 +242,7 @@ def shape_head(spec: Spec) -> TowerHead | None:
         return head
     pts = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
     n = spec.rotor.blades
-    hub_polar = cm.hub_inertia_kgm2 or 0.0
+    hub_polar = coupled.hub_polar(spec)
     m_rotor = n * (float(pts.mass.sum()) + s.tip_mass_kg) + cm.hub_mass_kg
     j_blades = n * (pts.polar() + s.tip_mass_kg * (s.hub_radius_m + float(s.span_m[-1])) ** 2)
     apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
@@ -600,9 +600,9 @@ def compute(spec: Spec, rpm: float | None = None) -> Shapes:
         else "no tower head"
     )
     statements = (
-        f"ElastoDyn mode shapes: finite elements ({ELEMENTS} elements), the tower with its "
-        f"{said} on its {spec.tower.foundation.kind} base, gravity "
-        f"{'on' if spec.tower.gravity else 'off'}; the blade at {rpm:.4g} rpm ({where}; "
+        f"ElastoDyn mode shapes: finite elements ({ELEMENTS} elements), the tower on its "
+        f"{spec.tower.foundation.kind} base, gravity {'on' if spec.tower.gravity else 'off'}, "
+        f"with its {said}; the blade at {rpm:.4g} rpm ({where}; "
         "ElastoDyn keeps the shape at every speed, so it is best where the loads are, at "
         "rated speed: --rpm). The tower's polynomials fitted by least squares with their "
         "coefficients adding to 1 (BModes, pyBModes), the blade's the Rayleigh–Ritz modes "
