@@ -509,13 +509,6 @@ class _Chain:
     hub_polar: float
 
 
-def hub_polar(spec: Spec) -> float:
-    """The hub's polar inertia about the shaft the coupled model takes: the coupled block's
-    ``hub_inertia_kgm2``, else the drive-train chain's hub (0 without a chain). [kg·m²]"""
-    assert spec.coupled is not None
-    return _chain(spec, spec.coupled.parked_condition, []).hub_polar
-
-
 def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
     cm = spec.coupled
     assert cm is not None
@@ -756,7 +749,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     omega = tuple(sw.omega.tolist())
     order = np.argsort(sw.frequency_hz[0])
     pairs, chained = counterparts(spec, [sw.names[j] for j in order], cond)
-    weighted = strain_weighted(spec, model, sw.path.shapes[0])
+    weighted = strain_weighted(spec, model, sw.path.shapes[0], sw.frequency_hz[0])
     lower = default_damping(spec)
     out = []
     for j, name in enumerate(sw.names):
@@ -962,14 +955,19 @@ def _statements(model: Model) -> tuple[str, ...]:
 NAME = "system"
 
 
-def strain_weighted(spec: Spec, model: Model, shapes: NDArray[np.complex128]) -> list[Damping]:
+def strain_weighted(
+    spec: Spec, model: Model, shapes: NDArray[np.complex128], frequency_hz: Array
+) -> list[Damping]:
     """Each coupled mode's material damping: the tower's and the blades' ratios weighed by
     the strain energy the mode puts in each (modal strain energy: ζ = Σ ζ_p·E_p / Σ E_p,
     E_p = Re x̄_pᵀ(K x)_p over the part's coordinates at standstill) — a second tower mode
     that hardly bends the blades takes the tower's ratio, not the lower of the two. A mode
-    that strains neither (drive train, yaw) takes the lower (:func:`default_damping`)."""
+    that strains neither (drive train, yaw) takes the lower (:func:`default_damping`).
+    Where the tower's ratios are ElastoDyn's (``tower.damping_at: tower-alone``), the
+    tower's part is :func:`_tower_alone_ratios`."""
     tower_d = section_damping(spec.tower, "tower")
     blade_d = section_damping(spec.blade, "blade")
+    alone = _tower_alone_ratios(spec, model, shapes, frequency_hz)
     k = model.multiblade[3]
     energy = np.abs(np.real(np.conj(shapes) * (k @ shapes)))
     parts = {"tower": np.zeros(shapes.shape[1]), "blade": np.zeros(shapes.shape[1])}
@@ -979,7 +977,7 @@ def strain_weighted(spec: Spec, model: Model, shapes: NDArray[np.complex128]) ->
             parts[kind] += energy[index].sum(axis=0)
     total = energy.sum(axis=0)
     lower = default_damping(spec)
-    if tower_d.ratio == blade_d.ratio:
+    if tower_d.ratio == blade_d.ratio and alone is None:
         return [lower] * shapes.shape[1]
     assumed = tower_d.assumed or blade_d.assumed
     out = []
@@ -988,18 +986,64 @@ def strain_weighted(spec: Spec, model: Model, shapes: NDArray[np.complex128]) ->
         if e_t + e_b < 0.5 * total[j] or total[j] <= 0:
             out.append(lower)
             continue
-        zeta = (tower_d.ratio * e_t + blade_d.ratio * e_b) / (e_t + e_b)
+        z_t = tower_d.ratio if alone is None else float(alone[j])
+        zeta = (z_t * e_t + blade_d.ratio * e_b) / (e_t + e_b)
         share = e_t / (e_t + e_b)
+        how = (
+            "" if alone is None else f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own "
+            "frequencies without the head, × f/f_alone"
+        )  # fmt: skip
         out.append(
             Damping(
                 zeta,
                 f"tower.damping_ratio and blade.damping_ratio by the mode's strain energy "
-                f"({share:.0%} tower, {1 - share:.0%} blades; "
+                f"({share:.0%} tower, {1 - share:.0%} blades{how}; "
                 f"{'assumed: not all given' if assumed else 'given'})",
                 assumed,
             )
         )
     return out
+
+
+def _tower_alone_ratios(
+    spec: Spec, model: Model, shapes: NDArray[np.complex128], frequency_hz: Array
+) -> Array | None:
+    """The tower's damping ratio in each coupled mode where its ratios are ElastoDyn's
+    (``damping_at: tower-alone``; None otherwise): ElastoDyn damps each tower mode k in
+    proportion to its stiffness, c_k = 2ζ_k·k_k/ω_alone,k, so that a mode at f whose tower
+    bending is mode k carries ζ_k·f/f_alone,k (:func:`tower.mode_damping`). The coupled
+    mode's tower part is split over the tower's own modes with its head (the tower block of
+    the standstill model, K-orthogonal) by their strain energy; what lies beyond the second
+    mode of a plane takes the second's ratio."""
+    t = spec.tower
+    if t.damping_at != "tower-alone":
+        return None
+    ref = tower.alone_frequencies(spec)
+    m, _, _, k, _ = model.multiblade
+    weighted = np.zeros(shapes.shape[1])
+    energy = np.zeros(shapes.shape[1])
+    for plane in ("fa", "ss"):
+        index = model.groups.get(f"tower.{plane}")
+        if index is None or len(index) < 2:
+            continue
+        kt, mt = k[np.ix_(index, index)], m[np.ix_(index, index)]
+        own = modal.solve(kt, mt, 2).shapes
+        x = shapes[index]
+        whole = np.abs(np.real(np.conj(x) * (kt @ x))).sum(axis=0)
+        rest = whole.copy()
+        zetas = []
+        for i in range(own.shape[1]):
+            phi = own[:, i]
+            stiff = float(phi @ kt @ phi)
+            e_i = np.abs(phi @ kt @ x) ** 2 / stiff
+            rest = rest - e_i
+            name = f"{plane}{i + 1}"
+            z = t.damping_by_mode.get(name, t.damping_ratio)  # type: ignore[call-overload]
+            zetas.append(float(z) / ref[name])
+            weighted += e_i * zetas[-1] * frequency_hz
+        weighted += np.maximum(rest, 0.0) * zetas[-1] * frequency_hz
+        energy += whole
+    return np.where(energy > 0, weighted / np.where(energy > 0, energy, 1.0), t.damping_ratio)
 
 
 def default_damping(spec: Spec) -> Damping:

@@ -120,6 +120,30 @@ class Chain:
         return np.diag(self.inertia), k, d
 
 
+def hub_inertia(spec: Spec) -> float:
+    """The hub's polar inertia about the shaft: the coupled block's ``hub_inertia_kgm2``,
+    else the first mass of the chain after the blades (reduced to the rotor's shaft, with
+    what is rigidly joined to it), 0 without a chain. [kg·m²]"""
+    cm = spec.coupled
+    if cm is not None and cm.hub_inertia_kgm2 is not None:
+        return cm.hub_inertia_kgm2
+    dt = spec.drivetrain
+    if not dt.chain:
+        return 0.0
+    skip = 1 if dt.chain[0].name == "blades" else 0
+    rest, shafts = dt.chain[skip:], dt.shafts[skip:]
+    if len(rest) < 2:
+        return rest[0].inertia_kgm2 if rest else 0.0
+    sub = spec.model_copy(
+        update={
+            "drivetrain": dt.model_copy(
+                update={"chain": rest, "shafts": shafts, "reference_shaft": "rotor"}
+            )
+        }
+    )
+    return float(reduce(sub).inertia[0])
+
+
 def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
     """The spec's chain reduced to its reference shaft.
 

@@ -52,12 +52,11 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, blade, coupled, modal, tower
+from . import beam, blade, modal, tower
 from .analysis import Analysis, Context, Damping, no_modes
 from .errors import SpecError
 from .results import Check, Rule
-from .rigid import Part, assembled, nacelle, rotor_points
-from .spec import Spec, TowerHead
+from .spec import Spec
 from .spec.base import ShapePolynomial
 
 Array = NDArray[np.float64]
@@ -232,31 +231,6 @@ class Shapes:
 # The tower
 
 
-def shape_head(spec: Spec) -> TowerHead | None:
-    """The tower head as ElastoDyn's tower-mode practice lumps it (module notes): the
-    spec's head less the blades' rotational inertia — the nacelle and the rotor's mass at
-    the apex, the hub's polar inertia about the shaft. Where the spec does not say where
-    the rotor is (no ``coupled`` block) or has no blade table, the head as given."""
-    head, cm, s = spec.tower_head, spec.coupled, spec.blade.structure
-    if head is None or cm is None or s is None:
-        return head
-    pts = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
-    n = spec.rotor.blades
-    hub_polar = coupled.hub_polar(spec)
-    m_rotor = n * (float(pts.mass.sum()) + s.tip_mass_kg) + cm.hub_mass_kg
-    j_blades = n * (pts.polar() + s.tip_mass_kg * (s.hub_radius_m + float(s.span_m[-1])) ** 2)
-    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
-    nac = nacelle(head, apex, m_rotor, j_blades + hub_polar)
-    roll, pitch, yaw = (float(v) for v in nac.inertia)
-    lumped = assembled(
-        [
-            Part("nacelle", nac.mass, float(nac.c[0]), float(nac.c[2]), pitch, roll, yaw),
-            Part("rotor", m_rotor, float(apex[0]), float(apex[2]), roll=hub_polar),
-        ]
-    )
-    return TowerHead.model_validate(lumped.as_head())
-
-
 @dataclass(frozen=True)
 class Judged:
     """A finite-element model a polynomial is judged on: how a polynomial becomes one of
@@ -341,7 +315,7 @@ def _rows(sets: Sequence[_Set]) -> list[Row]:
 def _tower_sets(spec: Spec) -> list[_Set]:
     t = spec.tower
     b = tower.discretise(t, ELEMENTS)
-    head = shape_head(spec)
+    head = tower.bending_head(spec)
     top = float(b.nodes[-1])
     base = min(t.polynomial_base_m, top)
     length = top - base
@@ -589,7 +563,7 @@ def compute(spec: Spec, rpm: float | None = None) -> Shapes:
             "no tower structure and no blade table: nothing to compute mode shapes of",
             source=spec.source_file,
         )
-    head = shape_head(spec)
+    head = tower.bending_head(spec)
     said = (
         f"tower head {head.mass_kg:,.0f} kg at x = {head.cm_downwind_m:.2f} m, z = "
         f"{head.cm_above_top_m:.2f} m (pitch {head.inertia_pitch_kgm2:,.4g}, roll "

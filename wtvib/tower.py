@@ -13,7 +13,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, modal, platform, soil
+from . import beam, drivetrain, modal, platform, rigid, soil
 from . import spec as spec_mod
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
@@ -521,7 +521,7 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
         def plane(f: float | None, d: Literal["fa", "ss"] = direction) -> tuple[Array, Array]:
             return bending_system(
-                b, spec.tower_head, t.point_masses, t.foundation, d, t.gravity, frequency_hz=f
+                b, bending_head(spec), t.point_masses, t.foundation, d, t.gravity, frequency_hz=f
             )
 
         own = 0
@@ -696,19 +696,117 @@ def _concrete_bands(spec: Spec, b: Beam) -> tuple[Pair, Pair] | None:
     return _spec_bending(spec, low), _spec_bending(spec, high)
 
 
+def bending_head(spec: Spec) -> "spec_mod.TowerHead | None":
+    """The tower head as the tower's bending modes carry it. Where the spec models the
+    rotor (a ``coupled`` block and a blade table), the rotor's mass sits at the apex and
+    its rotational inertia is left to the degrees of freedom that carry it — the blades'
+    flap and edge, the drive train's torsion — as ElastoDyn's tower modes, BModes' tower-top
+    mass and pyBModes' adapter leave it: the nacelle as the head less the rotor, the rotor
+    a point mass with the hub's polar inertia about the shaft (ElastoDyn's point hub). A
+    rigid rotor's pitch inertia at the head (the NREL 5-MW's 19e6 kg·m²) held the second
+    tower modes 22–36 % below every model of the whole turbine. Where the spec does not say
+    where the rotor is, the head as given."""
+    head, cm, s = spec.tower_head, spec.coupled, spec.blade.structure
+    if head is None or cm is None or s is None:
+        return head
+    pts = rigid.rotor_points(
+        s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m)
+    )
+    n = spec.rotor.blades
+    hub_polar = drivetrain.hub_inertia(spec)
+    m_rotor = n * (float(pts.mass.sum()) + s.tip_mass_kg) + cm.hub_mass_kg
+    j_blades = n * (pts.polar() + s.tip_mass_kg * (s.hub_radius_m + float(s.span_m[-1])) ** 2)
+    apex = np.array([cm.apex_downwind_m, 0.0, cm.apex_above_top_m])
+    nac = rigid.nacelle(head, apex, m_rotor, j_blades + hub_polar)
+    roll, pitch, yaw = (float(v) for v in nac.inertia)
+    lumped = rigid.assembled(
+        [
+            rigid.Part("nacelle", nac.mass, float(nac.c[0]), float(nac.c[2]), pitch, roll, yaw),
+            rigid.Part("rotor", m_rotor, float(apex[0]), float(apex[2]), roll=hub_polar),
+        ]
+    )
+    return spec_mod.TowerHead.model_validate(lumped.as_head())
+
+
 def _spec_bending(spec: Spec, b: Beam, soil_factor: float = 1.0) -> Pair:
     """The spec's tower bending modes, fore-aft and side-side (soil springs times
-    ``soil_factor``)."""
+    ``soil_factor``), with the head as they carry it (:func:`bending_head`)."""
     t = spec.tower
     return bending_pair(
-        b, spec.tower_head, t.point_masses, t.foundation, t.gravity, soil_factor=soil_factor
+        b, bending_head(spec), t.point_masses, t.foundation, t.gravity, soil_factor=soil_factor
     )
+
+
+def alone_frequencies(spec: Spec) -> dict[str, float]:
+    """The frequencies of the tower's own first and second bending modes in each plane
+    without its head, point masses, added mass or gravity, clamped where its polynomials
+    start (``polynomial_base_m``: ElastoDyn's tower above a SubDyn pile or a platform) —
+    ElastoDyn's FreqTFA(:,1) and FreqTSS(:,1), the frequencies its damping is given at
+    (``tower.damping_at: tower-alone``). [Hz]"""
+    t = spec.tower
+    alone = t.model_copy(
+        update={
+            "point_masses": [],
+            "added_mass": None,
+            "foundation": spec_mod.Foundation(),
+            "distributed": _above(t.distributed, t.polynomial_base_m),
+        }
+    )
+    fa, ss = bending_pair(discretise(alone), None, [], alone.foundation, gravity=False)
+    return {
+        f"{plane}{i + 1}": float(modes.frequency_hz[i])
+        for plane, modes in (("fa", fa), ("ss", ss))
+        for i in range(min(2, len(modes.frequency_hz)))
+    }
+
+
+def _above(
+    d: "spec_mod.DistributedTower | None", base: float
+) -> "spec_mod.DistributedTower | None":
+    """A distributed tower's table from ``base`` up, its heights from there (the table
+    interpolated at ``base``)."""
+    if d is None or base <= 0:
+        return d
+    h = np.asarray(d.height_m, dtype=float)
+    keep = h > base
+    heights = np.concatenate([[base], h[keep]])
+
+    def at(values: Sequence[float]) -> list[float]:
+        v = np.asarray(values, dtype=float)
+        return np.concatenate([[np.interp(base, h, v)], v[keep]]).tolist()
+
+    return d.model_copy(
+        update={
+            "height_m": (heights - base).tolist(),
+            "mass_per_length_kg_m": at(d.mass_per_length_kg_m),
+            "ei_fa_nm2": at(d.ei_fa_nm2),
+            "ei_ss_nm2": at(d.ei_ss_nm2),
+            "gj_nm2": at(d.gj_nm2) if d.gj_nm2 is not None else None,
+            "polar_inertia_kgm": at(d.polar_inertia_kgm) if d.polar_inertia_kgm else None,
+        }
+    )
+
+
+def mode_damping(spec: Spec, name: str, f: float) -> float:
+    """The damping ratio of the tower mode ``name`` at its frequency ``f``: the ratio given
+    (``damping_by_mode``, else ``damping_ratio``) and, where the ratios are ElastoDyn's
+    (``damping_at: tower-alone``), that ratio times f/f_alone of the tower's own mode
+    (:func:`alone_frequencies`; ElastoDyn's CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)), a
+    stiffness-proportional damping: the NREL 5-MW's 1 % is 0.37 % on its first fore-aft
+    mode under the head). A mode without such a reference (torsion) takes the ratio."""
+    t = spec.tower
+    zeta = t.damping_by_mode.get(name, t.damping_ratio)  # type: ignore[call-overload]
+    if t.damping_at != "tower-alone":
+        return float(zeta)
+    ref = alone_frequencies(spec).get(name)
+    return float(zeta) * f / ref if ref else float(zeta)
 
 
 def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
     given = spec.tower.modes.get(name)
     zeta = given.damping_ratio if isinstance(given, spec_mod.ModeSpec) else None
-    zeta = spec.tower.damping_by_mode.get(name, zeta)
+    if name in spec.tower.damping_by_mode or spec.tower.damping_at == "tower-alone":
+        zeta = mode_damping(spec, name, f)
     full = np.zeros(len(nodes))
     full[len(nodes) - len(shape) :] = shape
     peak = full[np.argmax(np.abs(full))] or 1.0
@@ -943,6 +1041,27 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         f"{kind}; {head_text}; foundation: {base}; gravity "
         f"{'included' if t.gravity else 'not included'}.",
         *concrete,
+        *_damping_statement(spec),
+    )
+
+
+def _damping_statement(spec: Spec) -> tuple[str, ...]:
+    """How the tower's damping ratios are applied, where they are ElastoDyn's."""
+    t = spec.tower
+    if t.damping_at != "tower-alone":
+        return ()
+    ref = alone_frequencies(spec)
+    given = ", ".join(
+        f"{name} {100 * t.damping_by_mode.get(name, t.damping_ratio):.3g} % at "  # type: ignore[call-overload]
+        f"{ref[name]:.3g} Hz"
+        for name in ref
+    )
+    return (
+        "Tower damping as ElastoDyn applies it: each mode's ratio is that of a "
+        "stiffness-proportional damping at the frequency of the tower's own mode without its "
+        f"head or gravity ({given}; ElastoDyn.f90: CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA)), so "
+        "a mode at f carries ζ·f/f_alone — the first modes under the head far less than the "
+        "ratio given.",
     )
 
 

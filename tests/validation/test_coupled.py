@@ -64,19 +64,29 @@ def test_nrel5mw_parked_locked_against_table_9_1(nrel):
 
 
 def test_second_tower_modes_need_the_flexible_rotor(nrel):
-    """With the rotor as a rigid body on the tower top (wtvib.tower) the second tower modes
-    come out far below Table 9-1 (2.86–2.94 Hz): the blades' flexibility decouples most of
-    the rotor's inertia from the tower's second mode. The coupled model matches them."""
+    """With the rotor as a rigid body on the tower top the second tower modes come out far
+    below Table 9-1 (2.86–2.94 Hz): the blades' flexibility decouples most of the rotor's
+    inertia from the tower's second mode. The isolated tower model therefore carries the
+    rotor's mass at the apex and leaves its rotational inertia to the blades' and the drive
+    train's own degrees of freedom (tower.bending_head, as ElastoDyn, BModes and pyBModes
+    do): within 5 % of Table 9-1 (measured −1.9 % and −0.5 %), where the head as one rigid
+    body is over 20 % low; the coupled model matches them too, and is what the audit
+    judges."""
     iso = {m.id: m.frequency_hz for m in audit.run(nrel).modes}
     coupled_f = parked(nrel)
+    b = tower.discretise(nrel.tower)
+    rigid_fa, rigid_ss = tower.bending_pair(
+        b, nrel.tower_head, [], nrel.tower.foundation, nrel.tower.gravity
+    )
+    rigid = {"fa2": rigid_fa.frequency_hz[1], "ss2": rigid_ss.frequency_hz[1]}
     for name, (fast, adams, _) in (
         ("fa2", TABLE_9_1["tower.fa2"]),
         ("ss2", TABLE_9_1["tower.ss2"]),
     ):
         lo = min(fast, adams)
-        assert iso[f"tower.{name}"] < 0.8 * lo  # rigid rotor: more than 20 % low
+        assert rigid[name] < 0.8 * lo  # the rigid rotor: more than 20 % low
+        assert iso[f"tower.{name}"] == pytest.approx(lo, rel=0.05)
         assert coupled_f[f"tower.{name}"] >= 0.95 * lo
-    # so the audit judges them on the coupled model (issue 18): the isolated value is shown
     superseded = {m.id: m.superseded_by for m in audit.run(nrel).modes}
     assert superseded["tower.fa2"] == "system.tower.fa2"
     assert superseded["tower.ss2"] == "system.tower.ss2"
@@ -184,7 +194,9 @@ def test_coupling_check_compares_isolated_and_coupled(nrel):
     c = next(c for c in r.checks if c.id == "system.coupling")
     rows = {row["id"]: row for row in c.numbers["modes"]}
     fa2 = rows["system.tower.fa2"]
-    assert fa2["isolated_id"] == "tower.fa2" and fa2["change"] > 0.2
+    # the isolated second mode carries the rotor's inertia as the blades do
+    # (tower.bending_head): within 5 % of the coupled one, not 20 % below it as a rigid rotor
+    assert fa2["isolated_id"] == "tower.fa2" and 0 < fa2["change"] < 0.05
     # compared in the condition the modes are judged in (generator free, standstill) ...
     assert c.numbers["condition"] == "generator free, standstill"
     assert rows["system.drivetrain1"]["isolated_id"] == "drivetrain.free.1"
@@ -305,15 +317,24 @@ def test_drive_train_damper_damps_the_coupled_drive_train_mode(nrel):
 
 
 def test_coupled_modes_weigh_the_parts_damping_by_their_strain_energy(nrel):
-    """Issue 37: a coupled mode's material damping is the tower's and the blades' ratios
-    weighed by the strain energy the mode puts in each (modal strain energy). The NREL
-    5-MW deck gives the tower 1 % (TwrFADmp) and the blades 0.477 % (BldFlDmp): the first
-    and second tower modes, which hardly bend the blades, come out within 10 % of 1 %
-    (before: the lower of the two, 0.477 %, for every mode), the blade modes near 0.477 %."""
+    """A coupled mode's material damping is the tower's and the blades' ratios weighed by
+    the strain energy the mode puts in each (modal strain energy), the tower's as ElastoDyn
+    applies the deck's TwrFADmp/TwrSSDmp (1 %): stiffness-proportional at the tower's own
+    frequencies without its head (0.891 and 4.38 Hz), so a tower mode at f carries
+    1 %·f/f_alone — the first pair 0.35 % within 5 %, as OpenFAST's linearisation of the
+    same deck (r-test 5MW_Land_BD_Linear, no aerodynamics: 0.36 % fore-aft, 0.38 %
+    side-side, tests/data/openfast_lin/reference.json), the second pair within 15 % (their
+    11–13 % blade strain takes the blades' 0.477 %); the blade modes near 0.477 %
+    (BldFlDmp)."""
     ms = {m.id: m for m in audit.run(nrel).modes if m.subsystem == "system"}
-    for name in ("tower.fa1", "tower.ss1", "tower.fa2", "tower.ss2"):
-        assert ms[f"system.{name}"].damping_ratio == pytest.approx(0.01, rel=0.1), name
-        assert "strain energy" in (ms[f"system.{name}"].damping_source or "")
+    alone = tower.alone_frequencies(nrel)
+    assert alone["fa1"] == pytest.approx(0.891, rel=0.01)
+    for name, tol in (("fa1", 0.05), ("ss1", 0.05), ("fa2", 0.15), ("ss2", 0.15)):
+        m = ms[f"system.tower.{name}"]
+        assert m.damping_ratio == pytest.approx(0.01 * m.frequency_hz / alone[name], rel=tol)
+        assert "strain energy" in (m.damping_source or "")
+    for name in ("tower.fa1", "tower.ss1"):
+        assert ms[f"system.{name}"].damping_ratio == pytest.approx(0.0037, rel=0.1)
     for name in ("flap1.backward", "flap1.collective", "edge1.backward"):
         assert ms[f"system.blade.{name}"].damping_ratio == pytest.approx(0.00477465, rel=0.05)
 
@@ -328,11 +349,17 @@ def test_the_dampers_add_to_every_coupled_modes_material_damping(shared, deck):
         shared / "reference" / deck,
         importers.ReadOptions(rpm=(3.8, 11.75) if "IEA" in deck else None),
     )
-    default = coupled.default_damping(s).ratio
     system = [m for m in audit.run(s).modes if m.subsystem == "system"]
     assert system
-    assert all(m.damping_ratio is not None and m.damping_ratio >= default for m in system)
-    assert any("dampers" in (m.damping_source or "") and m.damping_ratio > default for m in system)
+    # the lowest material damping any part gives (the tower's as ElastoDyn applies it: its
+    # first modes under the head carry TwrFADmp·f/f_alone, tower.mode_damping)
+    floor = min(
+        coupled.default_damping(s).ratio,
+        *(tower.mode_damping(s, m.id.rsplit(".", 1)[1], m.frequency_hz)
+          for m in system if m.id in ("system.tower.fa1", "system.tower.ss1")),
+    )  # fmt: skip
+    assert all(m.damping_ratio is not None and m.damping_ratio >= floor * 0.999 for m in system)
+    assert any("dampers" in (m.damping_source or "") and m.damping_ratio > floor for m in system)
 
 
 @pytest.mark.parametrize("rpm", [9.0, 12.1])

@@ -105,7 +105,7 @@ def test_the_tower_head_is_elastodyns_tower_top_mass(loaded, shared):
     rot = ed.num("NumBl") * float(np.trapezoid(blade.column("BlFract", "BMassDen"), span))
     rot *= blade.num("AdjBlMs")
     twr_tp = ed.num("NacMass") + ed.num("YawBrMass") + ed.num("HubMass") + rot
-    head = polynomials.shape_head(loaded["IEA10"])
+    head = tower.bending_head(loaded["IEA10"])
     assert head is not None and head.mass_kg == pytest.approx(twr_tp, rel=1e-6)  # 7 digits
     assert PYB["IEA10"]["tip_mass"]["mass"] == pytest.approx(twr_tp - ed.num("YawBrMass"), rel=1e-6)
 
@@ -151,7 +151,7 @@ def test_the_shape_head_is_the_parts_elastodyn_lumps(shared, tmp_path, tip_brake
     z = sum(m * pz for m, _, pz in parts) / mass
     pitch = sum(m * ((px - x) ** 2 + (pz - z) ** 2) for m, px, pz in parts)
     roll = ed.num("HubIner") + sum(m * (pz - z) ** 2 for m, _, pz in parts)
-    head = polynomials.shape_head(importers.load(folder / Path(NREL).name))
+    head = tower.bending_head(importers.load(folder / Path(NREL).name))
     assert head is not None
     assert (head.mass_kg, head.cm_downwind_m, head.cm_above_top_m) == pytest.approx(
         (mass, x, z), rel=5e-6

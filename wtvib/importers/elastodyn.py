@@ -326,6 +326,18 @@ def _tower_section(
             "derived",
         ),
         "damping_ratio": main_damping(tower_file, "TwrFADmp(1)"),
+        # ElastoDyn's (and FAST's) ratios: per mode, stiffness-proportional at the tower's
+        # own frequency without its head (CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)))
+        "damping_by_mode": {
+            name: main_damping(tower_file, key)
+            for name, key in (
+                ("fa1", "TwrFADmp(1)"),
+                ("fa2", "TwrFADmp(2)"),
+                ("ss1", "TwrSSDmp(1)"),
+                ("ss2", "TwrSSDmp(2)"),
+            )
+        },  # fmt: skip
+        "damping_at": "tower-alone",
         **tw.block,
         "distributed": _distributed(tw.heights, tw.mass, tw.ei_fa, tw.ei_ss, tw.torsion),
     }

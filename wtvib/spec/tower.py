@@ -374,6 +374,14 @@ class Tower(_Strict):
         "damping_ratio (a measured fore-aft ratio that holds the rotor's aerodynamic "
         "damping, which the side-side and torsion modes lack). [-]",
     )
+    damping_at: Literal["mode", "tower-alone"] = Field(
+        "mode",
+        description="What the damping ratios are the ratios of: 'mode', each computed "
+        "mode's own; 'tower-alone', ElastoDyn's — a stiffness-proportional damping whose "
+        "ratio is given at the frequency of the tower's own mode without its head, point "
+        "masses or gravity, so that a mode at f carries ζ·f/f_alone (ElastoDyn.f90: CTFA = "
+        "0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1))).",
+    )
     sections: TubularSections | None = Field(None, description="Tapered tube geometry.")
     material: Material | None = Field(None, description="Material of the tube sections.")
     distributed: DistributedTower | None = Field(
