@@ -336,7 +336,7 @@ def _tower_section(
                 ("ss1", "TwrSSDmp(1)"),
                 ("ss2", "TwrSSDmp(2)"),
             )
-        },  # fmt: skip
+        },
         "damping_at": "tower-alone",
         **tw.block,
         "distributed": _distributed(tw.heights, tw.mass, tw.ei_fa, tw.ei_ss, tw.torsion),
