@@ -46,9 +46,12 @@ def test_no_servodyn_is_audited_at_the_initial_speed_and_said(tmp_path):
     assert "no ServoDyn" in found.warnings[0] and "--rpm" in found.warnings[0]
 
 
-def test_a_parked_deck_without_servodyn_has_no_speed(tmp_path):
+def test_a_parked_deck_without_servodyn_is_a_standstill_audit(tmp_path):
+    """RotSpeed 0 and no controller: parked, said (it was refused without --rpm)."""
     deck = elastodyn.parse(tmp_path / "d.dat", DECK.replace("12.1     RotSpeed", "0 RotSpeed"))
-    assert servodyn.operation(deck, None).speed is None
+    found = servodyn.operation(deck, None)
+    assert found.speed == {"parked": True, "source": "RotSpeed = 0 rpm in d.dat"}
+    assert "parked" in found.warnings[0] and "--rpm" in found.warnings[0]
 
 
 def test_simple_variable_speed_gives_rated_speed_and_power(tmp_path):

@@ -106,8 +106,10 @@ def test_pdf_labels_carry_their_units_and_numbers_stay_whole(shared, tmp_path):
     text = "\n".join(page.extract_text() for page in PdfReader(out).pages)
     assert "rated power\n5,000 kW" in text and "rotor diameter\n126 m" in text
     assert "kw 5000" not in text
-    assert "1899%" in text  # whole, on one line
-    assert not any(line.strip() == "%" for line in text.splitlines())
+    import re
+
+    assert re.search(r"\b\d{3,}%", text)  # a margin of hundreds of per cent, whole on a line
+    assert not any(line.strip().startswith("%") for line in text.splitlines())
 
 
 def test_report_of_a_bad_spec_is_one_line(tmp_path):

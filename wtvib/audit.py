@@ -468,7 +468,7 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
             f"rotor.speed: {speed.top_rpm:g} rpm for a {diameter:g} m rotor — probably "
             "rad/s or the generator speed, not the rotor's rpm"
         )
-    if diameter:
+    if diameter and not speed.parked:
         tip = math.pi * diameter * speed.top_rpm / 60
         if tip > 120:
             out.append(f"rotor.speed: tip speed {tip:.0f} m/s exceeds 120 m/s — unusual")

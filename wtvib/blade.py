@@ -38,6 +38,8 @@ def modes(spec: Spec) -> list[Mode]:
     if spec.blade.structure is None:
         return given
     computed = structural_modes(spec)
+    if spec.blade.dofs is not None:  # a deck's switches: only its degrees of freedom
+        computed = [m for m in computed if m.id.removeprefix("blade.") in spec.blade.dofs]
     ids = {m.id for m in computed}
     return sorted(computed + [m for m in given if m.id not in ids], key=lambda m: m.frequency_hz)
 

@@ -141,6 +141,16 @@ ClampedOption = Annotated[
         "modelled).",
     ),
 ]
+DeckDofsOption = Annotated[
+    bool,
+    typer.Option(
+        "--deck-dofs",
+        hidden=True,
+        help="Model an OpenFAST deck with its degrees of freedom as it switches them "
+        "(FlapDOF1 … PtfmYDOF, as OpenFAST models it); by default every mode of the "
+        "structure is audited and the switches said.",
+    ),
+]
 SoilOption = Annotated[
     Path | None,
     typer.Option(
@@ -195,6 +205,7 @@ def _options(
     rated: float | None,
     head_mass: float | None,
     clamped_base: bool,
+    deck_dofs: bool,
     soil: Path | None,
     blades: int | None,
     margin: float | None,
@@ -211,6 +222,7 @@ def _options(
         clamped_base=clamped_base,
         blades=blades,
         soil=soil,
+        deck_dofs=deck_dofs,
     )
     return Options(
         read=read,
@@ -229,6 +241,7 @@ RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
     ("rated", RatedOption, None),
     ("head_mass", HeadMassOption, None),
     ("clamped_base", ClampedOption, False),
+    ("deck_dofs", DeckDofsOption, False),
     ("soil", SoilOption, None),
     ("blades", BladesOption, None),
     ("margin", MarginOption, None),

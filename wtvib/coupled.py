@@ -122,26 +122,37 @@ def blade_modes(spec: Spec, count: int) -> BladeModes:
     computed once per spec object (one audit builds the model in several conditions)."""
     s = spec.blade.structure
     assert s is not None
+    dofs = tuple(spec.blade.dofs) if spec.blade.dofs is not None else None
     out: BladeModes = spec.derived(
-        ("coupled.blade_modes", count), s, lambda: _blade_modes(s, blade.fe_model(spec), count)
+        ("coupled.blade_modes", count, dofs),
+        s,
+        lambda: _blade_modes(s, blade.fe_model(spec), count, dofs),
     )
     return out
 
 
-def _blade_modes(s: BladeStructure, fe: "blade.BladeFE", count: int) -> BladeModes:
+def _blade_modes(
+    s: BladeStructure, fe: "blade.BladeFE", count: int, dofs: tuple[str, ...] | None = None
+) -> BladeModes:
     points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))
     nodes, b = points.nodes, points.basis
     # the tension's geometric stiffness only: the kinematics give the in-plane softening;
     # the standstill modes are the blade model's own (the same mesh: rigid.rotor_points)
     assert np.array_equal(nodes, fe.nodes)
     geo = fe.geo
-    frequency_hz, phi = fe.standstill.frequency_hz[:count], fe.standstill.shapes[:, :count]
+    if dofs is None:
+        keep = np.arange(min(count, len(fe.standstill.frequency_hz)))
+    else:  # a deck's degrees of freedom: those of the standstill modes, by name
+        names = blade.plane_names(fe.standstill.shapes)
+        keep = np.array([j for j, n in enumerate(names) if n in dofs], dtype=int)
+    frequency_hz, phi = fe.standstill.frequency_hz[keep], fe.standstill.shapes[:, keep]
     full = np.vstack([np.zeros((4, phi.shape[1])), phi])
     n_el = len(nodes) - 1
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
-    flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(-1, phi.shape[1])
-    edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(-1, phi.shape[1])
+    points_n = b.n.shape[0] * b.n.shape[1]  # Gauss points (element × point)
+    flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(points_n, phi.shape[1])
+    edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(points_n, phi.shape[1])
     radius, mass = points.radius, points.mass
     length = np.asarray(b.w, float).ravel()
     if s.tip_mass_kg:  # one more point: the tip mass, moving with the tip node
@@ -461,6 +472,10 @@ def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]
     b = tower.discretise(t)
     parts_k: list[Array] = []
     parts_m: list[Array] = []
+    if t.rigid:  # every tower DOF off in the deck: the nacelle on a fixed tower top
+        notes.append("the tower held rigid (the deck switches its DOFs off)")
+        empty = np.zeros((0, 0))
+        return [empty, empty], [empty, empty]
     for direction in ("fa", "ss"):
         k, m = tower.bending_system(
             b,
@@ -520,6 +535,14 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
     if dt.chain:
         rest = dt.chain[1:] if dt.chain[0].name == "blades" else dt.chain
         shafts = dt.shafts[1:] if dt.chain[0].name == "blades" else dt.shafts
+        if shafts and all(s.stiffness_nm_rad is None and s.fluid_coupling is None for s in shafts):
+            # a rigid drive shaft (a deck's DrTrDOF off): no torsion between the hub and
+            # the generator; the hub's own inertia is the rotor's (the generator's turns
+            # with it, free or held with the rotor's speed)
+            if cm.hub_inertia_kgm2 is None and rest:
+                hub_polar = rest[0].inertia_kgm2
+            notes.append("the drive shaft rigid: no drive-train torsion")
+            rest = []
         if len(rest) >= 2:
             sub = spec.model_copy(
                 update={
@@ -537,7 +560,7 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
             else:  # the given hub inertia replaces the chain's first mass
                 chain_m = chain_m.copy()
                 chain_m[0, 0] = coupling[0] = own[0] = hub_polar
-        elif cm.hub_inertia_kgm2 is None:
+        elif rest and cm.hub_inertia_kgm2 is None:
             hub_polar = rest[0].inertia_kgm2
     if chain_m.shape[0] == 0:
         notes.append("no flexible drive train: the rotor is held on the nacelle")
@@ -593,6 +616,8 @@ def applies(spec: Spec) -> bool:
         and spec.tower_head is not None
         and spec.tower.has_structure
         and spec.rotor.orientation != "vertical-axis"
+        # a deck with its tower and blades switched rigid has nothing left to couple
+        and not (spec.tower.rigid and spec.blade.dofs == [])
     )
 
 

@@ -132,7 +132,8 @@ def hub_inertia(spec: Spec) -> float:
         return 0.0
     skip = 1 if dt.chain[0].name == "blades" else 0
     rest, shafts = dt.chain[skip:], dt.shafts[skip:]
-    if len(rest) < 2:
+    rigid_shafts = all(s.stiffness_nm_rad is None and s.fluid_coupling is None for s in shafts)
+    if len(rest) < 2 or rigid_shafts:  # a rigid shaft (a deck's DrTrDOF off): the hub's own
         return rest[0].inertia_kgm2 if rest else 0.0
     sub = spec.model_copy(
         update={
@@ -141,10 +142,10 @@ def hub_inertia(spec: Spec) -> float:
             )
         }
     )
-    return float(reduce(sub).inertia[0])
+    return float(reduce(sub, rigid_ok=True).inertia[0])
 
 
-def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
+def reduce(spec: Spec, edge_hz: float | None = None, rigid_ok: bool = False) -> Chain:
     """The spec's chain reduced to its reference shaft.
 
     With a first mass named ``blades`` and the blades' first edgewise frequency known, the
@@ -181,7 +182,7 @@ def reduce(spec: Spec, edge_hz: float | None = None) -> Chain:
         coupling.append(mass.inertia_kgm2 * mass.speed_ratio / ref)
         stiffness.append(k)
         damping.append(shaft_damping * i2)
-    if not stiffness:
+    if not stiffness and not rigid_ok:
         raise ModelInputError("the drive-train chain has no flexible connection left")
     gen = (dt.chain[-1].speed_ratio / ref) ** 2
     return Chain(
@@ -317,9 +318,21 @@ def edge_frequency(spec: Spec, blade_modes: list[Mode]) -> float | None:
 DAMPERS_FLOOR = 1e-6
 
 
+def rigid(spec: Spec, blade_modes: list[Mode]) -> bool:
+    """Whether a deck's switches leave the chain without a flexible connection: its blades
+    rigid in-plane (their edgewise DOF off) and every shaft rigid (ElastoDyn's DrTrDOF
+    off) — then it has no torsion modes. A spec that says so by itself is refused where
+    the chain is reduced."""
+    dt = spec.drivetrain
+    edge_off = spec.blade.dofs is not None and "edge1" not in spec.blade.dofs
+    return edge_off and all(
+        s.stiffness_nm_rad is None and s.fluid_coupling is None for s in dt.shafts
+    )
+
+
 def modes(spec: Spec, blade_modes: list[Mode] | None = None) -> list[Mode]:
     """Drive-train modes per condition (ids ``drivetrain.<condition>.<k>``)."""
-    if not spec.drivetrain.chain:
+    if not spec.drivetrain.chain or rigid(spec, blade_modes or []):
         return _given(spec)
     chain = reduce(spec, edge_frequency(spec, blade_modes or []))
     material = default_damping(spec)
@@ -472,7 +485,7 @@ _CONDITION_KEY = {text: key for key, text in CONDITIONS.items()}
 def torque_refiner(spec: Spec, modes: Sequence[Mode]) -> Callable[[Check], Check] | None:
     """Adds the forced-response torque amplification to a drive-train resonance check, in
     the generator condition of the check's governing mode (None without a chain)."""
-    if not spec.drivetrain.chain:
+    if not spec.drivetrain.chain or rigid(spec, list(modes)):
         return None
     chain = reduce(spec, edge_frequency(spec, [m for m in modes if m.subsystem == "blade"]))
     condition_of = {

@@ -13,6 +13,7 @@ tool does not separate its aerodynamic part). Whole-turbine modes (fixed frame) 
 import math
 
 from .analysis import Analysis, Context
+from .resonance import standstill
 from .results import Check, Mode, OperatingDamping, Rule, Sampled, Whirl
 from .rules import NEGATIVE
 from .spec import Spec
@@ -80,7 +81,11 @@ def stability(spec: Spec, ctx: Context) -> Analysis:
             else "no damping given: each subsystem's default is assumed."
         ),
     )
-    lead = (_standstill(r.tool),) if spec.rotor.speed.parked else ()
+    lead = (
+        (standstill(f"{r.tool}'s results are of a parked rotor", stability=True),)
+        if spec.rotor.speed.parked
+        else ()
+    )
     if not damped:
         return Analysis(lead=lead, assumptions=statements)
     inside, outside = _negative(spec, ctx)
@@ -124,21 +129,6 @@ def stability(spec: Spec, ctx: Context) -> Analysis:
         },
     )
     return Analysis(lead=lead, checks=(check,), assumptions=statements)
-
-
-def _standstill(tool: str) -> Check:
-    """What a standstill audit does not judge, said as a check of its own (info)."""
-    return Check(
-        id="system.resonance",
-        subsystem="system",
-        status="info",
-        message=(
-            f"a standstill audit: {tool}'s results are of a parked rotor (0 rpm), which no "
-            "rotor harmonic excites — the modes' stability is judged, no resonance; give "
-            "--rpm MIN:MAX to judge the parked modes against an operating range"
-        ),
-        rule=Rule("no rotor harmonic at standstill", "kP = k·Ω/2π is 0 Hz at Ω = 0"),
-    )
 
 
 def _negative(

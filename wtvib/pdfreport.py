@@ -118,7 +118,8 @@ class _Kit:
         text = str(text)
         if len(text) > MAX_TEXT:
             text = f"{text[:MAX_TEXT]}… ({len(text) - MAX_TEXT:,} characters more)"
-        return self.raw(_esc(text), style)
+        # a number keeps its unit on its line ("23.4 %", "0.891 Hz"), in prose too
+        return self.raw(_UNIT_SPACE.sub("\\1&nbsp;", _esc(text)), style)
 
     def num(self, text: str) -> Any:
         """A cell of numbers: never broken inside a number, nor between a number and its

@@ -552,7 +552,9 @@ def compute(spec: Spec, rpm: float | None = None) -> Shapes:
     """
     speed = spec.rotor.speed
     where = "as asked"
-    if rpm is None:
+    if rpm is None and speed.parked:
+        where = "parked"
+    elif rpm is None:
         where = "the highest steady speed" + (f", from {speed.source}" if speed.source else "")
     rpm = _rpm(spec, rpm)
     rows = _rows(_sets(spec, rpm))

@@ -949,3 +949,22 @@ def _one_per_place(found: list[Mark], rel: float = 0.02) -> list[Mark]:
                 k.rpm, k.hz, k.status, k.kind, k.line, (*k.modes, *m.modes), daf, zeta
             )
     return sorted(kept, key=lambda m: (m.rpm, m.hz, m.line))
+
+
+def standstill(subject: str, stability: bool = False) -> Check:
+    """What a standstill audit (``rotor.speed.parked``) does not judge, said as a check of
+    its own (info): ``subject`` is whose modes they are ("OpenFAST's results are of a
+    parked rotor", "the turbine is parked"); ``stability``: whether their damping is
+    judged (another tool's, which can be negative)."""
+    judged = "their stability judged" if stability else "their damping listed"
+    return Check(
+        id="system.resonance",
+        subsystem="system",
+        status="info",
+        message=(
+            f"a standstill audit: {subject} (0 rpm), which no rotor harmonic excites — the "
+            f"modes are listed and {judged}, no resonance; give --rpm MIN:MAX to judge them "
+            "against an operating range"
+        ),
+        rule=Rule("no rotor harmonic at standstill", "kP = k·Ω/2π is 0 Hz at Ω = 0"),
+    )

@@ -19,7 +19,7 @@ from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
 from .given import given_modes
 from .modal import ModalError
-from .resonance import Finding, assess, speed_span
+from .resonance import Finding, assess, speed_span, standstill
 from .results import Check, Mode, Rule, Shape, ordinal
 from .rules import MarginRule, Status
 from .spec import Spec
@@ -37,6 +37,8 @@ def modes(spec: Spec) -> list[Mode]:
     Computed from the structure where the spec gives one; the given frequencies of modes the
     model does not compute (e.g. ``tor1`` without torsional data) are kept.
     """
+    if spec.tower.rigid:  # a deck's tower with every DOF off: no tower modes
+        return []
     if spec.tower.has_structure:
         computed = structural_modes(spec)
         ids = {m.id for m in computed}
@@ -847,6 +849,11 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     """The ``tower.class`` check, on the first bending mode as judged (the coupled one where
     the coupled model has it), placed before the tower's resonance checks."""
     statements = _statements(spec)
+    if spec.rotor.speed.parked:  # no rotor speed to place the tower against
+        said: tuple[Check, ...] = (
+            (standstill("the turbine is parked"),) if spec.results is None else ()
+        )
+        return Analysis(lead=said, assumptions=statements)
     first = first_bending(ctx.own(NAME))
     if first is None:  # another tool's whole-turbine tower mode (spec.results), if any
         tool = {m.id: m for m in ctx.own("system") if m.origin == "imported"}

@@ -106,7 +106,9 @@ class ReadOptions:
     or nacelle masses); ``clamped_base`` reads a floating turbine's tower as clamped at its
     base; ``blades`` is the number of blades of Campbell results that do not say; ``soil``
     a soil profile (YAML: ``soil`` layers and optional ``bounds``, or HAWC2's soil file)
-    for a windIO monopile."""
+    for a windIO monopile; ``deck_dofs`` models an OpenFAST deck with its degrees of
+    freedom as the deck switches them (ElastoDyn's FlapDOF1 … PtfmYDOF: OpenFAST's model of
+    the deck), where by default the structure's every mode is audited and the switches said."""
 
     rpm: tuple[float, float] | None = None
     rated: float | None = None
@@ -114,6 +116,7 @@ class ReadOptions:
     clamped_base: bool = False
     blades: int | None = None
     soil: Path | None = None
+    deck_dofs: bool = False
 
 
 def to_data(path: str | Path, options: ReadOptions = ReadOptions()) -> dict[str, Any]:
@@ -160,7 +163,9 @@ def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, A
     elif kind == "elastodyn":
         from . import elastodyn
 
-        data = elastodyn.to_spec_data(p, text, options.clamped_base, speed_given=rpm is not None)
+        data = elastodyn.to_spec_data(
+            p, text, options.clamped_base, speed_given=rpm is not None, deck_dofs=options.deck_dofs
+        )
     elif kind == "windio":
         from . import windio
 
@@ -195,6 +200,12 @@ def load(path: str | Path, options: ReadOptions = ReadOptions()) -> Spec:
 def _check_options(path: Path, kind: str, options: ReadOptions) -> None:
     """The import options, one rule and one message each, for every format."""
     rpm, rated, head_mass = options.rpm, options.rated, options.head_mass
+    if options.deck_dofs and kind != "elastodyn":
+        raise SpecError(
+            "--deck-dofs applies to OpenFAST deck sets (ElastoDyn's DOF switches); this "
+            "file has none",
+            source=str(path),
+        )
     if head_mass is not None:
         if kind != "windio":
             what = "the deck's" if kind == "elastodyn" else "the spec's"

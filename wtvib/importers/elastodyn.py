@@ -102,6 +102,91 @@ DOFS = (
     *PLATFORM_DOFS,
 )
 
+
+@dataclass(frozen=True)
+class _Switches:
+    """ElastoDyn's degrees of freedom as the deck switches them, in wtvib's terms: the
+    blade modes kept (None: all three), the nacelle held in yaw, the generator locked to
+    the rotor's speed, the drive shaft rigid, the tower rigid, the platform held — and the
+    sentence that says it (None: every DOF on)."""
+
+    blade: list[str] | None
+    yaw_held: bool
+    generator_locked: bool
+    shaft_rigid: bool
+    tower_rigid: bool
+    platform_held: bool
+    note: str | None
+
+
+def _switches(main: Deck, floating: bool, follow: bool, beamdyn: bool) -> _Switches:
+    """What the deck's DOF switches leave of the turbine (a missing switch is on, as in
+    ElastoDyn's templates), where the audit follows them (``follow``: ``--deck-dofs``);
+    otherwise nothing is switched off and the note says what OpenFAST's model of the deck
+    lacks. Where only some of a tower plane's or a platform's DOFs are off, the structure
+    keeps them (said): wtvib's tower and platform are not built of ElastoDyn's modes."""
+
+    def on(key: str) -> bool:
+        return main.flag(key) if key in main.values else True
+
+    # ElastoDyn's blade has these three DOFs and no more: followed, the coupled model has
+    # them alone even where all are on
+    blade = [n for n, k in (("flap1", "FlapDOF1"), ("flap2", "FlapDOF2"), ("edge1", "EdgeDOF"))
+             if on(k)]  # fmt: skip
+    tower = [k for k in ("TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2") if on(k)]
+    platform = [k for k in PLATFORM_DOFS if on(k)]
+    off = [k for k in DOFS if k in main.values and not main.flag(k) and k != "TeetDOF"]
+    if not floating:
+        off = [k for k in off if k not in PLATFORM_DOFS]
+    if beamdyn:  # BeamDyn's blades: ElastoDyn's blade switches do not apply
+        blade_keys = ("FlapDOF1", "FlapDOF2", "EdgeDOF")
+        off = [k for k in off if k not in blade_keys]
+    if not follow:
+        return _Switches(None, False, False, False, False, False, _unfollowed(off))
+    out = _Switches(
+        None if beamdyn else blade,
+        not on("YawDOF"),
+        not on("GenDOF"),
+        not on("DrTrDOF"),
+        not tower,
+        floating and not platform,
+        None,
+    )
+    if not off:
+        return (
+            out
+            if any(k in main.values for k in DOFS)
+            else _Switches(None, False, False, False, False, False, None)
+        )
+    kept = []
+    if out.blade is not None:
+        kept.append(f"the blades' {', '.join(out.blade) or 'no'} modes only")
+    if out.yaw_held:
+        kept.append("the nacelle held in yaw (no tower torsion assumed)")
+    if out.generator_locked:
+        kept.append("the generator locked to the rotor's speed")
+    if out.shaft_rigid:
+        kept.append("a rigid drive shaft")
+    if out.tower_rigid:
+        kept.append("a rigid tower")
+    elif len(tower) < 4:
+        tower_off = sorted(set(off) & {"TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2"})
+        kept.append(
+            f"the tower flexible all the same ({', '.join(tower_off)} off in the deck: wtvib's "
+            "tower is finite elements, not ElastoDyn's two shapes a plane)"
+        )
+    if out.platform_held:
+        kept.append("the platform held (the tower clamped at its base)")
+    elif floating and len(platform) < 6:
+        kept.append("the platform free in all six motions all the same")
+    note = (
+        f"ElastoDyn's degrees of freedom as the deck switches them ({', '.join(off)} off): "
+        f"modelled as OpenFAST models the deck — {'; '.join(kept)}."
+    )
+    return _Switches(out.blade, out.yaw_held, out.generator_locked, out.shaft_rigid,
+                     out.tower_rigid, out.platform_held, note)  # fmt: skip
+
+
 #: ElastoDyn models one to three blades (NumBl; its blade inputs are BldFile(1..3)).
 MAX_BLADES = 3
 
@@ -142,7 +227,11 @@ def _blades_differ(main: Deck, first: Deck, blades: int) -> list[str]:
 
 
 def to_spec_data(
-    path: Path, text: str, clamped_base: bool = False, speed_given: bool = False
+    path: Path,
+    text: str,
+    clamped_base: bool = False,
+    speed_given: bool = False,
+    deck_dofs: bool = False,
 ) -> dict[str, Any]:
     """wtvib spec data from an ElastoDyn deck, an OpenFAST .fst or a FAST v7 .fst.
 
@@ -155,13 +244,18 @@ def to_spec_data(
     _refuse_marine(fst)
     path = main.path
     below = platform(main, fst)
-    floater = _floater(main, fst, below, clamped_base)
+    beamdyn = fst is not None and fst.num("CompElast", default=1) == 2
+    switches = _switches(main, below is not None and below[1], deck_dofs, beamdyn)
+    held = clamped_base or switches.platform_held
+    floater = _floater(main, fst, below, held)
     tower_file = parse(_file(main, "TwrFile"))
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
-    yaw_block = _yaw(main, servo)
-    tw = _tower_on_support(main, fst, below, floater, tower_file, tower_height, bool(yaw_block))
+    yaw_block = {} if switches.yaw_held else _yaw(main, servo)
+    tw = _tower_on_support(
+        main, fst, below, floater, tower_file, tower_height, bool(yaw_block) or switches.yaw_held
+    )
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
@@ -218,8 +312,20 @@ def to_spec_data(
             _files_read(main, [d.path for d in (fst, main, servo) if d is not None], aero),
         ],
     }
+    if beamdyn:
+        # BeamDyn's blade has every mode: the coupled model takes the second edgewise
+        # bending too, which carries the collective edge's coupling with the shaft and the
+        # tower's second side-side (5MW_Land_BD_Linear: 2.84/3.23 Hz against OpenFAST's
+        # 2.78/3.21, where three modes gave 2.94/3.92) and the yaw mode's root stiffness
+        data["coupled"]["blade_modes"] = 5
+        data["assumptions"].append(
+            "BeamDyn blades: the coupled model carries five blade modes (flap 1 and 2, edge "
+            "1 and 2 and the next), one more than by default — BeamDyn's blade has them all."
+        )
     warnings = list(operating.warnings) + (aero[3] if aero else [])
     warnings += bl.warnings + tw.warnings
+    _apply(switches, data)
+    warnings += data.pop("warnings", [])
     if below is not None and not tw.block:
         warnings.append(_clamped_warning(below, tw.pile, tw.base))
     if warnings:
@@ -229,6 +335,36 @@ def to_spec_data(
     if aero is not None:
         _add_aerodynamics(data, aero, operating)
     return data
+
+
+def _unfollowed(off: list[str]) -> str | None:
+    """The warning of a deck whose switched-off DOFs the audit does not follow."""
+    if not off:
+        return None
+    return (
+        f"dofs: the deck switches off {', '.join(off)} — OpenFAST's model of it lacks those "
+        "modes; this audit has every mode of the structure (--deck-dofs models the deck as "
+        "OpenFAST does)"
+    )
+
+
+def _apply(switches: _Switches, data: dict[str, Any]) -> None:
+    """The deck's DOF switches on the spec data (:func:`_switches`): followed, or said."""
+    if switches.blade is not None:  # followed (every one on: ElastoDyn's three alone)
+        data["blade"]["dofs"] = switches.blade
+    if switches.note is None:
+        return
+    if switches.note.startswith("dofs:"):  # not followed: a warning of what OpenFAST lacks
+        data.setdefault("warnings", []).append(switches.note)
+        return
+    if switches.generator_locked:
+        data["coupled"]["rotating_condition"] = "locked"
+        data["coupled"]["parked_condition"] = "locked"
+    if switches.shaft_rigid:
+        data["drivetrain"]["shafts"][-1] = {"stiffness_nm_rad": None}
+    if switches.tower_rigid:
+        data["tower"]["rigid"] = True
+    data["assumptions"].append(switches.note)
 
 
 def _refuse_marine(fst: Deck | None) -> None:
@@ -914,7 +1050,7 @@ def _speed_block(speed: dict[str, Any] | None) -> dict[str, Any]:
     def six(v: Any) -> Any:
         return [six(x) for x in v] if isinstance(v, list) else float(f"{v:.6g}")
 
-    return {k: v if k == "source" else six(v) for k, v in speed.items()}
+    return {k: v if k in ("source", "parked") else six(v) for k, v in speed.items()}
 
 
 def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:

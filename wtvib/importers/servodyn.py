@@ -85,8 +85,14 @@ def _initial(main: Deck, why: str, control: dict[str, Any]) -> Operation:
     rot = main.num("RotSpeed")
     if rot <= 0:
         return Operation(
-            None,
-            f"The deck set gives no operating speed ({why}; RotSpeed = {rot:g} rpm: parked).",
+            {"parked": True, "source": f"RotSpeed = {rot:g} rpm in {main.path.name}"},
+            f"The deck set gives no operating speed ({why}) and is parked (RotSpeed = "
+            f"{rot:g} rpm): a standstill audit of its modes, no rotor excitation judged.",
+            [
+                f"rotor.speed: the deck set is parked (RotSpeed {rot:g} rpm, {why}) — audited "
+                "at standstill, its modes and their damping only; give the operating range "
+                "with --rpm MIN:MAX to judge it in operation"
+            ],
             control=control,
         )
     return Operation(

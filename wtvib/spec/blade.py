@@ -229,3 +229,10 @@ class Blade(_Strict):
         description="An ElastoDyn deck's blade mode-shape polynomials (BldFl1Sh, BldFl2Sh, "
         "BldEdgSh), audited against the modes the structure computes.",
     )
+    dofs: list[Literal["flap1", "flap2", "edge1"]] | None = Field(
+        None,
+        description="The blade's degrees of freedom where a deck switches some off "
+        "(ElastoDyn's FlapDOF1, FlapDOF2, EdgeDOF): only these of the structure's modes are "
+        "modelled, in the blade model and the coupled one, as OpenFAST models the deck. "
+        "None: every mode the structure has.",
+    )

@@ -135,23 +135,12 @@ def _check_aerodynamics(spec: Spec, doc: Document) -> None:
 
 
 def _check_results(spec: Spec, doc: Document) -> None:
-    """Another tool's whole-turbine modes replace the coupled model: not both. A standstill
-    audit (``rotor.speed.parked``) is of another tool's parked results only: a turbine
-    described by its structure has an operating range to judge."""
+    """Another tool's whole-turbine modes replace the coupled model: not both."""
     if spec.results is not None and spec.coupled is not None:
         raise SpecError(
             "results (another tool's modes) and coupled (wtvib's whole-turbine model) "
             "cannot both give the system modes: keep one",
             path="results",
             line=doc.line_of(("results",)),
-            source=doc.source,
-        )
-    if spec.rotor.speed.parked and spec.results is None:
-        raise SpecError(
-            "parked: true is a standstill audit of another tool's parked results (results); "
-            "a turbine described by its structure is judged over its operating range — give "
-            "min_rpm and max_rpm (or fixed_rpm)",
-            path="rotor.speed.parked",
-            line=doc.line_of(("rotor", "speed", "parked")),
             source=doc.source,
         )

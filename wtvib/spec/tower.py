@@ -374,6 +374,12 @@ class Tower(_Strict):
         "damping_ratio (a measured fore-aft ratio that holds the rotor's aerodynamic "
         "damping, which the side-side and torsion modes lack). [-]",
     )
+    rigid: bool = Field(
+        False,
+        description="The tower held rigid: no tower modes, the nacelle on a fixed tower top "
+        "(as a deck with every tower DOF switched off models it: ElastoDyn's TwFADOF1 … "
+        "TwSSDOF2 all False).",
+    )
     damping_at: Literal["mode", "tower-alone"] = Field(
         "mode",
         description="What the damping ratios are the ratios of: 'mode', each computed "

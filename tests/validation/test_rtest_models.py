@@ -1,0 +1,327 @@
+"""wtvib's own model of OpenFAST's regression-test deck sets against OpenFAST's linearisation
+of the same decks, mode by mode (issue 51).
+
+Each r-test linearisation case (OpenFAST/r-test, ``glue-codes/openfast/*Linear*``) ships the
+deck set OpenFAST linearised: the comparison is like for like. The decks are in
+``tests/data/openfast_decks/*.tar.gz`` (SOURCES.md there), OpenFAST's ``.lin`` files in
+``tests/data/openfast_lin``, read by wtvib's MBC3 reader — which reproduces openfast_toolbox's
+independent MBC3 on every root of these files (test_openfast_lin.py) — and named by it.
+
+Every OpenFAST mode below 10 Hz that wtvib's model has is held to 3 % (5 % above 2 Hz).
+Where wtvib and OpenFAST differ by more, the difference is traced to its physics, and a
+third, independent reference says which of the two is right (:data:`EXCEPTIONS`, each with
+its measured value and the bound it is held to). The modes OpenFAST's model has and wtvib's
+does not (the BeamDyn blade's higher modes, the platform's radiation states' modes, the
+one-azimuth cases' unaveraged pairs) are listed in :data:`NOT_MODELLED`, with why.
+"""
+
+import gzip
+import math
+import tarfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wtvib import audit, importers
+from wtvib.importers import openfast_lin as ol
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+GLUE = "glue-codes/openfast"
+
+#: case → the archive of its deck set
+CASES = {
+    "5MW_Land_Linear_Aero": "rtest_aero",
+    "5MW_Land_Linear_Aero_CalcSteady": "rtest_more",
+    "5MW_Land_BD_Linear": "rtest",
+    "5MW_OC3Mnpl_Linear": "rtest",
+    "5MW_OC3Spar_Linear": "rtest_floating",
+    "5MW_OC4Semi_Linear": "rtest_floating",
+    "WP_Stationary_Linear": "rtest_more",
+}
+
+#: (case, mode) → (lowest, highest wtvib/OpenFAST − 1 accepted, why — with the third
+#: reference that shows which model is right). Measured values in the text.
+EXCEPTIONS: dict[tuple[str, str], tuple[float, float, str]] = {
+    **{
+        (case, "tower.fa1"): (
+            -0.05,
+            -0.02,
+            "the deck's TwFAM1Sh is 3.3 % stiffer than the tower's own first fore-aft mode "
+            "(its Rayleigh quotient on the same finite elements, polynomials.tower; MAC "
+            "0.9999): ElastoDyn's tower is that much too stiff in this mode. Third reference: "
+            "ADAMS' full finite elements of the same turbine, 0.3195 Hz against FAST's "
+            "0.3240 (Jonkman et al. 2009, Table 9-1: +1.4 % for FAST). Measured −2.6 % "
+            "(Aero), −3.0 % (CalcSteady), −3.8 % (BeamDyn)",
+        )
+        for case in (
+            "5MW_Land_Linear_Aero",
+            "5MW_Land_Linear_Aero_CalcSteady",
+            "5MW_Land_BD_Linear",
+        )
+    },
+    ("5MW_Land_Linear_Aero", "blade.flap1.backward"): (
+        0.0,
+        0.04,
+        "a mode damped at ζ 0.81: OpenFAST's DBEMT inflow states lag the induction, wtvib "
+        "holds it frozen (its damping the upper bound, 6 % above OpenFAST's); the natural "
+        "frequency of so damped a mode moves with that lag. Measured +3.1 %",
+    ),
+    **{
+        ("5MW_Land_Linear_Aero_CalcSteady", mode): (
+            -0.04,
+            0.0,
+            "the second flap whirl pair at 9.5 rpm with ζ 0.13–0.15 and DBEMT's lag, as "
+            "blade.flap1.backward above; the collective within 1.5 %. Measured −3.4 %, −3.2 %",
+        )
+        for mode in ("blade.flap2.backward", "blade.flap2.forward")
+    },
+    **{
+        ("5MW_Land_BD_Linear", mode): (
+            0.07,
+            0.10,
+            "OPEN: the BeamDyn blade's second edgewise bending, 3.6/4.0 Hz in OpenFAST, "
+            "4.1 Hz as wtvib's Euler–Bernoulli blade of the same sections has it (isolated) "
+            "— without BeamDyn's shear flexibility, rotary inertia and the sections' "
+            "offsets, which lower a blade's higher modes most. Measured +8.8 %, +7.3 %",
+        )
+        for mode in ("blade.edge2.backward", "blade.edge2.forward")
+    },
+    **{
+        (case, mode): (
+            -0.30,
+            -0.12,
+            "a one-azimuth linearisation (one .lin file): MBC3 cannot average the periodic "
+            "terms out, and OpenFAST's cyclic pairs sit lopsided about their collective "
+            "(0.70/1.10 Hz about 0.74 in flap 1). Third reference: the same rotor at the "
+            "same 12.1 rpm linearised at 36 azimuths (5MW_Land_BD_Linear): 0.537/0.936 Hz "
+            "about 0.762, within 0.2 % of wtvib there. Measured −14 … −28 %",
+        )
+        for case in ("5MW_OC3Mnpl_Linear", "5MW_OC3Spar_Linear")
+        for mode in (
+            "blade.flap1.backward",
+            "blade.flap1.forward",
+            "blade.flap2.backward",
+            "blade.flap2.forward",
+        )
+    },
+    **{
+        ("5MW_OC3Mnpl_Linear", mode): (
+            -0.70,
+            -0.50,
+            "ElastoDyn's two assumed shapes a plane for a tower on a 30 m pile (TwFAM2Sh, "
+            "TwSSM2Sh: MAC 0.976 and 0.890 against the tower-and-pile's own second modes, "
+            "polynomials.tower) hold the second modes at 5.7 and 6.7 Hz. Third reference: "
+            "pyBModes 1.19's finite elements of the same tower on the same pile, 2.20 and "
+            "2.28 Hz (tests/data/soil/pybmodes.json, stiff_springs), which wtvib reproduces "
+            "within 0.2 % on pyBModes' head (test_soil_pybmodes.py). Measured −57 %, −64 %",
+        )
+        for mode in ("tower.fa2", "tower.ss2")
+    },
+    ("5MW_OC3Spar_Linear", "tower.fa1"): (
+        -0.06,
+        -0.03,
+        "OPEN, untraced: the first fore-aft bending on the spar, where the side-side is "
+        "within 0.4 % and the deck's TwFAM1Sh is the tower's own shape on its platform to "
+        "0.1 % (polynomials.tower) — not ElastoDyn's shape; wtvib puts its fore-aft below "
+        "its side-side as on land (the rotor's pitch inertia through the flapping blades), "
+        "OpenFAST above. Measured −4.5 %",
+    ),
+    ("5MW_OC3Spar_Linear", "platform.pitch"): (
+        -0.07,
+        -0.03,
+        "OpenFAST's linearised pitch is 3 % above the published free-decay 0.0343 Hz "
+        "(Jonkman 2010, NREL/TP-500-47535, Table 7-1), wtvib 2.1 % below it "
+        "(test_floating.py). Measured −5.0 %",
+    ),
+    ("5MW_OC3Spar_Linear", "platform.yaw"): (
+        -0.09,
+        -0.05,
+        "OpenFAST's spar yaw carries the rotor turning at 12 rpm; the published free-decay "
+        "yaw is 0.1210 Hz (Jonkman 2010, Table 7-1), wtvib's 0.1208 (−0.2 %). Measured "
+        "−7.2 %",
+    ),
+    **{
+        ("5MW_OC4Semi_Linear", mode): (
+            -0.20,
+            -0.14,
+            "OpenFAST's linearised semisubmersible pitches and rolls 20 % faster than "
+            "pyBModes 1.19 on the same platform matrices, 0.0390 Hz "
+            "(tests/data/floating/pybmodes.json; wtvib 0.0390), and than the free-decay "
+            "physics of its own hydrostatics and moorings (test_floating.py): its HydroDyn "
+            "linearisation carries the radiation and excitation states of a 12 rpm point. "
+            "Measured −17 %",
+        )
+        for mode in ("platform.pitch", "platform.roll")
+    },
+    **{
+        ("5MW_OC4Semi_Linear", mode): (lo, hi, why)
+        for mode, lo, hi, why in (
+            ("tower.fa2", -0.08, -0.04, "measured −6.0 %"),
+            ("tower.ss2", -0.20, -0.14, "measured −17.2 %"),
+        )
+    },
+}
+_OC4 = (
+    "OPEN, untraced: the semisubmersible's second tower modes, where its first pair is "
+    "within 0.7 %; OpenFAST's second side-side (5.08 Hz, ζ 0.036) sits far above its "
+    "second fore-aft (3.90 Hz), wtvib's pair 3.67/4.21 Hz — the platform's rotary inertia "
+    "and the heave plates' strip members, which wtvib's rigid platform takes with WAMIT's "
+    "added mass at A∞, are the candidates"
+)
+EXCEPTIONS.update(
+    {
+        k: (lo, hi, f"{_OC4}. {why.capitalize()}")
+        for k, (lo, hi, why) in EXCEPTIONS.items()
+        if k[0] == "5MW_OC4Semi_Linear" and k[1].startswith("tower.")
+    }
+)
+
+#: (case, mode) → why wtvib's model has no such mode
+NOT_MODELLED: dict[tuple[str, str], str] = {
+    **{
+        ("5MW_Land_BD_Linear", mode): "BeamDyn's blade has every mode; wtvib's coupled model "
+        "takes five of a BeamDyn blade (flap 1 and 2, edge 1 and 2, the next): its third "
+        "flap, its torsion and its higher edge modes are not in it (blade.tor1 is judged "
+        "on the isolated blade)"
+        for mode in (
+            "blade.flap3.backward",
+            "blade.flap3.collective",
+            "blade.flap3.forward",
+            "blade.torsion1.backward",
+            "blade.torsion1.collective",
+            "blade.torsion1.forward",
+            "blade.edge2.collective",
+            "blade.edge3.backward",
+            "blade.edge3.forward",
+            "blade.torsion2.backward",
+            "blade.torsion2.collective",
+        )
+    },
+    ("5MW_OC3Mnpl_Linear", "blade.flap2.backward_2"): "a one-azimuth case's second root "
+    "named after the same coordinate group (MBC3 unaveraged, see the exceptions)",
+    ("5MW_OC3Mnpl_Linear", "platform.sway"): "SubDyn's Craig–Bampton mode of the pile read "
+    "as the platform's sway: wtvib's pile is finite elements in the tower (no such root)",
+}
+
+
+#: (case, OpenFAST's name) → wtvib's name of the same physical mode, where the two name it
+#: after different parts
+ALIASES: dict[tuple[str, str], str] = {
+    # ElastoDyn's one drive-train DOF: OpenFAST's second mode on it is wtvib's second
+    # drive-train torsion (the blades' collective edge against the shaft)
+    **{
+        (case, "drivetrain1_2"): "drivetrain2"
+        for case in ("5MW_Land_Linear_Aero", "5MW_Land_Linear_Aero_CalcSteady")
+    },
+    # BeamDyn's blades: a strongly coupled pair, the collective edge and the shaft against
+    # the tower's second side-side — OpenFAST names the lower after the blades (their
+    # participation), wtvib both after the tower (its share of the strain energy)
+    ("5MW_Land_BD_Linear", "blade.edge1.collective"): "tower.ss2",
+    ("5MW_Land_BD_Linear", "tower.ss2"): "tower.ss3",
+}
+
+
+@pytest.fixture(scope="module")
+def decks(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("rtest")
+    for name in set(CASES.values()):
+        with tarfile.open(DATA / "openfast_decks" / f"{name}.tar.gz") as tar:
+            tar.extractall(root, filter="data")
+    return root
+
+
+def _openfast(case: str, folder: Path) -> ol.PointModes:
+    files = []
+    for gz in sorted((DATA / "openfast_lin").glob(f"{case}.*.lin.gz")):
+        path = folder / gz.name.removesuffix(".gz")
+        path.write_bytes(gzip.decompress(gz.read_bytes()))
+        files.append(ol.read(path))
+    return ol.operating_point(files)[0]
+
+
+def _wtvib(report: audit.Report, rpm: float, wind: float | None) -> dict[str, float]:
+    """wtvib's judged modes at the linearisation's operating point, named as the .lin reader
+    names OpenFAST's (``system.`` dropped, the platform's ``tower.platform.`` as
+    ``platform.``): frequency there — the natural frequency at the point's wind where the
+    audit has damped modes in operation."""
+    omega = rpm * math.pi / 30
+    out = {}
+    for m in report.modes:
+        if not m.judged:
+            continue
+        name = m.id.removeprefix("system.").replace("tower.platform.", "platform.")
+        f = float(m.frequency_at([omega])[0])
+        op = m.operating
+        if op is not None and wind is not None and op.natural_hz is not None:
+            f = float(np.interp(wind, np.asarray(op.wind), op.natural_hz))
+        out[name] = f
+    return out
+
+
+def _pairs(names: dict[str, float]) -> dict[str, float]:
+    """A parked rotor's cyclic pair under one name each way: OpenFAST's ``cyclic`` and
+    ``cyclic_2`` (the lower and the higher), wtvib's ``cyclic_yaw`` and ``cyclic_tilt``
+    sorted the same way, so that the lower meets the lower."""
+    out = dict(names)
+    for base in {n.rsplit(".", 1)[0] for n in names if ".cyclic" in n}:
+        pair = sorted(f for n, f in names.items() if n.startswith(base + ".cyclic"))
+        for n in [n for n in out if n.startswith(base + ".cyclic")]:
+            del out[n]
+        for label, f in zip(("cyclic", "cyclic_2"), pair, strict=False):
+            out[f"{base}.{label}"] = f
+    return out
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_own_model_is_openfasts_mode_by_mode(decks, tmp_path, case):
+    ref = _openfast(case, tmp_path)
+    spec = importers.load(
+        decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
+    )
+    report = audit.run(spec)
+    ours = _wtvib(report, ref.rpm, ref.wind)
+    theirs = {n: float(f) for n, f in zip(ref.names, ref.frequency_hz, strict=True) if f < 10}
+    if ref.rpm == 0:
+        ours, theirs = _pairs(ours), _pairs(theirs)
+    checked = 0
+    for name, f in sorted(theirs.items(), key=lambda kv: kv[1]):
+        if (case, name) in NOT_MODELLED:
+            continue
+        mine = ALIASES.get((case, name), name)
+        assert mine in ours, f"{case}: OpenFAST's {name} ({f:.4g} Hz) is not in wtvib's model"
+        diff = ours[mine] / f - 1
+        if (case, name) in EXCEPTIONS:
+            lo, hi, why = EXCEPTIONS[(case, name)]
+            assert lo <= diff <= hi, (case, name, f"{diff:+.1%}", why)
+        else:
+            tol = 0.03 if f <= 2 else 0.05
+            assert abs(diff) <= tol, (case, name, f, ours[mine], f"{diff:+.1%}")
+        checked += 1
+    assert checked >= 10, checked  # most of OpenFAST's modes are held, not excused
+
+
+def test_every_exception_and_omission_is_still_needed(decks, tmp_path):
+    """An excused difference that has gone (the model improved, or the reference changed)
+    fails here, so that the lists above say only what is true."""
+    for case in CASES:
+        ref = _openfast(case, tmp_path)
+        names = set(ref.names) if ref.rpm else set(_pairs(dict.fromkeys(ref.names, 0.0)))
+        for key in [k for k in (*EXCEPTIONS, *NOT_MODELLED, *ALIASES) if k[0] == case]:
+            assert key[1] in names, key
+
+
+def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_path):
+    """Without aerodynamics OpenFAST damps the tower's first pair by the deck's TwrFADmp as
+    ElastoDyn applies it (stiffness-proportional at the tower's own frequency without its
+    head): 0.36 and 0.38 % on 5MW_Land_BD_Linear, 1.30 and 1.31 % on the parked WindPACT;
+    wtvib's within 10 % (measured 0.355/0.358 %, 1.32/1.31 %). Before, 1 % and 3.44 % as
+    given — a DAF 2.7 times too low on the NREL 5-MW's tower."""
+    for case in ("5MW_Land_BD_Linear", "WP_Stationary_Linear"):
+        ref = _openfast(case, tmp_path)
+        zeta = dict(zip(ref.names, ref.damping_ratio, strict=True))
+        deck = decks / GLUE / case / f"{case}.fst"
+        report = audit.run(importers.load(deck, importers.ReadOptions(deck_dofs=True)))
+        ours = {m.id.removeprefix("system."): m.damping_ratio for m in report.modes if m.judged}
+        for name in ("tower.fa1", "tower.ss1"):
+            assert ours[name] == pytest.approx(zeta[name], rel=0.10), (case, name)
