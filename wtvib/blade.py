@@ -278,12 +278,15 @@ def _computed(
 ) -> Mode:
     given = spec.blade.modes.get(name)
     kind = name.rstrip("0123456789")
+    zeta = given.damping_ratio if isinstance(given, ModeSpec) else None
+    if spec.blade.stiffness_damping_s is not None:  # ζ = π·β·f of its direction
+        zeta = spec.blade.stiffness_damping_s.ratio(kind, f0)
     return Mode(
         id=f"blade.{name}",
         subsystem="blade",
         description=f"{ordinal(int(name[len(kind) :]))} blade {_KIND[kind]} (computed)",
         frequency_hz=f0,
-        damping_ratio=given.damping_ratio if isinstance(given, ModeSpec) else None,
+        damping_ratio=zeta,
         curve=curve,
         shape=shape,
         origin="computed",

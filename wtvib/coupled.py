@@ -87,6 +87,7 @@ from .periodic import stability_check
 from .results import Check, Mode, Rule, Sampled, Whirl, ordinal
 from .rigid import Rigid, nacelle, rotor_points
 from .spec import BladeStructure, Spec
+from .spec.base import StiffnessDamping
 from .units import rpm_to_rad_s
 
 Array = NDArray[np.float64]
@@ -992,17 +993,24 @@ def strain_weighted(
     tower's part is :func:`_tower_alone_ratios`."""
     tower_d = section_damping(spec.tower, "tower")
     blade_d = section_damping(spec.blade, "blade")
-    alone = _tower_alone_ratios(spec, model, shapes, frequency_hz)
     k = model.multiblade[3]
     energy = np.abs(np.real(np.conj(shapes) * (k @ shapes)))
     parts = {"tower": np.zeros(shapes.shape[1]), "blade": np.zeros(shapes.shape[1])}
+    by_group = {}
     for group, index in model.groups.items():
         kind = group.split(".")[0]
         if kind in parts and len(index):
-            parts[kind] += energy[index].sum(axis=0)
+            by_group[group] = energy[index].sum(axis=0)
+            parts[kind] += by_group[group]
+    alone = _tower_alone_ratios(spec, model, shapes, frequency_hz)
+    if spec.tower.stiffness_damping_s is not None:
+        alone = _stiffness_ratios(spec.tower.stiffness_damping_s, by_group, "tower", frequency_hz)
+    blade_z: Array | None = None
+    if spec.blade.stiffness_damping_s is not None:
+        blade_z = _stiffness_ratios(spec.blade.stiffness_damping_s, by_group, "blade", frequency_hz)
     total = energy.sum(axis=0)
     lower = default_damping(spec)
-    if tower_d.ratio == blade_d.ratio and alone is None:
+    if tower_d.ratio == blade_d.ratio and alone is None and blade_z is None:
         return [lower] * shapes.shape[1]
     assumed = tower_d.assumed or blade_d.assumed
     out = []
@@ -1012,12 +1020,17 @@ def strain_weighted(
             out.append(lower)
             continue
         z_t = tower_d.ratio if alone is None else float(alone[j])
-        zeta = (z_t * e_t + blade_d.ratio * e_b) / (e_t + e_b)
+        z_b = blade_d.ratio if blade_z is None else float(blade_z[j])
+        zeta = (z_t * e_t + z_b * e_b) / (e_t + e_b)
         share = e_t / (e_t + e_b)
-        how = (
-            "" if alone is None else f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own "
-            "frequencies without the head, × f/f_alone"
-        )  # fmt: skip
+        how = ""
+        if spec.tower.stiffness_damping_s is not None or blade_z is not None:
+            how = f", tower {z_t:.3%}, blades {z_b:.3%}: stiffness-proportional, π·β·f"
+        elif alone is not None:
+            how = (
+                f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own frequencies without "
+                "the head, × f/f_alone"
+            )
         out.append(
             Damping(
                 zeta,
@@ -1028,6 +1041,24 @@ def strain_weighted(
             )
         )
     return out
+
+
+def _stiffness_ratios(
+    beta: "StiffnessDamping", by_group: dict[str, Array], part: str, frequency_hz: Array
+) -> Array:
+    """A part's damping ratio in each coupled mode where its damping is stiffness-
+    proportional: π·β·f of each coordinate group's direction (tower.fa, tower.ss, tower.tor;
+    the blades' flap and edge modes), weighed by the strain energy the mode puts there."""
+    weighted = np.zeros_like(frequency_hz, dtype=float)
+    energy = np.zeros_like(frequency_hz, dtype=float)
+    for group, e in by_group.items():
+        kind, *rest = group.split(".")
+        if kind != part:
+            continue
+        direction = rest[0].rstrip("0123456789") if rest else ""
+        weighted += e * beta.ratio(direction, 1.0) * frequency_hz
+        energy += e
+    return np.where(energy > 0, weighted / np.where(energy > 0, energy, 1.0), 0.0)
 
 
 def _tower_alone_ratios(

@@ -797,6 +797,8 @@ def mode_damping(spec: Spec, name: str, f: float) -> float:
     stiffness-proportional damping: the NREL 5-MW's 1 % is 0.37 % on its first fore-aft
     mode under the head). A mode without such a reference (torsion) takes the ratio."""
     t = spec.tower
+    if t.stiffness_damping_s is not None:  # stiffness-proportional: ζ = π·β·f
+        return t.stiffness_damping_s.ratio(name.rstrip("0123456789"), f)
     zeta = t.damping_by_mode.get(name, t.damping_ratio)  # type: ignore[call-overload]
     if t.damping_at != "tower-alone":
         return float(zeta)
@@ -807,7 +809,8 @@ def mode_damping(spec: Spec, name: str, f: float) -> float:
 def _computed(spec: Spec, name: str, f: float, nodes: Array, shape: Array) -> Mode:
     given = spec.tower.modes.get(name)
     zeta = given.damping_ratio if isinstance(given, spec_mod.ModeSpec) else None
-    if name in spec.tower.damping_by_mode or spec.tower.damping_at == "tower-alone":
+    t = spec.tower
+    if name in t.damping_by_mode or t.damping_at == "tower-alone" or t.stiffness_damping_s:
         zeta = mode_damping(spec, name, f)
     full = np.zeros(len(nodes))
     full[len(nodes) - len(shape) :] = shape

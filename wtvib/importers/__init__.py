@@ -17,7 +17,8 @@ from ..spec import Spec, from_data, load_document, read_text
 from ..spec.load import file_fingerprint, fingerprint
 
 FORMATS = "a wtvib spec (YAML with 'wtvib: 1'), a windIO turbine YAML (1.x or 2.x), an "
-FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst), or Campbell results: OpenFAST "
+FORMATS += "OpenFAST ElastoDyn / FAST v7 deck (.dat/.fst), a HAWC2 model (.htc), or Campbell "
+FORMATS += "results: OpenFAST "
 FORMATS += "linearisation (.lin, or a folder of them), HAWCStab2 (.cmb) or a table (.csv)"
 
 
@@ -42,6 +43,10 @@ def detect(path: Path, text: str) -> str:
         return "openfast-lin"
     if suffix == ".cmb":
         return "hawcstab2"
+    if suffix == ".htc" or re.search(
+        r"^\s*begin\s+new_htc_structure\s*;", text[:200_000], re.M | re.I
+    ):
+        return "hawc2"
     if suffix == ".csv":
         from .campbell_table import looks_like
 
@@ -166,6 +171,10 @@ def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, A
         data = elastodyn.to_spec_data(
             p, text, options.clamped_base, speed_given=rpm is not None, deck_dofs=options.deck_dofs
         )
+    elif kind == "hawc2":
+        from . import hawc2
+
+        data = hawc2.to_spec_data(p, text)
     elif kind == "windio":
         from . import windio
 
@@ -232,6 +241,13 @@ def is_main_input(path: Path) -> bool:
     suffix = path.suffix.lower()
     if suffix in (".yaml", ".yml"):
         return True
+    if suffix == ".htc":  # a HAWC2 model, not a part of one that another continues in
+        try:
+            with path.open("rb") as fh:
+                head = fh.read(400_000).lower()
+        except OSError:
+            return True
+        return b"new_htc_structure" in head
     if suffix in (".dat", ".fst"):
         try:  # the head only, of a regular file only: a sparse 8 GB .dat or a FIFO in a
             # folder must not cost its size or block discovery

@@ -486,10 +486,16 @@ def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -
     tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
     if tip_mass > 0:
         structure["tip_mass_kg"] = tip_mass
+    mu = (
+        {"stiffness_damping_s": {"bending_1": bl.mu[0], "bending_2": bl.mu[1]}}
+        if bl.mu is not None
+        else {}
+    )  # BeamDyn's damping as it is: stiffness-proportional, ζ = π·μ·f on every mode
     return {
         "length_m": _value(length, "TipRad − HubRad", "derived"),
         "mass_kg": _value(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
         "damping_ratio": bl.damping,
+        **mu,
         "structure": structure,
     }
 
@@ -806,6 +812,7 @@ class _BladeTable:
     notes: list[str]
     warnings: list[str]
     polynomials: dict[str, Any] = field(default_factory=dict)
+    mu: tuple[float, float] | None = None  # BeamDyn's stiffness-proportional μ (flap, edge)
 
 
 #: ElastoDyn's mode-shape polynomials: the spec's name of each set, by the deck's key.
@@ -892,7 +899,9 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
     notes.append(how)
     if ed is not None:
         notes.append(_compare(ed, bd, length))
-    return _BladeTable(bd.span, bd.mass, bd.structure, damping, "∫ M11 (BeamDyn)", notes, warnings)
+    return _BladeTable(
+        bd.span, bd.mass, bd.structure, damping, "∫ M11 (BeamDyn)", notes, warnings, mu=bd.mu
+    )
 
 
 def _bd_damping(bd: beamdyn.Blade, ed: Deck | None) -> tuple[float, str]:

@@ -179,3 +179,23 @@ def _same_length(model: BaseModel, reference: str) -> None:
     for name, value in model:
         if isinstance(value, list) and len(value) != n:
             raise ValueError(f"{name} has {len(value)} values but {reference} has {n}")
+
+
+class StiffnessDamping(_Strict):
+    """Stiffness-proportional damping, c = β·k per direction: a mode of frequency f in that
+    direction has ζ = π·β·f (HAWC2's damping_posdef/damping_aniso K coefficients, BeamDyn's
+    μ). [s]"""
+
+    bending_1: float = Field(
+        ge=0, le=1.0, description="β of the first bending direction: fore-aft, flapwise. [s]"
+    )
+    bending_2: float = Field(ge=0, le=1.0, description="β of the second: side-side, edgewise. [s]")
+    torsion: float = Field(0.0, ge=0, le=1.0, description="β of torsion. [s]")
+
+    def ratio(self, direction: str, frequency_hz: float) -> float:
+        """ζ = π·β·f of a mode in ``direction`` (fa, ss, flap, edge, tor)."""
+        beta = {
+            "fa": self.bending_1, "flap": self.bending_1,
+            "ss": self.bending_2, "edge": self.bending_2,
+        }.get(direction, self.torsion)  # fmt: skip
+        return math.pi * beta * frequency_hz

@@ -11,6 +11,7 @@ from .base import (
     Positive,
     Ratio,
     ShapePolynomial,
+    StiffnessDamping,
     _increasing,
     _same_length,
     _Strict,
@@ -228,6 +229,12 @@ class Blade(_Strict):
         default_factory=dict,
         description="An ElastoDyn deck's blade mode-shape polynomials (BldFl1Sh, BldFl2Sh, "
         "BldEdgSh), audited against the modes the structure computes.",
+    )
+    stiffness_damping_s: StiffnessDamping | None = Field(
+        None,
+        description="The blade's damping as stiffness-proportional (β flapwise, edgewise, "
+        "torsion: ζ = π·β·f on every mode, in place of the ratio; HAWC2's damping_aniso, "
+        "BeamDyn's μ).",
     )
     dofs: list[Literal["flap1", "flap2", "edge1"]] | None = Field(
         None,

@@ -12,6 +12,7 @@ from .base import (
     Positive,
     Ratio,
     ShapePolynomial,
+    StiffnessDamping,
     TowerModeName,
     TowerSize,
     _increasing,
@@ -387,6 +388,11 @@ class Tower(_Strict):
         "ratio is given at the frequency of the tower's own mode without its head, point "
         "masses or gravity, so that a mode at f carries ζ·f/f_alone (ElastoDyn.f90: CTFA = "
         "0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1))).",
+    )
+    stiffness_damping_s: StiffnessDamping | None = Field(
+        None,
+        description="The tower's damping as stiffness-proportional (β fore-aft, side-side, "
+        "torsion: ζ = π·β·f on every mode, in place of the ratios; HAWC2's damping_posdef).",
     )
     sections: TubularSections | None = Field(None, description="Tapered tube geometry.")
     material: Material | None = Field(None, description="Material of the tube sections.")

@@ -1,0 +1,142 @@
+"""HAWC2 files at unit level (wtvib.importers.htc, .hawc2): the htc block syntax, st sets,
+and a broken model's one line with file, line and block."""
+
+import tarfile
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from wtvib.cli import app
+from wtvib.errors import SpecError
+from wtvib.importers import htc, is_main_input
+
+DATA = Path(__file__).resolve().parent / "data" / "hawc2"
+IEA15 = "HAWC2/IEA-15-240-RWT-Onshore/htc/IEA_15MW_RWT_Onshore.htc"
+
+HTC = """\
+; a comment line
+begin new_htc_structure;  the structure
+  begin main_body;  tower
+    name  tower ;   text after the semicolon is a comment
+    sec 1 0 0 0 0 ;
+  end main_body;
+  continue_in_file ./part.htc;
+end new_htc_structure;
+"""
+PART = """\
+  begin main_body;
+    name  blade1 ;
+  end main_body;
+exit;
+  begin main_body;  after exit: never read
+  end main_body;
+"""
+
+
+def test_blocks_nest_comments_end_and_files_continue(tmp_path):
+    (tmp_path / "m.htc").write_text(HTC)
+    (tmp_path / "part.htc").write_text(PART)
+    top = htc.parse(tmp_path / "m.htc")
+    structure = top.block("new_htc_structure")
+    assert structure is not None and structure.title == "the structure"
+    bodies = structure.each("main_body")
+    assert [b.need("name").values[0] for b in bodies] == ["tower", "blade1"]
+    assert bodies[0].get("sec").numbers() == [1, 0, 0, 0, 0]  # type: ignore[union-attr]
+    assert bodies[1].file.name == "part.htc" and bodies[1].line == 1
+
+
+@pytest.mark.parametrize(
+    "text, words, line",
+    [
+        ("begin a;\n  begin b;\n  end a;\n", "end a where b is open", 3),
+        ("begin a;\n  x 1;\n", "begin a has no end a", 1),
+        ("begin a;\ncontinue_in_file ./nowhere.htc;\nend a;\n", "names './nowhere.htc'", 2),
+    ],
+)
+def test_a_broken_htc_is_named_by_file_and_line(tmp_path, text, words, line):
+    path = tmp_path / "m.htc"
+    path.write_text(text)
+    with pytest.raises(SpecError) as found:
+        htc.parse(path)
+    assert words in str(found.value) and found.value.line == line
+
+
+ST = """\
+2 ; number of sets
+#1 first set
+r m
+$1 2 subset one
+0.0 1.0 2.0
+1.0 1.5 2.5
+$2 1 subset two
+0.0 9.0 9.0
+#2 second set
+$1 3 short
+0.0 1 1
+"""
+
+
+def test_st_sets_and_subsets_are_read_by_their_marks(tmp_path):
+    path = tmp_path / "a.st"
+    path.write_text(ST)
+    assert htc.read_st(path, 1, 1, 3).tolist() == [[0.0, 1.0, 2.0], [1.0, 1.5, 2.5]]
+    assert htc.read_st(path, 1, 2, 3).tolist() == [[0.0, 9.0, 9.0]]
+    with pytest.raises(SpecError, match="announces 3 rows, the file holds 1"):
+        htc.read_st(path, 2, 1, 3)
+    with pytest.raises(SpecError, match="no set #3"):
+        htc.read_st(path, 3, 1, 3)
+    path.write_text(ST.replace("1.0 1.5 2.5", "1.0 x 2.5"))
+    with pytest.raises(SpecError, match="a number was expected") as found:
+        htc.read_st(path, 1, 1, 3)
+    assert found.value.line == 6
+
+
+@pytest.fixture
+def model(tmp_path: Path) -> Path:
+    with tarfile.open(DATA / "iea15_onshore.tar.gz") as tar:
+        tar.extractall(tmp_path, filter="data")
+    return tmp_path / IEA15
+
+
+def _edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text()
+    assert old in text, old
+    path.write_text(text.replace(old, new))
+
+
+@pytest.mark.parametrize(
+    "where, old, new, words",
+    [
+        ("htc", "filename ./data/IEA_15MW_RWT_Tower_st.dat;", "filename ./data/gone.dat;",
+         "filename names './data/gone.dat', which does not exist"),
+        ("htc", "set 1 1 ;", "set 1 7 ;", "no set #1 with a subset $7"),
+        ("orientation", "mbdy1  towertop last;", "mbdy1  nacelle last;",
+         "mbdy1 names the body 'nacelle', which the model does not have"),
+        ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    -1a.0     0    ;",
+         "sec: value 4 must be a number"),
+    ],
+)  # fmt: skip
+def test_a_broken_model_is_one_line_and_exit_2(model, where, old, new, words):
+    target = model if where == "htc" else (
+        model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_orientation.htc"
+    )  # fmt: skip
+    _edit(target, old, new)
+    result = CliRunner().invoke(app, ["check", str(model), "--no-plots"])
+    assert result.exit_code == 2, result.output
+    lines = [ln for ln in result.output.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: ") and words in lines[0], lines
+
+
+def test_batch_finds_the_model_and_not_the_parts_it_continues_in(model):
+    assert is_main_input(model)
+    parts = model.parents[2] / "IEA-15-240-RWT"
+    assert not any(is_main_input(p) for p in parts.glob("*.htc"))
+
+
+def test_convert_writes_an_editable_spec_of_the_model(model, tmp_path):
+    out = tmp_path / "iea15.yaml"
+    result = CliRunner().invoke(app, ["convert", str(model), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    result = CliRunner().invoke(app, ["check", str(out), "--no-plots", "-f", "json"])
+    assert result.exit_code in (0, 1), result.output

@@ -1,0 +1,168 @@
+"""HAWC2 models read by wtvib (issue 53), against what the other tools computed of the same
+turbines.
+
+* **The IEA-15-240-RWT's HAWC2 onshore model** (IEAWindTask37/IEA-15-240-RWT,
+  tests/data/hawc2/iea15_onshore.tar.gz): against the same turbine's OpenFAST deck
+  (../shared/reference/IEA15, the ElastoDyn monopile deck — its tower head, rotor and drive
+  train are the HAWC2 model's numbers), and against HAWCStab2's structural Campbell of the
+  whole IEA-15 (DLR-AE/CampbellViewer's example, tests/data/campbell/hawcstab2/iea15:
+  its tower pair 0.229/0.235 Hz and rotor modes at 5 rpm).
+* **The DTU 10 MW's HAWC2 model** (PyPI h2lib-tests, fetched: tests/data/hawc2/
+  fetch_dtu10mw.py): its blade against HAWCStab2's structural modes of the same blade
+  (CASEToolBox's DTU10MW example, tests/data/campbell/hawcstab2/blade.cmb; Bak et al. 2013,
+  the DTU 10 MW report: first flap 0.61 Hz, first edge 0.93 Hz).
+
+What agrees and what does not (OPEN): the tower pair and the first flap and edge modes
+within 3 %; the blades' higher modes come out high by a share that grows with the mode
+(DTU 10 MW: +2.0 % first flap, +3.6 % second, +5.5 % third, +9.7 % fifth) — the signature
+of an Euler–Bernoulli blade against HAWC2's Timoshenko one (shear deformation and rotary
+inertia, which lower a beam's higher modes most), and of the sections' mass and elastic
+centre offsets HAWC2 carries and wtvib's blade model does not.
+"""
+
+import gzip
+import math
+import subprocess
+import sys
+import tarfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wtvib import audit, blade, importers
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+IEA15 = "HAWC2/IEA-15-240-RWT-Onshore/htc/IEA_15MW_RWT_Onshore.htc"
+
+
+@pytest.fixture(scope="module")
+def iea15(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("hawc2")
+    with tarfile.open(DATA / "hawc2" / "iea15_onshore.tar.gz") as tar:
+        tar.extractall(root, filter="data")
+    return root / IEA15
+
+
+@pytest.fixture(scope="module")
+def hs2_iea15(tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
+    folder = tmp_path_factory.mktemp("hs2")
+    for gz in (DATA / "campbell" / "hawcstab2" / "iea15").glob("*.gz"):
+        (folder / gz.name.removesuffix(".gz")).write_bytes(gzip.decompress(gz.read_bytes()))
+    spec = importers.load(folder / "structural_entire_turbine.cmb", importers.ReadOptions(blades=3))
+    assert spec.results is not None
+    return spec.results
+
+
+@pytest.fixture(scope="module")
+def dtu10(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The DTU 10 MW model, fetched from PyPI (skipped, with the reason, where PyPI cannot
+    be reached)."""
+    fetch = DATA / "hawc2" / "fetch_dtu10mw.py"
+    try:
+        out = subprocess.run(
+            [sys.executable, str(fetch)], capture_output=True, text=True, timeout=600, check=True
+        )
+    except (subprocess.SubprocessError, OSError) as exc:
+        pytest.skip(f"the DTU 10 MW model could not be fetched from PyPI (h2lib-tests): {exc}")
+    return Path(out.stdout.strip()) / "htc" / "DTU_10MW_RWT.htc"
+
+
+def test_the_iea15_hawc2_model_is_its_openfast_decks_turbine(iea15, shared):
+    """The HAWC2 model and the OpenFAST deck of the IEA-15 carry the same turbine: the rotor
+    apex (OverHang·cos ShftTilt, Twr2Shft + OverHang·sin ShftTilt: −12.03 m, 5.614 m) to the
+    millimetre, the tower head's mass within 0.5 % (HAWC2's yaw system, nacelle, shaft's hub
+    and the blades' st mass; the deck's NacMass, YawBrMass, HubMass and blade table), hub
+    and generator inertias exactly (HubIner 969,952, GenIner 1,836,784 kg·m²), the blade's
+    mass within 3 % (66,994 against 68,516 kg: two blade tables of the same design)."""
+    h = importers.load(iea15)
+    e = importers.load(
+        shared / "reference/IEA15/IEA-15-240-RWT-Monopile/IEA-15-240-RWT-Monopile_ElastoDyn.dat"
+    )
+    assert h.coupled is not None and e.coupled is not None
+    assert h.coupled.apex_downwind_m == pytest.approx(e.coupled.apex_downwind_m, abs=1e-3)
+    assert h.coupled.apex_above_top_m == pytest.approx(e.coupled.apex_above_top_m, abs=1e-3)
+    assert h.tower_head is not None and e.tower_head is not None
+    assert h.tower_head.mass_kg == pytest.approx(e.tower_head.mass_kg, rel=5e-3)
+    inertia = {c.name: c.inertia_kgm2 for c in h.drivetrain.chain}
+    assert inertia["hub"] == 969_952 and inertia["generator"] == 1_836_784
+    assert h.blade.mass_kg == pytest.approx(e.blade.mass_kg, rel=0.03)
+    assert h.rotor.speed.min_rpm == pytest.approx(5.0, abs=1e-3)
+    assert h.rotor.speed.max_rpm == pytest.approx(7.56, abs=1e-3)
+
+
+def _at(report: audit.Report, name: str, rpm: float) -> float:
+    mode = next(m for m in report.modes if m.judged and m.id == f"system.{name}")
+    return float(mode.frequency_at([rpm * math.pi / 30])[0])
+
+
+def test_the_iea15_hawc2_model_against_hawcstab2(iea15, hs2_iea15):
+    """HAWCStab2's whole-turbine structural modes of the IEA-15 at 5 rpm against wtvib's
+    coupled model of the HAWC2 model: the tower pair within 2 % (measured −1.3 %, −1.4 %),
+    the first flap backward and collective within 3 % (+2.1 %, +2.2 %). OPEN, held to what
+    they measure: the second flap family +5 … +7 %, the first edge backward +11 %, the
+    forward flap −5 % (module notes)."""
+    report = audit.run(importers.load(iea15))
+    for name, tol in (
+        ("tower.fa1", 0.02), ("tower.ss1", 0.02),
+        ("blade.flap1.backward", 0.03), ("blade.flap1.collective", 0.03),
+        ("blade.edge1.forward", 0.03),
+    ):  # fmt: skip
+        ref = hs2_iea15.modes[name]
+        got = _at(report, name, ref.rpm[0])
+        assert got == pytest.approx(ref.frequency_hz[0], rel=tol), (name, got)
+    for name, lo, hi in (
+        ("blade.flap2.collective", 0.04, 0.09),
+        ("blade.edge1.backward", 0.08, 0.13),
+        ("blade.flap1.forward", -0.07, -0.03),
+    ):
+        ref = hs2_iea15.modes[name]
+        diff = _at(report, name, ref.rpm[0]) / ref.frequency_hz[0] - 1
+        assert lo <= diff <= hi, (name, diff)
+
+
+def test_the_iea15_onshore_model_tells_its_story(iea15):
+    """The onshore variant stands the tower on the ground 15 m above the sea (the model's
+    own note: "fixed at bottom of tower"), without the monopile that puts the real turbine's
+    tower at 0.17 Hz: its first tower pair at 0.23 Hz meets 3P at the lowest speed and 2P at
+    rated — resonant, and said so."""
+    report = audit.run(importers.load(iea15))
+    checks = {c.id: c for c in report.checks}
+    assert checks["tower.class"].status == "fail" and "resonant" in checks["tower.class"].message
+    assert report.verdict == "fail"
+
+
+def test_the_dtu10mw_blade_against_hawcstab2(dtu10):
+    """The DTU 10 MW blade from its HAWC2 st file, cantilevered, against HAWCStab2's
+    structural blade modes (blade.cmb, 0–10 rpm): first flap and edge within 3 % at every
+    speed (measured +1.7 … +2.6 %); the higher modes high by a share that grows with the
+    mode (module notes), held to it: second flap +3 … +4 %, third flap +5 … +6 %."""
+    ref = importers.load(
+        DATA / "campbell" / "hawcstab2" / "blade.cmb",
+        importers.ReadOptions(blades=3, rpm=(6.0, 9.6)),
+    ).results
+    assert ref is not None
+    structure = importers.load(dtu10).blade.structure
+    assert structure is not None
+    for name, lo, hi in (
+        ("flap1", -0.03, 0.03), ("edge1", -0.03, 0.03),
+        ("flap2", 0.02, 0.045), ("flap3", 0.04, 0.065),
+    ):  # fmt: skip
+        m = ref.modes[f"blade.{name}"] if f"blade.{name}" in ref.modes else ref.modes[name]
+        rpm = np.asarray(m.rpm)
+        names, freqs, _, _ = blade.rotating_modes(structure, rpm * math.pi / 30, count=8)
+        diff = freqs[:, names.index(name)] / np.asarray(m.frequency_hz) - 1
+        assert np.all((lo <= diff) & (diff <= hi)), (name, diff)
+
+
+def test_the_dtu10mw_model_audits(dtu10):
+    """The DTU 10 MW's own model (its controller's speeds 6–9.6 rpm, constants 2 and 3)
+    audits end to end, every subsystem: tower, blades, drive train (its shaft's G·I_p and
+    the generator's inertia on the low-speed shaft), the coupled turbine, the aerodynamics
+    from its ae and pc files."""
+    spec = importers.load(dtu10)
+    assert spec.rotor.speed.min_rpm == pytest.approx(6.0, abs=0.01)
+    assert spec.rotor.speed.max_rpm == pytest.approx(9.6, abs=0.01)
+    assert spec.aerodynamics is not None
+    report = audit.run(spec)
+    assert {m.subsystem for m in report.modes} >= {"tower", "blade", "drivetrain", "system"}

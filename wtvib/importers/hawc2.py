@@ -1,0 +1,671 @@
+"""HAWC2 turbine models (the htc file and the st, ae, pc and operating-point files it names)
+as wtvib specs.
+
+What is read (htc syntax: :mod:`wtvib.importers.htc`):
+
+* ``new_htc_structure``: the main bodies — their ``c2_def`` centre lines and twist,
+  ``timoschenko_input`` (st file, classical or fully populated ``FPM 1``, set and subset),
+  ``concentrated_mass`` and ``damping_posdef``/``damping_aniso``, ``copy_main_body`` — and
+  the ``orientation`` (``base``; ``relative`` with its successive ``mbdy2_eulerang``
+  rotations) that places them; ``constraint`` for the tower's base (``fix0``).
+* The bodies are recognised by their place in the chain, not their names alone: the body
+  fixed to the ground (``fix0``) with the one above it up to the towertop is the tower;
+  the body whose last node carries the hubs is the shaft; the bodies attached to the
+  hubs are the blades.
+* ``aero``: ``nblades``, the ae and pc files, ``ae_sets``; ``wind``'s density.
+* The operating range: an operational data file (``.opt``) in the model's ``data/``
+  folder (HAWCStab2's), else the DTU Wind Energy controller's constants (minimum and
+  rated rotor speed, rated power, fine pitch, optimal tip-speed ratio).
+
+HAWC2's frames: global z points down, y downwind; a body's z runs along its centre line.
+A bending stiffness about a section's x axis (E·I_x) bends it in y: for the tower
+(x lateral) that is fore-aft, for a blade (x along the chord, HAWC2's hub frame) flapwise.
+The structural pitch of the principal axes adds to the centre line's twist; HAWC2 twist is
+positive about the blade's z (root to tip), the opposite sense of wtvib's (towards
+feather), so both are negated. Prebend and sweep, shaft tilt and cone are said and
+neglected, as for the other importers; damping is stiffness-proportional as HAWC2 gives it
+(ζ = π·β·f, the K coefficients of ``damping_posdef``).
+"""
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import SpecError
+from ..rigid import Part, assembled
+from . import htc
+from .htc import Block, Command
+
+#: The 19 columns of a classical st set and what they are.
+ST = ("r", "m", "x_cg", "y_cg", "ri_x", "ri_y", "x_sh", "y_sh", "E", "G", "I_x", "I_y", "I_p",
+      "k_x", "k_y", "A", "pitch", "x_e", "y_e")  # fmt: skip
+#: A fully populated set's first nine columns; K11 … K66 (upper triangle) follow.
+FPM_HEAD = ("r", "m", "x_cg", "y_cg", "ri_x", "ri_y", "pitch", "x_e", "y_e")
+
+
+@dataclass
+class Body:
+    """A main body: its centre line (x, y, z, twist per section) and st table, where it
+    is in the model."""
+
+    name: str
+    block: Block
+    c2: np.ndarray  # sections × (x, y, z, twist)
+    st: np.ndarray  # rows of the st set
+    fpm: bool
+    masses: list[tuple[int, np.ndarray]]  # (node, x y z m Ixx Iyy Izz)
+    damping: tuple[float, ...]  # damping_posdef or _aniso: Mx My Mz Kx Ky Kz
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    frame: np.ndarray = field(default_factory=lambda: np.eye(3))
+    placed: bool = False
+
+    @property
+    def length(self) -> float:
+        return float(np.sum(np.linalg.norm(np.diff(self.c2[:, :3], axis=0), axis=1)))
+
+    def node(self, which: str) -> np.ndarray:
+        """A node's position in the body's frame (``last`` or its 1-based number)."""
+        i = len(self.c2) - 1 if which == "last" else int(float(which)) - 1
+        i = min(max(i, 0), len(self.c2) - 1)
+        return self.c2[i, :3]
+
+    def at(self, which: str) -> np.ndarray:
+        """A node's global position."""
+        return self.origin + self.frame @ self.node(which)
+
+
+def _rotation(angles: list[float]) -> np.ndarray:
+    """HAWC2's Euler angles [deg]: rotations about x, then y, then z of the frame."""
+    ax, ay, az = (math.radians(a) for a in angles)
+    rx = np.array([[1, 0, 0], [0, math.cos(ax), -math.sin(ax)], [0, math.sin(ax), math.cos(ax)]])
+    ry = np.array([[math.cos(ay), 0, math.sin(ay)], [0, 1, 0], [-math.sin(ay), 0, math.cos(ay)]])
+    rz = np.array([[math.cos(az), -math.sin(az), 0], [math.sin(az), math.cos(az), 0], [0, 0, 1]])
+    return rx @ ry @ rz
+
+
+def _bodies(structure: Block, root: Path) -> dict[str, Body]:
+    blocks = structure.each("main_body")
+    by_name = {}
+    for b in blocks:
+        name_cmd = b.need("name")
+        by_name[name_cmd.values[0].lower()] = b
+    out: dict[str, Body] = {}
+    for name, b in by_name.items():
+        source = b
+        copy = b.get("copy_main_body")
+        if copy is not None:
+            original = copy.values[0].lower() if copy.values else ""
+            if original not in by_name:
+                raise SpecError(
+                    f"copy_main_body names {original!r}, which is no main body",
+                    line=copy.line,
+                    source=str(copy.file),
+                )
+            source = by_name[original]
+        out[name] = _body(name, source, root)
+    return out
+
+
+def _body(name: str, b: Block, root: Path) -> Body:
+    c2_block = b.block("c2_def")
+    if c2_block is None:
+        raise SpecError(f"main body {name}: no c2_def block", line=b.line, source=str(b.file))
+    secs = c2_block.all("sec")
+    if len(secs) < 2:
+        raise SpecError(
+            f"main body {name}: its c2_def has {len(secs)} section(s), two at least are needed",
+            line=c2_block.line,
+            source=str(c2_block.file),
+        )
+    c2 = np.array([s.numbers(1)[:4] for s in secs])
+    timo = b.block("timoschenko_input")
+    if timo is None:
+        raise SpecError(
+            f"main body {name}: no timoschenko_input block", line=b.line, source=str(b.file)
+        )
+    file_cmd = timo.need("filename")
+    path = htc.resolve(file_cmd.values[0], root, file_cmd.file.parent, file_cmd)
+    fpm_cmd = timo.get("fpm")
+    fpm = fpm_cmd is not None and fpm_cmd.number(0) == 1
+    set_cmd = timo.need("set")
+    st = htc.read_st(path, int(set_cmd.number(0)), int(set_cmd.number(1)), 30 if fpm else len(ST))
+    masses = [(int(c.number(0)), np.array(c.numbers(1)[:7])) for c in b.all("concentrated_mass")]
+    damp = b.get("damping_posdef") or b.get("damping_aniso")
+    damping = tuple(damp.numbers()) if damp is not None else (0.0,) * 6
+    return Body(name, b, c2, st, fpm, masses, damping)
+
+
+def _place(bodies: dict[str, Body], orientation: Block) -> None:
+    """Each body's origin and frame from the orientation block."""
+    for base in orientation.each("base"):
+        cmd = base.get("mbdy") or base.need("body")
+        body = _named(bodies, cmd)
+        ini = base.get("inipos")
+        body.origin = np.array(ini.numbers()[:3]) if ini is not None else np.zeros(3)
+        angles = base.all("mbdy_eulerang") + base.all("body_eulerang")
+        frame = np.eye(3)
+        for a in angles:
+            frame = frame @ _rotation(a.numbers()[:3])
+        body.frame, body.placed = frame, True
+    relatives = orientation.each("relative")
+    for _ in range(len(relatives) + 1):  # in order, each after its parent
+        for rel in relatives:
+            first = rel.get("mbdy1") or rel.need("body1")
+            second = rel.get("mbdy2") or rel.need("body2")
+            parent, child = _named(bodies, first), _named(bodies, second)
+            if not parent.placed or child.placed:
+                continue
+            frame = parent.frame.copy()
+            for a in rel.all("mbdy2_eulerang") + rel.all("body2_eulerang"):
+                frame = frame @ _rotation(a.numbers()[:3])
+            where = first.values[1] if len(first.values) > 1 else "last"
+            child.origin = parent.at(where) - frame @ child.node(
+                second.values[1] if len(second.values) > 1 else "1"
+            )
+            child.frame, child.placed = frame, True
+
+
+def _named(bodies: dict[str, Body], cmd: Command) -> Body:
+    name = cmd.values[0].lower() if cmd.values else ""
+    if name not in bodies:
+        raise SpecError(
+            f"{cmd.key} names the body {name!r}, which the model does not have",
+            line=cmd.line,
+            source=str(cmd.file),
+        )
+    return bodies[name]
+
+
+@dataclass
+class _Chain:
+    """The bodies in their roles."""
+
+    tower: list[Body]  # base up
+    head: list[Body]  # above the tower, below the shaft (towertop, connector …)
+    shaft: Body
+    hubs: list[Body]
+    blades: list[Body]
+
+
+#: Words of the bodies that sit between a tower and its shaft (not the tower's own).
+HEAD_WORDS = ("top", "connector", "nacelle", "yaw", "bedplate")
+
+
+def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Chain:
+    constraint = structure.block("constraint")
+    parents: dict[str, str] = {}
+    orientation = structure.block("orientation")
+    assert orientation is not None
+    for rel in orientation.each("relative"):
+        first = rel.get("mbdy1") or rel.need("body1")
+        second = rel.get("mbdy2") or rel.need("body2")
+        parents[second.values[0].lower()] = first.values[0].lower()
+    children: dict[str, list[str]] = {}
+    for child, parent in parents.items():
+        children.setdefault(parent, []).append(child)
+    fixed = []
+    if constraint is not None:
+        fixed = [
+            (c.get("mbdy") or c.need("body")).values[0].lower() for c in constraint.each("fix0")
+        ]
+    base = next((n for n in fixed if n in bodies), None)
+    if base is None:
+        base = next((n for n in bodies if n not in parents), None)
+    if base is None:
+        raise SpecError(
+            "no body stands on the ground (no fix0, no base)", source=str(structure.file)
+        )
+    while base in embedded and len(children.get(base, [])) == 1:
+        base = children[base][0]  # a pile in the soil: the tower from the mudline up
+
+    # the shaft: the body with three (or two, one) hubs on its last node, each with a blade
+    def leaves(name: str) -> list[str]:
+        return children.get(name, [])
+
+    path = [base]
+    while True:
+        kids = leaves(path[-1])
+        if len(kids) != 1:
+            break
+        path.append(kids[0])
+    shaft_name = path[-1]
+    hubs = [bodies[n] for n in leaves(shaft_name)]
+    blades = [bodies[leaves(h.name)[0]] for h in hubs if leaves(h.name)]
+    if not hubs or not blades:
+        raise SpecError(
+            f"no rotor on the chain {' → '.join(path)}: the body {shaft_name!r} carries no hub "
+            "with a blade",
+            source=str(structure.file),
+        )
+    run = 0  # the tower: the bodies from the ground up to the first of the head's
+    while run < len(path) - 1 and not any(w in path[run] for w in HEAD_WORDS):
+        run += 1
+    tower = [bodies[n] for n in path[: max(run, 1)]]
+    head = [bodies[n] for n in path[max(run, 1) : -1]]
+    return _Chain(tower, head, bodies[shaft_name], hubs, blades)
+
+
+# ------------------------------------------------------------------------------------------
+# The spec's parts
+
+
+def _tower(chain: _Chain) -> tuple[dict[str, Any], float, np.ndarray]:
+    """The tower's distributed properties (every tower body stacked from the base), its
+    height and the global position of its top."""
+    heights, mass, ei_fa, ei_ss, gj, polar = [], [], [], [], [], []
+    offset = 0.0
+    for body in chain.tower:
+        st = body.st
+        r = st[:, 0]
+        if body.fpm:
+            raise SpecError(
+                f"body {body.name}: a fully populated st set for a tower is not read",
+                line=body.block.line,
+                source=str(body.block.file),
+            )
+        cols = {k: st[:, i] for i, k in enumerate(ST)}
+        # a station repeated at a property step is kept, nudged (the tables may not repeat)
+        h = r + offset
+        heights += list(h)
+        mass += list(cols["m"])
+        ei_fa += list(cols["E"] * cols["I_x"])
+        ei_ss += list(cols["E"] * cols["I_y"])
+        gj += list(cols["G"] * cols["I_p"])
+        polar += list(cols["m"] * (cols["ri_x"] ** 2 + cols["ri_y"] ** 2))
+        offset += body.length
+    h = np.array(heights)
+    for i in range(1, len(h)):
+        if h[i] <= h[i - 1]:
+            h[i] = h[i - 1] + 1e-6 * max(h[-1], 1.0)
+    top = chain.tower[-1].at("last")
+    return (
+        {
+            "height_m": [float(v) for v in h],
+            "mass_per_length_kg_m": mass,
+            "ei_fa_nm2": ei_fa,
+            "ei_ss_nm2": ei_ss,
+            "gj_nm2": gj,
+            "polar_inertia_kgm": polar,
+        },
+        float(offset),
+        top,
+    )
+
+
+def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float]:
+    """Blade 1's table: span along its centre line, mass, flap and edge stiffness about the
+    principal axes, the principal axes' twist in wtvib's sense, torsion."""
+    body = chain.blades[0]
+    st = body.st
+    c2 = body.c2
+    z_c2 = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1))])
+    r = st[:, 0]
+    if body.fpm:
+        from .windio import _condensed
+
+        k = np.zeros((len(st), 6, 6))
+        iu = np.triu_indices(6)
+        k[:, iu[0], iu[1]] = st[:, 9:30]
+        k[:, iu[1], iu[0]] = st[:, 9:30]
+        flap, edge, tors = _condensed(k)
+        m, ri_x, ri_y, pitch = st[:, 1], st[:, 4], st[:, 5], st[:, 6]
+    else:
+        cols = {name: st[:, i] for i, name in enumerate(ST)}
+        flap = cols["E"] * cols["I_x"]
+        edge = cols["E"] * cols["I_y"]
+        tors = cols["G"] * cols["I_p"]
+        m, ri_x, ri_y, pitch = cols["m"], cols["ri_x"], cols["ri_y"], cols["pitch"]
+    twist = np.interp(r, z_c2, c2[:, 3]) + pitch
+    span = r - r[0]
+    structure = {
+        "span_m": [float(v) for v in span],
+        "mass_per_length_kg_m": [float(v) for v in m],
+        "ei_flap_nm2": [float(v) for v in flap],
+        "ei_edge_nm2": [float(v) for v in edge],
+        "twist_deg": [float(-v) for v in twist],  # HAWC2's sense about z, wtvib's to feather
+        "gj_nm2": [float(v) for v in tors],
+        "torsional_inertia_kgm": [float(v) for v in m * (ri_x**2 + ri_y**2)],
+    }
+    return structure, span, m, float(body.length)
+
+
+def _mass_of(body: Body) -> float:
+    st = body.st
+    return float(np.trapezoid(st[:, 1], st[:, 0]))
+
+
+def to_spec_data(path: Path, text: str) -> dict[str, Any]:
+    """wtvib spec data from a HAWC2 htc file and the files it names."""
+    top = htc.parse(path)
+    root = htc.root_folder(path)
+    structure = top.block("new_htc_structure")
+    if structure is None:
+        raise SpecError("no new_htc_structure block: not a HAWC2 turbine model", source=str(path))
+    bodies = _bodies(structure, root)
+    orientation = structure.block("orientation")
+    if orientation is None:
+        raise SpecError("no orientation block", line=structure.line, source=str(path))
+    _place(bodies, orientation)
+    soil = top.block("soil")
+    embedded = {
+        e.need("mbdy_name").values[0].lower() for e in (soil.each("soil_element") if soil else [])
+    }
+    chain = _chain(bodies, structure, embedded)
+    tower_table, tower_length, top_pos = _tower(chain)
+    blade_structure, span, bmass, blade_length = _blade(chain)
+    n_blades = len(chain.blades)
+    aero = top.block("aero")
+    if aero is not None and aero.get("nblades") is not None:
+        n_blades = int(aero.need("nblades").number(0))
+    hub = chain.hubs[0]
+    hub_radius = hub.length
+    apex = chain.shaft.at("last")
+    # HAWC2's global frame: z down, y downwind; the tower top is the reference
+    downwind = float(apex[1] - top_pos[1])
+    above = float(top_pos[2] - apex[2])
+    blade_mass = float(np.trapezoid(bmass, span))
+    radius_pts = hub_radius + span
+    j_blades = n_blades * float(np.trapezoid(bmass * radius_pts**2, span))
+    parts, hub_mass, hub_inertia, gen_inertia = _head_parts(chain, top_pos)
+    parts.append(Part("blades", n_blades * blade_mass, downwind, above, j_blades / 2, j_blades,
+                      j_blades / 2))  # fmt: skip
+    head = assembled(parts)
+    tilt = _tilt(chain.shaft)
+    speed, control, statement = _operation(top, root, path)
+    shaft_k = _shaft_stiffness(chain.shaft)
+    data: dict[str, Any] = {
+        "wtvib": 1,
+        "turbine": {
+            "name": path.stem,
+            "rotor_diameter_m": round(2 * (hub_radius + blade_length), 6),
+            "hub_height_m": round(float(-apex[2]), 6),
+        },
+        "rotor": {
+            "blades": n_blades,
+            "orientation": "upwind" if downwind < 0 else "downwind",
+            "hub": "rigid",
+            "speed": speed,
+        },
+        "tower": {
+            "height_m": round(tower_length, 6),
+            **_tower_damping(chain.tower[0]),
+            "distributed": tower_table,
+        },
+        "tower_head": head.as_head(),
+        "blade": {
+            "length_m": round(blade_length, 6),
+            "mass_kg": round(blade_mass, 3),
+            **_blade_damping(chain.blades[0]),
+            "structure": {"hub_radius_m": round(hub_radius, 6), **blade_structure},
+        },
+        "drivetrain": {
+            "chain": [
+                {"name": "blades", "inertia_kgm2": j_blades},
+                {"name": "hub", "inertia_kgm2": hub_inertia},
+                {"name": "generator", "inertia_kgm2": gen_inertia},
+            ],
+            "shafts": [
+                {"stiffness_nm_rad": None},
+                {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * chain.shaft.damping[5]},
+            ],
+        },
+        "coupled": {
+            "apex_downwind_m": round(downwind, 6),
+            "apex_above_top_m": round(above, 6),
+            "hub_mass_kg": hub_mass,
+            "hub_inertia_kgm2": hub_inertia,
+        },
+        "assumptions": [
+            f"Imported from the HAWC2 model {path.name}: bodies "
+            + ", ".join(b.name for b in (*chain.tower, *chain.head, chain.shaft))
+            + f", {len(chain.hubs)} hubs and blades ({chain.blades[0].name}'s st set "
+            f"{'fully populated (6×6, condensed)' if chain.blades[0].fpm else 'classical'}); "
+            f"the tower ({', '.join(b.name for b in chain.tower)}) clamped at "
+            f"{chain.tower[0].name}'s base; the rotor apex "
+            f"{downwind:+.3g} m downwind of the tower top and {above:.3g} m above it; shaft "
+            f"tilt {tilt:.3g}° and the blades' prebend and cone neglected.",
+            "Tower head assembled from the bodies above the tower: their concentrated "
+            "masses (nacelle, yaw system), the shaft's (hub mass, hub and generator inertia) "
+            "and the blades at the apex.",
+            statement,
+        ],
+    }
+    warnings = []
+    if embedded:
+        warnings.append(
+            f"tower.foundation: the model's pile in the soil ({', '.join(sorted(embedded))}, "
+            "HAWC2's soil block) is not read: the tower is clamped at the mudline, so its "
+            "bending frequencies are upper bounds"
+        )
+    if top.block("hydro") is not None:
+        warnings.append(
+            "tower.added_mass: HAWC2's hydro block (the water moving with the monopile) is "
+            "not read: the submerged part's added mass is missing"
+        )
+    if warnings:
+        data["warnings"] = warnings
+    aerodynamics = _aerodynamics(top, root, chain, control)
+    if aerodynamics is not None:
+        data["aerodynamics"] = aerodynamics
+    return _plain(data)
+
+
+def _plain(value: Any) -> Any:
+    """The data with numpy's numbers as Python's (the spec and ``convert``'s YAML take
+    those), every number to ten digits."""
+    if isinstance(value, dict):
+        return {k: _plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v) for v in value]
+    if isinstance(value, (np.floating, float)):
+        return float(f"{float(value):.10g}")
+    if isinstance(value, np.integer):
+        return int(value)
+    return value
+
+
+def _head_parts(chain: _Chain, top: np.ndarray) -> tuple[list[Part], float, float, float]:
+    """The tower head's parts (downwind x, up z from the tower top): every concentrated
+    mass on the bodies above the tower and on the shaft; the hub's mass and polar inertia,
+    the generator's inertia about the shaft (the shaft's masses without mass)."""
+    parts: list[Part] = []
+    hub_mass = hub_inertia = gen_inertia = 0.0
+    for body in (*chain.head, chain.shaft):
+        for node, (x, y, z, m, ixx, iyy, izz) in body.masses:
+            pos = body.origin + body.frame @ (body.node(str(node)) + np.array([x, y, z]))
+            inertia = body.frame @ np.diag([ixx, iyy, izz]) @ body.frame.T
+            if body is chain.shaft:
+                if m > 0:  # the hub
+                    hub_mass += m
+                    hub_inertia += izz
+                else:
+                    gen_inertia += izz
+            parts.append(
+                Part(
+                    f"{body.name} mass at node {node}",
+                    max(m, 1e-9),
+                    float(pos[1] - top[1]),
+                    float(top[2] - pos[2]),
+                    pitch=float(inertia[0, 0]),  # about the lateral x axis
+                    roll=float(inertia[1, 1]),  # about the downwind axis
+                    yaw=float(inertia[2, 2]),
+                )
+            )
+        m_body = _mass_of(body)
+        mid = body.origin + body.frame @ body.c2[len(body.c2) // 2, :3]
+        parts.append(Part(body.name, max(m_body, 1e-9), float(mid[1] - top[1]),
+                          float(top[2] - mid[2])))  # fmt: skip
+    hub_body_mass = sum(_mass_of(h) for h in chain.hubs)
+    hub_mass += hub_body_mass
+    return parts, hub_mass, hub_inertia, gen_inertia
+
+
+def _tilt(shaft: Body) -> float:
+    axis = shaft.frame @ np.array([0.0, 0.0, 1.0])
+    return math.degrees(math.asin(min(1.0, abs(axis[2]) / max(np.linalg.norm(axis), 1e-12))))
+
+
+def _shaft_stiffness(shaft: Body) -> float:
+    """The shaft's torsional stiffness between its ends: GJ/L (G·I_p of its st set)."""
+    st = shaft.st
+    gj = st[:, 9] * st[:, 12] if not shaft.fpm else st[:, 29]
+    length = shaft.length
+    if length <= 0 or np.any(gj <= 0):
+        raise SpecError(
+            f"body {shaft.name}: no torsional stiffness (G·I_p) to make a drive train of",
+            line=shaft.block.line,
+            source=str(shaft.block.file),
+        )
+    return float(1.0 / np.trapezoid(1.0 / gj, np.linspace(0, length, len(gj))))
+
+
+def _tower_damping(body: Body) -> dict[str, Any]:
+    _, _, _, kx, ky, kz = (list(body.damping) + [0.0] * 6)[:6]
+    if kx <= 0 and ky <= 0:
+        return {}
+    return {"stiffness_damping_s": {"bending_1": kx, "bending_2": ky, "torsion": kz}}
+
+
+def _blade_damping(body: Body) -> dict[str, Any]:
+    return _tower_damping(body)  # Kx flapwise (about x), Ky edgewise, Kz torsion
+
+
+def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict[str, Any], str]:
+    """The operating range and control: an operational data file in the model's data/
+    folder, else the DTU Wind Energy controller's constants."""
+    constants = _controller(top)
+    opt = sorted((root / "data").glob("*.opt")) if (root / "data").is_dir() else []
+    control: dict[str, Any] = {"regulation": "pitch"}
+    if 1 in constants:
+        control["rated_power_kw"] = constants[1]
+    if opt:
+        table = htc.read_opt(opt[0])
+        rpm = table[:, 2]
+        speed = {"min_rpm": round(float(rpm.min()), 6), "max_rpm": round(float(rpm.max()), 6),
+                 "source": f"{opt[0].name} (operating points)"}  # fmt: skip
+        control["cut_in_wind_m_s"] = float(max(table[0, 0], 1.0))
+        control["cut_out_wind_m_s"] = float(table[-1, 0])
+        control["fine_pitch_deg"] = float(table[:, 1].min())
+        return (
+            speed,
+            control,
+            f"Operating range from {opt[0].name}: {rpm.min():.4g}–{rpm.max():.4g} rpm.",
+        )
+    if 2 in constants and 3 in constants:
+        lo, hi = constants[2] * 30 / math.pi, constants[3] * 30 / math.pi
+        source = "the DTU Wind Energy controller's constants 2 and 3 (rad/s)"
+        speed = {"min_rpm": round(lo, 6), "max_rpm": round(hi, 6), "source": source}
+        if 49 in constants and constants[49] > 0:
+            control["tip_speed_ratio"] = constants[49]
+        return (
+            speed,
+            control,
+            f"Operating range {lo:.4g}–{hi:.4g} rpm from the controller's constants.",
+        )
+    raise SpecError(
+        "no operating range: the model names no operational data (.opt in data/) and no "
+        "DTU Wind Energy controller with its minimum and rated speed; give --rpm MIN:MAX",
+        source=str(path),
+    )
+
+
+def _controller(top: Block) -> dict[int, float]:
+    dll = top.block("dll")
+    if dll is None:
+        return {}
+    for t2 in dll.each("type2_dll"):
+        name = t2.get("name")
+        if name is not None and "dtu_we_controller" in " ".join(name.values).lower():
+            init = t2.block("init")
+            if init is None:
+                return {}
+            return {
+                int(c.number(0)): c.number(1) for c in init.all("constant") if len(c.values) >= 2
+            }
+    return {}
+
+
+def _aerodynamics(
+    top: Block, root: Path, chain: _Chain, control: dict[str, Any]
+) -> dict[str, Any] | None:
+    aero = top.block("aero")
+    if aero is None:
+        return None
+    ae_cmd, pc_cmd = aero.get("ae_filename"), aero.get("pc_filename")
+    if ae_cmd is None or pc_cmd is None:
+        return None
+    ae_sets = aero.get("ae_sets")
+    set_no = int(ae_sets.number(0)) if ae_sets is not None else 1
+    ae = htc.read_ae(htc.resolve(ae_cmd.values[0], root, ae_cmd.file.parent, ae_cmd), set_no)
+    profiles = htc.read_pc(htc.resolve(pc_cmd.values[0], root, pc_cmd.file.parent, pc_cmd))
+    body = chain.blades[0]
+    c2 = body.c2
+    z_c2 = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1))])
+    hub_r = chain.hubs[0].length
+    r = np.minimum(ae[:, 0], float(z_c2[-1]))  # ae radii along the centre line, within it
+    keep = np.r_[True, np.diff(r) > 1e-9]
+    r, chord, thick = r[keep], ae[keep, 1], ae[keep, 2]
+    radius = hub_r + r
+    radius[0] = max(radius[0], 1e-3)
+    twist = -np.interp(r, z_c2, c2[:, 3])
+    airfoils, names = _blended(profiles, thick)
+    wind = top.block("wind")
+    density = wind.get("density") if wind is not None else None
+    stall = aero.get("dynstall_method")
+    tip = aero.get("tiploss_method")
+    return {
+        "air_density_kg_m3": density.number(0) if density is not None else 1.225,
+        # the shed wake lags the lift in HAWC2's Beddoes–Leishman-type MHH model (2), not in
+        # Øye's (1) or without dynamic stall (0)
+        "shed_wake": stall is not None and stall.number(0) >= 2,
+        "tip_loss": tip is None or tip.number(0) > 0,
+        "stations": {
+            "radius_m": [float(v) for v in radius],
+            "chord_m": [float(max(v, 1e-3)) for v in chord],
+            "twist_deg": [float(v) for v in twist],
+            "airfoil": names,
+        },
+        "airfoils": airfoils,
+        "control": control,
+    }
+
+
+def _blended(
+    profiles: list[tuple[float, np.ndarray]], thickness: np.ndarray
+) -> tuple[dict[str, Any], list[str]]:
+    """One polar per station, interpolated in relative thickness between the pc set's two
+    profiles that bracket it (as HAWC2 does), on the thinner profile's angles."""
+    thick = np.array([t for t, _ in profiles])
+    order = np.argsort(thick)
+    thick = thick[order]
+    tables = [profiles[i][1] for i in order]
+    grid = np.linspace(-180.0, 180.0, 361)
+    cl = np.array([np.interp(grid, t[:, 0], t[:, 1]) for t in tables])
+    cd = np.array([np.interp(grid, t[:, 0], t[:, 2]) for t in tables])
+    airfoils: dict[str, Any] = {}
+    names = []
+    for t in thickness:
+        t = float(np.clip(t, thick[0], thick[-1]))
+        name = f"t{t:.2f}"
+        if name not in airfoils:
+            j = (
+                int(np.clip(np.searchsorted(thick, t) - 1, 0, len(thick) - 2))
+                if len(thick) > 1
+                else 0
+            )
+            if len(thick) == 1:
+                c_l, c_d = cl[0], cd[0]
+            else:
+                w = (t - thick[j]) / (thick[j + 1] - thick[j]) if thick[j + 1] > thick[j] else 0.0
+                c_l = (1 - w) * cl[j] + w * cl[j + 1]
+                c_d = (1 - w) * cd[j] + w * cd[j + 1]
+            airfoils[name] = {
+                "alpha_deg": [float(a) for a in grid],
+                "cl": [float(v) for v in c_l],
+                "cd": [float(max(v, 0.0)) for v in c_d],
+            }
+        names.append(name)
+    return airfoils, names

@@ -1,0 +1,301 @@
+"""HAWC2's model files as data: the htc block syntax, st (beam) files, ae and pc
+(aerodynamic) files and opt (operating point) files.
+
+The htc syntax (HAWC2 user manual, §3): commands end in ``;`` and whatever follows the
+``;`` on a line is a comment; ``begin NAME;`` … ``end NAME;`` nest blocks;
+``continue_in_file FILE;`` reads FILE in its place (until its ``exit;``); ``exit;`` ends the
+file. File names are relative to the folder HAWC2 runs in — by convention the model's
+folder, the one that holds ``htc/`` (``./data/…``, ``../IEA-15-240-RWT/…``); where a name
+does not resolve there, beside the htc file.
+
+Every value keeps its file and line, so that a fault names where it is.
+"""
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import SpecError
+from ..spec import read_text
+
+#: The deepest continue_in_file nesting read (a file that names itself would not end).
+MAX_INCLUDES = 20
+
+
+@dataclass(frozen=True)
+class Command:
+    """One htc command: its key, the values after it, where it stands."""
+
+    key: str
+    values: tuple[str, ...]
+    file: Path
+    line: int
+
+    def number(self, i: int) -> float:
+        """The ``i``-th value as a number (its file and line named where it is not one)."""
+        try:
+            value = float(self.values[i].replace("D", "E").replace("d", "e"))
+        except (IndexError, ValueError):
+            got = self.values[i] if i < len(self.values) else "nothing"
+            raise SpecError(
+                f"{self.key}: value {i + 1} must be a number (got {got!r})",
+                line=self.line,
+                source=str(self.file),
+            ) from None
+        if not np.isfinite(value):
+            raise SpecError(
+                f"{self.key}: value {i + 1} must be a finite number",
+                line=self.line,
+                source=str(self.file),
+            )
+        return value
+
+    def numbers(self, start: int = 0) -> list[float]:
+        return [self.number(i) for i in range(start, len(self.values))]
+
+
+@dataclass
+class Block:
+    """An htc block: its name, the comment after its ``begin`` (a body's name is often
+    there: ``begin main_body;  tower``), its commands and blocks in order."""
+
+    name: str
+    file: Path
+    line: int
+    title: str = ""
+    commands: list[Command] = field(default_factory=list)
+    blocks: list["Block"] = field(default_factory=list)
+
+    def get(self, key: str) -> Command | None:
+        return next((c for c in self.commands if c.key == key), None)
+
+    def all(self, key: str) -> list[Command]:
+        return [c for c in self.commands if c.key == key]
+
+    def need(self, key: str) -> Command:
+        found = self.get(key)
+        if found is None:
+            raise SpecError(
+                f"block {self.name}: no {key} command", line=self.line, source=str(self.file)
+            )
+        return found
+
+    def block(self, name: str) -> "Block | None":
+        return next((b for b in self.blocks if b.name == name), None)
+
+    def each(self, name: str) -> list["Block"]:
+        return [b for b in self.blocks if b.name == name]
+
+
+def root_folder(htc: Path) -> Path:
+    """The folder HAWC2 runs the model in: the one holding ``htc/``, else the htc's own."""
+    return htc.parent.parent if htc.parent.name.lower() == "htc" else htc.parent
+
+
+def resolve(name: str, root: Path, beside: Path, cmd: Command) -> Path:
+    """A file the model names: relative to the model's folder, else beside the file that
+    names it; SpecError naming the command where neither holds it."""
+    path = Path(name.strip('"').replace("\\", "/"))
+    for candidate in (path,) if path.is_absolute() else (root / path, beside / path):
+        try:
+            if candidate.is_file():
+                return candidate
+        except OSError:  # a name the file system cannot hold
+            break
+    raise SpecError(
+        f"{cmd.key} names {name!r}, which does not exist (looked in {root} and {beside})",
+        line=cmd.line,
+        source=str(cmd.file),
+    )
+
+
+def parse(path: Path) -> Block:
+    """The htc file as a tree of blocks (continue_in_file read in place)."""
+    top = Block("htc", path, 1)
+    stack = [top]
+    _read(path, root_folder(path), stack, 0)
+    if len(stack) > 1:
+        open_ = stack[-1]
+        raise SpecError(
+            f"begin {open_.name} has no end {open_.name} (the file ends first)",
+            line=open_.line,
+            source=str(open_.file),
+        )
+    return top
+
+
+def _read(path: Path, root: Path, stack: list[Block], depth: int) -> None:
+    if depth > MAX_INCLUDES:
+        raise SpecError(
+            f"continue_in_file nests more than {MAX_INCLUDES} deep (a file that names itself?)",
+            source=str(path),
+        )
+    for number, raw in enumerate(read_text(path).splitlines(), start=1):
+        text, sep, rest = raw.partition(";")
+        tokens = text.split()
+        if not tokens:
+            continue
+        key = tokens[0].lower()
+        if key == "exit":
+            return
+        if key == "begin":
+            if len(tokens) < 2:
+                raise SpecError("begin without a block name", line=number, source=str(path))
+            block = Block(tokens[1].lower(), path, number, rest.strip())
+            stack[-1].blocks.append(block)
+            stack.append(block)
+        elif key == "end":
+            name = tokens[1].lower() if len(tokens) > 1 else ""
+            if len(stack) == 1 or (name and stack[-1].name != name):
+                expected = stack[-1].name if len(stack) > 1 else "no block"
+                raise SpecError(
+                    f"end {name} where {expected} is open", line=number, source=str(path)
+                )
+            stack.pop()
+        elif key == "continue_in_file":
+            cmd = Command(key, tuple(tokens[1:]), path, number)
+            if not cmd.values:
+                raise SpecError("continue_in_file names no file", line=number, source=str(path))
+            _read(resolve(cmd.values[0], root, path.parent, cmd), root, stack, depth + 1)
+        elif sep or len(tokens) > 0:
+            stack[-1].commands.append(Command(key, tuple(tokens[1:]), path, number))
+
+
+# ------------------------------------------------------------------------------------------
+# st, ae, pc, opt
+
+
+def _numeric_rows(path: Path) -> list[tuple[int, list[str]]]:
+    return [(i, ln.split()) for i, ln in enumerate(read_text(path).splitlines(), start=1)]
+
+
+def _floats(cells: list[str], path: Path, line: int, count: int | None = None) -> list[float]:
+    try:
+        values = [float(c.replace("D", "E").replace("d", "e")) for c in cells[:count]]
+    except ValueError:
+        raise SpecError(
+            f"a number was expected in every column (got {' '.join(cells[:6])} …)",
+            line=line,
+            source=str(path),
+        ) from None
+    if count is not None and len(values) < count:
+        raise SpecError(
+            f"{count} columns were expected, the line has {len(values)}",
+            line=line,
+            source=str(path),
+        )
+    if not np.all(np.isfinite(values)):
+        raise SpecError("a number that is not finite", line=line, source=str(path))
+    return values
+
+
+def read_st(path: Path, set_no: int, subset: int, columns: int) -> np.ndarray:
+    """Main set ``set_no``, subset ``subset`` of an st file: its rows, ``columns`` values
+    each (19 for a classical Timoshenko set, 30 for a fully populated one). The file marks
+    a main set with ``#n`` and a subset with ``$m rows``."""
+    current = 0
+    rows = _numeric_rows(path)
+    for k, (line, cells) in enumerate(rows):
+        if not cells:
+            continue
+        head = cells[0]
+        if head.startswith("#"):
+            digits = head[1:].strip() or (cells[1] if len(cells) > 1 else "")
+            current = int(digits) if digits.isdigit() else current + 1
+        elif head.startswith("$") and current == set_no:
+            digits = head[1:].strip() or (cells[1] if len(cells) > 1 else "")
+            rest = cells[1:] if head[1:].strip() else cells[2:]
+            if not digits.isdigit() or not rest or not rest[0].isdigit():
+                raise SpecError("a subset line is $number rows", line=line, source=str(path))
+            if int(digits) != subset:
+                continue
+            count = int(rest[0])
+            out: list[list[float]] = []
+            for line2, cells2 in rows[k + 1 :]:
+                if len(out) == count:
+                    break
+                if not cells2:
+                    continue
+                out.append(_floats(cells2, path, line2, columns))
+            if len(out) < count:
+                raise SpecError(
+                    f"subset ${subset} of set #{set_no} announces {count} rows, the file "
+                    f"holds {len(out)}",
+                    line=line,
+                    source=str(path),
+                )
+            table = np.array(out)
+            if np.any(np.diff(table[:, 0]) < 0):
+                raise SpecError(
+                    f"set #{set_no} subset ${subset}: the stations (first column) must not "
+                    "decrease",
+                    line=line,
+                    source=str(path),
+                )
+            return table
+    raise SpecError(f"no set #{set_no} with a subset ${subset}", source=str(path))
+
+
+def read_ae(path: Path, set_no: int) -> np.ndarray:
+    """An ae file's set: rows of radius along the blade, chord, relative thickness [%] and
+    pc set."""
+    rows = [(i, c) for i, c in _numeric_rows(path) if c]
+    if not rows:
+        raise SpecError("an empty ae file", source=str(path))
+    k = 1
+    while k < len(rows):
+        line, cells = rows[k]
+        number, count = _floats(cells, path, line, 2)
+        k += 1
+        block = [_floats(c, path, ln, 4) for ln, c in rows[k : k + int(count)]]
+        if int(number) == set_no:
+            if len(block) < int(count):
+                raise SpecError(
+                    f"set {set_no} announces {int(count)} rows", line=line, source=str(path)
+                )
+            return np.array(block)
+        k += int(count)
+    raise SpecError(f"no ae set {set_no}", source=str(path))
+
+
+def read_pc(path: Path, set_no: int = 1) -> list[tuple[float, np.ndarray]]:
+    """A pc file's set: its profiles as (relative thickness [%], rows of α [deg], C_L, C_D,
+    C_M)."""
+    rows = [(i, c) for i, c in _numeric_rows(path) if c]
+    k = 1  # the first line: the number of sets and a title
+    for current in range(1, set_no + 1):
+        if k >= len(rows):
+            raise SpecError(f"no pc set {set_no}", source=str(path))
+        line, cells = rows[k]
+        n_profiles = int(_floats(cells, path, line, 1)[0])
+        k += 1
+        profiles = []
+        for _ in range(n_profiles):
+            line, cells = rows[k]
+            _, count, thickness = _floats(cells, path, line, 3)
+            k += 1
+            table = np.array([_floats(c, path, ln, 4) for ln, c in rows[k : k + int(count)]])
+            if len(table) < int(count):
+                raise SpecError(
+                    f"a profile announces {int(count)} rows", line=line, source=str(path)
+                )
+            k += int(count)
+            profiles.append((thickness, table))
+        if current == set_no:
+            return profiles
+    raise SpecError(f"no pc set {set_no}", source=str(path))
+
+
+def read_opt(path: Path) -> np.ndarray:
+    """An operational data file (HAWCStab2's .opt): rows of wind [m/s], pitch [deg], rotor
+    speed [rpm] (and power, thrust)."""
+    rows = [(i, c) for i, c in _numeric_rows(path) if c]
+    if not rows:
+        raise SpecError("an empty operational data file", source=str(path))
+    line, cells = rows[0]
+    count = int(_floats(cells, path, line, 1)[0])
+    table = np.array([_floats(c, path, ln, 3) for ln, c in rows[1 : 1 + count]])
+    if len(table) < count or count < 1:
+        raise SpecError(f"announces {count} operating points", line=line, source=str(path))
+    return table
