@@ -104,7 +104,7 @@ def test_a_truncated_lin_file_is_one_line_and_exit_2(tmp_path):
 def test_a_cmb_with_a_text_cell_is_one_line_and_exit_2(tmp_path):
     text = (DATA / "hawcstab2" / "blade.cmb").read_text().replace("0.610872E+00", "abc", 1)
     result = runner.invoke(app, ["check", str(write(tmp_path, text, "x.cmb")), "--no-plot"])
-    assert result.exit_code == 2 and "x.cmb:3: a cell that is not a number" in result.output
+    assert result.exit_code == 2 and "x.cmb:3: 'abc' is not a finite number" in result.output
 
 
 def test_a_cmb_with_a_frequency_that_is_not_positive_is_one_line_and_exit_2(tmp_path):

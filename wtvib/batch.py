@@ -115,26 +115,48 @@ class Item:
 
 
 def discover(paths: Iterable[Path]) -> list[Path]:
-    """Input files: files as given; folders searched recursively for specs, windIO files and
-    ElastoDyn main decks (``.dat``/``.fst`` files that name a ``TwrFile``)."""
-    found: list[Path] = []
+    """Input files: files as given; folders searched recursively for specs, windIO files,
+    ElastoDyn main decks (``.dat``/``.fst`` files that name a ``TwrFile``) and HAWC2 models
+    (:func:`discover_all` also says what it left out)."""
+    return discover_all(paths)[0]
 
+
+def discover_all(paths: Iterable[Path]) -> tuple[list[Path], list[tuple[str, str]]]:
+    """The inputs, and every file left out with why: a file given or found twice (by its
+    path, a link to it, the same file under another name), and the files in the folders
+    that ``check`` reads but a batch of turbines does not (another tool's Campbell results,
+    the parts of a HAWC2 model) — never a silent skip."""
+    found: list[Path] = []
+    skipped: list[tuple[str, str]] = []
     for p in paths:
         if p.is_dir():
-            found += _search(p)
+            inputs, left = _search(p)
+            found += inputs
+            skipped += left
         else:
             found.append(p)
-    seen: set[Path] = set()
+    seen: dict[object, Path] = {}
     unique = []
     for p in found:
         try:
-            r = p.resolve()
-        except (OSError, RuntimeError):  # a symlink loop: its audit says what it is
+            info = p.stat()
+            r: object = (info.st_dev, info.st_ino)  # the file, however it is named
+        except (OSError, ValueError):  # a symlink loop, a missing file: its audit says
             r = p.absolute()
-        if r not in seen:
-            seen.add(r)
-            unique.append(p)
-    return unique
+        if r in seen:
+            skipped.append((str(p), f"the same file as {seen[r]}, audited once"))
+            continue
+        seen[r] = p
+        unique.append(p)
+    return unique, skipped
+
+
+#: Files a folder may hold that ``check`` reads but a batch of turbine descriptions does
+#: not audit one by one, and why.
+LEFT_OUT = {
+    ".lin": "an OpenFAST linearisation: check its folder (its azimuths are one operating point)",
+    ".cmb": "HAWCStab2 Campbell results: check it on its own (with --blades where it does not say)",
+}
 
 
 #: Stems of the batch's own files: an input may not take them (its report would be
@@ -142,23 +164,34 @@ def discover(paths: Iterable[Path]) -> list[Path]:
 RESERVED = frozenset({"summary", "run-metadata", "audit"})
 
 
-def _search(folder: Path) -> list[Path]:
+def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
     """The main inputs in a folder and its subfolders; a subfolder that cannot be searched
     (no permission) is itself an input, whose audit says why — never skipped silently."""
     from .importers import is_main_input
 
     out: list[Path] = []
     unreadable: list[Path] = []
+    left: list[tuple[str, str]] = []
 
     def refused(exc: OSError) -> None:
         unreadable.append(Path(exc.filename) if exc.filename else folder)
 
     for root, dirs, files in os.walk(folder, onerror=refused):
         dirs.sort()
-        out += sorted(
-            q for q in (Path(root) / f for f in files) if q.is_file() and is_main_input(q)
-        )
-    return sorted(out) + unreadable
+        for q in sorted(Path(root) / f for f in files):
+            try:
+                regular = q.is_file()
+            except OSError:
+                regular = False
+            if regular and is_main_input(q):
+                out.append(q)
+            elif regular and q.suffix.lower() in LEFT_OUT:
+                left.append((str(q), LEFT_OUT[q.suffix.lower()]))
+            elif regular and q.suffix.lower() == ".htc":
+                left.append(
+                    (str(q), "a part of a HAWC2 model, read where the model continues in it")
+                )
+    return sorted(out) + unreadable, left
 
 
 def _resolved(p: Path) -> Path:
@@ -186,7 +219,25 @@ def output_keys(paths: Sequence[Path]) -> list[str]:
         if sum(q == mine for q in parts) > 1:  # same path, other suffix (y.yaml, y.yml)
             key += "__" + p.suffix.lstrip(".")
         keys.append(f"input__{key}" if key in RESERVED else key)
-    return keys
+    return _unique(keys)
+
+
+def _unique(keys: list[str]) -> list[str]:
+    """The stems made unique where the joins still meet (``a/b.yaml`` and ``a__b.yaml``
+    both ``a__b``; ``summary.yaml`` and ``input__summary.yaml``), by ``--2``, ``--3`` … in
+    input order, case aside (a case-blind file system holds ``A`` and ``a`` as one); none
+    is one of the batch's own names."""
+    taken = {k.casefold() for k in RESERVED}
+    out = []
+    for key in keys:
+        candidate, n = key, 1
+        while candidate.casefold() in taken:
+            n += 1
+            candidate = f"{key}--{n}"
+        taken.add(candidate.casefold())
+        out.append(candidate)
+    assert len({k.casefold() for k in out}) == len(out)
+    return out
 
 
 #: Draws a report's figures: PNG bytes by file stem suffix (``plots.render.Drawer.pngs``).
@@ -249,6 +300,37 @@ WORKERLESS_S = 60
 POLL_S = 2.0
 
 
+def worker_start(parent: int) -> None:
+    """A batch worker's first act: it dies with the process that started it — a killed
+    ``batch`` (SIGKILL) leaves no worker behind holding the caller's pipe open — by the
+    kernel's parent-death signal on Linux and a watchdog on the parent's pid elsewhere;
+    Ctrl-C and SIGTERM are the parent's to handle (a worker ignores the one and dies of the
+    other, without a traceback), and its standard output is /dev/null (the parent writes)."""
+    import signal
+    import threading
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)  # not the parent's handler, inherited
+    with contextlib.suppress(OSError):
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, 1)
+        os.close(null)
+    with contextlib.suppress(OSError, AttributeError, TypeError):
+        import ctypes
+
+        libc = ctypes.CDLL(None)
+        libc.prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
+    if os.getppid() != parent:  # the parent died before the signal was asked for
+        os._exit(1)
+
+    def watchdog() -> None:
+        while os.getppid() == parent:
+            time.sleep(1.0)
+        os._exit(1)
+
+    threading.Thread(target=watchdog, name="wtvib-parent-watchdog", daemon=True).start()
+
+
 def run(
     paths: Sequence[Path],
     *,
@@ -279,7 +361,9 @@ def run(
         return items
     results: dict[int, Item] = {}
     own = executor is None
-    pool = executor or ProcessPoolExecutor(max_workers=min(jobs, len(paths)))
+    pool = executor or ProcessPoolExecutor(
+        max_workers=min(jobs, len(paths)), initializer=worker_start, initargs=(os.getpid(),)
+    )
     with pool if own else contextlib.nullcontext(pool):
         futures: dict[Future[Item], int] = {
             pool.submit(audit_one, str(p), k, plots, options): i
@@ -331,12 +415,37 @@ def run(
             for fut in futures:
                 fut.cancel()
             if own:
-                workers = list((getattr(pool, "_processes", None) or {}).values())
-                pool.shutdown(wait=False, cancel_futures=True)
-                for process in workers:
-                    process.terminate()
+                _stop(pool)  # type: ignore[arg-type]
             raise
     return [results[i] for i in range(len(paths))]
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """End a process pool now: cancel what is queued, terminate the workers, and wait
+    (bounded) for the pool's manager thread. On Python 3.11 that thread then tries to fail
+    the futures already cancelled and prints an ``InvalidStateError`` traceback (fixed in
+    CPython 3.12, gh-94440 family); it is bookkeeping of cancelled work, not a fault of the
+    run, and is not shown."""
+    import threading
+    from concurrent.futures import InvalidStateError
+
+    previous = threading.excepthook
+
+    def quiet(args: threading.ExceptHookArgs) -> None:
+        if not isinstance(args.exc_value, InvalidStateError):
+            previous(args)
+
+    threading.excepthook = quiet
+    try:
+        workers = list((getattr(pool, "_processes", None) or {}).values())
+        manager = getattr(pool, "_executor_manager_thread", None)
+        pool.shutdown(wait=False, cancel_futures=True)
+        for process in workers:
+            process.terminate()
+        if manager is not None:
+            manager.join(timeout=10.0)
+    finally:
+        threading.excepthook = previous
 
 
 class FolderLock:
@@ -377,13 +486,28 @@ class FolderLock:
             return self
         raise OutputError(f"cannot lock {self.path.parent}")
 
+    #: The largest process id a lock may hold (Linux's pid_max ceiling, 2²²).
+    MAX_PID = 1 << 22
+
     def _stale(self) -> bool:
+        """Whether the lock's writer is gone: its process id not running — or no process id
+        at all (empty, 0, negative, too large, text: os.kill(0) and os.kill(−1) reach
+        whole process groups and never say "gone", a huge one overflows), unless the file
+        is a second old or less (a writer between making it and writing its id)."""
+        import time
+
         try:
-            pid = int(self.path.read_text().strip() or "0")
-            os.kill(pid, 0)
-        except (ValueError, ProcessLookupError):
+            text = self.path.read_text(errors="replace").strip()
+            young = time.time() - self.path.stat().st_mtime < 1.0
+        except OSError:
+            return False
+        if not text.isdigit() or not 0 < int(text) < self.MAX_PID:
+            return not (young and not text)
+        try:
+            os.kill(int(text), 0)
+        except ProcessLookupError:
             return True
-        except (OSError, PermissionError):
+        except OSError:  # PermissionError: another user's live process
             return False
         return False
 
@@ -427,7 +551,10 @@ def summary(items: Sequence[Item]) -> dict[str, Any]:
 
 
 def summary_csv(items: Sequence[Item]) -> str:
-    """The summary rows as CSV text."""
+    """The summary rows as CSV text; a text cell that a spreadsheet would run as a
+    formula (a turbine or file named "=…") is quoted (:func:`outputs.spreadsheet_cell`)."""
+    from .outputs import spreadsheet_cell
+
     buf = io.StringIO()
     cols = [
         "file",
@@ -442,8 +569,11 @@ def summary_csv(items: Sequence[Item]) -> str:
     writer = csv.DictWriter(buf, fieldnames=cols, lineterminator="\n")
     writer.writeheader()
     for it in items:
-        row = it.row()
-        writer.writerow({**row, "warnings": " | ".join(row["warnings"])})
+        row = {**it.row()}
+        row["warnings"] = " | ".join(row["warnings"])
+        writer.writerow(
+            {k: spreadsheet_cell(v) if isinstance(v, str) else v for k, v in row.items()}
+        )
     return buf.getvalue()
 
 

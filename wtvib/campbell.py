@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from .excitation import OperatingRange
-from .outputs import CAMPBELL_HEADER
+from .outputs import CAMPBELL_HEADER, spreadsheet_cell
 from .results import Mode
 
 #: Rotor speeds sampled without a schedule (standstill … overspeed).
@@ -102,7 +102,15 @@ class Campbell:
                 )
                 how = method[i] if method else ""
                 steady = f"{self.quasi_steady[mid][i]:.6f}" if mid in self.quasi_steady else ""
-                row = [mid, f"{n:.4f}", wind, pitch, f"{f[i]:.6f}", f"{z[i]:.6f}", aero]
+                row = [
+                    spreadsheet_cell(mid),
+                    f"{n:.4f}",
+                    wind,
+                    pitch,
+                    f"{f[i]:.6f}",
+                    f"{z[i]:.6f}",
+                    aero,
+                ]
                 w.writerow([*row, *root, how, steady])
         return buf.getvalue()
 

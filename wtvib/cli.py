@@ -87,6 +87,29 @@ app = typer.Typer(
 EXIT_PASS, EXIT_FAIL, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
 
 
+def _usage_error_on_one_line(self: Any, file: Any = None) -> None:
+    """A command-line mistake as one line, like every other error wtvib reports (click's
+    own shows three: its usage, a hint and the error)."""
+    where = f" (see '{self.ctx.command_path} --help')" if self.ctx is not None else ""
+    message = self.format_message().replace("\n", " ")
+    print(f"error: {message}{where}", file=file or sys.stderr)
+
+
+def _one_line_usage_errors() -> None:
+    """Typer's click (its own copy from 0.16 on, ``typer._click``) and click's, both."""
+    import importlib
+
+    for name in ("typer._click.exceptions", "click.exceptions"):
+        try:
+            module = importlib.import_module(name)
+        except ImportError:
+            continue
+        module.UsageError.show = _usage_error_on_one_line
+
+
+_one_line_usage_errors()
+
+
 class Format(StrEnum):
     text = "text"
     json = "json"
@@ -200,6 +223,15 @@ HelpAllOption = Annotated[
 ]
 
 
+def _study(uncertainty: bool, samples: int | None, seed: int | None) -> tuple[int, int]:
+    """--samples and --seed, which only an --uncertainty run uses (said where given
+    without it), with their defaults."""
+    for value, name in ((samples, "--samples"), (seed, "--seed")):
+        if value is not None and not uncertainty:
+            raise typer.BadParameter(f"{name} applies to --uncertainty", param_hint=name)
+    return (2000 if samples is None else samples), (0 if seed is None else seed)
+
+
 def _options(
     rpm: str | None,
     rated: float | None,
@@ -283,6 +315,12 @@ def _run_options(command: F) -> F:
 _state = {"debug": False}
 
 
+def _shown(text: object) -> str:
+    from .streams import shown
+
+    return shown(text)
+
+
 #: Exceptions the last line of defence lets through for typer to report: exits, Ctrl-C and
 #: usage errors — click's, and those of the click typer vendors (typer ≥ 0.16 raises
 #: ``typer.BadParameter`` from its own copy, which click's class does not catch).
@@ -320,10 +358,14 @@ def _user_errors(command: F) -> F:
             source = kwargs.get("spec_file")
             if source is not None and isinstance(exc, ModalError):
                 text = f"{source}: {text}"  # a model that cannot be solved: which input
-            typer.echo(f"error: {text}", err=True)
+            typer.echo(f"error: {_shown(text)}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
         except _PASS_THROUGH:
             raise  # typer reports a usage error itself (one line, exit 2)
+        except OSError as exc:  # the environment's fault: a full disk, a closed pipe
+            if debug:
+                raise
+            _environment_fault(exc, kwargs)
         except Exception as exc:  # the last line of defence
             if debug:
                 raise
@@ -333,10 +375,33 @@ def _user_errors(command: F) -> F:
                 (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs),
                 "wtvib",
             )
-            typer.echo(f"error: {internal_message(source, exc)}", err=True)
+            typer.echo(f"error: {_shown(internal_message(source, exc))}", err=True)
             raise typer.Exit(EXIT_INTERNAL) from None
 
     return wrapper  # type: ignore[return-value]
+
+
+def _environment_fault(exc: OSError, kwargs: dict[str, object]) -> None:
+    """An operating-system error as one line and exit 2: the standard output that could
+    not take the report, or the file named in the error; an OSError naming no file and not
+    about the output stays a wtvib bug (exit 3)."""
+    from . import streams
+    from .batch import internal_message
+
+    lost = streams.lost_output(exc)
+    if lost is not None:
+        streams.discard_stdout()
+        typer.echo(f"error: {lost}", err=True)
+        raise typer.Exit(EXIT_INPUT) from None
+    if exc.filename is not None:
+        reason = exc.strerror or type(exc).__name__
+        typer.echo(f"error: {streams.shown(exc.filename)}: {reason}", err=True)
+        raise typer.Exit(EXIT_INPUT) from None
+    source = next(
+        (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs), "wtvib"
+    )
+    typer.echo(f"error: {_shown(internal_message(source, exc))}", err=True)
+    raise typer.Exit(EXIT_INTERNAL) from None
 
 
 def _version(value: bool) -> None:
@@ -412,15 +477,21 @@ def check(
         ),
     ] = False,
     samples: Annotated[
-        int,
+        int | None,
         typer.Option(
-            min=10, max=MAX_SAMPLES, metavar="N", hidden=True, help="Monte Carlo samples."
+            min=10,
+            max=MAX_SAMPLES,
+            metavar="N",
+            hidden=True,
+            help="Monte Carlo samples (2,000); needs --uncertainty.",
         ),
-    ] = 2000,
+    ] = None,
     seed: Annotated[
-        int,
-        typer.Option(min=0, metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
-    ] = 0,
+        int | None,
+        typer.Option(
+            min=0, metavar="N", hidden=True, help="Seed of the sampling (0); needs --uncertainty."
+        ),
+    ] = None,
     scheduler: Annotated[
         str | None,
         typer.Option(
@@ -439,6 +510,7 @@ def check(
 
     if scheduler is not None and not uncertainty:
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
+    samples, seed = _study(uncertainty, samples, seed)
     from .plots.render import Drawer
 
     plot = not no_plots
@@ -473,14 +545,14 @@ def check(
     sys.stdout.write(text)
     if console is None:
         for path in written:
-            typer.echo(f"wrote {path}", err=True)
+            typer.echo(f"wrote {_shown(path)}", err=True)
     else:
         from .report import wrote
 
         sys.stdout.flush()
         wrote(console, written)
     for warning in report.warnings:
-        typer.echo(f"warning: {warning}", err=True)
+        typer.echo(f"warning: {_shown(warning)}", err=True)
     failing = report.verdict == "fail" or (strict and report.verdict == "warn")
     raise typer.Exit(EXIT_FAIL if failing else EXIT_PASS)
 
@@ -520,15 +592,21 @@ def report(
         ),
     ] = False,
     samples: Annotated[
-        int,
+        int | None,
         typer.Option(
-            min=10, max=MAX_SAMPLES, metavar="N", hidden=True, help="Monte Carlo samples."
+            min=10,
+            max=MAX_SAMPLES,
+            metavar="N",
+            hidden=True,
+            help="Monte Carlo samples (2,000); needs --uncertainty.",
         ),
-    ] = 2000,
+    ] = None,
     seed: Annotated[
-        int,
-        typer.Option(min=0, metavar="N", hidden=True, help="Seed of the sampling (reproducible)."),
-    ] = 0,
+        int | None,
+        typer.Option(
+            min=0, metavar="N", hidden=True, help="Seed of the sampling (0); needs --uncertainty."
+        ),
+    ] = None,
     *,
     options: "batch.Options",  # type: ignore[name-defined]  # noqa: F821
     debug: DebugOption = False,
@@ -538,6 +616,7 @@ def report(
 
     from . import audit, batch, pdfreport  # audit: the models imported before the fork
 
+    samples, seed = _study(uncertainty, samples, seed)
     if uncertainty:
         options = dataclasses.replace(options, samples=samples, seed=seed)
     from .outputs import write_atomic
@@ -555,12 +634,12 @@ def report(
         else:
             item = batch.audit_one(str(spec_file), spec_file.stem, True, options, draw)
     if item.report is None:
-        typer.echo(f"error: {item.error}", err=True)
+        typer.echo(f"error: {_shown(item.error)}", err=True)
         raise typer.Exit(EXIT_INTERNAL if item.internal else EXIT_INPUT)
     with _working(f"writing {output.name}"):
         pdf = pdfreport.build([(item.report, item.pngs)])
     write_atomic(output, pdf, force=force)
-    typer.echo(f"wrote {output} (verdict {item.report['verdict']})")
+    typer.echo(f"wrote {_shown(output)} (verdict {item.report['verdict']})")
     raise typer.Exit(EXIT_FAIL if item.report["verdict"] == "fail" else EXIT_PASS)
 
 
@@ -609,7 +688,9 @@ def batch_command(
     from .report import batch_progress, batch_summary
 
     plots = not no_plots
-    paths = batch.discover(inputs)
+    paths, skipped = batch.discover_all(inputs)
+    for where, why in skipped:  # said, never left out in silence
+        print(f"skipped {_shown(where)}: {_shown(why)}", file=sys.stderr)
     if not paths:
         from .errors import SpecError
 
@@ -617,6 +698,8 @@ def batch_command(
     err = Console(stderr=True)
     lock = batch.FolderLock(out) if out is not None else None
     writer = _BatchWriter(out, force) if out is not None else None
+    if writer is not None:
+        writer.skipped = skipped
     done: list[batch.Item] = []
     with (
         lock or contextlib.nullcontext(),
@@ -710,6 +793,7 @@ class _BatchWriter:
         self.timings: dict[str, dict[str, float]] = {}
         self.unwritten: dict[str, str] = {}  # item key → why its files were not written
         self.pdf_error: str | None = None
+        self.skipped: list[tuple[str, str]] = []  # inputs left out, and why
 
     def _write(self, name: str, data: bytes) -> None:
         import time
@@ -749,9 +833,9 @@ class _BatchWriter:
     def _item(self, item: "batch.Item") -> None:  # type: ignore[name-defined]  # noqa: F821
         if item.report is not None:
             text = json.dumps(item.report, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
-            self._write(f"{item.key}.json", text.encode())
+            self._write(f"{item.key}.json", _utf8(text))
         if item.campbell_csv is not None:
-            self._write(f"{item.key}.campbell.csv", item.campbell_csv.encode())
+            self._write(f"{item.key}.campbell.csv", _utf8(item.campbell_csv))
         for suffix, png in item.pngs.items():
             self._write(f"{item.key}.{suffix}.png", png)
         self.timings.setdefault(item.key, {}).update(item.timings)
@@ -762,8 +846,8 @@ class _BatchWriter:
         from . import __version__, batch, pdfreport
 
         summary = json.dumps(batch.summary(items), indent=2, ensure_ascii=False) + "\n"
-        self._write("summary.json", summary.encode())
-        self._write("summary.csv", batch.summary_csv(items).encode())
+        self._write("summary.json", _utf8(summary))
+        self._write("summary.csv", _utf8(batch.summary_csv(items)))
         if plots:
             import time
 
@@ -792,8 +876,19 @@ class _BatchWriter:
             **({"interrupted": True} if interrupted else {}),
             **({"audit_pdf": self.pdf_error} if self.pdf_error else {}),
             **({"unwritten": self.unwritten} if self.unwritten else {}),
+            **(
+                {"skipped": [{"file": f, "why": w} for f, w in self.skipped]}
+                if self.skipped
+                else {}
+            ),
         }
-        self._write("run-metadata.json", (json.dumps(meta, indent=2) + "\n").encode())
+        self._write("run-metadata.json", _utf8(json.dumps(meta, indent=2) + "\n"))
+
+
+def _utf8(text: str) -> bytes:
+    """Text as UTF-8, a file name that is not (a byte Python keeps as a lone surrogate)
+    written as its escape — still valid JSON, where it sits inside a string."""
+    return text.encode("utf-8", errors="backslashreplace")
 
 
 class Target(StrEnum):
@@ -857,7 +952,7 @@ def window(
             png_bytes(windows_plot(report, tower_w)),
             force=force,
         )
-        typer.echo(f"wrote {path}", err=format is Format.json)
+        typer.echo(f"wrote {_shown(path)}", err=format is Format.json)
 
 
 @app.command("size", cls=_Command)
@@ -904,7 +999,7 @@ def size_command(
         f"({doc['mass_change_percent']:+.1f} %)"
     )
     for line in result.warnings:
-        typer.echo(f"warning: {line}", err=True)
+        typer.echo(f"warning: {_shown(line)}", err=True)
 
 
 def _rpm_range(text: str | None) -> tuple[float, float] | None:
@@ -972,7 +1067,7 @@ def convert(
     import yaml
 
     from . import importers
-    from .outputs import write_atomic
+    from .outputs import converted_spec, write_atomic
     from .spec import from_data
 
     read = importers.ReadOptions(
@@ -980,15 +1075,11 @@ def convert(
     )
     data = importers.to_data(source, read)
     from_data(data, source=str(source))  # refuse to write a spec that would not load
-    text = f"# wtvib spec converted from {source.name}\n" + yaml.safe_dump(
-        data, sort_keys=False, allow_unicode=True, width=100
-    )
-    if output.exists() and not force:
-        from .errors import OutputError
-
-        raise OutputError(f"{output} exists; use --force to replace it")
-    write_atomic(output, text.encode(), force=True)
-    typer.echo(f"wrote {output}")
+    body = yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100)
+    # a spec convert wrote is replaced while unedited; an edited one, or any other file,
+    # only with --force (and never an input of this run)
+    write_atomic(output, converted_spec(source.name, body), force=force)
+    typer.echo(f"wrote {_shown(output)}")
 
 
 @app.command("shapes", cls=_Command)
@@ -1100,9 +1191,26 @@ def schema(
 
 
 def main() -> None:
-    """Console entry point."""
+    """Console entry point: the standard streams made safe first (:mod:`wtvib.streams`),
+    and what is still buffered for the output flushed here, where a full disk is one line
+    and exit 2 rather than Python's "Exception ignored" at exit."""
+    from . import streams
+
+    streams.guard()
     _reuse_freed_memory()
-    app()
+    try:
+        app()
+        code: object = 0
+    except SystemExit as exc:
+        code = exc.code
+    try:
+        sys.stdout.flush()
+    except OSError as exc:
+        lost = streams.lost_output(exc) or str(exc)
+        streams.discard_stdout()
+        print(f"error: {lost}", file=sys.stderr)
+        code = EXIT_INPUT
+    raise SystemExit(code)
 
 
 def _reuse_freed_memory() -> None:

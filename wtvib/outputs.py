@@ -7,6 +7,7 @@ wtvib, a JSON document with a ``wtvib-`` schema, the summary and Campbell CSVs) 
 caller passes ``force``.
 """
 
+import contextlib
 import mmap
 import os
 import tempfile
@@ -23,6 +24,23 @@ CAMPBELL_HEADER = (
     b"mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
     b"aeroelastic_frequency_hz,damped_frequency_hz,method,quasi_steady_damping_ratio"
 )
+
+
+#: First characters by which a spreadsheet takes a cell for a formula (OWASP, "CSV
+#: Injection"): = + - @, tab and carriage return.
+_FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_cell(text: str) -> str:
+    """A text cell a spreadsheet shows as text: one that would start a formula is prefixed
+    with a single quote, as OWASP advises (a number such as "-0.5" stays a number)."""
+    if not text.startswith(_FORMULA_START):
+        return text
+    try:
+        float(text)
+    except ValueError:
+        return "'" + text
+    return text
 
 
 #: First line of a CSV that says which wtvib made it from which input (audit.Report.identity).
@@ -44,7 +62,34 @@ def is_ours(path: Path) -> bool:
         return False
     if head.startswith(png.SIGNATURE):
         return _png_software(head).startswith(SOFTWARE_TAG)
+    if head.startswith(CONVERTED):
+        return _unedited(path)
     return head.startswith((b'{\n  "schema": "wtvib-', CSV_HEADER, CAMPBELL_HEADER, IDENTITY))
+
+
+#: First bytes of a spec ``wtvib convert`` wrote; its first line ends with the digest of
+#: the rest, so that a converted spec is replaced only while nobody has edited it.
+CONVERTED = b"# wtvib spec converted from "
+
+
+def converted_spec(source_name: str, body: str) -> bytes:
+    """A converted spec's text: the header naming its source and the digest of ``body``."""
+    import hashlib
+
+    digest = hashlib.sha256(body.encode()).hexdigest()[:16]
+    return CONVERTED + f"{source_name} (unedited while sha256 {digest})\n".encode() + body.encode()
+
+
+def _unedited(path: Path) -> bool:
+    import hashlib
+    import re
+
+    try:
+        first, _, body = path.read_bytes().partition(b"\n")
+    except OSError:
+        return False
+    match = re.search(rb"\(unedited while sha256 ([0-9a-f]{16})\)$", first)
+    return match is not None and hashlib.sha256(body).hexdigest()[:16] == match.group(1).decode()
 
 
 def _png_software(data: bytes) -> str:
@@ -99,8 +144,16 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
         raise OutputError(f"cannot write {path!a}: the name is not valid text") from None
     if exists and not path.is_file():  # a device, pipe or folder: never replaced
         raise OutputError(f"{path} is not a regular file; give a file name to write")
+    from .spec.load import was_read
+
+    if exists and was_read(path):  # --force or not: an input is never an output's place
+        raise OutputError(f"{path} is an input of this run: no output is written over it")
     if exists and not force and not is_ours(path):
-        raise OutputError(f"{path} exists and was not written by wtvib; use --force to replace it")
+        how = "was not written by wtvib"
+        with contextlib.suppress(OSError), path.open("rb") as fh:
+            if fh.read(len(CONVERTED)) == CONVERTED:
+                how = "was written by wtvib convert and edited since"
+        raise OutputError(f"{path} exists and {how}; use --force to replace it")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)

@@ -4,7 +4,6 @@ Rendering never decides: everything shown here is read from :class:`~wtvib.audit
 """
 
 import json
-import re
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
@@ -18,17 +17,16 @@ from rich.text import Text
 
 from . import words
 from .audit import Report
+from .streams import shown
 
 STYLE = {"pass": "green", "info": "cyan", "warn": "yellow", "fail": "bold red"}
-
-#: Control characters (ESC, NUL, …) a user's text must not send to the terminal.
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f]")
 
 
 def _t(value: object, style: str = "") -> Text:
     """User text as plain rich Text: no markup parsed ("NREL 5-MW [onshore]" stays whole,
-    "[/]" cannot crash), control characters shown as "?" instead of reaching the terminal."""
-    return Text(_CONTROL.sub("?", str(value)), style=style)
+    "[/]" cannot crash), control characters shown as "?" and bidi controls as escapes
+    instead of reaching the terminal (:func:`wtvib.streams.shown`)."""
+    return Text(shown(value), style=style)
 
 
 def to_json(report: Report) -> str:

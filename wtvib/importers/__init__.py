@@ -215,6 +215,12 @@ def _check_options(path: Path, kind: str, options: ReadOptions) -> None:
             "file has none",
             source=str(path),
         )
+    if options.blades is not None and kind not in ("openfast-lin", "hawcstab2", "campbell-table"):
+        raise SpecError(
+            "--blades applies to Campbell results that do not say how many blades the rotor "
+            "has; this file gives them",
+            source=str(path),
+        )
     if head_mass is not None:
         if kind != "windio":
             what = "the deck's" if kind == "elastodyn" else "the spec's"

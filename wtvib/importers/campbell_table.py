@@ -20,6 +20,7 @@ from typing import Any
 
 from ..errors import SpecError
 from .campbell_results import MAX_MODES, results_spec
+from .deck import _NUMBER
 
 REQUIRED = ("mode", "rpm", "frequency_hz")
 OPTIONAL = ("damping_ratio", "whirl", "frame", "wind_m_s", "description")
@@ -129,8 +130,21 @@ def _add_point(
             "wind_m_s": [],
         },
     )
-    m["rpm"].append(_number(cell["rpm"], line, "rpm", path))
+    rpm = _number(cell["rpm"], line, "rpm", path)
     hz = _number(cell["frequency_hz"], line, "frequency_hz", path)
+    wind = cell.get("wind_m_s", "")
+    point = (rpm, _number(wind, line, "wind_m_s", path) if wind else None)
+    seen = m.setdefault("_points", {})
+    if point in seen and seen[point][0] != hz:
+        raise SpecError(
+            f"mode {name} at {rpm:g} rpm{'' if point[1] is None else f', {point[1]:g} m/s'} "
+            f"is given twice, {seen[point][0]:g} Hz (line {seen[point][1]}) and {hz:g} Hz: "
+            "which is meant?",
+            line=line,
+            source=str(path),
+        )
+    seen[point] = (hz, line)
+    m["rpm"].append(rpm)
     if hz <= 0:
         raise SpecError(
             f"column frequency_hz: {hz:g} Hz — a natural frequency is positive",
@@ -147,6 +161,7 @@ def _add_point(
 def _by_speed(name: str, m: dict[str, Any], path: Path) -> None:
     """A mode's points in order of speed; an optional column given at every point of the
     mode or at none (dropped)."""
+    m.pop("_points", None)
     order = sorted(range(len(m["rpm"])), key=lambda i: m["rpm"][i])
     for key in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s"):
         m[key] = [m[key][i] for i in order]
@@ -167,11 +182,14 @@ MAX_CELL = 131_072
 
 
 def _rows(path: Path, text: str) -> list[tuple[int, list[str]]]:
-    """The table's non-blank rows with their lines, any line ending (CR, LF, CR LF). A row
-    may not run over lines: a quote left open would otherwise swallow the rows after it."""
+    """The table's non-blank rows with their lines, any line ending (CR, LF, CR LF). A
+    quoted cell may hold a line break (RFC 4180) where its row still has the header's
+    cells and the file goes on after it; otherwise a quote left open would swallow the rows
+    after it, and is refused."""
     lines = text.splitlines()
     reader = csv.reader(lines)
     out: list[tuple[int, list[str]]] = []
+    width: int | None = None
     before = 0
     while True:
         try:
@@ -185,14 +203,18 @@ def _rows(path: Path, text: str) -> list[tuple[int, list[str]]]:
                 source=str(path),
             ) from None
         start = before + 1
-        if reader.line_num > start:
+        comment = bool(row) and row[0].lstrip().startswith("#")
+        if reader.line_num > start and (
+            comment or width is None or len(row) != width or reader.line_num >= len(lines)
+        ):
             raise SpecError(
                 f"a quoted cell runs from line {start} to {reader.line_num}: a quote left open?",
                 line=start,
                 source=str(path),
             )
         before = reader.line_num
-        if any(c.strip() for c in row) and not row[0].lstrip().startswith("#"):
+        if any(c.strip() for c in row) and not comment:
+            width = len(row) if width is None else width
             out.append((start, row))
     if not out:
         raise SpecError("the file is empty", source=str(path))
@@ -200,12 +222,9 @@ def _rows(path: Path, text: str) -> list[tuple[int, list[str]]]:
 
 
 def _number(text: str, line: int, column: str, path: Path) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise SpecError(
-            f"column {column}: {text!r} is not a number", line=line, source=str(path)
-        ) from None
+    if not _NUMBER.match(text.strip()) and text.strip().lower() not in ("inf", "-inf", "nan"):
+        raise SpecError(f"column {column}: {text!r} is not a number", line=line, source=str(path))
+    value = float(text.strip().replace("D", "E").replace("d", "e"))
     if not math.isfinite(value):
         raise SpecError(
             f"column {column}: {text} is not a finite number", line=line, source=str(path)

@@ -14,7 +14,9 @@ import numpy as np
 from ..errors import SpecError
 from ..spec import read_text
 
-_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$")
+#: A number as Fortran reads one: ASCII digits only (Python's float() also takes "8_7.6",
+#: Arabic-Indic and full-width digits, "inf" and "nan", which no OpenFAST input holds).
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$", re.ASCII)
 
 
 #: The largest magnitude an OpenFAST scalar input of each name may take here (and its
@@ -55,6 +57,12 @@ LIMITS: dict[str, tuple[float, str]] = {
     },
     **{key: (1e15, "kg·m²") for key in ("HubIner", "GenIner", "NacYIner")},
 }
+
+#: Inputs an ElastoDyn deck gives once (a sectioned file, SubDyn's, may repeat a key in
+#: another section): given twice with two values, the deck is refused — OpenFAST reads by
+#: position, wtvib by key, and neither would read the deck as its author meant.
+UNIQUE = frozenset({*LIMITS, "NumBl", "GBRatio", "DTTorSpr", "DTTorDmp", "RotSpeed",
+                    "ShftTilt", "PreCone(1)", "NTwInpSt", "NBlInpSt"})  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -102,12 +110,13 @@ class Deck:
                 return value
             if key in self.values:
                 raw, line = self.values[key]
-                try:
-                    value = float(raw.replace("D", "E").replace("d", "e"))
-                except ValueError:
+                if not _NUMBER.match(raw):
                     raise SpecError(
-                        f"{key} must be a number (got {raw!r})", line=line, source=str(self.path)
-                    ) from None
+                        f"{key} must be a finite number (got {raw!r})",
+                        line=line,
+                        source=str(self.path),
+                    )
+                value = float(raw.replace("D", "E").replace("d", "e"))
                 if not math.isfinite(value):
                     raise SpecError(
                         f"{key} must be a finite number (got {raw!r})",
@@ -218,6 +227,17 @@ class Deck:
         return None
 
 
+def _tokens(line: str) -> list[str]:
+    """A line's tokens, a quoted first value whole (``"my tower.dat"   TwrFile``: a file name
+    may hold a space, as OpenFAST reads it)."""
+    stripped = line.lstrip()
+    if stripped.startswith('"'):
+        end = stripped.find('"', 1)
+        if end > 0:
+            return [stripped[: end + 1], *stripped[end + 1 :].split()]
+    return line.split()
+
+
 def parse(path: Path, text: str | None = None) -> Deck:
     """Read a FAST/ElastoDyn-style input file: ``value Key - description`` lines and tables."""
     text = read_text(path) if text is None else text
@@ -230,14 +250,26 @@ def parse(path: Path, text: str | None = None) -> Deck:
     title = 1 if lines and lines[0].lstrip().startswith(("-", "=")) else -1
     i = 0
     while i < len(lines):
-        tokens = lines[i].split()
+        tokens = _tokens(lines[i])
         if (
             i != title
             and len(tokens) >= 2
             and tokens[1][:1].isalpha()
             and not tokens[0].startswith("--")
         ):
-            values.setdefault(tokens[1], (tokens[0], i + 1))
+            first = values.setdefault(tokens[1], (tokens[0], i + 1))
+            if (
+                tokens[1] in UNIQUE
+                and first[0] != tokens[0]
+                and _NUMBER.match(first[0])
+                and _NUMBER.match(tokens[0])
+            ):
+                raise SpecError(
+                    f"{tokens[1]} is given twice, {first[0]} (line {first[1]}) and {tokens[0]}: "
+                    "which one is meant?",
+                    line=i + 1,
+                    source=str(path),
+                )
         if (
             len(tokens) >= 3
             and all(t[:1].isalpha() for t in tokens[:3])
@@ -287,10 +319,7 @@ def beside(base: Path, name: str) -> Path:
 
 def finite(text: str, line: int, path: Path) -> float:
     """A cell of a file as a finite number, or one line naming file, line and cell."""
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
+    value = float(_fortran(text)) if _NUMBER.match(text) else math.nan
     if not math.isfinite(value):
         raise SpecError(f"{text!r} is not a finite number", line=line, source=str(path))
     return value

@@ -259,6 +259,7 @@ def to_spec_data(
 
     tip, hub_r = main.num("TipRad"), main.num("HubRad")
     length = tip - hub_r
+    _check_geometry(main, tip)
     bl = _blade(main, fst, length, n_blades)
     hub = _hub_inertia(main, hub_r)
     head, breakdown = tower_head(
@@ -346,6 +347,33 @@ def _unfollowed(off: list[str]) -> str | None:
         "modes; this audit has every mode of the structure (--deck-dofs models the deck as "
         "OpenFAST does)"
     )
+
+
+#: Angles no turbine's shaft or cone has (ElastoDyn takes any): refused above this; a
+#: reference turbine's tilt and cone are 4–6°, above the second bound is said.
+ANGLE_LIMIT_DEG, ANGLE_ODD_DEG = 45.0, 15.0
+
+
+def _check_geometry(main: Deck, tip: float) -> None:
+    """Geometry no turbine can have, named by the deck's key and line: a hub lower than the
+    rotor's radius (the tips through the ground: TowerHt + Twr2Shft against TipRad), a shaft
+    tilt or a cone of 45° and more."""
+    hub = main.num("TowerHt") + main.num("Twr2Shft", default=0.0)
+    if tip > 0 and hub <= tip:
+        raise SpecError(
+            f"TowerHt {main.num('TowerHt'):g} m puts the hub at about {hub:g} m under a rotor "
+            f"radius TipRad = {tip:g} m: the blade tips would strike the ground",
+            line=main.values["TowerHt"][1] if "TowerHt" in main.values else None,
+            source=str(main.path),
+        )
+    for key in ("ShftTilt", "PreCone(1)", "PreCone1"):
+        if key in main.values and abs(main.num(key)) >= ANGLE_LIMIT_DEG:
+            raise SpecError(
+                f"{key} = {main.num(key):g}°: no rotor turns with its shaft or cone so far from "
+                f"the plane (|{key}| < {ANGLE_LIMIT_DEG:g}°; reference turbines 4–6°)",
+                line=main.values[key][1],
+                source=str(main.path),
+            )
 
 
 def _apply(switches: _Switches, data: dict[str, Any]) -> None:

@@ -28,6 +28,7 @@ from ..errors import SpecError
 from ..results import ordinal
 from ..spec import read_bytes
 from .campbell_results import MAX_MODES, results_spec
+from .deck import finite
 
 #: A rotation amplitude [rad] is weighed as the motion it gives this far away [m]: a yaw or
 #: shaft torsion turns the rotor, whose blades are tens of metres long; a blade's torsion
@@ -105,21 +106,37 @@ def _table(path: Path, skip: int = 0) -> tuple[list[str], np.ndarray, list[int]]
         if ln.lstrip().startswith("#") or i <= skip:
             header.append(ln)
             continue
-        try:
-            row = [float(t) for t in ln.split()]
-        except ValueError:
-            raise SpecError("a cell that is not a number", line=i, source=str(path)) from None
+        row = [finite(t, i, path) for t in ln.split()]  # strict: no "8_7.6", "١٢", "nan"
         if rows and len(row) != len(rows[0]):
             raise SpecError(
                 f"{len(row)} numbers, the rows above have {len(rows[0])}", line=i, source=str(path)
             )
-        if not all(math.isfinite(v) for v in row):
-            raise SpecError("a number that is not finite", line=i, source=str(path))
         rows.append(row)
         at.append(i)
     if not rows:
         raise SpecError("no rows of numbers", source=str(path))
     return header, np.array(rows), at
+
+
+def _once_per_point(data: np.ndarray, at: list[int], path: Path) -> tuple[np.ndarray, list[int]]:
+    """Each operating point once: a row repeated as it is is read once, a point given twice
+    with other numbers is refused with both lines (which one would be the turbine's?)."""
+    first: dict[float, int] = {}
+    keep: list[int] = []
+    for k, point in enumerate(data[:, 0]):
+        if float(point) not in first:
+            first[float(point)] = k
+            keep.append(k)
+            continue
+        j = first[float(point)]
+        if not np.array_equal(data[j], data[k]):
+            raise SpecError(
+                f"operating point {point:g} is given twice with other numbers (also on line "
+                f"{at[j]}): which is the turbine's?",
+                line=at[k],
+                source=str(path),
+            )
+    return data[keep], [at[k] for k in keep]
 
 
 def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
@@ -147,6 +164,7 @@ def read_cmb(path: Path) -> tuple[str, np.ndarray, np.ndarray, np.ndarray]:
             line=1,
             source=str(path),
         )
+    data, at = _once_per_point(data, at, path)
     freq = data[:, 1 : 1 + n].copy()
     bad = np.argwhere(freq < 0)
     if bad.size:

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
+from .deck import _NUMBER
 
 #: The deepest continue_in_file nesting read (a file that names itself would not end).
 MAX_INCLUDES = 20
@@ -35,6 +36,8 @@ class Command:
     def number(self, i: int) -> float:
         """The ``i``-th value as a number (its file and line named where it is not one)."""
         try:
+            if not _NUMBER.match(self.values[i]):
+                raise ValueError
             value = float(self.values[i].replace("D", "E").replace("d", "e"))
         except (IndexError, ValueError):
             got = self.values[i] if i < len(self.values) else "nothing"
@@ -172,6 +175,8 @@ def _numeric_rows(path: Path) -> list[tuple[int, list[str]]]:
 
 def _floats(cells: list[str], path: Path, line: int, count: int | None = None) -> list[float]:
     try:
+        if not all(_NUMBER.match(c) for c in cells[:count]):
+            raise ValueError
         values = [float(c.replace("D", "E").replace("d", "e")) for c in cells[:count]]
     except ValueError:
         raise SpecError(

@@ -29,9 +29,11 @@ from ..errors import SpecError
 from ..spec import read_text
 from ..units import STANDARD_GRAVITY
 from .deck import (
+    _NUMBER,
     WATER_DENSITY,
     Deck,
     _file,
+    _fortran,
     beside,
     environment,
     parse,
@@ -297,10 +299,7 @@ def _matrix(hd: Deck, key: str) -> np.ndarray:
     rows = []
     for n in range(start, start + 6):
         cells = lines[n].split()[:6] if n < len(lines) else []
-        try:
-            values = [float(c) for c in cells]
-        except ValueError:
-            values = []
+        values = [float(_fortran(c)) for c in cells if _NUMBER.match(c)]
         if len(values) != 6 or not all(math.isfinite(v) for v in values):
             raise SpecError(f"{key} must be six rows of six numbers", line=n + 1,
                             source=str(hd.path))  # fmt: skip

@@ -331,7 +331,9 @@ def discon(path: Path) -> dict[str, tuple[float, int]]:
             continue
         if not _NUMBER.match(parts[0]):
             raise SpecError(
-                f"{names[0]} must be a number (got {parts[0]!r})", line=number, source=str(path)
+                f"{names[0]} must be a finite number (got {parts[0]!r})",
+                line=number,
+                source=str(path),
             )
         out.setdefault(names[0], (float(parts[0].replace("D", "E")), number))
     return out

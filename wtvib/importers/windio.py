@@ -388,6 +388,49 @@ class _Reader:
     def fail(self, message: str) -> SpecError:
         return SpecError(message, source=str(self.path))
 
+    def fail_at(self, message: str, where: tuple[str | int, ...]) -> SpecError:
+        """The error with the line of ``where`` in the file (read again, on this path only)."""
+        from ..spec import read_text
+
+        try:
+            line = parse(read_text(self.path), str(self.path)).line_of(where)  # type: ignore[arg-type]
+        except SpecError:
+            line = None
+        return SpecError(message, path=format_path(where) or None, line=line, source=str(self.path))
+
+    def field(
+        self, value: Any, where: tuple[str | int, ...], grid: np.ndarray, positive: bool = True
+    ) -> np.ndarray:
+        """A windIO ``{grid, values}`` field on another grid — its own grid increasing from
+        0 to 1 (np.interp would read an unsorted one silently wrong), its values finite and,
+        where ``positive``, above 0 (a diameter or wall of 0 or less is no tube)."""
+        try:
+            g = np.asarray(value["grid"], float)
+            v = np.asarray(value["values"], float)
+        except (KeyError, TypeError, ValueError):
+            raise self.fail_at(
+                f"{format_path(where)} must be a grid and values of numbers", where
+            ) from None
+        if g.shape != v.shape or g.ndim != 1 or len(g) < 1:
+            raise self.fail_at(
+                f"{format_path(where)}: grid and values must be lists of one length", where
+            )
+        if not (np.all(np.isfinite(g)) and np.all(np.isfinite(v))):
+            raise self.fail_at(
+                f"{format_path(where)}: every grid point and value must be finite", where
+            )
+        if np.any(np.diff(g) < 0):
+            raise self.fail_at(
+                "must increase (it is sorted along the member)",
+                (*where, "grid"),
+            )
+        if positive and np.any(v <= 0):
+            k = int(np.flatnonzero(v <= 0)[0])
+            raise self.fail_at(
+                f"is {v[k]:g}: a tube's diameter and wall are positive", (*where, "values", k)
+            )
+        return np.interp(grid, g, v)
+
     def material(self, name: str) -> dict[str, Any]:
         """The named material, its E, G (where given) and ρ checked positive numbers; a
         list-valued modulus (windIO's orthotropic [E1, E2, E3]) gives its first, axial,
@@ -477,9 +520,24 @@ class _Reader:
         grid, z = grid[keep], z[keep]
         if len(z) < 2:
             raise self.fail(f"{where}: the {name} has no length (all its stations at one height)")
-        diameter = _at(shape["outer_diameter"], grid)
+        part = "outer_shape" if self.v2 else "outer_shape_bem"
+        inner = "structure" if self.v2 else "internal_structure_2d_fem"
+        diameter = self.field(
+            shape["outer_diameter"], ("components", name, part, "outer_diameter"), grid
+        )
         layers = struct["layers"]
-        thickness = sum(_at(layer["thickness"], grid) for layer in layers)
+        thickness = np.zeros(len(grid))
+        for i, layer in enumerate(layers):
+            thickness = thickness + self.field(
+                layer["thickness"], ("components", name, inner, "layers", i, "thickness"), grid
+            )
+        if np.any(thickness >= diameter / 2):
+            k = int(np.flatnonzero(thickness >= diameter / 2)[0])
+            raise self.fail_at(
+                f"components.{name}: at z = {z[k]:g} m the wall ({float(thickness[k]):g} m) is "
+                f"not less than half the diameter ({float(diameter[k]):g} m)",
+                ("components", name, inner, "layers"),
+            )
         mat = self.material(layers[0]["material"])
         return z, diameter, np.asarray(thickness), mat, float(struct.get("outfitting_factor", 1.0))
 

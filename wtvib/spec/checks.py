@@ -34,6 +34,44 @@ def _check_rotor_radius(spec: Spec, doc: Document) -> None:
         )
 
 
+def _check_geometry(spec: Spec, doc: Document) -> None:
+    """Geometry no turbine can have: a tower table that ends short of (or past) the tower's
+    height, a hub too low for the rotor to turn (its tip through the ground), a blade
+    longer than the rotor's radius."""
+    t = spec.tower
+    table = t.sections.height_m if t.sections is not None else (
+        t.distributed.height_m if t.distributed is not None else None
+    )  # fmt: skip
+    if table is not None and t.height_m is not None:
+        top = float(table[-1])
+        if abs(top - t.height_m) > max(0.5, 0.01 * t.height_m):
+            part = "sections" if t.sections is not None else "distributed"
+            raise SpecError(
+                f"the tower's {part} end at {top:g} m but tower.height_m is {t.height_m:g} m: "
+                "the table must reach the tower top",
+                path=f"tower.{part}.height_m",
+                line=doc.line_of(("tower", part, "height_m")),
+                source=doc.source,
+            )
+    d, hub = spec.turbine.rotor_diameter_m, spec.turbine.hub_height_m
+    horizontal = spec.rotor.orientation != "vertical-axis"
+    if d is not None and hub is not None and horizontal and hub <= d / 2:
+        raise SpecError(
+            f"a hub {hub:g} m high under a {d / 2:g} m rotor radius: the blade tips would "
+            "strike the ground",
+            path="turbine.hub_height_m",
+            line=doc.line_of(("turbine", "hub_height_m")),
+            source=doc.source,
+        )
+    if d is not None and spec.blade.length_m is not None and spec.blade.length_m > d / 2:
+        raise SpecError(
+            f"a blade of {spec.blade.length_m:g} m is longer than the rotor's radius ({d / 2:g} m)",
+            path="blade.length_m",
+            line=doc.line_of(("blade", "length_m")),
+            source=doc.source,
+        )
+
+
 def _check_coupled(spec: Spec, doc: Document) -> None:
     """The coupled model's needs, named with the line: the structures, and a tower head
     heavy enough to carry the rotor it includes."""

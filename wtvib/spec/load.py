@@ -14,6 +14,7 @@ from .base import Quantity
 from .checks import (
     _check_aerodynamics,
     _check_coupled,
+    _check_geometry,
     _check_results,
     _check_rotor_radius,
     _check_sources,
@@ -98,6 +99,20 @@ def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
         raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
 
 
+#: Every file this process has read (device, inode): an output is never written over one
+#: of them (:func:`wtvib.outputs.write_atomic`), however it is named — a path, a link.
+_READ: set[tuple[int, int]] = set()
+
+
+def was_read(path: str | FsPath) -> bool:
+    """Whether ``path`` is a file this process read as an input."""
+    try:
+        info = FsPath(path).stat()
+    except (OSError, ValueError):
+        return False
+    return (info.st_dev, info.st_ino) in _READ
+
+
 def read_bytes(path: str | FsPath, *, max_bytes: int | None = None, head: bool = False) -> bytes:
     """A file's bytes: only a regular file (not a device, pipe or socket), at most
     ``max_bytes`` (default: :func:`max_file_bytes`) — every file wtvib reads comes through
@@ -114,6 +129,7 @@ def read_bytes(path: str | FsPath, *, max_bytes: int | None = None, head: bool =
             raise SpecError(
                 "not a regular file (a device, pipe or socket); give a file", source=str(p)
             )
+        _READ.add((info.st_dev, info.st_ino))
         if info.st_size > max_bytes and not head:
             raise SpecError(
                 f"file is {info.st_size:,} bytes, over the {max_bytes:,}-byte limit",
@@ -175,6 +191,7 @@ def from_document(doc: Document) -> Spec:
         raise _spec_error(exc, doc) from None
     _check_sources(spec, provenance, doc)
     _check_rotor_radius(spec, doc)
+    _check_geometry(spec, doc)
     _check_results(spec, doc)
     _check_coupled(spec, doc)
     _check_aerodynamics(spec, doc)
