@@ -6,6 +6,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py extremes  # catalogue specs' numbers
     .venv/bin/python tests/campaigns/exhaustive.py floating  # r-test's OC4 semisubmersible
     .venv/bin/python tests/campaigns/exhaustive.py windio-floating  # windIO OC3/OC4 platforms
+    .venv/bin/python tests/campaigns/exhaustive.py hawc2     # the IEA-15 onshore HAWC2 model
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
@@ -18,7 +19,9 @@ SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120 lines of it
 archive tests/data/openfast_decks/rtest_floating.tar.gz). windio-floating: as windio, on
 every key path of the windIO OC3 spar and OC4 semisubmersible (tests/data/windio_floating),
 plus each number at 0, 1e-300 and 1e300; the platform read under the NREL 5-MW catalogue
-turbine's head on the OC3/OC4 tower (its modes computed on the platform) and audited. The
+turbine's head on the OC3/OC4 tower (its modes computed on the platform) and audited. hawc2:
+as deck, on every file of the IEA-15 onshore HAWC2 model (tests/data/hawc2: the main htc,
+the htc files it continues in, the st, ae and opt files, the pc file's first 200 lines). The
 invariant, as the CLI's: a typed wtvib
 error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
 line per crash or slow case. tests/FUZZ.md records the campaigns run.
@@ -100,6 +103,31 @@ FLOATING_FILES = (
         None,
     ),
 )
+
+
+#: The HAWC2 campaign's files (the IEA-15 onshore model, tests/data/hawc2): the main htc
+#: and every file it continues in or reads, the profile-coefficient file's first 200 lines.
+H2_MAIN = "HAWC2/IEA-15-240-RWT-Onshore/htc/IEA_15MW_RWT_Onshore.htc"
+H2_SHARED = "HAWC2/IEA-15-240-RWT/"
+HAWC2_FILES = (
+    (H2_MAIN, None),
+    ("HAWC2/IEA-15-240-RWT-Onshore/data/IEA_15MW_RWT_Tower_st.dat", None),
+    ("HAWC2/IEA-15-240-RWT-Onshore/data/IEA_15MW_RWT_Onshore.opt", None),
+    (H2_SHARED + "IEA_15MW_RWT_WTG_bodies_noFPM.htc", None),
+    (H2_SHARED + "IEA_15MW_RWT_WTG_orientation.htc", None),
+    (H2_SHARED + "IEA_15MW_RWT_WTG_constraint.htc", None),
+    (H2_SHARED + "IEA_15MW_RWT_WTG_aero.htc", None),
+    (H2_SHARED + "IEA_15MW_RWT_Blade_st_noFPM.st", None),
+    (H2_SHARED + "IEA_15MW_RWT_Shaft_st.dat", None),
+    (H2_SHARED + "IEA_15MW_RWT_Dummy_st.dat", None),
+    (H2_SHARED + "IEA_15MW_RWT_ae.dat", None),
+    (H2_SHARED + "IEA_15MW_RWT_pc_OpenFASTpolars_3dcorr.dat", 200),
+)
+
+
+def hawc2_cases(source: Path, work: Path) -> Iterator[Case]:
+    for name, first in HAWC2_FILES:
+        yield from _line_cases(source, work, H2_MAIN, name, first)
 
 
 def floating_cases(source: Path, work: Path) -> Iterator[Case]:
@@ -284,7 +312,8 @@ def _numbers(node: Any, path: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument(
-        "campaign", choices=["deck", "windio", "extremes", "floating", "windio-floating"]
+        "campaign",
+        choices=["deck", "windio", "extremes", "floating", "windio-floating", "hawc2"],
     )
     ap.add_argument("--part", type=int, default=0)
     ap.add_argument("--parts", type=int, default=1)
@@ -301,6 +330,14 @@ def main() -> None:
             tar.extractall(source, filter="data")
         shutil.copytree(source, work)
         cases = floating_cases(source, work)
+    elif args.campaign == "hawc2":
+        import tarfile
+
+        source = work.parent / "source"
+        with tarfile.open(ROOT / "tests/data/hawc2/iea15_onshore.tar.gz") as tar:
+            tar.extractall(source, filter="data")
+        shutil.copytree(source, work)
+        cases = hawc2_cases(source, work)
     elif args.campaign == "windio":
         work.mkdir(parents=True)
         cases = windio_cases(work)

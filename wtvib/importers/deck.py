@@ -155,10 +155,20 @@ class Deck:
             abs(frac[0]) < 1e-6 and abs(frac[-1] - 1.0) < 1e-6 and np.all(np.diff(frac) > 0)
         )
         if not ok:
+            head = self.table_lines.get(table)
+            falls = np.flatnonzero(np.diff(frac) <= 0)
+            if falls.size:  # the row that does not rise above the one before
+                k = int(falls[0]) + 1
+                raise SpecError(
+                    f"the {table} column must increase from 0 to 1 ({frac[k]:g} follows "
+                    f"{frac[k - 1]:g})",
+                    line=head + 2 + k if head is not None else None,
+                    source=str(self.path),
+                )
             raise SpecError(
                 f"the {table} column must increase from 0 to 1 (it runs "
                 f"{frac[0]:g} … {frac[-1]:g} over {len(frac)} stations: a truncated table?)",
-                line=self.table_lines.get(table),
+                line=head,
                 source=str(self.path),
             )
         return frac

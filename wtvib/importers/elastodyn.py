@@ -357,7 +357,7 @@ ANGLE_LIMIT_DEG, ANGLE_ODD_DEG = 45.0, 15.0
 def _check_geometry(main: Deck, tip: float) -> None:
     """Geometry no turbine can have, named by the deck's key and line: a hub lower than the
     rotor's radius (the tips through the ground: TowerHt + Twr2Shft against TipRad), a shaft
-    tilt or a cone of 45° and more."""
+    tilt or a cone of any blade the rotor has of 45° and more."""
     hub = main.num("TowerHt") + main.num("Twr2Shft", default=0.0)
     if tip > 0 and hub <= tip:
         raise SpecError(
@@ -366,7 +366,9 @@ def _check_geometry(main: Deck, tip: float) -> None:
             line=main.values["TowerHt"][1] if "TowerHt" in main.values else None,
             source=str(main.path),
         )
-    for key in ("ShftTilt", "PreCone(1)", "PreCone1"):
+    blades = int(main.num("NumBl", default=3.0))
+    cones = [f"PreCone({i})" for i in range(1, blades + 1)]
+    for key in ("ShftTilt", *cones, *(c.replace("(", "").replace(")", "") for c in cones)):
         if key in main.values and abs(main.num(key)) >= ANGLE_LIMIT_DEG:
             raise SpecError(
                 f"{key} = {main.num(key):g}°: no rotor turns with its shaft or cone so far from "
