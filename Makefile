@@ -12,14 +12,15 @@ PIP_TOOLS := pip-tools==7.6.2
 .PHONY: demo test lint venv clean fuzz lock install-check docs-images mutate
 
 $(BIN)/python:
-	$(PYTHON) -m venv $(VENV)
+	@$(PYTHON) -m venv $(VENV)
 
 # The locked packages (pip checks every hash), then wtvib itself without touching them;
 # setuptools, its build backend, is in the lock too (--no-build-isolation uses it).
 $(RUNTIME): requirements/runtime.txt pyproject.toml | $(BIN)/python
-	$(BIN)/pip install --quiet --disable-pip-version-check -r requirements/runtime.txt
-	$(BIN)/pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
-	touch $@
+	@echo "installing wtvib and its locked dependencies into $(VENV) (once) ..."
+	@$(BIN)/pip install --quiet --disable-pip-version-check -r requirements/runtime.txt
+	@$(BIN)/pip install --quiet --disable-pip-version-check --no-deps --no-build-isolation -e .
+	@touch $@
 
 $(DEV): requirements/dev.txt pyproject.toml | $(BIN)/python
 	$(BIN)/pip install --quiet --disable-pip-version-check -r requirements/dev.txt
@@ -28,9 +29,13 @@ $(DEV): requirements/dev.txt pyproject.toml | $(BIN)/python
 
 venv: $(DEV)
 
+# What was audited, the verdict and where the figures are; the whole report in demo/.
 demo: $(RUNTIME)
-	$(BIN)/wtvib check turbines/wka-60.yaml --out-dir demo/ || test $$? -eq 1
-	@echo "Campbell diagram written to demo/"
+	@mkdir -p demo
+	@$(BIN)/wtvib check turbines/wka-60.yaml --out-dir demo/ > demo/wka-60.txt 2> demo/wka-60.log \
+		|| test $$? -eq 1
+	@sed -n '1,/^Assumptions/p' demo/wka-60.txt | sed '$$d'
+	@echo "The whole report: demo/wka-60.txt; Campbell diagrams: $$(ls demo/*.png | tr '\n' ' ')"
 
 lint: $(DEV)
 	$(BIN)/ruff check wtvib tests bench
@@ -53,10 +58,12 @@ install-check: $(DEV)
 	$(PYTHON) -m venv $(INSTALL_CHECK)/venv
 	$(INSTALL_CHECK)/venv/bin/pip install --quiet --disable-pip-version-check $(INSTALL_CHECK)/dist/wtvib-*.whl
 	$(INSTALL_CHECK)/venv/bin/wtvib --version
-	cd $(INSTALL_CHECK)/out && ../venv/bin/wtvib check $(CURDIR)/turbines/mod-2.yaml > check.txt \
-		|| test $$? -eq 1
+	cd $(INSTALL_CHECK)/out && ../venv/bin/wtvib catalogue > catalogue.txt
+	cd $(INSTALL_CHECK)/out && ../venv/bin/wtvib catalogue --copy specs > /dev/null
+	test -s $(INSTALL_CHECK)/out/specs/mod-2.yaml
+	cd $(INSTALL_CHECK)/out && ../venv/bin/wtvib check mod-2 > check.txt || test $$? -eq 1
 	test -s $(INSTALL_CHECK)/out/mod-2.campbell.png
-	@echo "install-check: the bare wheel installs, starts and audits"
+	@echo "install-check: the bare wheel installs, starts, lists, copies and audits its catalogue"
 
 # The README's figure: drawn by the code as it is (tests/test_docs_images.py fails when
 # the committed picture no longer matches what `check` draws).

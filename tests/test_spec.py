@@ -248,10 +248,10 @@ def test_an_absurd_wind_speed_is_refused(write_spec):
 
 
 def _readme_aerodynamics() -> tuple[str, str]:
-    """The head of a small spec and the README's documented `aerodynamics` block."""
+    """The head of a small spec and the user guide's documented `aerodynamics` block."""
     from tests.conftest import ROOT
 
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    readme = (ROOT / "docs" / "guide.md").read_text(encoding="utf-8")
     block = re.search(r"```yaml\n(aerodynamics:\n.*?)```", readme, re.S)
     assert block is not None
     head = (

@@ -51,6 +51,17 @@ class Options:
     samples: int | None = None  # Monte Carlo samples of the spec's tolerances (None: none)
     seed: int = 0
 
+    def tag(self, uncertainty: bool = False) -> str:
+        """What the options change in the figures, for their file names: ``.gl2010``,
+        ``.margin15``, ``.ratio``, ``.uncertainty`` — a preset's run does not replace the
+        plain run's ``mod-2.campbell.png``, it writes ``mod-2.gl2010.campbell.png``."""
+        parts = [self.preset or "", self.rule or ""]
+        if self.margin is not None:
+            parts.append(f"margin{self.margin * 100:g}")
+        if uncertainty or self.samples is not None:
+            parts.append("uncertainty")
+        return "".join(f".{p}" for p in parts if p)
+
     def load(self, path: str | Path) -> Any:
         """The turbine at ``path``, read with the import options."""
         from . import importers

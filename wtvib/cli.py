@@ -301,6 +301,8 @@ def _run_options(command: F) -> F:
     @functools.wraps(command)
     def wrapper(*args: object, **kwargs: Any) -> None:
         kwargs.pop("help_all", None)  # not exposed: its callback prints the help and exits
+        if isinstance(kwargs.get("spec_file"), Path):  # a typo answered before the imports
+            kwargs["spec_file"] = _input(kwargs["spec_file"])
         shared = [kwargs.pop(name) for name, _, _ in RUN_OPTIONS if name != "help_all"]
         command(*args, options=_options(*shared), **kwargs)
 
@@ -352,11 +354,10 @@ def _user_errors(command: F) -> F:
         except WtvibError as exc:
             if debug:
                 raise
-            from .modal import ModalError
-
             text = str(exc)
             source = kwargs.get("spec_file")
-            if source is not None and isinstance(exc, ModalError):
+            modal = sys.modules.get("wtvib.modal")  # not imported for a typo's error
+            if source is not None and modal is not None and isinstance(exc, modal.ModalError):
                 text = f"{source}: {text}"  # a model that cannot be solved: which input
             typer.echo(f"error: {_shown(text)}", err=True)
             raise typer.Exit(EXIT_INPUT) from None
@@ -513,6 +514,10 @@ def check(
     samples, seed = _study(uncertainty, samples, seed)
     from .plots.render import Drawer
 
+    if campbell_csv is not None:
+        from .outputs import folder_exists
+
+        folder_exists(campbell_csv)
     plot = not no_plots
     written: list[Path] = []
     with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
@@ -537,8 +542,8 @@ def check(
             with _working("drawing the figures"):
                 pngs = drawer.pngs(report, detail=figures is Figures.all)
             for suffix, png in pngs.items():
-                path = folder / f"{spec_file.stem}.{suffix}.png"
-                written.append(write_atomic(path, png, force=force))
+                path = folder / f"{spec_file.stem}{options.tag(uncertainty)}.{suffix}.png"
+                written.append(write_atomic(path, png, force=force, folder=True))
     if campbell_csv is not None:
         data = report.campbell.to_csv(report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
@@ -564,11 +569,10 @@ def _rendered(report: Any, format: Format, *, show_all: bool, detail: bool) -> "
         from .report import to_json
 
         return None, to_json(report)
-    from rich.console import Console
 
     from .report import terminal
 
-    console = Console()
+    console = _console()
     with console.capture() as captured:
         terminal(report, console, show_all=show_all, detail=detail or show_all)
     return console, captured.get()
@@ -619,6 +623,9 @@ def report(
     samples, seed = _study(uncertainty, samples, seed)
     if uncertainty:
         options = dataclasses.replace(options, samples=samples, seed=seed)
+    from .outputs import folder_exists
+
+    folder_exists(output)  # before the audit, not after it
     from .outputs import write_atomic
     from .plots.render import Drawer
 
@@ -682,7 +689,6 @@ def batch_command(
     """Audit a catalogue: every spec found, in parallel, with a summary and reports.
 
     The operating and rule options apply to every input."""
-    from rich.console import Console
 
     from . import batch
     from .report import batch_progress, batch_summary
@@ -695,7 +701,7 @@ def batch_command(
         from .errors import SpecError
 
         raise SpecError(f"no spec files ({', '.join(batch.SPEC_SUFFIXES)}) found in the inputs")
-    err = Console(stderr=True)
+    err = _console(stderr=True)
     lock = batch.FolderLock(out) if out is not None else None
     writer = _BatchWriter(out, force) if out is not None else None
     if writer is not None:
@@ -741,7 +747,7 @@ def batch_command(
         sys.stdout.write(batch.results_json(items))
     else:
         batch_summary(
-            Console(), batch.sort_items(items, sort.value), writer.written if writer else []
+            _console(), batch.sort_items(items, sort.value), writer.written if writer else []
         )
     raise typer.Exit(batch.exit_code(items, strict))
 
@@ -753,9 +759,8 @@ def _working(what: str) -> Iterator[None]:
     if not sys.stderr.isatty():
         yield
         return
-    from rich.console import Console
 
-    with Console(stderr=True).status(what, spinner="line"):
+    with _console(stderr=True).status(what, spinner="line"):
         yield
 
 
@@ -801,7 +806,7 @@ class _BatchWriter:
         from .outputs import write_atomic
 
         t0 = time.perf_counter()
-        self.written.append(write_atomic(self.folder / name, data, force=self.force))
+        self.written.append(write_atomic(self.folder / name, data, force=self.force, folder=True))
         key = name.split(".")[0]
         self.timings.setdefault(key, {}).setdefault("write", 0.0)
         self.timings[key]["write"] += time.perf_counter() - t0
@@ -859,9 +864,8 @@ class _BatchWriter:
                     pdf = pdfreport.build(entries, errors=errors)
             except Exception as exc:  # the PDF is lost, not the run's other files
                 self.pdf_error = f"audit.pdf could not be laid out ({type(exc).__name__})"
-                from rich.console import Console
 
-                Console(stderr=True).print(
+                _console(stderr=True).print(
                     f"warning: {self.pdf_error}; the other files are written"
                 )
             else:
@@ -934,11 +938,9 @@ def window(
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
     else:
-        from rich.console import Console
-
         from .report import windows_table
 
-        windows_table(Console(), doc)
+        windows_table(_console(), doc)
     if not no_plots:
         from .outputs import write_atomic
         from .plots import png_bytes
@@ -951,6 +953,7 @@ def window(
             folder / f"{spec_file.stem}.windows.png",
             png_bytes(windows_plot(report, tower_w)),
             force=force,
+            folder=True,
         )
         typer.echo(f"wrote {_shown(path)}", err=format is Format.json)
 
@@ -1059,6 +1062,7 @@ def convert(
             "not converted).",
         ),
     ] = False,
+    soil: SoilOption = None,
     force: Annotated[bool, typer.Option("--force", help="Replace an existing file.")] = False,
     help_all: HelpAllOption = False,
     debug: DebugOption = False,
@@ -1071,15 +1075,32 @@ def convert(
     from .spec import from_data
 
     read = importers.ReadOptions(
-        rpm=_rpm_range(rpm), rated=rated, head_mass=head_mass, clamped_base=clamped_base
+        rpm=_rpm_range(rpm),
+        rated=rated,
+        head_mass=head_mass,
+        clamped_base=clamped_base,
+        soil=soil,
     )
-    data = importers.to_data(source, read)
+    data = _plain(importers.to_data(source, read))
     from_data(data, source=str(source))  # refuse to write a spec that would not load
-    body = yaml.safe_dump(data, sort_keys=False, allow_unicode=True, width=100)
+    body = yaml.safe_dump(
+        data, sort_keys=False, allow_unicode=True, width=100, default_flow_style=None
+    )  # a list of numbers on one line: a table, not a column
     # a spec convert wrote is replaced while unedited; an edited one, or any other file,
     # only with --force (and never an input of this run)
     write_atomic(output, converted_spec(source.name, body), force=force)
     typer.echo(f"wrote {_shown(output)}")
+
+
+def _plain(node: Any) -> Any:
+    """Spec data as YAML writes it: numpy's numbers and arrays (an importer's arithmetic
+    leaves them: a floating platform's masses) as Python's."""
+    if isinstance(node, dict):
+        return {k: _plain(v) for k, v in node.items()}
+    if isinstance(node, list | tuple):
+        return [_plain(v) for v in node]
+    tolist = getattr(node, "tolist", None)  # a numpy scalar or array
+    return _plain(tolist()) if callable(tolist) and not isinstance(node, str) else node
 
 
 @app.command("shapes", cls=_Command)
@@ -1146,7 +1167,7 @@ def shapes_command(
                 "over each other in one folder"
             )
         for original, text in files.items():
-            write_atomic(targets[original], text.encode("utf-8"), force=force)
+            write_atomic(targets[original], text.encode("utf-8"), force=force, folder=True)
             written.append(str(targets[original]))
     if not no_plots:
         from .plots import png_bytes
@@ -1157,17 +1178,98 @@ def shapes_command(
             folder / f"{deck.stem}.shapes.png",
             png_bytes(polynomials_plot(result, spec)),
             force=force,
+            folder=True,
         )
         written.append(str(path))
     doc = polynomials.document(spec, result, written)
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
         return
-    from rich.console import Console
 
     from .report import shapes_table
 
-    shapes_table(Console(), doc)
+    shapes_table(_console(), doc)
+
+
+@app.command("catalogue", cls=_Command)
+@_user_errors
+def catalogue_command(
+    copy: Annotated[
+        Path | None,
+        typer.Option(
+            "--copy", metavar="DIR", help="Write the catalogue's specs into DIR, to edit."
+        ),
+    ] = None,
+    force: ForceOption = False,
+    format: FormatOption = Format.text,
+    help_all: HelpAllOption = False,
+) -> None:
+    """List the turbines that ship with wtvib (check one by its name: wtvib check mod-2)."""
+    from . import catalogue
+
+    entries = catalogue.entries()
+    if copy is not None:
+        from .errors import OutputError
+        from .outputs import write_atomic
+
+        def differs(path: Path) -> bool:  # a file there that is not the catalogue's own
+            target = copy / path.name
+            return target.exists() and (
+                not target.is_file() or target.read_bytes() != path.read_bytes()
+            )
+
+        edited = [p for p in catalogue.files() if differs(p)]
+        if edited and not force:  # checked before any is written: all or none
+            raise OutputError(
+                f"{copy / edited[0].name} exists"
+                + (f" (and {len(edited) - 1} more)" if len(edited) > 1 else "")
+                + " and differs from the catalogue's; use --force to replace"
+            )
+        for path in catalogue.files():
+            write_atomic(copy / path.name, path.read_bytes(), force=True, folder=True)
+        typer.echo(f"copied {len(entries)} turbine specs to {_shown(copy)}")
+        return
+    if format is Format.json:
+        import dataclasses
+
+        doc = {"schema": "wtvib-catalogue/1", "turbines": [dataclasses.asdict(e) for e in entries]}
+        sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
+        return
+
+    from .report import catalogue_table
+
+    catalogue_table(_console(), entries, catalogue.FOLDER)
+
+
+def _console(stderr: bool = False) -> Any:
+    """A rich console that does not hard-wrap text where it is not a terminal (a pipe, a
+    file: ``window … | less`` had "74.3%)" alone on a line); tables and panels keep their
+    width (COLUMNS where the user sets it)."""
+    from rich.console import Console
+
+    stream = sys.stderr if stderr else sys.stdout
+    try:
+        terminal = stream.isatty()
+    except (AttributeError, ValueError):
+        terminal = False
+    return Console(stderr=stderr, soft_wrap=not terminal)
+
+
+def _input(path: Path) -> Path:
+    """The file a command reads: ``path``, or — where no such file exists and the name is a
+    catalogue turbine's (``mod-2``) — the catalogue's spec, said on stderr; a file that is
+    neither is one line before any numerical module is imported."""
+    if os.path.lexists(path):
+        return path
+    from .catalogue import find
+
+    found = find(str(path))
+    if found is None:  # said now, not after a second of importing the numerical stack
+        from .errors import SpecError
+
+        raise SpecError("no such file", source=str(path))
+    typer.echo(f"note: {_shown(path)} is the catalogue's {found.name} ({_shown(found)})", err=True)
+    return found
 
 
 @app.command(cls=_Command)

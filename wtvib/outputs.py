@@ -126,8 +126,20 @@ def unwritable(folder: Path, exc: OSError) -> str:
     return f"cannot write to {folder}: {exc.strerror}"
 
 
-def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
-    """Write ``data`` to ``path`` atomically.
+def folder_exists(path: Path) -> None:
+    """An output file's folder must exist (OutputError otherwise): checked before the work
+    whose result it takes, and again when it is written."""
+    if not Path(path).parent.is_dir():
+        raise OutputError(
+            f"cannot write {path}: the folder {Path(path).parent} does not exist (an output "
+            "file's folder is not made; --out-dir folders are)"
+        )
+
+
+def write_atomic(path: Path, data: bytes, *, force: bool = False, folder: bool = False) -> Path:
+    """Write ``data`` to ``path`` atomically. ``folder``: the path's folder is an output
+    folder the user named (``--out-dir``), made if missing; an output file's folder must
+    exist, as in other tools (``report -o /nonexistent/x.pdf`` made ``/nonexistent``).
 
     Raises
     ------
@@ -154,8 +166,11 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False) -> Path:
             if fh.read(len(CONVERTED)) == CONVERTED:
                 how = "was written by wtvib convert and edited since"
         raise OutputError(f"{path} exists and {how}; use --force to replace it")
+    if not folder:
+        folder_exists(path)
     try:
-        path.parent.mkdir(parents=True, exist_ok=True)
+        if folder:
+            path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
         raise OutputError(unwritable(path.parent, exc)[:500]) from None

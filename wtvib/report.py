@@ -247,16 +247,28 @@ def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-a
 
 @contextmanager
 def batch_progress(console: Console, total: int) -> Iterator[Callable[[Any], None]]:
-    """A progress bar on ``console``; yields ``advance(item)``, which redraws it. No
+    """A progress bar on ``console`` with the time elapsed and the time to go (rich's
+    estimate from the rate so far); yields ``advance(item)``, which redraws it. No
     thread redraws it in between: the batch forks its workers inside, and a fork beside a
     running thread copies every lock that thread holds (stderr's, mid-write: a worker
     that then writes a warning would wait for ever)."""
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
 
     with Progress(
         TextColumn("auditing"),
         BarColumn(),
         MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        TextColumn("elapsed,"),
+        TimeRemainingColumn(),
+        TextColumn("to go"),
         TextColumn("{task.description}"),
         console=console,
         transient=True,
@@ -514,3 +526,23 @@ def _uncertainty(u: dict[str, Any]) -> Table:
             mode, f"{s['p5_hz']:.4g}", f"{s['p50_hz']:.4g}", f"{s['p95_hz']:.4g}", text or "none"
         )
     return table
+
+
+def catalogue_table(console: Console, entries: Sequence[Any], folder: Path) -> None:
+    """``wtvib catalogue``: the bundled turbines, each with its rotor and the story it tells."""
+    table = Table(title=f"wtvib catalogue ({folder})", title_justify="left", show_lines=True)
+    table.add_column("name", no_wrap=True)
+    table.add_column("tower")
+    table.add_column("verdict")
+    table.add_column("turbine and its story", ratio=1)
+    for e in entries:
+        verdict = Text(e.verdict.upper(), style=STYLE.get(e.verdict, ""))
+        about = _t(f"{e.turbine} ({e.rotor})", "bold")
+        about.append("\n")
+        about.append(_t(e.story))
+        table.add_row(_t(e.name), _t(e.tower_class or "—"), verdict, about)
+    console.print(table)
+    console.print(
+        "[dim]wtvib check NAME audits one; wtvib catalogue --copy DIR writes their specs to "
+        "edit.[/dim]"
+    )
