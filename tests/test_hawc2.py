@@ -115,12 +115,26 @@ def _edit(path: Path, old: str, new: str) -> None:
          "mbdy1 names the body 'nacelle', which the model does not have"),
         ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    -1a.0     0    ;",
          "sec: value 4 must be a number"),
+        # the exhaustive HAWC2 campaign's crashes (tests/FUZZ.md, campaign 14), each now a line
+        ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    -1e300     0    ;",
+         "no wind turbine is that large"),
+        ("orientation", "mbdy1  tower last;", "mbdy1  tower abc;", "is not 'last' or a node"),
+        ("orientation", "mbdy2  towertop 1;", "mbdy2  towertop nan;", "is not 'last' or a node"),
+        ("pc", "39 number of sections", "0 number of sections", "0 profiles: a whole number"),
+        ("pc", "39 number of sections", "-1 number of sections", "-1 profiles"),
+        ("pc", "1  200  21.1", "1  0  21.1", "0 rows of a profile"),
+        ("pc", "1  200  21.1", "1  1e300  21.1", "rows of a profile: a whole number"),
+        ("st", "$1 26", "$1 0", "announces 0 rows"),
     ],
 )  # fmt: skip
 def test_a_broken_model_is_one_line_and_exit_2(model, where, old, new, words):
-    target = model if where == "htc" else (
-        model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_orientation.htc"
-    )  # fmt: skip
+    shared = model.parents[2] / "IEA-15-240-RWT"
+    target = {
+        "htc": model,
+        "orientation": shared / "IEA_15MW_RWT_WTG_orientation.htc",
+        "pc": shared / "IEA_15MW_RWT_pc_OpenFASTpolars_3dcorr.dat",
+        "st": shared / "IEA_15MW_RWT_Blade_st_noFPM.st",
+    }[where]
     _edit(target, old, new)
     result = CliRunner().invoke(app, ["check", str(model), "--no-plots"])
     assert result.exit_code == 2, result.output

@@ -129,11 +129,16 @@ def unwritable(folder: Path, exc: OSError) -> str:
 def folder_exists(path: Path) -> None:
     """An output file's folder must exist (OutputError otherwise): checked before the work
     whose result it takes, and again when it is written."""
-    if not Path(path).parent.is_dir():
-        raise OutputError(
-            f"cannot write {path}: the folder {Path(path).parent} does not exist (an output "
-            "file's folder is not made; --out-dir folders are)"
-        )
+    folder = Path(path).parent
+    if folder.is_dir():
+        return
+    blocker = next((p for p in (folder, *folder.parents) if p.exists()), None)
+    if blocker is not None and not blocker.is_dir():
+        raise OutputError(f"cannot write to {folder}: {blocker} is a file, not a folder")
+    raise OutputError(
+        f"cannot write {path}: the folder {folder} does not exist (an output file's folder "
+        "is not made; --out-dir folders are)"
+    )
 
 
 def write_atomic(path: Path, data: bytes, *, force: bool = False, folder: bool = False) -> Path:

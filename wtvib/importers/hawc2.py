@@ -109,6 +109,10 @@ def _bodies(structure: Block, root: Path) -> dict[str, Body]:
     return out
 
 
+#: How far a body's centre line may reach from its origin [m].
+MAX_COORDINATE_M = 1000.0
+
+
 def _body(name: str, b: Block, root: Path) -> Body:
     c2_block = b.block("c2_def")
     if c2_block is None:
@@ -120,7 +124,18 @@ def _body(name: str, b: Block, root: Path) -> Body:
             line=c2_block.line,
             source=str(c2_block.file),
         )
-    c2 = np.array([s.numbers(1)[:4] for s in secs])
+    rows = []
+    for sec in secs:  # sec number x y z twist: a centre line within a kilometre
+        row = [sec.number(i) for i in range(1, 5)]
+        if max(abs(v) for v in row[:3]) > MAX_COORDINATE_M:
+            raise SpecError(
+                f"sec: a centre-line point {MAX_COORDINATE_M:g} m or more from its body's "
+                "origin: no wind turbine is that large",
+                line=sec.line,
+                source=str(sec.file),
+            )
+        rows.append(row)
+    c2 = np.array(rows)
     timo = b.block("timoschenko_input")
     if timo is None:
         raise SpecError(
@@ -161,11 +176,27 @@ def _place(bodies: dict[str, Body], orientation: Block) -> None:
             frame = parent.frame.copy()
             for a in rel.all("mbdy2_eulerang") + rel.all("body2_eulerang"):
                 frame = frame @ _rotation(a.numbers()[:3])
-            where = first.values[1] if len(first.values) > 1 else "last"
-            child.origin = parent.at(where) - frame @ child.node(
-                second.values[1] if len(second.values) > 1 else "1"
+            child.origin = parent.at(_node_ref(first, "last")) - frame @ child.node(
+                _node_ref(second, "1")
             )
             child.frame, child.placed = frame, True
+
+
+def _node_ref(cmd: Command, default: str) -> str:
+    """The node a ``mbdy1``/``mbdy2`` command names after the body: ``last`` or its
+    number (1 and up), or one line naming file and line."""
+    if len(cmd.values) < 2:
+        return default
+    which = cmd.values[1].lower()
+    if which == "last":
+        return which
+    if not which.isascii() or not which.isdigit() or int(which) < 1:
+        raise SpecError(
+            f"{cmd.key}: node {cmd.values[1]!r} is not 'last' or a node number (1, 2, …)",
+            line=cmd.line,
+            source=str(cmd.file),
+        )
+    return str(int(which))
 
 
 def _named(bodies: dict[str, Body], cmd: Command) -> Body:

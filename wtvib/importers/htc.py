@@ -216,6 +216,13 @@ def read_st(path: Path, set_no: int, subset: int, columns: int) -> np.ndarray:
             if int(digits) != subset:
                 continue
             count = int(rest[0])
+            if count < 1:
+                raise SpecError(
+                    f"subset ${subset} of set #{set_no} announces {count} rows: a beam needs "
+                    "its stations",
+                    line=line,
+                    source=str(path),
+                )
             out: list[list[float]] = []
             for line2, cells2 in rows[k + 1 :]:
                 if len(out) == count:
@@ -273,23 +280,39 @@ def read_pc(path: Path, set_no: int = 1) -> list[tuple[float, np.ndarray]]:
         if k >= len(rows):
             raise SpecError(f"no pc set {set_no}", source=str(path))
         line, cells = rows[k]
-        n_profiles = int(_floats(cells, path, line, 1)[0])
+        n_profiles = _whole(_floats(cells, path, line, 1)[0], "profiles", 1, path, line)
         k += 1
         profiles = []
         for _ in range(n_profiles):
-            line, cells = rows[k]
-            _, count, thickness = _floats(cells, path, line, 3)
-            k += 1
-            table = np.array([_floats(c, path, ln, 4) for ln, c in rows[k : k + int(count)]])
-            if len(table) < int(count):
+            if k >= len(rows):
                 raise SpecError(
-                    f"a profile announces {int(count)} rows", line=line, source=str(path)
+                    f"the set announces {n_profiles} profiles, the file ends before them",
+                    line=line,
+                    source=str(path),
                 )
-            k += int(count)
+            line, cells = rows[k]
+            _, raw_count, thickness = _floats(cells, path, line, 3)
+            count = _whole(raw_count, "rows of a profile", 2, path, line)
+            k += 1
+            table = np.array([_floats(c, path, ln, 4) for ln, c in rows[k : k + count]])
+            if len(table) < count:
+                raise SpecError(f"a profile announces {count} rows", line=line, source=str(path))
+            k += count
             profiles.append((thickness, table))
         if current == set_no:
             return profiles
     raise SpecError(f"no pc set {set_no}", source=str(path))
+
+
+def _whole(value: float, what: str, least: int, path: Path, line: int) -> int:
+    """A count in a file: a whole number, at least ``least``, at most a million."""
+    if value != int(value) or not least <= value <= 1_000_000:
+        raise SpecError(
+            f"{value:g} {what}: a whole number from {least} is expected",
+            line=line,
+            source=str(path),
+        )
+    return int(value)
 
 
 def read_opt(path: Path) -> np.ndarray:
