@@ -157,7 +157,8 @@ def test_a_table_station_far_from_both_neighbours_is_a_warning(shared, tmp_path)
     2.9101100E-09 for 2.9101100E+11 N·m²) leaves a tower that audits — fore-aft 0.26 Hz
     instead of 0.32 — so it must not pass quietly: the station is named, with its height
     (0.5 × 87.6 m = 43.8 m) and how far it sits below both neighbours. No reference or
-    catalogue table has such a step (the sharpest: 1.34, audit.SPIKE)."""
+    catalogue table has such a step (the sharpest: 1.34, audit.SPIKE); a deck's station is
+    named by its file, line and column, a spec's by its field (the next test)."""
     import shutil
 
     deck = tmp_path / "NREL5MW"
@@ -171,7 +172,8 @@ def test_a_table_station_far_from_both_neighbours_is_a_warning(shared, tmp_path)
         w for w in audit.suspicious(importers.load(deck / "NREL-5MW.fst"), []) if "exponent" in w
     ]
     assert len(warned) == 1
-    assert warned[0].startswith("tower.distributed.ei_fa_nm2[5]: 2.91e-09 at 43.8 m")
+    # named by the deck's file, line (header 18 + units + 6th row) and column (issue 56)
+    assert warned[0].startswith(f"{tower}:25: TwFAStif: 2.91e-09 at 43.8 m"), warned[0]
     assert "below both its neighbours" in warned[0]
 
 
@@ -206,3 +208,14 @@ def test_a_subsystem_s_own_warning_is_not_said_twice(write_spec):
     said = [w for w in report.warnings if w.startswith("tower.fa1:")]
     assert len(said) == 1 and "first tower bending" in said[0]
     assert audit.MODIFIERS and all(hasattr(m, "modify") for m in audit.MODIFIERS)
+
+
+def test_a_specs_own_table_station_is_named_by_its_field(write_spec):
+    """Tjæreborg's sections with one diameter typed 100 times too large: its field."""
+    text = (TURBINES / "tjaereborg.yaml").read_text(encoding="utf-8")
+    old = "      - {value: 4.75, provenance: published, source: stas}\n"
+    assert text.count(old) == 3
+    i = text.index(old) + len(old)  # the second diameter: the middle station of three
+    text = text[:i] + old.replace("4.75", "475") + text[i + len(old) :]
+    warned = [w for w in audit.suspicious(spec.load(write_spec(text)), []) if "exponent" in w]
+    assert warned and warned[0].startswith("tower.sections.outer_diameter_m[2]: 475"), warned

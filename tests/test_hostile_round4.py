@@ -512,3 +512,31 @@ def test_a_signal_ends_the_batch_without_tracebacks(tmp_path, sig):
     assert "Traceback" not in text and "Exception ignored" not in text, text
     assert "interrupted" in text
     assert _gone(children, within=15.0)
+
+
+# --- Refusals and warnings name the user's file, not the converted field ------------
+
+DECK_TABLE_CASES = [
+    (TOWER, "3.4188300E+11  3.4188300E+11", "3.4188300E+25  3.4188300E+11", 24, "TwFAStif", 2),
+    (TOWER, "3.4188300E+11  3.4188300E+11", "3.4188300E+02  3.4188300E+11", 24, "TwFAStif", None),
+    ("NRELOffshrBsline5MW_Blade.dat", "4.0063800E+02  5.5283600E+09",
+     "4.0063800E+02  5.5283600E+02", 25, "FlpStff", None),
+    ("NRELOffshrBsline5MW_Blade.dat", "7.7336300E+02", "7.7336300E+22", 19, "BMassDen", 2),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("file", "old", "new", "line", "key", "code"), DECK_TABLE_CASES)
+def test_a_deck_tables_odd_station_is_named_by_its_file_line_and_column(
+    shared, tmp_path, file, old, new, line, key, code
+):
+    """The campaign's example: a spike warned as `tower.distributed.ei_fa_nm2[5]`; a
+    stiffness of 1e25 said "the tower is not held"."""
+    folder = edited_reference(shared, tmp_path, "NREL5MW", file, old, new)
+    result = runner.invoke(app, ["check", str(folder / "NREL-5MW.fst"), "--no-plots"])
+    said = f"{file}:{line}: {key}"
+    if code == 2:
+        assert result.exit_code == 2 and said in result.stderr, result.output
+    else:
+        warned = [ln for ln in result.stderr.splitlines() if "typed wrong" in ln]
+        assert warned and said in warned[0], result.stderr
+        assert "distributed." not in warned[0] and "structure." not in warned[0]

@@ -561,10 +561,17 @@ def _spikes(spec: Spec) -> list[str]:
             a, b, c = v[:-2], v[1:-1], v[2:]
             with np.errstate(divide="ignore", invalid="ignore"):
                 step = np.maximum(np.minimum(b / a, b / c), np.minimum(a / b, c / b))
+            rows = getattr(table, "rows", None)
             for i in np.flatnonzero(step >= SPIKE)[:3] + 1:
                 way = "above" if v[i] > v[i - 1] else "below"
+                # an imported table's station by its file, line and column (issue 56)
+                said = (
+                    f"{rows.file}:{rows.lines[i]}: {rows.columns.get(name, name)}"
+                    if rows is not None and i < len(rows.lines)
+                    else f"{where}.{name}[{i}]"
+                )
                 out.append(
-                    f"{where}.{name}[{i}]: {values[i]:.4g} at {at[i]:g} {unit} is "
+                    f"{said}: {values[i]:.4g} at {at[i]:g} {unit} is "
                     f"{float(step[i - 1]):.3g} times {way} both its neighbours' — an exponent "
                     "typed wrong?"
                 )

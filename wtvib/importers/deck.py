@@ -58,6 +58,17 @@ LIMITS: dict[str, tuple[float, str]] = {
     **{key: (1e15, "kg·m²") for key in ("HubIner", "GenIner", "NacYIner")},
 }
 
+#: Distributed properties no tower or blade reaches (the largest reference towers and
+#: monopiles: ~1e13 N·m² and ~2e4 kg/m; blades ~1e11 N·m² and ~5e3 kg/m), by column.
+COLUMN_LIMITS: dict[str, tuple[float, str]] = {
+    "TMassDen": (1e6, "kg/m"),
+    "TwFAStif": (1e16, "N·m²"),
+    "TwSSStif": (1e16, "N·m²"),
+    "BMassDen": (1e5, "kg/m"),
+    "FlpStff": (1e14, "N·m²"),
+    "EdgStff": (1e14, "N·m²"),
+}
+
 #: Inputs an ElastoDyn deck gives once (a sectioned file, SubDyn's, may repeat a key in
 #: another section): given twice with two values, the deck is refused — OpenFAST reads by
 #: position, wtvib by key, and neither would read the deck as its author meant.
@@ -215,6 +226,17 @@ class Deck:
         """A column of distributed mass or stiffness: every value above 0 — a station with
         none is a beam that is not there, named by file, line and column."""
         found = self.column(table, name)
+        limit, unit = COLUMN_LIMITS.get(name, (math.inf, ""))
+        over = np.flatnonzero(found > limit)
+        if over.size:  # 1e25 where 1e11 was meant: the model would lose its precision
+            k = int(over[0])
+            head = self.table_lines.get(table)
+            raise SpecError(
+                f"{name} = {found[k]:.4g} {unit} at {table} {self.column(table, table)[k]:g} "
+                f"is beyond any wind turbine (≤ {limit:g} {unit}): an exponent typed wrong?",
+                line=head + 2 + k if head is not None else None,
+                source=str(self.path),
+            )
         bad = np.flatnonzero(~(found > 0))
         if bad.size:
             k = int(bad[0])
@@ -226,6 +248,13 @@ class Deck:
                 source=str(self.path),
             )
         return found
+
+    def station_lines(self, table: str) -> list[int] | None:
+        """The file's line of each row of ``table`` (None where there is no such table)."""
+        head = self.table_lines.get(table)
+        if head is None or table not in self.tables:
+            return None
+        return [head + 2 + k for k in range(len(self.tables[table][1]))]
 
     def optional_column(self, table: str, *names: str) -> np.ndarray | None:
         if table not in self.tables:

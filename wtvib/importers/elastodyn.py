@@ -505,8 +505,36 @@ def _tower_section(
         },
         "damping_at": "tower-alone",
         **tw.block,
-        "distributed": _distributed(tw.heights, tw.mass, tw.ei_fa, tw.ei_ss, tw.torsion),
+        "distributed": _distributed(tw.heights, tw.mass, tw.ei_fa, tw.ei_ss, tw.torsion)
+        | _rows(tower_file, "HtFract", TOWER_COLUMNS, len(tw.heights)),
     }
+
+
+#: The spec's tower and blade fields and the ElastoDyn columns they come from.
+TOWER_COLUMNS = {
+    "height_m": "HtFract",
+    "mass_per_length_kg_m": "TMassDen",
+    "ei_fa_nm2": "TwFAStif",
+    "ei_ss_nm2": "TwSSStif",
+    "gj_nm2": "TwGJStif",
+}
+BLADE_COLUMNS = {
+    "span_m": "BlFract",
+    "mass_per_length_kg_m": "BMassDen",
+    "ei_flap_nm2": "FlpStff",
+    "ei_edge_nm2": "EdgStff",
+    "twist_deg": "StrcTwst",
+}
+
+
+def _rows(deck: Deck, table: str, columns: dict[str, str], stations: int) -> dict[str, Any]:
+    """The table's ``rows`` block (spec.base.TableRows: file, line of each station, column
+    names), where the spec's stations are the file's one for one (not under a monopile,
+    whose stations are the pile's and the tower's together)."""
+    lines = deck.station_lines(table)
+    if lines is None or len(lines) != stations:
+        return {}
+    return {"rows": {"file": str(deck.path), "lines": lines, "columns": columns}}
 
 
 def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -> dict[str, Any]:
@@ -913,6 +941,7 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
         twist = ed.optional_column("BlFract", "StrcTwst")
         if twist is not None:
             structure["twist_deg"] = _list(twist)
+        structure |= _rows(ed, "BlFract", BLADE_COLUMNS, len(span))
         return _BladeTable(
             span, mass, structure, main_damping(ed, "BldFlDmp(1)"), "∫ BMassDen·AdjBlMs", [],
             _blades_differ(main, ed, n_blades), polynomials(ed, BLADE_POLYNOMIALS),

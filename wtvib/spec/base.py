@@ -181,6 +181,18 @@ def _same_length(model: BaseModel, reference: str) -> None:
             raise ValueError(f"{name} has {len(value)} values but {reference} has {n}")
 
 
+class TableRows(_Strict):
+    """Where an imported table's stations stand in the file they were read from (an
+    ElastoDyn tower or blade file): a message about a station names that file, its line and
+    the file's own column name, not the converted field."""
+
+    file: str = Field(description="The file the table was read from.")
+    lines: list[int] = Field(description="The line of each station in that file.")
+    columns: dict[str, str] = Field(
+        default_factory=dict, description="The file's column name of each field."
+    )
+
+
 class StiffnessDamping(_Strict):
     """Stiffness-proportional damping, c = β·k per direction: a mode of frequency f in that
     direction has ζ = π·β·f (HAWC2's damping_posdef/damping_aniso K coefficients, BeamDyn's

@@ -12,6 +12,7 @@ from .base import (
     Ratio,
     ShapePolynomial,
     StiffnessDamping,
+    TableRows,
     _increasing,
     _same_length,
     _Strict,
@@ -36,6 +37,9 @@ class BladeStructure(_Strict):
     gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
     torsional_inertia_kgm: list[Positive] | None = Field(
         None, description="Mass moment of inertia per length about the pitch axis. [kg·m]"
+    )
+    rows: TableRows | None = Field(
+        None, description="Where the stations stand in the file they were read from."
     )
     tip_mass_kg: float = Field(
         0.0, ge=0, description="Point mass at the tip (a tip brake: ElastoDyn TipMass). [kg]"

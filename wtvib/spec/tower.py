@@ -13,6 +13,7 @@ from .base import (
     Ratio,
     ShapePolynomial,
     StiffnessDamping,
+    TableRows,
     TowerModeName,
     TowerSize,
     _increasing,
@@ -68,6 +69,9 @@ class DistributedTower(_Strict):
     gj_nm2: list[Positive] | None = Field(None, description="Torsional stiffness. [N·m²]")
     polar_inertia_kgm: list[Positive] | None = Field(
         None, description="Polar mass moment of inertia per length. [kg·m]"
+    )
+    rows: TableRows | None = Field(
+        None, description="Where the stations stand in the file they were read from."
     )
 
     @model_validator(mode="after")
