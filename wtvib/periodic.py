@@ -80,7 +80,9 @@ def reduction(model: "Model", modes: int = 10, cutoff_hz: float = math.inf) -> A
     fixed = np.ones(lay.size, dtype=bool)
     fixed[lay.blades] = False
     q, r = np.linalg.qr(shapes[fixed])
-    q = q[:, np.abs(np.diag(r)) > 1e-9 * np.abs(np.diag(r)).max()]
+    size = np.abs(np.diag(r))
+    # a model whose fixed parts do not move (a deck with only its blades' DOFs on) has none
+    q = q[:, size > 1e-9 * size.max()] if size.size and size.max() > 0 else q[:, :0]
     kb = model.k_blades
     slow = np.flatnonzero(model.rotor.omega / (2 * np.pi) <= cutoff_hz)
     slow = slow if len(slow) else np.array([0])
