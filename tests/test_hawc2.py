@@ -125,6 +125,9 @@ def _edit(path: Path, old: str, new: str) -> None:
         ("pc", "1  200  21.1", "1  0  21.1", "0 rows of a profile"),
         ("pc", "1  200  21.1", "1  1e300  21.1", "rows of a profile: a whole number"),
         ("st", "$1 26", "$1 0", "announces 0 rows"),
+        # the campaign's rerun: a blade's mass typed 1e300 overflowed its inertia integral
+        # (a numpy warning before the spec's refusal)
+        ("st", "3.1265243837780e+03", "3.1265243837780e+300", "beyond any wind turbine"),
     ],
 )  # fmt: skip
 def test_a_broken_model_is_one_line_and_exit_2(model, where, old, new, words):

@@ -195,6 +195,12 @@ def _floats(cells: list[str], path: Path, line: int, count: int | None = None) -
     return values
 
 
+#: No st file value reaches this — not even the moduli of the near-rigid sets HAWC2 models
+#: use for their dummy bodies (the IEA-15's: up to 7e18): beyond it a number is typed wrong,
+#: and the blade's and tower's inertia integrals would overflow.
+ST_LIMIT = 1e30
+
+
 def read_st(path: Path, set_no: int, subset: int, columns: int) -> np.ndarray:
     """Main set ``set_no``, subset ``subset`` of an st file: its rows, ``columns`` values
     each (19 for a classical Timoshenko set, 30 for a fully populated one). The file marks
@@ -230,6 +236,13 @@ def read_st(path: Path, set_no: int, subset: int, columns: int) -> np.ndarray:
                 if not cells2:
                     continue
                 out.append(_floats(cells2, path, line2, columns))
+                if max(abs(v) for v in out[-1]) > ST_LIMIT:
+                    raise SpecError(
+                        f"a value beyond any wind turbine's (|x| > {ST_LIMIT:g}; a near-rigid "
+                        "dummy set's modulus is ~1e19): an exponent typed wrong?",
+                        line=line2,
+                        source=str(path),
+                    )
             if len(out) < count:
                 raise SpecError(
                     f"subset ${subset} of set #{set_no} announces {count} rows, the file "
