@@ -256,3 +256,49 @@ def test_a_rated_power_the_rotor_never_reaches_is_said_in_kw():
     )
     said = " ".join(audit.run(big).assumptions)
     assert "rated power 200,000 kW (aerodynamic) is not reached below cut-out" in said
+
+
+def test_the_induction_in_equilibrium_answers_the_motion_as_the_momentum_balance_says(
+    write_spec,
+):
+    """aerodamping.inflow_response against the annulus' momentum balance worked by hand, as
+    AeroDyn's BEMT takes a section's motion into its inflow: V_x = V − v_n, V_y = Ωr + v_t,
+    U_n = V_x(1 − a), U_t = V_y(1 + a′), and B·F(U) = M with M_n = 4πrρV_x²a(1 − a),
+    M_t = 4πrρV_xV_y·a′(1 − a) (no tip or hub loss; Hansen, Aerodynamics of Wind Turbines,
+    ch. 4). Linearised, x = (a, a′): B·F_U·(U_v δv + U_x δx) = M_v δv + M_x δx, with
+    F_U = −C·S (S = diag(−1, 1), C the frozen section matrix), so that
+    ∂U/∂v = U_v + U_x·(B·F_U·U_x − M_x)⁻¹·(M_v − B·F_U·U_v) and G = S·∂U/∂v. The code's
+    central differences of re-solved BEM agree to 1e-5 (their step's O(δ²), the root's
+    tolerance)."""
+    text = SPEC.replace("aerodynamics:\n", "aerodynamics:\n  tip_loss: false\n  hub_loss: false\n")
+    s = load(write_spec(text))
+    r = bem.rotor(s)
+    sol = bem.schedule(s).solution
+    g = aerodamping.inflow_response(r, sol)
+    h = np.radians(bem.SLOPE_STEP_DEG)
+    (cl_p, cd_p), (cl_m, cd_m) = r.polar(sol.alpha + h), r.polar(sol.alpha - h)
+    dcl, dcd = (cl_p - cl_m) / (2 * h), (cd_p - cd_m) / (2 * h)
+    c = aerodamping.section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
+    sign = np.diag([-1.0, 1.0])
+    checked = 0
+    for k in range(len(sol.wind)):
+        vx = sol.wind[k]
+        for j, rad in enumerate(r.radius):
+            a, at = sol.a[k, j], sol.a_t[k, j]
+            # away from the polar's corners (10° steps in SPEC), where the ±0.5° slopes of
+            # the section matrix and the re-solved BEM's tangent differ
+            near = np.abs(np.degrees(sol.alpha[k, j]) - np.round(np.degrees(sol.alpha[k, j]), -1))
+            if not (0.02 < a < 0.38 and sol.phi[k, j] > 0 and near > 1.0):
+                continue
+            vy, q = sol.omega[k] * rad, 4 * np.pi * rad * r.rho
+            f_u = -c[k, j] @ sign
+            u_v, u_x = np.diag([-(1 - a), 1 + at]), np.diag([-vx, vy])
+            m_x = np.array([[q * vx**2 * (1 - 2 * a), 0.0],
+                            [-q * vx * vy * at, q * vx * vy * (1 - a)]])  # fmt: skip
+            m_v = np.array([[-2 * q * vx * a * (1 - a), 0.0],
+                            [-q * vy * at * (1 - a), q * vx * at * (1 - a)]])  # fmt: skip
+            b = r.blades
+            du_dv = u_v + u_x @ np.linalg.solve(b * f_u @ u_x - m_x, m_v - b * f_u @ u_v)
+            np.testing.assert_allclose(g[k, j], sign @ du_dv, atol=1e-5)
+            checked += 1
+    assert checked >= 15, checked

@@ -104,3 +104,48 @@ def test_the_shed_wake_follows_the_decks_unsteady_aerofoil_model(shared, tmp_pat
         )
         quasi = importers.load(folder / "NREL-5MW.fst")
         assert quasi.aerodynamics is not None and not quasi.aerodynamics.shed_wake, mod
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "induction"),
+    [
+        # the reference file (OpenFAST 3.5 keys): Wake_Mod 1 with DBEMT_Mod 2 — a dynamic wake
+        (None, None, "frozen"),
+        ("          2   DBEMT_Mod", "          0   DBEMT_Mod", "equilibrium"),
+        ("          2   DBEMT_Mod", "         -1   DBEMT_Mod", "frozen"),
+    ],
+)
+def test_the_induction_follows_the_decks_wake_model(shared, tmp_path, old, new, induction):
+    """How the induction answers the blades' motion, as the deck's AeroDyn asks: in
+    equilibrium with it where its BEMT has no dynamic wake (DBEMT_Mod 0, OpenFAST's default,
+    as in the IEA-22 deck), frozen with a dynamic wake (DBEMT_Mod 1–3) or for linearisation
+    (−1). Older files (WakeMod, FrozenWake): tests of aerodyn.induction below."""
+    from tests.conftest import edited_reference
+    from wtvib import importers
+
+    folder = shared / "reference/NREL5MW"
+    if old is not None:
+        folder = edited_reference(
+            shared, tmp_path, "NREL5MW", "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat", old, new
+        )
+    s = importers.load(folder / "NREL-5MW.fst")
+    assert s.aerodynamics is not None and s.aerodynamics.induction == induction
+
+
+@pytest.mark.parametrize(
+    ("lines", "induction"),
+    [
+        ("1 WakeMod\nFalse FrozenWake", "equilibrium"),  # AeroDyn 15 before OpenFAST 3.5
+        ("1 WakeMod\nTrue FrozenWake", "frozen"),
+        ("2 WakeMod", "frozen"),  # DBEMT
+        ("1 Wake_Mod\n0 DBEMT_Mod", "equilibrium"),
+        ("1 Wake_Mod\n3 DBEMT_Mod", "frozen"),
+    ],
+)
+def test_the_wake_models_of_every_aerodyn_version(tmp_path, lines, induction):
+    from wtvib.importers.aerodyn import induction as read
+    from wtvib.importers.deck import parse
+
+    path = tmp_path / "ad.dat"
+    path.write_text("------- AeroDyn\ntitle\n" + lines + "\n")
+    assert read(parse(path))[0] == induction

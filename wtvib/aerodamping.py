@@ -159,7 +159,43 @@ def _sections(spec: Spec) -> Sections:
     dcl, dcd = (cl_p - cl_m) / (2 * h), (cd_p - cd_m) / (2 * h)
     c = section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
     lift = section_lift(r.rho, r.chord, sol.w, sol.phi, dcl)
+    assert spec.aerodynamics is not None
+    if spec.aerodynamics.induction == "equilibrium":
+        g = inflow_response(r, sol)
+        c, lift = c @ g, lift @ g
     return Sections(sch, r.radius, c, lift, unsteady.lag_rates(sol.w, r.chord))
+
+
+#: The section speed [m/s] of the central differences of :func:`inflow_response`: far
+#: above the BEM root's rounding (its φ to ~1e-13 rad on W of 10–100 m/s), far below any
+#: change of the flow's curvature (its error O(δ²/W²) ≈ 1e-10).
+INFLOW_STEP = 1e-3
+
+
+def inflow_response(r: bem.Rotor, sol: bem.Solution) -> Array:
+    """How the flow a section meets answers its motion where the induction is in
+    equilibrium with it (AeroDyn's BEMT without dynamic wake): G (K, S, 2, 2) with
+    (−δU_n, δU_t) = G·(v_n, v_t) — the identity at frozen induction. Each section's
+    momentum balance is re-solved with the section moving at ±δ downwind and in the
+    direction of rotation (:func:`wtvib.bem.solve`'s ``motion``), G by central differences
+    of U_n = W sin φ, U_t = W cos φ; where the balance has no root (no induction) G = I.
+
+    A section moving downwind lowers its thrust, the momentum balance then asks less
+    induction, which gives back part of the lost inflow: G_nn < 1, the flap damping lower
+    than at frozen induction (the frozen wake is the upper bound, the equilibrium the lower;
+    a dynamic-inflow model lies between, near the frozen at a flap mode's frequency)."""
+    out = np.zeros((*sol.phi.shape, 2, 2))
+    for j in (0, 1):  # (−δU_n, δU_t) per unit v_n, then v_t
+        step = np.zeros(2)
+        step[j] = INFLOW_STEP
+        ahead = bem.solve(r, sol.wind, sol.omega, sol.pitch, (float(step[0]), float(step[1])))
+        back = bem.solve(r, sol.wind, sol.omega, sol.pitch, (float(-step[0]), float(-step[1])))
+        for i, (trig, to) in enumerate(((np.sin, -1.0), (np.cos, 1.0))):
+            du = ahead.w * trig(ahead.phi) - back.w * trig(back.phi)
+            out[..., i, j] = to * du / (2 * INFLOW_STEP)
+    held = ~sol.converged
+    out[held] = np.eye(2)
+    return out
 
 
 def stalled(spec: Spec) -> NDArray[np.bool_]:
@@ -466,6 +502,21 @@ def _lift(spec: Spec) -> str:
     return "lift lagged" if _shed_wake(spec) else "lift quasi-steady"
 
 
+def induction_words(spec: Spec | None) -> str:
+    """How the induction answers the blades' motion, in the words the report says it."""
+    if (
+        spec is not None
+        and spec.aerodynamics is not None
+        and (spec.aerodynamics.induction == "equilibrium")
+    ):
+        return (
+            "the induction in equilibrium with the motion (each section's momentum balance "
+            "re-solved, as AeroDyn's BEMT without dynamic wake: the lower bound of the flap "
+            "damping; a frozen or dynamic wake damps more)"
+        )
+    return "frozen induction (no dynamic inflow: the upper bound of the flap damping)"
+
+
 def _shed_wake(spec: Spec) -> bool:
     """Whether the lift is lagged by the shed wake (``aerodynamics.shed_wake``)."""
     return spec.aerodynamics is not None and spec.aerodynamics.shed_wake
@@ -560,7 +611,7 @@ def in_operation(
     )
     notes.append(
         "Aerodynamic damping: blade-element forces linearised at each operating point with "
-        "frozen induction (no dynamic inflow or dynamic stall), lift and drag slopes over "
+        f"{induction_words(spec)} (no dynamic stall), lift and drag slopes over "
         f"±{bem.SLOPE_STEP_DEG:g}°, {lift}; aerodynamic stiffness (tilt, yaw, torsion) and "
         "apparent mass neglected; total damping = aerodynamic + the mode's structural ratio."
     )
@@ -822,7 +873,14 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     rule = Rule(
         "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
         "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; blade-element section damping "
-        f"(M. H. Hansen, Wind Energy 10 (2007) 551–577), {lift}, frozen induction",
+        f"(M. H. Hansen, Wind Energy 10 (2007) 551–577), {lift}, "
+        + (
+            "induction in equilibrium"
+            if spec is not None
+            and spec.aerodynamics is not None
+            and spec.aerodynamics.induction == "equilibrium"
+            else "frozen induction"
+        ),
     )
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:

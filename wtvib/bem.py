@@ -268,9 +268,14 @@ def _induction(
     return _balance(phi, s, c, k, kp, a_pos, speed_ratio), a, a_t, cl, cd
 
 
-def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
+def solve(
+    r: Rotor, wind: Array, omega: Array, pitch: Array, motion: tuple[float, float] = (0.0, 0.0)
+) -> Solution:
     """The steady BEM solution at operating points (wind [m/s], Ω [rad/s], pitch [rad]),
-    all stations and points at once."""
+    all stations and points at once; ``motion``: every section moving at (v_n, v_t) [m/s]
+    (downwind, in the direction of rotation), its momentum balance solved in the flow it
+    meets — V − v_n axially, Ωr + v_t in the rotor plane — as AeroDyn's BEMT takes a
+    blade's own velocity into its inflow (the induction in equilibrium with the motion)."""
     wind = np.asarray(wind, float)
     omega = np.asarray(omega, float)
     pitch = np.asarray(pitch, float)
@@ -280,7 +285,9 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
         raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
     shape = (len(wind), len(r.radius))
     theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
-    lam = np.maximum(omega[:, None] * r.radius[None, :] / wind[:, None], 1e-9)
+    axial = wind[:, None] - motion[0]  # the flow each section meets
+    spin = omega[:, None] * r.radius[None, :] + motion[1]
+    lam = np.maximum(spin / axial, 1e-9)
     lam = np.broadcast_to(lam, shape)
 
     def res(phi: Array) -> Array:
@@ -321,15 +328,15 @@ def solve(r: Rotor, wind: Array, omega: Array, pitch: Array) -> Solution:
     phi = np.where(
         found,
         np.where(np.abs(r_hi) <= np.abs(r_lo), hi, lo),
-        np.arctan2(wind[:, None], omega[:, None] * r.radius),
+        np.arctan2(np.broadcast_to(axial, shape), np.broadcast_to(spin, shape)),
     )
     _, a, a_t, cl, cd = _induction(r, phi, theta, lam)
     a = np.where(found, a, 0.0)  # no root: the geometric inflow, no induction
     a_t = np.where(found, a_t, 0.0)
     if not np.all(found):
         cl, cd = r.polar(phi - theta)
-    u_n = wind[:, None] * (1 - a)
-    u_t = omega[:, None] * r.radius * (1 + a_t)
+    u_n = axial * (1 - a)
+    u_t = spin * (1 + a_t)
     w = np.hypot(u_n, u_t)
     q = 0.5 * r.rho * w * w * r.chord
     s, c = np.sin(phi), np.cos(phi)

@@ -292,7 +292,12 @@ def _rule(spec: "Spec") -> "Rule":
 
     ae = spec.blade.aeroelastic
     if spec.aerodynamics is not None:
-        inflow = "the aerodynamics' polars at the BEM operating points (frozen induction)"
+        how = (
+            "induction in equilibrium"
+            if spec.aerodynamics.induction == "equilibrium"
+            else ("frozen induction")
+        )
+        inflow = f"the aerodynamics' polars at the BEM operating points ({how})"
     else:
         assert ae is not None
         polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"

@@ -196,6 +196,28 @@ def shed_wake(ad: Deck) -> bool:
     return False
 
 
+def induction(ad: Deck) -> tuple[str, str]:
+    """How the AeroDyn file has the wake's induction answer the blades' motion, and why:
+    ``equilibrium`` where its BEMT has no dynamic wake (Wake_Mod 1 with DBEMT_Mod 0; older
+    files: WakeMod 1 without FrozenWake), ``frozen`` where it asks for a dynamic wake
+    (DBEMT_Mod 1–3, WakeMod 2 — its time constant, seconds, holds the induction still over
+    a flap mode's period) or a frozen wake (DBEMT_Mod −1, FrozenWake True). AeroDyn input
+    documentation (Wake_Mod, DBEMT_Mod; FrozenWake in AeroDyn 15 before OpenFAST 3.5)."""
+    if "Wake_Mod" in ad.values:  # OpenFAST 3.5 and later
+        wake = ad.whole("Wake_Mod", low=0)
+        dbemt = int(ad.num("DBEMT_Mod", default=0)) if "DBEMT_Mod" in ad.values else 0
+        if wake == 1 and dbemt == 0:
+            return "equilibrium", "Wake_Mod 1 and DBEMT_Mod 0 (BEMT without dynamic wake)"
+        return "frozen", f"Wake_Mod {wake}, DBEMT_Mod {dbemt} (a dynamic or frozen wake)"
+    if "WakeMod" in ad.values:  # AeroDyn 15 before OpenFAST 3.5
+        wake = ad.whole("WakeMod", low=0)
+        frozen = ad.flag("FrozenWake") if "FrozenWake" in ad.values else False
+        if wake == 1 and not frozen:
+            return "equilibrium", "WakeMod 1 without FrozenWake (BEMT without dynamic wake)"
+        return "frozen", f"WakeMod {wake}" + (", FrozenWake" if frozen else "")
+    return "frozen", "no wake model named"
+
+
 def aerodynamics(
     fst: Deck | None, hub_radius: float, control: dict[str, Any]
 ) -> tuple[dict[str, Any], list[str], list[str], list[str]] | None:
@@ -230,6 +252,7 @@ def aerodynamics(
         "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
         "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
         "shed_wake": shed_wake(ad),
+        "induction": induction(ad)[0],
         "stations": stations,
         "airfoils": airfoils,
         "control": dict(control),

@@ -161,6 +161,15 @@ class Aerodynamics(_Strict):
         "damping.",
     )
 
+    induction: Literal["frozen", "equilibrium"] = Field(
+        "frozen",
+        description="How the wake's induction answers a blade's vibration: 'frozen', not at "
+        "all (the induction lags the motion by the wake's time constant, many periods of a "
+        "flap mode: dynamic inflow, OpenFAST's DBEMT or frozen-wake linearisation); "
+        "'equilibrium', at once — each section's momentum balance re-solved with its "
+        "motion (AeroDyn's BEMT without dynamic wake, DBEMT_Mod 0): less flap damping.",
+    )
+
     @model_validator(mode="after")
     def _named(self) -> "Aerodynamics":
         missing = sorted(set(self.stations.airfoil) - set(self.airfoils))
