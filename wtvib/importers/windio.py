@@ -735,20 +735,17 @@ class _Reader:
         shape = self.drivetrain.get("outer_shape", self.drivetrain)
         hub_x = -float(shape.get("overhang", 0.0))
         hub_z = float(shape.get("distance_tt_hub", 0.0))
-        if head_mass is not None:
-            return (
-                {"mass_kg": head_mass, "cm_downwind_m": hub_x / 2, "cm_above_top_m": hub_z / 2},
-                f"Tower head mass {head_mass:,.0f} kg given on the command line (CM taken "
-                "half-way to the hub; inertias neglected).",
-            )
-        parts = self._head_parts(hub_x, hub_z)
+        rotor: list[Part] = []
         j_polar = 0.0
         if blade_mass and structure:
             j_polar = _rotor_polar(structure, blades)
-            parts.append(
+            rotor.append(
                 Part(f"{blades} blades", blades * blade_mass, hub_x, hub_z,
-                      0.5 * j_polar, j_polar, 0.5 * j_polar)
+                     0.5 * j_polar, j_polar, 0.5 * j_polar)
             )  # fmt: skip
+        if head_mass is not None:
+            return self._given_head(head_mass, rotor, hub_x, hub_z, j_polar)
+        parts = self._head_parts(hub_x, hub_z) + rotor
         self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
         head = assembled(parts).as_head()
         text = (
@@ -760,6 +757,37 @@ class _Reader:
             "shaft tilt neglected)."
         )
         return head, text
+
+    def _given_head(
+        self, head_mass: float, rotor: "list[Part]", hub_x: float, hub_z: float, j_polar: float
+    ) -> tuple[dict[str, float], str]:
+        """The command line's tower-head mass (``--head-mass``): where the file gives the
+        blades, they stand at the hub with their own inertia (the rotor's is most of the
+        head's: dropping it puts the tower's modes 10–30 % high), the rest of the mass half-way
+        to the hub as a point; without blades, all of it there, inertias neglected."""
+        blades = rotor[0].mass if rotor else 0.0
+        if blades >= head_mass:
+            raise SpecError(
+                f"--head-mass {head_mass:,.0f} kg is not more than the blades' "
+                f"{blades:,.0f} kg the file gives: the tower head is the rotor and the "
+                "nacelle together",
+                source=str(self.path),
+            )
+        rest = Part("nacelle and hub (the rest)", head_mass - blades, hub_x / 2, hub_z / 2)
+        if not rotor:
+            return (
+                {"mass_kg": head_mass, "cm_downwind_m": hub_x / 2, "cm_above_top_m": hub_z / 2},
+                f"Tower head mass {head_mass:,.0f} kg given on the command line (CM taken "
+                "half-way to the hub; inertias neglected: the file gives no blades).",
+            )
+        self.apex = {"apex_downwind_m": hub_x, "apex_above_top_m": hub_z}
+        head = assembled([*rotor, rest]).as_head()
+        return head, (
+            f"Tower head mass {head_mass:,.0f} kg given on the command line: the file's "
+            f"{rotor[0].name} ({blades:,.0f} kg, rotor polar inertia {j_polar:,.0f} kg·m²) at the "
+            f"hub, x = {hub_x:.2f} m, z = {hub_z:.2f} m, the rest ({head_mass - blades:,.0f} kg: "
+            "nacelle and hub) half-way to it as a point mass — their own inertias neglected."
+        )
 
     def _head_parts(self, hub_x: float, hub_z: float) -> "list[Part]":
         """The hub (at the hub centre), the nacelle (its inertia given about the tower top:
