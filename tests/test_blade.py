@@ -61,3 +61,61 @@ def test_the_pitch_drive_softens_the_blade_s_torsion_by_the_closed_form():
     bl = brentq(lambda z: z * np.tan(z) - kp * length / gj, 1e-9, np.pi / 2 - 1e-9)
     assert sprung == pytest.approx(bl / length * c / (2 * np.pi), rel=1e-3)
     assert sprung < clamped
+
+
+def _uniform_beam(root: str) -> spec.BladeStructure:
+    """The r-test Ideal_Beam: 100 m, EI 1.03713e12 N·m² both ways, 9517.14 kg/m."""
+    return spec.BladeStructure(
+        span_m=[0.0, 100.0],
+        mass_per_length_kg_m=[9517.14, 9517.14],
+        ei_flap_nm2=[1.03713e12, 1.03713e12],
+        ei_edge_nm2=[1.03713e12, 1.03713e12],
+        root=root,  # type: ignore[arg-type]
+    )
+
+
+@pytest.mark.parametrize(
+    ("root", "betas"),
+    [
+        ("clamped", (1.875104, 4.694091)),  # the cantilever: cos βL cosh βL = −1
+        ("free", (4.730041, 7.853205)),  # the free-free beam: cos βL cosh βL = 1
+    ],
+)
+def test_a_uniform_beam_clamped_or_free_at_its_root_has_the_closed_form(root, betas):
+    """f = (βL)²/(2πL²)·√(EI/m) for the first two bending modes in each plane (Euler–Bernoulli,
+    e.g. Blevins, Formulas for Natural Frequency, Table 8-1): the free beam's four rigid-body
+    modes are left out, so its first computed mode is its first bending. 0.5842/3.6607 Hz
+    clamped, 3.7171/10.2465 free (r-test's Ideal_Beam frequencies.txt, 'Analytical')."""
+    s = _uniform_beam(root)
+    names, freqs, _, _ = blade.rotating_modes(s, np.array([0.0]), count=4)
+    scale = math.sqrt(1.03713e12 / 9517.14) / (2 * math.pi * 100.0**2)
+    got = dict(zip(names, freqs[0], strict=True))
+    for k, beta in enumerate(betas, start=1):
+        for plane in ("flap", "edge"):
+            assert got[f"{plane}{k}"] == pytest.approx(beta**2 * scale, rel=1e-4)
+
+
+def test_a_free_beam_s_torsion_leaves_its_rigid_turn_out():
+    """A free beam's first torsion is the free-free one, π·√(GJ/(ρJ))/(2πL) — twice the
+    clamped-free beam's (a uniform shaft's closed forms)."""
+    s = _uniform_beam("free").model_copy(
+        update={"gj_nm2": [7.98098e12] * 2, "torsional_inertia_kgm": [8.39584e4] * 2}
+    )
+    clamped = s.model_copy(update={"root": "clamped"})
+    c = math.sqrt(7.98098e12 / 8.39584e4)
+    assert blade.torsion_frequency(s) == pytest.approx(c / 200.0, rel=1e-3)
+    assert blade.torsion_frequency(clamped) == pytest.approx(c / 400.0, rel=1e-3)
+
+
+def test_a_free_beam_is_a_standstill_model(write_spec):
+    """Nothing holds a free beam against the centrifugal force: its modes carry no curve over
+    the rotor speed, however fast the spec's rotor turns, and the audit says so."""
+    text = spec_text(speed="fixed_rpm: 12") + (
+        "blade:\n  structure:\n    span_m: [0, 100]\n    mass_per_length_kg_m: [9517.14, "
+        "9517.14]\n    ei_flap_nm2: [1.03713e12, 1.03713e12]\n    ei_edge_nm2: [1.03713e12, "
+        "1.03713e12]\n    root: free\n"
+    )
+    report = audit.run(spec.load(write_spec(text)))
+    modes = [m for m in report.modes if m.id.startswith("blade.")]
+    assert modes and all(m.curve is None for m in modes)
+    assert any("a free twisted beam" in a for a in report.assumptions)

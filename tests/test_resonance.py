@@ -365,3 +365,28 @@ def test_marks_of_one_line_at_one_place_are_one_mark():
         dataclasses.replace(ss, line="3P"),
     ):
         assert len(_one_per_place([fa, apart])) == 2
+
+
+def _standstill_mode(zeta: float | None, source: str) -> Mode:
+    return Mode("blade.flap1", "blade", "x", 0.7, zeta, damping_source=source)
+
+
+@pytest.mark.parametrize(
+    ("modes", "status"),
+    [
+        # the damping the input gives: a pass (ζ = 0, an undamped model, is no instability)
+        ([_standstill_mode(0.0, "blade.damping_ratio (given)")], "pass"),
+        # all of it wtvib's assumption: the verdict rests on nothing the input says
+        ([_standstill_mode(0.005, "assumed (no value given)")], "warn"),
+        # a negative damping ratio (another tool's, or a model's) is an instability
+        ([_standstill_mode(-0.01, "given"), _standstill_mode(0.02, "given")], "fail"),
+        ([], "warn"),
+    ],
+)
+def test_a_standstill_audit_judges_the_modes_damping(modes, status):
+    """``system.stability`` of a parked audit of wtvib's own models (resonance.
+    standstill_stability): what such an audit rests on is the modes' damping."""
+    from wtvib.resonance import standstill_stability
+
+    check = standstill_stability(modes)
+    assert (check.id, check.status) == ("system.stability", status), check.message

@@ -83,7 +83,8 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sinβ·cosβ. Rotation adds the
     geometric stiffness of the centrifugal tension N(r) = Ω²∫_r^R m(s)·(r_hub + s) ds to both
     planes and the in-plane softening −Ω²·M_v (the centrifugal force has a component along
-    an in-plane displacement). The root is clamped.
+    an in-plane displacement). The root is clamped (its four dofs removed), or free
+    (``s.root``: every dof kept; the model then has four rigid-body modes at 0 Hz).
 
     References
     ----------
@@ -120,7 +121,8 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     blocks[2, :, 4:, 4:] = mass
     blocks[3, :, :4, :4] = mass
     blocks[3, :, 4:, 4:] = mass
-    k0, g, m_v, mm = (beam.assemble(blk, both, size)[4:, 4:] for blk in blocks)
+    kept = 0 if s.root == "free" else 4
+    k0, g, m_v, mm = (beam.assemble(blk, both, size)[kept:, kept:] for blk in blocks)
     if s.tip_mass_kg:  # a point mass on the tip node's deflections (w, v): dofs −4 and −2
         for dof in (-4, -2):
             mm[dof, dof] += s.tip_mass_kg
@@ -166,10 +168,19 @@ def fe_model(spec: Spec) -> BladeFE:
     return out
 
 
+#: A free blade's rigid-body modes in bending: a translation and a rotation in each plane.
+FREE_RIGID_MODES = 4
+
+
 def _fe_model(s: BladeStructure, elements: int, modes: int = STANDSTILL_MODES) -> BladeFE:
     nodes = beam.mesh(np.asarray(s.span_m, dtype=float), elements)
     k0, geo, m_v, m = blade_parts(s, nodes)
-    return BladeFE(nodes, k0, geo, m_v, m, modal.solve(k0, m, min(modes, len(k0))))
+    if s.root == "clamped":
+        return BladeFE(nodes, k0, geo, m_v, m, modal.solve(k0, m, min(modes, len(k0))))
+    # a free beam: its rigid-body motion left out, the elastic modes M-orthogonal to it
+    found = modal.solve(k0, m, min(modes + FREE_RIGID_MODES, len(k0)))
+    elastic = modal.Modes(found.frequency_hz[FREE_RIGID_MODES:], found.shapes[:, FREE_RIGID_MODES:])
+    return BladeFE(nodes, k0, geo, m_v, m, elastic)
 
 
 def rotating_modes(
@@ -186,7 +197,8 @@ def rotating_modes(
     node positions and the standstill shapes.
     """
     nodes = beam.mesh(np.asarray(s.span_m, dtype=float), elements)
-    need = min(RITZ_BLADE * count, 4 * len(nodes) - 4)  # the clamped root's 4 dofs out
+    need = min(RITZ_BLADE * count, 4 * len(nodes) - 4)  # a clamped root's (or the free
+    # beam's rigid) 4 dofs out
     if fe is None or not np.array_equal(fe.nodes, nodes) or fe.standstill.shapes.shape[1] < need:
         fe = _fe_model(s, elements, need)
     k0, geo, m_v, m = fe.k0, fe.geo, fe.m_v, fe.m
@@ -239,6 +251,8 @@ def torsion_frequency(s: BladeStructure, elements: int = DEFAULT_ELEMENTS) -> fl
         beam.interpolate(x, span, np.asarray(s.gj_nm2)),
         beam.interpolate(x, span, np.asarray(s.torsional_inertia_kgm)),
     )
+    if s.root == "free":  # the first mode turns the beam whole
+        return float(modal.solve(k, m, 2).frequency_hz[1])
     if s.pitch_drive_nm_rad is None:
         return float(modal.solve(k[1:, 1:], m[1:, 1:], 1).frequency_hz[0])
     k[0, 0] += s.pitch_drive_nm_rad
@@ -250,21 +264,25 @@ def structural_modes(spec: Spec) -> list[Mode]:
     s = spec.blade.structure
     assert s is not None
     top = float(rpm_to_rad_s(spec.rotor.speed.overspeed)) * 1.1
-    speeds = np.linspace(0.0, top, SPEED_SAMPLES)
+    # a free beam does not turn (nothing holds it against the centrifugal force)
+    speeds = np.linspace(0.0, top if s.root == "clamped" else 0.0, SPEED_SAMPLES)
     names, freqs, nodes, shapes = rotating_modes(s, speeds, fe=fe_model(spec))
     out = []
     for j, name in enumerate(names):
         if name not in ("flap1", "flap2", "edge1", "edge2"):
             continue
         plane = 0 if name.startswith("flap") else 2
-        defl = np.concatenate([[0.0], shapes[plane::4, j]])
+        root = [] if s.root == "free" else [0.0]
+        defl = np.concatenate([root, shapes[plane::4, j]])
         peak = defl[np.argmax(np.abs(defl))] or 1.0
         out.append(
             _computed(
                 spec,
                 name,
                 float(freqs[0, j]),
-                Sampled(tuple(speeds.tolist()), tuple(freqs[:, j].tolist())),
+                Sampled(tuple(speeds.tolist()), tuple(freqs[:, j].tolist()))
+                if s.root == "clamped"
+                else None,
                 Shape(tuple(nodes.tolist()), tuple((defl / peak).tolist())),
             )
         )
@@ -321,6 +339,14 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         if long
         else ""
     )
+    if s.root == "free":
+        return Analysis(
+            assumptions=(
+                "Blade modes computed: a free twisted beam, flap–edge coupled, at standstill "
+                f"(nothing holds a free beam against the centrifugal force){mesh}; its "
+                f"{FREE_RIGID_MODES} rigid-body modes in bending (0 Hz) left out.",
+            )
+        )
     return Analysis(
         assumptions=(
             "Blade modes computed: cantilevered twisted beam, flap–edge coupled, with "

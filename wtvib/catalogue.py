@@ -14,6 +14,8 @@ import re
 from dataclasses import asdict, dataclass
 from pathlib import Path
 
+from .words import counted
+
 #: The catalogue folder, inside the installed package.
 FOLDER = Path(__file__).resolve().parent / "turbines"
 INDEX = FOLDER / "index.json"
@@ -76,7 +78,7 @@ def index() -> list[Entry]:
         report = audit.run(turbine)
         t, r = turbine.turbine, turbine.rotor
         diameter = f"{t.rotor_diameter_m:g} m, " if t.rotor_diameter_m is not None else ""
-        rotor = f"{diameter}{r.blades} blades, {r.orientation}"
+        rotor = f"{diameter}{counted(r.blades, 'blade')}, {r.orientation}"
         out.append(Entry(path.stem, t.name, rotor, report.tower_class, report.verdict, story(path)))
     return out
 

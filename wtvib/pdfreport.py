@@ -329,7 +329,7 @@ def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
     ident = [
         ["source file", t["source_file"]],
         ["input SHA-256", (r.get("produced_by", {}).get("input", {}).get("sha256") or "—")],
-        ["rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub"],
+        ["rotor", f"{words.counted(t['blades'], 'blade')}, {t['orientation']}, {t['hub']} hub"],
         [
             "operation",
             words.operation(op)

@@ -91,7 +91,9 @@ def _summary(data: dict, shed_wake: bool = True) -> Panel:  # type: ignore[type-
     grid.add_column(overflow="fold")  # a long path wraps, never ends in "…"
     grid.add_row("Turbine", _t(t["name"]))
     grid.add_row("File", _t(t["source_file"]))
-    grid.add_row("Rotor", f"{t['blades']} blades, {t['orientation']}, {t['hub']} hub")
+    grid.add_row(
+        "Rotor", f"{words.counted(t['blades'], 'blade')}, {t['orientation']}, {t['hub']} hub"
+    )
     # numbers for people: four significant digits (the JSON keeps them all)
     grid.add_row("Speed", _t(words.operation(op)))
     grid.add_row("Tower class", str(data["tower_class"] or "—"))

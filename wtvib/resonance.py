@@ -968,3 +968,44 @@ def standstill(subject: str, stability: bool = False) -> Check:
         ),
         rule=Rule("no rotor harmonic at standstill", "kP = k·Ω/2π is 0 Hz at Ω = 0"),
     )
+
+
+def standstill_stability(modes: Sequence[Mode]) -> Check:
+    """``system.stability`` of a standstill audit of wtvib's own models: the judged modes'
+    damping ratios as the audit judges them. What a parked turbine's audit rests on is
+    that damping; where all of it is wtvib's assumption (no value in the input), the
+    verdict rests on nothing the input says: a warning, not a pass. A negative ratio (an
+    unstable structure) fails; an undamped one (ζ = 0, as a model may be) passes as no
+    negative damping."""
+    judged = [m for m in modes if m.judged and m.damping_ratio is not None]
+    rule = Rule(
+        "negative damping is an instability",
+        "the modes' damping ratios at standstill; an oscillation with ζ < 0 grows",
+    )
+    if not judged:
+        return Check("system.stability", "system", "warn", "no mode to judge at standstill", rule)
+    lowest = min(judged, key=lambda m: m.damping_ratio or 0.0)
+    zeta = lowest.damping_ratio or 0.0
+    assumed = [m.id for m in judged if (m.damping_source or "").startswith("assumed")]
+    numbers = {"lowest": {"mode": lowest.id, "damping_ratio": zeta}, "assumed": assumed}
+    lowest_said = f"lowest ζ = {zeta:.4f}, {lowest.id}"
+    status: Status
+    if zeta < -NEGATIVE:
+        status = "fail"
+        message = f"{lowest.id} negatively damped at standstill (ζ = {zeta:.4f})"
+    elif len(assumed) == len(judged):
+        status = "warn"
+        message = (
+            f"every mode's damping at standstill is wtvib's assumption ({lowest_said}): the "
+            "stability a standstill audit judges rests on no value of the input — give the "
+            "damping"
+        )
+    else:
+        status = "pass"
+        message = (
+            ("every mode positively damped" if zeta > 0 else "no mode negatively damped")
+            + f" at standstill ({lowest_said}"
+            + (f"; assumed for {', '.join(assumed)}" if assumed else "")
+            + ")"
+        )
+    return Check("system.stability", "system", status, message, rule, numbers)

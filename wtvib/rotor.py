@@ -291,7 +291,8 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
             "rotor.floquet",
             "rotor",
             "info",
-            "two-bladed rotor not analysed: needs " + ", ".join(missing),
+            f"{_BLADED.get(spec.rotor.blades, 'two')}-bladed rotor not analysed: needs "
+            + ", ".join(missing),
             rule,
         ), None
     speed = spec.rotor.speed
@@ -375,6 +376,14 @@ class RotorResults:
     """What the Floquet figure draws: the stability map over rotor speed."""
 
     map: StabilityMap
+
+
+#: the rotor's blade count in words, where a message names it
+_BLADED = {1: "one", 2: "two"}
+
+
+#: the rotor's blade count in words, where a message names it
+_BLADED = {1: "one", 2: "two"}
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:

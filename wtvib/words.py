@@ -26,3 +26,8 @@ def signed_percent(value: float, digits: int = 1) -> str:
     if abs(value) < 0.5 * 10.0 ** (-digits - 2):
         return "0 %"
     return f"{100 * value:+.{digits}f} %".replace("-", "−")
+
+
+def counted(n: int, noun: str) -> str:
+    """``n`` and the noun, plural where n is not 1: ``counted(1, "blade")`` → '1 blade'."""
+    return f"{n} {noun}{'' if n == 1 else 's'}"

@@ -24,7 +24,8 @@ MAX_WIND_M_S = 100.0
 
 
 class BladeStructure(_Strict):
-    """A blade as a table of distributed properties along its span (cantilevered at the root)."""
+    """A blade as a table of distributed properties along its span (cantilevered at the
+    root, or free there: a beam on nothing, as OpenFAST's BeamDyn test beams stand)."""
 
     hub_radius_m: float = Field(0.0, ge=0, description="Rotor axis to blade root. [m]")
     span_m: list[float] = Field(description="Distance from the blade root. [m]")
@@ -43,6 +44,11 @@ class BladeStructure(_Strict):
     )
     tip_mass_kg: float = Field(
         0.0, ge=0, description="Point mass at the tip (a tip brake: ElastoDyn TipMass). [kg]"
+    )
+    root: Literal["clamped", "free"] = Field(
+        "clamped",
+        description="The blade's root: clamped to the hub (a blade), or free (a beam on "
+        "nothing — its rigid-body motion left out, a standstill model).",
     )
     pitch_drive_nm_rad: Positive | None = Field(
         None,
