@@ -1,10 +1,12 @@
 """ElastoDyn decks at unit level: values and tables, the operating range from the deck set."""
 
+import json
 import math
 from pathlib import Path
 
 import pytest
 
+from wtvib import importers
 from wtvib.importers import elastodyn, servodyn
 
 DECK = """------- ELASTODYN -------
@@ -148,3 +150,34 @@ def test_rosco_tower_resonance_avoidance_is_a_quick_pass_band(tmp_path):
     (low, high), *_ = found.speed["quick_pass_rpm"]
     assert (low, high) == (pytest.approx(0.28 * 30 / math.pi), pytest.approx(0.36 * 30 / math.pi))
     assert "passed quickly" in found.note
+
+
+@pytest.mark.parametrize(
+    ("case", "root"),
+    [("Ideal_Beam_Fixed_Free_Linear", "clamped"), ("Ideal_Beam_Free_Free_Linear", "free")],
+)
+def test_a_deck_set_whose_structure_is_a_beamdyn_beam_alone_is_audited(tmp_path, case, root):
+    """r-test's Ideal_Beam decks: every ElastoDyn DOF around the blade off and no hub or
+    nacelle mass — the structure is BeamDyn's beam, clamped, or free where ElastoDyn's
+    platform is free in all six motions with 1 kg under it. Audited at standstill (RotSpeed
+    0), its undamped beam (damp_type 0) judged: not refused ("every ElastoDyn DOF is off",
+    "HubIner is 0" before)."""
+    import tarfile
+
+    from typer.testing import CliRunner
+
+    from wtvib.cli import app
+
+    with tarfile.open(Path(__file__).parent / "data/openfast_decks/rtest_special.tar.gz") as tar:
+        tar.extractall(tmp_path, filter="data")
+    fst = tmp_path / "glue-codes/openfast" / case / f"{case}.fst"
+    s = importers.load(fst)
+    assert s.blade.structure is not None and s.blade.structure.root == root
+    assert s.rotor.speed.parked and s.rotor.blades == 1 and s.blade.damping_ratio == 0.0
+    result = CliRunner().invoke(app, ["check", str(fst), "--no-plots"])
+    assert result.exit_code == 0, result.output
+    assert "1 blade," in result.stdout
+    result = CliRunner().invoke(app, ["check", str(fst), "--no-plots", "--format", "json"])
+    checks = {c["id"]: c for c in json.loads(result.stdout)["checks"]}
+    assert checks["system.stability"]["status"] == "pass"
+    assert "no mode negatively damped" in checks["system.stability"]["message"]

@@ -167,3 +167,19 @@ def test_the_rotors_polar_inertia_is_given_or_the_chains_blades_and_hub():
         update={"drivetrain": two.drivetrain.model_copy(update={"chain": hub_first})}
     )
     assert yaw.rotor_polar_inertia(other) is None
+
+
+def test_the_yaw_drives_dashpot_damps_the_yaw_mode(shared):
+    """ServoDyn's YawDamp (the NREL 5-MW's 1.916e7 N·m·s/rad) is read and damps the yaw
+    mode by ζ = c/(2·J·ω) in the one-mass model (J the head's yaw inertia, ω its frequency)
+    — and in the coupled model, where OpenFAST's linearisation of r-test's
+    5MW_Land_Linear_Aero has ζ 0.046 (test_rtest_models.py holds it within 20 %)."""
+    from wtvib import importers
+
+    s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
+    assert s.yaw.drive_damping_nms_rad == pytest.approx(1.916e7, rel=1e-3)
+    m = {mode.id: mode for mode in yaw.modes(s)}["yaw.1"]
+    inertia = yaw.model(s).inertia
+    want = s.yaw.drive_damping_nms_rad / (2 * inertia * 2 * math.pi * m.frequency_hz)
+    assert m.damping_ratio == pytest.approx(want, rel=1e-12)
+    assert 0.02 < want < 0.08

@@ -64,7 +64,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, blade, closeness, drivetrain, imported, modal, tower, yaw
+from . import beam, blade, closeness, drivetrain, imported, mass_damper, modal, tower, yaw
 from .analysis import Analysis, Context, Damping, section_damping
 from .errors import SpecError
 from .kinematics import (
@@ -84,6 +84,7 @@ from .kinematics import (
 )
 from .multiblade import MODES_KEPT, Layout, Sweep, SystemModes, parked, sweep
 from .periodic import stability_check
+from .resonance import standstill_stability
 from .results import Check, Mode, Rule, Sampled, Whirl, ordinal
 from .rigid import Rigid, nacelle, rotor_points
 from .spec import BladeStructure, Spec
@@ -419,17 +420,22 @@ def _build(spec: Spec, condition: str) -> Model:
         m_fixed[sl, sl] = part
     if lay.yaw is not None:
         assert k_yaw is not None
-        k_v[lay.yaw, lay.yaw] += k_yaw
-        if n_tor:
-            top = lay.torsion.stop - 1
-            k_v[top, top] += k_yaw
-            k_v[top, lay.yaw] -= k_yaw
-            k_v[lay.yaw, top] -= k_yaw
+        # the yaw drive: its spring and its dashpot (ServoDyn's YawDamp) between the nacelle
+        # and the tower top's torsion (the ground, where torsion is not modelled)
+        c_yaw = spec.yaw.drive_damping_nms_rad or 0.0
+        for mat, value in ((k_v, k_yaw), (d_v, c_yaw)):
+            mat[lay.yaw, lay.yaw] += value
+            if n_tor:
+                top = lay.torsion.stop - 1
+                mat[top, top] += value
+                mat[top, lay.yaw] -= value
+                mat[lay.yaw, top] -= value
     ch, n_chain = lay.chain, chain.m.shape[0]
     if n_chain:
         k_v[ch, ch] = chain.k
         d_v[ch, ch] = chain.d
         m_fixed[ch, ch] = chain.m
+    _add_dampers(spec, lay, k_v, d_v, m_fixed, [part.shape[0] for part in parts_k[:2]])
     kb = len(rotor.names)
     for j in range(spec.rotor.blades):
         blk = slice(lay.blades.start + j * kb, lay.blades.start + (j + 1) * kb)
@@ -464,6 +470,31 @@ def _build(spec: Spec, condition: str) -> Model:
     )
     model._scatter(m_fixed, rigid, 0, rigid_only=True)
     return model
+
+
+def _add_dampers(
+    spec: Spec, lay: Layout, k: Array, d: Array, m: Array, sizes: Sequence[int]
+) -> None:
+    """The tuned mass dampers (:mod:`wtvib.mass_damper`) on the tower's bending
+    coordinates: each its own coordinate (``lay.dampers``), on its spring and dashpot to
+    its mounting point (nothing moves on a rigid tower: the damper on a fixed mount)."""
+    dampers = spec.tower.dampers
+    if not dampers:
+        return
+    nodes = tower.discretise(spec.tower).nodes
+    for j, damper in enumerate(dampers):
+        plane = lay.fa if damper.direction == "fore-aft" else lay.ss
+        size = sizes[0] if damper.direction == "fore-aft" else sizes[1]
+        a = np.zeros(lay.size)
+        if size:
+            a[plane] = mass_damper.attachment(nodes, size, damper)
+        x = lay.dampers.start + j
+        m[x, x] += damper.mass_kg
+        for mat, value in ((k, damper.stiffness_n_m), (d, damper.damping_ns_m)):
+            mat += value * np.outer(a, a)
+            mat[:, x] -= value * a
+            mat[x, :] -= value * a
+            mat[x, x] += value
 
 
 def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]]:
@@ -577,17 +608,20 @@ def _layout(
     rotor: BladeModes,
 ) -> Layout:
     """The global degrees of freedom: the tower's fore-aft, side-side and torsion, the yaw
-    drive's, the chain's, then each blade's modes; each blade's local coordinates mapped
-    onto them (the tower top's and the shaft's motion, its own modes)."""
+    drive's, the chain's, the tuned mass dampers', then each blade's modes; each blade's
+    local coordinates mapped onto them (the tower top's and the shaft's motion, its own
+    modes)."""
     n_fa, n_ss = bending
     kb = len(rotor.names)
     nb = spec.rotor.blades
-    offsets = np.cumsum([0, n_fa, n_ss, n_tor, 1 if k_yaw else 0, n_chain, nb * kb])
+    n_dampers = len(spec.tower.dampers)
+    offsets = np.cumsum([0, n_fa, n_ss, n_tor, 1 if k_yaw else 0, n_chain, n_dampers, nb * kb])
     size = int(offsets[-1])
     fa, ss, tor = (slice(int(offsets[i]), int(offsets[i + 1])) for i in range(3))
     yaw_dof = int(offsets[3]) if k_yaw else None
     ch = slice(int(offsets[4]), int(offsets[5]))
-    bl = slice(int(offsets[5]), int(offsets[6]))
+    dampers = slice(int(offsets[5]), int(offsets[6]))
+    bl = slice(int(offsets[6]), int(offsets[7]))
     theta_z = yaw_dof if yaw_dof is not None else (tor.stop - 1 if n_tor else -1)
     local = np.full((nb, _RIGID + kb), -1, dtype=np.intp)
     sign = np.ones((nb, _RIGID + kb))
@@ -598,7 +632,7 @@ def _layout(
         local[j, TZ] = theta_z
         local[j, PHI] = ch.start if n_chain else -1
         local[j, _RIGID:] = np.arange(bl.start + j * kb, bl.start + (j + 1) * kb)
-    return Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign)
+    return Layout(size, fa, ss, tor, yaw_dof, ch, bl, local, sign, dampers)
 
 
 def _add_pair(m: Array, i: int, j: int, value: float) -> None:
@@ -777,6 +811,9 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     pairs, chained = counterparts(spec, [sw.names[j] for j in order], cond)
     weighted = strain_weighted(spec, model, sw.path.shapes[0], sw.frequency_hz[0])
     lower = default_damping(spec)
+    said = "the drive train's dampers" + (
+        " and the tuned mass dampers" if spec.tower.dampers else ""
+    )
     out = []
     for j, name in enumerate(sw.names):
         if name.startswith(PLATFORM):  # judged from the isolated model, at its own frequency
@@ -787,9 +824,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
         # parts' own material damping: a tower mode that moves the gearbox a little must
         # not lose its structural damping to the dampers' 0.0002 (AOC 15/50: side-side
         # judged at ζ = 0.0011, DAF 450)
-        ratio, source = material.with_dampers(
-            float(sw.damping_ratio[j]), DAMPERS_FLOOR, "the drive train's dampers"
-        )
+        ratio, source = material.with_dampers(float(sw.damping_ratio[j]), DAMPERS_FLOOR, said)
         if ratio is None and material is not lower:  # no dampers: the weighted material
             ratio, source = material.ratio, material.source
         labels = sw.whirl[j]
@@ -858,6 +893,8 @@ def isolated_id(name: str, condition: str) -> str:
     base = name.split("_")[0] if name.startswith(("tower", "drivetrain", "yaw")) else name
     if base.startswith("tower."):
         return base
+    if base.startswith("damper"):
+        return f"tower.{base}"
     if base.startswith("drivetrain"):
         return f"drivetrain.{condition}.{base.removeprefix('drivetrain')}"
     if base.startswith("yaw"):
@@ -995,7 +1032,8 @@ def strain_weighted(
     blade_d = section_damping(spec.blade, "blade")
     k = model.multiblade[3]
     energy = np.abs(np.real(np.conj(shapes) * (k @ shapes)))
-    parts = {"tower": np.zeros(shapes.shape[1]), "blade": np.zeros(shapes.shape[1])}
+    # a tuned mass damper's spring has no material damping (its dashpot is in the model)
+    parts = {kind: np.zeros(shapes.shape[1]) for kind in ("tower", "blade", "damper")}
     by_group = {}
     for group, index in model.groups.items():
         kind = group.split(".")[0]
@@ -1010,19 +1048,21 @@ def strain_weighted(
         blade_z = _stiffness_ratios(spec.blade.stiffness_damping_s, by_group, "blade", frequency_hz)
     total = energy.sum(axis=0)
     lower = default_damping(spec)
-    if tower_d.ratio == blade_d.ratio and alone is None and blade_z is None:
+    same = tower_d.ratio == blade_d.ratio and alone is None and blade_z is None
+    if same and not spec.tower.dampers:
         return [lower] * shapes.shape[1]
     assumed = tower_d.assumed or blade_d.assumed
     out = []
     for j in range(shapes.shape[1]):
-        e_t, e_b = parts["tower"][j], parts["blade"][j]
-        if e_t + e_b < 0.5 * total[j] or total[j] <= 0:
+        e_t, e_b, e_d = parts["tower"][j], parts["blade"][j], parts["damper"][j]
+        strained = e_t + e_b + e_d
+        if strained < 0.5 * total[j] or total[j] <= 0:
             out.append(lower)
             continue
         z_t = tower_d.ratio if alone is None else float(alone[j])
         z_b = blade_d.ratio if blade_z is None else float(blade_z[j])
-        zeta = (z_t * e_t + z_b * e_b) / (e_t + e_b)
-        share = e_t / (e_t + e_b)
+        zeta = (z_t * e_t + z_b * e_b) / strained
+        share = e_t / max(e_t + e_b, 1e-300)
         how = ""
         if spec.tower.stiffness_damping_s is not None or blade_z is not None:
             how = f", tower {z_t:.3%}, blades {z_b:.3%}: stiffness-proportional, π·β·f"
@@ -1031,6 +1071,10 @@ def strain_weighted(
                 f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own frequencies without "
                 "the head, × f/f_alone"
             )
+        if e_d > 0.5 * strained:
+            out.append(Damping(zeta, "the tuned mass damper's dashpot (no material damping)",
+                               False))  # fmt: skip
+            continue
         out.append(
             Damping(
                 zeta,
@@ -1132,13 +1176,22 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     )
     if spec.results is not None:
         return imported.stability(spec, ctx)
-    found = (check(spec, list(ctx.modes)), periodic, closeness.check(ctx.modes, ctx.op))
+    found = (
+        check(spec, list(ctx.modes)),
+        periodic,
+        closeness.check(ctx.modes, ctx.op),
+        # parked: no rotor harmonic to judge; the modes' damping is what is judged
+        standstill_stability(ctx.modes) if spec.rotor.speed.parked else None,
+    )
     aerodynamic = spec.aerodynamics is not None and spec.rotor.blades >= 3
+    dampers = "the drive train's dampers" + (
+        f", {len(spec.tower.dampers)} tuned mass damper(s)" if spec.tower.dampers else ""
+    )
     damping = (
-        "the drive train's dampers and the aerodynamics at the operating points (each "
-        "mode's material damping added)"
+        f"{dampers} and the aerodynamics at the operating points (each mode's material "
+        "damping added)"
         if aerodynamic
-        else "the drive train's dampers only (each mode's material damping added)"
+        else f"{dampers} only (each mode's material damping added)"
     )
     statements = (
         (

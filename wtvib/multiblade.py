@@ -13,8 +13,9 @@ analysis", AIAA 2008-1300; M. H. Hansen, "Improved modal dynamics of wind turbin
 stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 """
 
+import re
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Protocol
 
 import numpy as np
@@ -45,6 +46,8 @@ class Layout:
     blades: slice
     local: Index
     sign: Array
+    #: the tuned mass dampers' own coordinates (fixed frame), between the chain and the blades
+    dampers: slice = field(default_factory=lambda: slice(0, 0))
 
 
 class RotorModes(Protocol):
@@ -100,7 +103,12 @@ MODES_KEPT = 16
 CONTENT_SHARE = 0.2
 #: At most this many modes are kept by content.
 CONTENT_EXTRA = 4
-_CONTENT = {"drivetrain": "drive-train torsion", "tower.tor": "tower torsion", "yaw": "yaw"}
+_CONTENT = {
+    "drivetrain": "drive-train torsion",
+    "tower.tor": "tower torsion",
+    "yaw": "yaw",
+    "damper": "tuned mass damper",
+}
 #: Candidates a tracked path compares beyond the modes it follows.
 TRACK_SPARE = 4
 
@@ -441,6 +449,8 @@ def coordinate_groups(model: "Model") -> dict[str, Index]:
     }
     if lay.yaw is not None:
         out["yaw"] = np.array([lay.yaw])
+    if lay.dampers.stop > lay.dampers.start:
+        out["damper"] = np.arange(lay.dampers.start, lay.dampers.stop)
     _, _, _, harmonics = coleman(model.blades, 0.0)
     kb = model.k_blades
     for k, name in enumerate(model.rotor.names):
@@ -592,6 +602,7 @@ _PARTS = {
     "tower.tor": "tower torsion",
     "drivetrain": "drive-train torsion",
     "yaw": "yaw",
+    "damper": "tuned mass damper",
 }
 
 
@@ -672,7 +683,7 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     names = _in_operation(path.first.names, by_mode)
     texts = tuple(
         f"{a} (coupled)"
-        if a == b
+        if _ORDINAL.sub("", a) == _ORDINAL.sub("", b)
         else f"{b} (coupled; at standstill: {a})"
         if n != n0
         else f"{a}; at {rpm}: {b} (coupled)"
@@ -689,6 +700,12 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
         by_mode,
         path,
     )
+
+
+#: A description's ordinals ("5th tower fore-aft"): at the top speed the modes are counted
+#: among every candidate root (a floating platform's rigid modes among them), so the same
+#: mode may be numbered otherwise there — no change of what it is.
+_ORDINAL = re.compile(r"\b\d+(st|nd|rd|th) ")
 
 
 def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -> tuple[str, ...]:
@@ -779,19 +796,24 @@ def track(
     last = first.descriptions
     whirl = [list(first.whirl)]
     m = model.multiblade[0]
-    part = list(parts(model, m, shapes))
+    # what each mode is — where its energy sits and its whirl — as its id says it: a mode
+    # keeps that identity through a crossing, where two modes mix for a point or two and
+    # the last point's parts would hand the one's name to the other
+    part = np.array(parts(model, m, shapes), dtype=object)
+    kind: list[str | None] = list(first.whirl)
     found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
     for i, cur in enumerate(found, start=1):
         kinds = whirls(model, m, cur.shapes)
         where = parts(model, m, cur.shapes)
         score = (
             modal.mac(weight * shapes, weight * cur.shapes)
-            + KIND_WEIGHT * _same_kind(whirl[-1], kinds)
-            + KIND_WEIGHT
-            * np.equal.outer(np.array(part, dtype=object), np.array(where, dtype=object))
+            + KIND_WEIGHT * _same_kind(kind, kinds)
+            + KIND_WEIGHT * np.equal.outer(part, np.array(where, dtype=object))
         )
         order = modal.assign(score, optimal=True)
-        part = [where[o] for o in order]
+        # a standing cyclic pair becomes a backward and a forward whirl once the rotor
+        # turns: the whirl it first takes is its identity from then on
+        kind = [kinds[o] if k == "cyclic" else k for k, o in zip(kind, order, strict=True)]
         freqs[i] = cur.frequency_hz[order]
         assert cur.damping_ratio is not None
         zetas[i] = cur.damping_ratio[order]

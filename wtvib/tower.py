@@ -13,7 +13,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from . import beam, drivetrain, modal, platform, rigid, soil
+from . import beam, drivetrain, mass_damper, modal, platform, rigid, soil
 from . import spec as spec_mod
 from .analysis import Analysis, Context, Damping, section_damping
 from .excitation import Excitation, OperatingRange
@@ -38,7 +38,8 @@ def modes(spec: Spec) -> list[Mode]:
     model does not compute (e.g. ``tor1`` without torsional data) are kept.
     """
     if spec.tower.rigid:  # a deck's tower with every DOF off: no tower modes
-        return []
+        return [_damper_mode(spec, k, d.frequency_hz, d.damping_ratio, d)
+                for k, d in enumerate(_by_frequency(spec.tower.dampers), start=1)]  # fmt: skip
     if spec.tower.has_structure:
         computed = structural_modes(spec)
         ids = {m.id for m in computed}
@@ -237,7 +238,10 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
     Tubes: A = π/4·(D² − d²), I = π/64·(D⁴ − d⁴), J = 2I with d = D − 2t, D and t linear
     between stations; mass per length ρ·A·(outfitting factor), polar mass inertia ρ·J·factor.
     """
-    extra = np.array([pm.height_m for pm in t.point_masses], dtype=float)
+    extra = np.array(
+        [pm.height_m for pm in t.point_masses] + [d.height_m for d in t.dampers if d.on == "tower"],
+        dtype=float,
+    )
     if t.added_mass is not None:
         extra = np.concatenate([extra, t.added_mass.height_m])
     if t.sections is not None:
@@ -466,6 +470,8 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
                 low, high = bands[0][d].frequency_hz, bands[1][d].frequency_hz
                 mode = replace(mode, band_hz=(float(low[k - 1]), float(high[k - 1])))
             out.append(mode)
+    if t.dampers:
+        out = _with_dampers(spec, b, out)
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
         out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
@@ -477,6 +483,83 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
             "tower.foundation and the tower's stiffness"
         )
     return out
+
+
+#: A damper's plane and the tower's bending direction it moves in.
+_DAMPER_PLANE: dict[str, Literal["fa", "ss"]] = {"fore-aft": "fa", "side-side": "ss"}
+
+
+def _by_frequency(dampers: Sequence["spec_mod.MassDamper"]) -> list["spec_mod.MassDamper"]:
+    return sorted(dampers, key=lambda d: d.frequency_hz)
+
+
+def _with_dampers(spec: Spec, b: Beam, bare: list[Mode]) -> list[Mode]:
+    """The tower's bending modes with its tuned mass dampers (:mod:`wtvib.mass_damper`):
+    in each plane that has some, the damped modes of the tower and its dampers — each
+    tower mode's frequency and damping ratio as the dampers leave them, and each damper's
+    own mode (``tower.damper<k>``, numbered by frequency over both planes)."""
+    t = spec.tower
+    out = [m for m in bare if not m.id.startswith(("tower.fa", "tower.ss"))]
+    own: list[tuple[float, float, spec_mod.MassDamper]] = []
+    for direction in ("fa", "ss"):
+        mine = [m for m in bare if m.id.startswith(f"tower.{direction}")]
+        dampers = [d for d in t.dampers if _DAMPER_PLANE[d.direction] == direction]
+        if not dampers:
+            out += mine
+            continue
+        k, m = bending_system(
+            b, bending_head(spec), t.point_masses, t.foundation, direction, t.gravity
+        )
+        points = [mass_damper.attachment(b.nodes, k.shape[0], d) for d in dampers]
+
+        def ratio(r: int, f: float, d: str = direction) -> float:
+            # beyond the second mode: the second's ratio
+            return mode_damping(spec, f"{d}{min(r + 1, 2)}", f)
+
+        roots = mass_damper.damped_modes(k, m, dampers, points, ratio, len(mine))
+        for root in roots:
+            if root.bare is None:
+                continue
+            base = mine[root.bare]
+            out.append(replace(
+                base,
+                frequency_hz=root.frequency_hz,
+                damping_ratio=root.damping_ratio,
+                damping_source=f"{_tower_ratio_source(spec)} with the tuned mass dampers "
+                "(damped modes of the tower and its dampers)",
+            ))  # fmt: skip
+        free = [r for r in roots if r.bare is None]
+        own += [(r.frequency_hz, r.damping_ratio, d) for r, d in zip(
+            free, sorted(dampers, key=lambda d: d.frequency_hz), strict=False
+        )]  # fmt: skip
+    for number, (f, zeta, d) in enumerate(sorted(own, key=lambda x: x[0]), start=1):
+        out.append(_damper_mode(spec, number, f, zeta, d))
+    return out
+
+
+def _tower_ratio_source(spec: Spec) -> str:
+    return (
+        "tower.damping_ratio (given)"
+        if "damping_ratio" in spec.tower.model_fields_set
+        else "the tower's damping ratio (assumed)"
+    )
+
+
+def _damper_mode(spec: Spec, k: int, f: float, zeta: float, damper: "spec_mod.MassDamper") -> Mode:
+    """A tuned mass damper's own mode, ``tower.damper<k>``."""
+    where = f"on the {damper.on} at {damper.height_m:g} m" + (
+        " above the tower top" if damper.on == "nacelle" else ""
+    )
+    return Mode(
+        id=f"tower.damper{k}",
+        subsystem="tower",
+        description=f"tuned mass damper {damper.name}, {damper.direction}, {where} "
+        f"(own {damper.frequency_hz:.4g} Hz; computed)",
+        frequency_hz=f,
+        damping_ratio=zeta,
+        damping_source=f"its dashpot ({damper.damping_ns_m:g} N·s/m) and the tower's damping",
+        origin="computed",
+    )
 
 
 Pair = tuple[modal.Modes, modal.Modes]
@@ -854,7 +937,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     statements = _statements(spec)
     if spec.rotor.speed.parked:  # no rotor speed to place the tower against
         said: tuple[Check, ...] = (
-            (standstill("the turbine is parked"),) if spec.results is None else ()
+            (standstill("the turbine is parked", stability=True),) if spec.results is None else ()
         )
         return Analysis(lead=said, assumptions=statements)
     first = first_bending(ctx.own(NAME))

@@ -194,6 +194,9 @@ def modes(spec: Spec) -> list[Mode]:
     out = []
     for k, f in enumerate(free, start=1):
         zeta = _friction_zeta(y.friction_moment_nm, mdl, float(f), amp) if k == 1 else None
+        if k == 1 and y.drive_damping_nms_rad and f > 0:  # the drives' dashpot: c/(2Jω)
+            viscous = y.drive_damping_nms_rad / (2 * mdl.inertia * 2 * math.pi * float(f))
+            zeta = min((zeta or 0.0) + viscous, 0.99)
         out.append(
             Mode(
                 f"yaw.{k}",

@@ -38,7 +38,27 @@ CASES = {
     "5MW_OC3Spar_Linear": "rtest_floating",
     "5MW_OC4Semi_Linear": "rtest_floating",
     "WP_Stationary_Linear": "rtest_more",
+    "Fake5MW_AeroLin_B3_UA6": "rtest_more",
+    # the structure-only and structural-control cases (tests/data/openfast_decks/SOURCES.md)
+    "Ideal_Beam_Fixed_Free_Linear": "rtest_special",
+    "Ideal_Beam_Free_Free_Linear": "rtest_special",
+    "StC_test_OC4Semi_Linear_Tow": "rtest_special",
+    "StC_test_OC4Semi_Linear_Nac": "rtest_special",
+    "Fake5MW_AeroLin_B1_UA4_DBEMT3": "rtest_special",
 }
+
+#: The two AeroDyn linearisation fixtures of r-test (Fake5MW_AeroLin_*): a four-station
+#: blade at 13 m/s, 0° pitch and 12.1 rpm, its outer stations at 6.7–9° (the fixture's
+#: aerofoil stalls at 9°).
+_FAKE = (
+    "OPEN, untraced: r-test's AeroDyn linearisation fixture (four stations, three blades, "
+    "the flap DOF only, Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model') "
+    "unsteady aerofoil, no dynamic wake) — OpenFAST damps the flap modes at ζ 0.17–0.33 "
+    "where wtvib's quasi-steady sections give 0.50–0.77 with the induction in equilibrium "
+    "as the deck asks (frozen: 0.51–0.78), and these modes' natural frequencies move with "
+    "their damping. The dynamic-stall states near the aerofoil's stall, which wtvib does "
+    "not model (stated in every aeroelastic audit), are the candidate"
+)
 
 #: (case, mode) → (lowest, highest wtvib/OpenFAST − 1 accepted, why — with the third
 #: reference that shows which model is right). Measured values in the text.
@@ -162,6 +182,40 @@ EXCEPTIONS: dict[tuple[str, str], tuple[float, float, str]] = {
         )
     },
 }
+EXCEPTIONS.update(
+    {
+        **{
+            ("Ideal_Beam_Free_Free_Linear", mode): (
+                0.06,
+                0.09,
+                "OpenFAST's BeamDyn linearisation of the uniform free-free beam is 6.9 % below "
+                "the Euler–Bernoulli closed form in its second bending pair, 9.5426 Hz against "
+                "10.2465 (β₂L = 7.8532; r-test's own frequencies.txt, 'Analytical'), and 4.0 % "
+                "in its first (3.5694 against 3.7171, β₁L = 4.7300); wtvib's beam is on the "
+                "closed form to 4e-5 (test_blade.py). Measured +7.4 %",
+            )
+            for mode in ("blade.flap2", "blade.edge2")
+        },
+        **{
+            ("Fake5MW_AeroLin_B3_UA6", mode): (lo, hi, _FAKE + f". Measured {said}")
+            for mode, lo, hi, said in (
+                ("blade.flap1.backward", 0.30, 0.38, "+34 %"),
+                ("blade.flap1.collective", 0.13, 0.19, "+16 %"),
+                ("blade.flap1.forward", 0.06, 0.11, "+8.4 %"),
+            )
+        },
+        ("Fake5MW_AeroLin_B1_UA4_DBEMT3", "blade.flap1"): (
+            0.07,
+            0.12,
+            _FAKE.replace("three", "one").replace(
+                "Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model')",
+                "the 4-state HGM (UA_Mod 4)",
+            )
+            + ". Measured +9.6 % (natural frequency; ζ 0.079 in OpenFAST)",
+        ),
+    }
+)
+
 _OC4 = (
     "OPEN, untraced: the semisubmersible's second tower modes, where its first pair is "
     "within 0.7 %; OpenFAST's second side-side (5.08 Hz, ζ 0.036) sits far above its "
@@ -179,6 +233,11 @@ EXCEPTIONS.update(
 
 #: (case, mode) → why wtvib's model has no such mode
 NOT_MODELLED: dict[tuple[str, str], str] = {
+    **{
+        ("Ideal_Beam_Fixed_Free_Linear", mode): "wtvib computes a blade's two lowest modes "
+        "in each plane (flap 1 and 2, edge 1 and 2): the third pair, 9.8 Hz, is not in it"
+        for mode in ("blade.flap3", "blade.edge3")
+    },
     **{
         ("5MW_Land_BD_Linear", mode): "BeamDyn's blade has every mode; wtvib's coupled model "
         "takes five of a BeamDyn blade (flap 1 and 2, edge 1 and 2, the next): its third "
@@ -219,6 +278,12 @@ ALIASES: dict[tuple[str, str], str] = {
     # participation), wtvib both after the tower (its share of the strain energy)
     ("5MW_Land_BD_Linear", "blade.edge1.collective"): "tower.ss2",
     ("5MW_Land_BD_Linear", "tower.ss2"): "tower.ss3",
+    # structural control: OpenFAST names the damper by where it is mounted, wtvib numbers
+    # the tower's dampers (tower.dampers; the nacelle's among them)
+    ("StC_test_OC4Semi_Linear_Tow", "damper.tower1"): "tower.damper1",
+    ("StC_test_OC4Semi_Linear_Nac", "damper.nacelle1"): "tower.damper1",
+    # one blade: OpenFAST's blade coordinates as they are, wtvib's "collective" of one
+    ("Fake5MW_AeroLin_B1_UA4_DBEMT3", "blade.flap1"): "blade.flap1.collective",
 }
 
 
@@ -298,7 +363,9 @@ def test_own_model_is_openfasts_mode_by_mode(decks, tmp_path, case):
             tol = 0.03 if f <= 2 else 0.05
             assert abs(diff) <= tol, (case, name, f, ours[mine], f"{diff:+.1%}")
         checked += 1
-    assert checked >= 10, checked  # most of OpenFAST's modes are held, not excused
+    # most of OpenFAST's modes are held, not excused (the fixtures have a few modes only)
+    omitted = sum((case, n) in NOT_MODELLED for n in theirs)
+    assert checked >= min(10, len(theirs) - omitted), checked
 
 
 def test_every_exception_and_omission_is_still_needed(decks, tmp_path):
@@ -325,3 +392,52 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
         ours = {m.id.removeprefix("system."): m.damping_ratio for m in report.modes if m.judged}
         for name in ("tower.fa1", "tower.ss1"):
             assert ours[name] == pytest.approx(zeta[name], rel=0.10), (case, name)
+
+
+@pytest.mark.parametrize("case", ["StC_test_OC4Semi_Linear_Tow", "StC_test_OC4Semi_Linear_Nac"])
+def test_a_tuned_mass_damper_is_openfasts(decks, tmp_path, case):
+    """ServoDyn's structural control as the mass, spring and dashpot it is (wtvib.mass_damper):
+    OpenFAST's damper mode on the rigid OC4 turbine, 0.0503 Hz at ζ 0.0158 (the r-test case's
+    README: 0.050 Hz, 0.01581 — √(k/m)/2π and c/(2√(km)) of its 2291.5 kg, 229.15 N/m,
+    22.915 N·s/m), within 0.5 % in both."""
+    ref = _openfast(case, tmp_path)
+    name = next(n for n in ref.names if n.startswith("damper."))
+    f, zeta = (float(x[ref.names.index(name)]) for x in (ref.frequency_hz, ref.damping_ratio))
+    spec = importers.load(
+        decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
+    )
+    ours = {m.id: m for m in audit.run(spec).modes}["tower.damper1"]
+    assert ours.frequency_hz == pytest.approx(f, rel=0.005)
+    assert ours.damping_ratio == pytest.approx(zeta, rel=0.005)
+
+
+def test_the_aerodynamic_damping_is_openfasts_within_its_wake_model(decks, tmp_path):
+    """5MW_Land_Linear_Aero (8 m/s, 12.2 rpm; OpenFAST's DBEMT with τ = 4 s, quasi-steady
+    aerofoils): wtvib's damping at the same point within 20 % of OpenFAST's for every mode
+    damped by more than 1 % — the flap modes and the first fore-aft, which the wake damps, above it
+    (wtvib's wake frozen: the dynamic wake's upper bound, reached at ωτ → ∞; measured
+    +7 … +11 % in the first flap modes and the fore-aft, +18 … +19 % in the second flap
+    modes, untraced), the edgewise ones on either side (−7 %, +9 %). The second tower modes,
+    damped by the structure mostly, are not held: OPEN, untraced — fore-aft −15 %,
+    side-side −37 % (0.0067 against 0.0107)."""
+    case = "5MW_Land_Linear_Aero"
+    ref = _openfast(case, tmp_path)
+    spec = importers.load(
+        decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
+    )
+    report = audit.run(spec)
+    theirs = dict(zip(ref.names, ref.damping_ratio, strict=True))
+    compared = 0
+    for m in report.modes:
+        name = m.id.removeprefix("system.")
+        op = m.operating
+        if not m.judged or op is None or name not in theirs or theirs[name] < 0.01:
+            continue
+        if name.startswith(("tower.fa2", "tower.ss2")):  # their structural damping: below
+            continue
+        ours = float(np.interp(ref.wind, np.asarray(op.wind), np.asarray(op.total)))
+        assert ours == pytest.approx(theirs[name], rel=0.20), (name, ours, theirs[name])
+        if name.startswith("blade.flap") or name == "tower.fa1":
+            assert ours > theirs[name], name
+        compared += 1
+    assert compared >= 8, compared

@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import SpecError
 from ..rigid import Part, assembled, rotor_points
 from ..spec.base import SHAPE_SUM_TOLERANCE
-from . import beamdyn
+from . import beamdyn, stc
 from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
 from .servodyn import operation
@@ -245,6 +245,9 @@ def to_spec_data(
     path = main.path
     below = platform(main, fst)
     beamdyn = fst is not None and fst.num("CompElast", default=1) == 2
+    if beamdyn and _beam_alone(main):
+        assert fst is not None
+        return _beam_data(main, fst)
     switches = _switches(main, below is not None and below[1], deck_dofs, beamdyn)
     held = clamped_base or switches.platform_held
     floater = _floater(main, fst, below, held)
@@ -323,8 +326,12 @@ def to_spec_data(
             "BeamDyn blades: the coupled model carries five blade modes (flap 1 and 2, edge "
             "1 and 2 and the next), one more than by default — BeamDyn's blade has them all."
         )
+    control = stc.read(servo if fst is not None else None)
+    if control.dampers:
+        data["tower"]["dampers"] = control.dampers
+    data["assumptions"] += control.notes
     warnings = list(operating.warnings) + (aero[3] if aero else [])
-    warnings += bl.warnings + tw.warnings
+    warnings += bl.warnings + tw.warnings + control.warnings
     _apply(switches, data)
     warnings += data.pop("warnings", [])
     if below is not None and not tw.block:
@@ -336,6 +343,90 @@ def to_spec_data(
     if aero is not None:
         _add_aerodynamics(data, aero, operating)
     return data
+
+
+#: ElastoDyn's DOFs of the turbine around its blades: all off (and no hub or nacelle mass),
+#: a BeamDyn deck set's structure is its blade alone.
+_AROUND_BLADES = ("DrTrDOF", "GenDOF", "YawDOF", "TwFADOF1", "TwFADOF2", "TwSSDOF1", "TwSSDOF2")
+
+
+def _beam_alone(main: Deck) -> bool:
+    """A BeamDyn deck set whose ElastoDyn has nothing around the blades: its drive train,
+    yaw and tower DOFs off (a missing switch is on) and no hub, hub inertia or nacelle mass
+    — OpenFAST's test beams (r-test ``Ideal_Beam_*``), a blade tested on its own."""
+    on = [k for k in _AROUND_BLADES if k not in main.values or main.flag(k)]
+    masses = (main.num(k, default=0.0) for k in ("HubMass", "HubIner", "NacMass", "YawBrMass"))
+    return not on and not any(masses)
+
+
+def _beam_data(main: Deck, fst: Deck) -> dict[str, Any]:
+    """The spec of a deck set whose structure is BeamDyn's blade alone: the blade, free
+    where ElastoDyn's platform is free in all six motions with nothing under it (no
+    HydroDyn, SubDyn or moorings) and a mass negligible beside the blade's — the beam then
+    stands on nothing — else clamped; at the deck's RotSpeed, a standstill audit at 0 rpm."""
+    bd = beamdyn.blade(fst)
+    n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
+    modules = [k for k in ("CompHydro", "CompSub", "CompMooring") if fst.num(k, default=0) > 0]
+    platform_mass = main.num("PtfmMass", default=0.0)
+    free = (
+        all(main.flag(k) for k in PLATFORM_DOFS)
+        and not modules
+        and platform_mass < 1e-3 * bd.mass_kg
+    )
+    rpm = main.num("RotSpeed", default=0.0)
+    if rpm > 0 and free:
+        raise SpecError(
+            f"RotSpeed = {rpm:g} rpm for a beam free on nothing (every platform DOF on, "
+            f"PtfmMass {platform_mass:g} kg): nothing holds it against the centrifugal force",
+            line=main.values["RotSpeed"][1] if "RotSpeed" in main.values else None,
+            source=str(main.path),
+        )
+    damping, how = (
+        _bd_damping(bd, None)
+        if bd.mu is not None
+        else (0.0, "Blade damping: none — BeamDyn's beam is undamped (damp_type 0), as OpenFAST "
+              "models it.")
+    )  # fmt: skip
+    root = (
+        "free: ElastoDyn's platform is free in all six motions, with nothing under it and a "
+        f"mass ({platform_mass:g} kg) negligible beside the blade's {bd.mass_kg:,.0f} kg"
+        if free
+        else "clamped: ElastoDyn's platform and tower held"
+    )
+    speed = (
+        {"fixed_rpm": rpm, "source": f"the deck's RotSpeed ({main.path.name})"}
+        if rpm > 0
+        else {"parked": True, "source": f"RotSpeed 0 in {main.path.name}: a standstill audit"}
+    )
+    return {
+        "wtvib": 1,
+        "turbine": {"name": fst.path.stem},
+        "sources": {"deck": f"{fst.path.name} (OpenFAST, BeamDyn beam alone)"},
+        "rotor": {
+            "blades": n_blades,
+            "orientation": "upwind",
+            "hub": "hingeless",
+            "speed": speed,
+        },
+        "blade": {
+            "structure": {**bd.structure, "root": "free" if free else "clamped"},
+            "damping_ratio": damping,
+        },
+        "assumptions": [
+            f"A BeamDyn beam alone: the deck set's ElastoDyn has no DOF around its "
+            f"blade{'s' if n_blades > 1 else ''} ({', '.join(_AROUND_BLADES)} off) and no hub, "
+            "nacelle or yaw-bearing mass — its structure is BeamDyn's blade, modelled as a "
+            f"beam {root}"
+            + (
+                f"; its {n_blades} blades are alike and apart (no hub joins them)"
+                if n_blades > 1
+                else ""
+            )
+            + ".",
+            *bd.notes,
+            how,
+        ],
+    }
 
 
 def _unfollowed(off: list[str]) -> str | None:
@@ -1136,6 +1227,8 @@ def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:
                     "note": src,
                 },
             }
+            if deck.num("YawDamp", default=0.0) > 0:
+                yaw["drive_damping_nms_rad"] = deck.num("YawDamp")
             if deck.num("YawManRat", default=0.0) > 0:
                 yaw["yaw_rate_deg_s"] = {
                     "value": deck.num("YawManRat"),

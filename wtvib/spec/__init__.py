@@ -67,6 +67,7 @@ from .rotor import DEFAULT_OVERSPEED_FACTOR, Rotor, RotorSpeed, TurbineInfo
 from .tower import (
     DistributedTower,
     Foundation,
+    MassDamper,
     Material,
     PointMass,
     Tower,
@@ -101,6 +102,7 @@ __all__ = [
     "GearStage",
     "GeneratorModel",
     "InertiaFractions",
+    "MassDamper",
     "Material",
     "ModeEntry",
     "ModeSpec",

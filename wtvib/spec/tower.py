@@ -2,6 +2,7 @@
 head and foundation."""
 
 import itertools
+import math
 from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
@@ -88,6 +89,41 @@ class PointMass(_Strict):
 
     height_m: Height = Field(description="Height above the tower base. [m]")
     mass_kg: Positive = Field(description="Mass. [kg]")
+
+
+class MassDamper(_Strict):
+    """A tuned mass damper on the tower or the nacelle (OpenFAST ServoDyn's structural
+    control, StC): a mass on a spring and a dashpot, moving in one bending plane of the
+    tower — its own mode, and the damping it lends the tower's modes near it (Den Hartog,
+    *Mechanical Vibrations*, 4th ed., 1956, §3.3)."""
+
+    name: str = Field(max_length=100, description="Where it comes from (e.g. the StC file).")
+    on: Literal["tower", "nacelle"] = Field(
+        description="What it is mounted on: a point of the tower, or the nacelle (the tower "
+        "top, with the nacelle's rotation)."
+    )
+    height_m: Annotated[float, Field(ge=-1e3, le=1e4)] = Field(
+        description="Its rest position: above the tower base (on the tower), or above the "
+        "tower top (on the nacelle). [m]"
+    )
+    direction: Literal["fore-aft", "side-side"] = Field(
+        description="The plane it moves in (OpenFAST's StC X: fore-aft, Y: side-side)."
+    )
+    mass_kg: Positive = Field(description="Moving mass. [kg]")
+    stiffness_n_m: Positive = Field(description="Spring stiffness. [N/m]")
+    damping_ns_m: Annotated[float, Field(ge=0, le=1e12)] = Field(
+        0.0, description="Dashpot damping coefficient. [N·s/m]"
+    )
+
+    @property
+    def frequency_hz(self) -> float:
+        """Its own frequency on a rigid mount, √(k/m)/2π. [Hz]"""
+        return math.sqrt(self.stiffness_n_m / self.mass_kg) / (2 * math.pi)
+
+    @property
+    def damping_ratio(self) -> float:
+        """Its own damping ratio on a rigid mount, c/(2√(km)). [-]"""
+        return self.damping_ns_m / (2 * math.sqrt(self.stiffness_n_m * self.mass_kg))
 
 
 class AddedMass(_Strict):
@@ -404,6 +440,11 @@ class Tower(_Strict):
         None, description="Distributed properties (instead of sections)."
     )
     point_masses: list[PointMass] = Field(default_factory=list)
+    dampers: list[MassDamper] = Field(
+        default_factory=list,
+        max_length=20,
+        description="Tuned mass dampers on the tower or the nacelle (structural control).",
+    )
     added_mass: AddedMass | None = Field(
         None, description="Water moving with a submerged monopile (bending only)."
     )
@@ -434,6 +475,20 @@ class Tower(_Strict):
             raise ValueError("give either sections (with material) or distributed, not both")
         if self.sections is not None and self.material is None:
             raise ValueError("tube sections need a material")
+        if self.dampers and not (self.has_structure or self.rigid):
+            raise ValueError(
+                "dampers act on the tower's structure (sections or distributed properties), "
+                "or on a rigid tower"
+            )
+        table = self.sections or self.distributed
+        for i, d in enumerate(self.dampers):
+            if d.on == "tower" and table is not None:
+                low, high = table.height_m[0], table.height_m[-1]
+                if not low <= d.height_m <= high:
+                    raise ValueError(
+                        f"dampers[{i}] ({d.name}) at {d.height_m:g} m is not on the tower "
+                        f"({low:g} … {high:g} m above its base)"
+                    )
         if self.damping_by_mode and not self.has_structure:
             raise ValueError(
                 "damping_by_mode damps modes the tower's structure computes; with given "

@@ -1,6 +1,6 @@
 """The yaw system: drives, play, friction and brakes."""
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field
 
@@ -31,6 +31,11 @@ class Yaw(_Strict):
         None, description="Torsional stiffness of one yaw drive at the yaw axis. [N·m/rad]"
     )
     drives: int = Field(1, ge=1, le=64, description="Yaw drives acting in parallel.")
+    drive_damping_nms_rad: Annotated[float, Field(ge=0, le=1e15)] | None = Field(
+        None,
+        description="Viscous damping of the yaw drives together at the yaw axis (OpenFAST "
+        "ServoDyn's YawDamp): ζ = c/(2·J·ω) of the yaw mode. [N·m·s/rad]",
+    )
     inertia_kgm2: Positive | None = Field(
         None,
         description="Tower-head inertia about the yaw axis; default tower_head inertia_yaw + "
