@@ -56,6 +56,11 @@ _MODE: dict[str, Any] = {
             {"type": "object"},
         ),
         "whirl": _d("Whirl labels of a fixed-frame rotor mode per rpm.", {"type": "object"}),
+        "band_hz": _d(
+            "The frequency's band at standstill [Hz]: lower- and upper-bound soil, or a "
+            "concrete tower's modulus (the checks judge the band).",
+            {"type": "array", "items": _NUM, "minItems": 2, "maxItems": 2},
+        ),
     },
     "additionalProperties": False,
 }
