@@ -506,7 +506,6 @@ def check(
     debug: DebugOption = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
-    from . import audit
     from .outputs import write_atomic
 
     if scheduler is not None and not uncertainty:
@@ -520,9 +519,12 @@ def check(
         folder_exists(campbell_csv)
     plot = not no_plots
     written: list[Path] = []
+    # the input read first: a mistake in it is answered before the models are imported
+    turbine = options.load(spec_file)
+    settings = options.settings(turbine)
+    from . import audit
+
     with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
-        turbine = options.load(spec_file)
-        settings = options.settings(turbine)
         doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
         with _cluster(scheduler) as client, _working(doing):
             report = audit.run(

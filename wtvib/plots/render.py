@@ -276,15 +276,16 @@ class Drawer:
         return inline(report, detail)
 
     def close(self) -> None:
-        """End the drawing process: told there is nothing to draw, or, given a report whose
-        figures are no longer wanted (the caller failed after :meth:`send`), killed."""
+        """End the drawing process where it still runs: nothing to draw, or a report whose
+        figures are no longer wanted (the caller failed after :meth:`send`)."""
         if self._inbox is not None:
             os.close(self._inbox)
             self._inbox = None
         if self._child is not None:
-            if self._sent:
-                with contextlib.suppress(ProcessLookupError):
-                    os.kill(self._child[0], signal.SIGKILL)
+            # nothing more to draw: ended at once (waiting would wait for its import of
+            # matplotlib, a third of a second, before an error could be shown)
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(self._child[0], signal.SIGKILL)
             _collect(*self._child)
             self._child = None
 
