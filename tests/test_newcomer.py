@@ -151,3 +151,24 @@ def test_convert_writes_a_floating_deck_as_a_spec_that_loads(tmp_path):
     loaded = spec.load(out)
     assert loaded.tower.foundation is not None and loaded.tower.foundation.kind == "platform"
     assert "coefficients: [" in out.read_text()
+
+
+def test_a_broken_spec_is_answered_before_the_models_are_imported(tmp_path):
+    """A spec without its version key: read, refused, before the audit's models and
+    matplotlib are imported and before the drawing process is started (the error waited
+    for it to finish importing matplotlib: 0.48 s, now 0.27 s here)."""
+    (tmp_path / "t.yaml").write_text("turbine: {name: x}\n")
+    code = (
+        "import os, sys\n"
+        "from wtvib import cli\n"
+        "sys.argv = ['wtvib', 'check', 't.yaml']\n"
+        "try:\n    cli.main()\nexcept SystemExit as e:\n    code = e.code\n"
+        "late = ('wtvib.audit', 'matplotlib', 'wtvib.plots.render')\n"
+        "heavy = [m for m in late if m in sys.modules]\n"
+        "print(code, heavy, file=sys.stderr)\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, check=False
+    )
+    assert "the version key 'wtvib: 1' is missing" in done.stderr
+    assert done.stderr.strip().endswith("2 []"), done.stderr

@@ -511,8 +511,6 @@ def check(
     if scheduler is not None and not uncertainty:
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
     samples, seed = _study(uncertainty, samples, seed)
-    from .plots.render import Drawer
-
     if campbell_csv is not None:
         from .outputs import folder_exists
 
@@ -523,6 +521,7 @@ def check(
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
     from . import audit
+    from .plots.render import Drawer
 
     with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
         doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
