@@ -149,6 +149,39 @@ def test_blade_modes_are_computed_once_per_spec_and_never_shared_with_a_changed_
     assert coupled.blade_modes(other, 3).omega[0] > first.omega[0]
 
 
+def _dense_transform(model, psi):  # type: ignore[no-untyped-def]
+    """T, T′, T″ of q = T(ψ)·z as dense matrices (the identity outside the blades)."""
+    import numpy as np
+
+    lay = model.layout
+    b, b1, b2, _ = multiblade.coleman(model.blades, psi)
+    eye = np.eye(model.k_blades)
+    out = []
+    for mat in (b, b1, b2):
+        t = np.eye(lay.size) if mat is b else np.zeros((lay.size, lay.size))
+        t[lay.blades, lay.blades] = np.kron(mat, eye)
+        out.append(t)
+    return out
+
+
+def test_the_multi_blade_matrices_are_the_dense_transformation(tmp_path):
+    """multiblade.fixed_frame: Tᵀ·M·T, Tᵀ·(2Ω·M·T′ + D·T), Tᵀ·(Ω²·M·T″ + Ω·D·T′ + K·T)
+    with the dense transformation, at a rotor speed and an azimuth (only the blades' rows
+    and columns are computed)."""
+    import numpy as np
+
+    model = coupled.build(spec.load(write(tmp_path)), "free")
+    omega, psi = 1.3, 0.7
+    m, d, k = model.matrices(omega, psi)
+    t, t1, t2 = _dense_transform(model, psi)
+    mm, dd, kk = multiblade.fixed_frame(model, omega, psi)
+    scale = max(np.abs(x).max() for x in (m, d, k))
+    np.testing.assert_allclose(mm, t.T @ m @ t, rtol=0, atol=1e-13 * scale)
+    np.testing.assert_allclose(dd, t.T @ (2 * omega * m @ t1 + d @ t), rtol=0, atol=1e-13 * scale)
+    want = t.T @ (omega**2 * m @ t2 + omega * d @ t1 + k @ t)
+    np.testing.assert_allclose(kk, want, rtol=0, atol=1e-13 * scale)
+
+
 def test_aerodynamic_damping_in_multi_blade_coordinates_is_the_dense_transformation(tmp_path):
     """multiblade.fixed_frame_damping changes only the blades' rows and columns (T is the
     identity elsewhere, T′ zero): the same matrices as Tᵀ·D·T and Ω·Tᵀ·D·T′ with the dense
@@ -159,7 +192,7 @@ def test_aerodynamic_damping_in_multi_blade_coordinates_is_the_dense_transformat
     n = model.layout.size
     d = np.random.default_rng(7).standard_normal((4, n, n))
     omega = np.array([0.0, 0.4, 1.1, 2.0])
-    t, t1, _ = multiblade._transform(model, 0.0)
+    t, t1, _ = _dense_transform(model, 0.0)
     damping, stiffness = multiblade.fixed_frame_damping(model, d, omega)
     np.testing.assert_allclose(damping, t.T @ d @ t, rtol=0, atol=1e-13)
     np.testing.assert_allclose(stiffness, omega[:, None, None] * (t.T @ d @ t1), atol=1e-13)

@@ -329,17 +329,31 @@ class Model:
             out.append(np.stack([p1[:, 0, :], np.einsum("i,pin->pn", tangent, p1)], axis=1))
         return np.stack(out)
 
+    @functools.cached_property
+    def active(self) -> Index:
+        """The coordinates the blades' sections move (each blade's modes and the tower top's,
+        nacelle's and shaft's motion they ride on), ascending — the blades' last: the rows
+        and columns an aerodynamic damping matrix fills (a few dozen of the hundreds a
+        tower on a monopile has)."""
+        local = self.layout.local
+        out = np.unique(local[local >= 0]).astype(np.intp)
+        out.flags.writeable = False
+        return out
+
     def section_damping(self, c: Array) -> Array:
-        """The damping matrix (global coordinates, ψ = 0) of section forces −c·v per blade
-        point: ``c`` (…, P, 2, 2) [N·s/m] acts on the (out-of-plane, in-plane) velocity — a
-        stack of such tables (the operating points) gives the stack of matrices."""
+        """The damping matrix (ψ = 0) of section forces −c·v per blade point, on the
+        coordinates :attr:`active` (zero elsewhere): ``c`` (…, P, 2, 2) [N·s/m] acts on the
+        (out-of-plane, in-plane) velocity — a stack of such tables (the operating points)
+        gives the stack of matrices."""
         lead = c.shape[:-3]
-        d = np.zeros((*lead, self.layout.size, self.layout.size))
+        size = len(self.active)
+        d = np.zeros((*lead, size, size))
         flat = c.reshape(*lead, -1)
         n = self.section_velocity.shape[-1]
+        where = np.searchsorted(self.active, np.maximum(self.layout.local, 0))
         for j, products in enumerate(self._velocity_products):
             # Σ_{p,a,b} c[p, a, b]·J[p, a, :]ᵀ·J[p, b, :]: one product with the table
-            self._scatter(d, (flat @ products).reshape(*lead, n, n), j)
+            self._scatter(d, (flat @ products).reshape(*lead, n, n), j, at=where[j])
         return d
 
     @functools.cached_property
@@ -350,14 +364,21 @@ class Model:
         return np.einsum("jpai,jpbk->jpabik", jac, jac).reshape(b, p * 4, n * n)
 
     def _scatter(
-        self, target: Array, local: Array, blade_no: int, rigid_only: bool = False
+        self,
+        target: Array,
+        local: Array,
+        blade_no: int,
+        rigid_only: bool = False,
+        at: Index | None = None,
     ) -> None:
+        """Add a blade's local matrix into ``target`` at its global coordinates (``at``: at
+        those positions instead, of a matrix on fewer coordinates; held ones left out)."""
         idx = self.layout.local[blade_no]
         sgn = self.layout.sign[blade_no]
         if rigid_only:
             idx, sgn = idx[:_RIGID], sgn[:_RIGID]
         keep = np.flatnonzero(idx >= 0)
-        i, s = idx[keep], sgn[keep]
+        i, s = (idx if at is None else at)[keep], sgn[keep]
         # the last two axes (a stack of matrices keeps its leading ones)
         part = local[..., keep[:, None], keep[None, :]]
         target[..., i[:, None], i[None, :]] += s[:, None] * part * s[None, :]

@@ -86,6 +86,8 @@ class Model(Protocol):
     def groups(self) -> dict[str, Index]: ...
     @property
     def standstill_modes(self) -> modal.Modes: ...
+    @property
+    def active(self) -> Index: ...
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]: ...
     def matrices(self, omega: float, psi: float) -> tuple[Array, Array, Array]: ...
 
@@ -165,27 +167,57 @@ def fixed_frame(model: "Model", omega: float, psi: float = 0.0) -> tuple[Array, 
     q = T(ψ)·z with q̇ = T·ż + Ω·T′·z and q̈ = T·z̈ + 2Ω·T′·ż + Ω²·T″·z, projected with Tᵀ.
     """
     m, d, k = model.matrices(omega, psi)
-    t, t1, t2 = _transform(model, psi)
-    tt = t.T
-    return (
-        tt @ m @ t,
-        tt @ (2 * omega * m @ t1 + d @ t),
-        tt @ (omega**2 * m @ t2 + omega * d @ t1 + k @ t),
-    )
+    # T is the identity outside the blades' block and kron(B, I) on it, T′ and T″ zero
+    # outside it: the products touch that block's rows and columns only (dense ones cost
+    # n³: 0.15 s each on a tower with its monopile's 815 coordinates)
+    b, b1, b2, _ = coleman(model.blades, psi)
+    eye = np.eye(model.k_blades)
+    tb, tb1, tb2 = (np.asarray(np.kron(x, eye), dtype=float) for x in (b, b1, b2))
+    blk = model.layout.blades
+
+    def times_t(a: Array) -> Array:  # A·T
+        out = a.copy()
+        out[:, blk] = a[:, blk] @ tb
+        return out
+
+    def times(a: Array, tbx: Array) -> Array:  # A·T′ or A·T″
+        out = np.zeros_like(a)
+        out[:, blk] = a[:, blk] @ tbx
+        return out
+
+    def t_times(a: Array) -> Array:  # Tᵀ·A
+        out = a.copy()
+        out[blk, :] = tb.T @ a[blk, :]
+        return out
+
+    # associated as the dense products were, (Tᵀ·M)·T and ((2Ω)·M)·T′, so that every
+    # element is rounded alike and the outputs stay the same to the bit
+    damping = t_times(times(2 * omega * m, tb1) + times_t(d))
+    stiffness = t_times(times(omega**2 * m, tb2) + times(omega * d, tb1) + times_t(k))
+    return times_t(t_times(m)), damping, stiffness
+
+
+def _blade_block(model: "Model", size: int) -> slice:
+    """The blades' coordinates among ``size`` (the model's, or its :attr:`Model.active`):
+    the last ones."""
+    count = model.blades * model.k_blades
+    return slice(size - count, size)
 
 
 def fixed_frame_damping(model: "Model", d: Array, omega: float | Array) -> tuple[Array, Array]:
     """A damping matrix ``d`` of the periodic equations (at ψ = 0) in multi-blade
     coordinates: Tᵀ·D·T to the damping and Ω·Tᵀ·D·T′ to the stiffness (q̇ = T·ż + Ω·T′·z),
     exact for an isotropic rotor of three or more blades. A stack of matrices (…, n, n)
-    takes a rotor speed per matrix."""
+    takes a rotor speed per matrix; ``d`` on all the model's coordinates or on
+    :attr:`Model.active` (the result on the same)."""
     # T is the identity outside the blades' block and kron(B, I) on it, T′ is kron(B′, I)
     # there and zero elsewhere: only that block's rows and columns change (9 of the NREL
-    # deck's 52 coordinates, 9 of the IEA-22's 204: dense products would do the rest for nothing)
+    # deck's 52 coordinates, 9 of the IEA-22's 204: dense products would do the rest for nothing).
+    # The blades' coordinates are the last, of the model's and of Model.active alike.
     b, b1, _, _ = coleman(model.blades, 0.0)
     eye = np.eye(model.k_blades)
     tb, tb1 = np.kron(b, eye), np.kron(b1, eye)
-    blk = model.layout.blades
+    blk = _blade_block(model, d.shape[-1])
     damping = d.copy()
     damping[..., :, blk] = d[..., :, blk] @ tb  # D·T
     damping[..., blk, :] = tb.T @ damping[..., blk, :]  # Tᵀ·(D·T)
@@ -225,8 +257,9 @@ Extra = tuple[Array, Array] | tuple[Array, Array, LiftLag]
 def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> LiftLag:
     """Jones's lag of the blades' lift (:mod:`wtvib.unsteady`) on the coupled model.
 
-    ``d_lift`` (p, n, n): the lift slope's part of the section damping (global coordinates,
-    ψ = 0, one matrix per operating point), ``d_rate``: the same with each section's
+    ``d_lift`` (p, n, n): the lift slope's part of the section damping (on the model's
+    coordinates or on :attr:`Model.active`, ψ = 0, one matrix per operating point; the
+    states act on the same), ``d_rate``: the same with each section's
     reduced rate 2W/c as a factor; ``omega`` (p,): the rotor speeds. The lag acts on the
     velocities the lift responds to: the coordinates whose columns ``d_lift`` fills (each
     blade's modes, the hub's motion). Each such coordinate's velocity goes through one
@@ -238,8 +271,7 @@ def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> Lift
     from .unsteady import JONES
 
     n = d_lift.shape[-1]
-    lay = model.layout
-    blk = np.arange(n)[lay.blades]
+    blk = np.arange(n)[_blade_block(model, n)]
     diag = np.abs(np.diagonal(d_lift, axis1=-2, axis2=-1))
     used = np.flatnonzero(diag.max(axis=0) > 1e-12 * max(float(diag.max(initial=0.0)), 1e-300))
     cols = np.union1d(blk, used)
@@ -272,18 +304,6 @@ def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> Lift
         on_position[:, rows] = amp * beta[:, :, None] * (om * (turn @ pick))
         rates[:, rows, rows] = -(beta[:, :, None] * np.eye(width) + om * turn)
     return LiftLag(force, on_position, on_rate, rates)
-
-
-def _transform(model: "Model", psi: float) -> tuple[Array, Array, Array]:
-    lay = model.layout
-    b, b1, b2, _ = coleman(model.blades, psi)
-    eye = np.eye(model.k_blades)
-    out = []
-    for mat in (b, b1, b2):
-        t = np.eye(lay.size) if mat is b else np.zeros((lay.size, lay.size))
-        t[lay.blades, lay.blades] = np.kron(mat, eye)
-        out.append(t)
-    return out[0], out[1], out[2]
 
 
 # ---------------------------------------------------------------------------------------
@@ -414,13 +434,16 @@ def _roots(
     for i, (_, extra) in enumerate(points):
         if extra is not None:
             ed, ek = extra[0], extra[1]
-            if reduced:
-                ed, ek = basis.T @ ed @ basis, basis.T @ ek @ basis
-            d[i] += ed
-            k[i] += ek
+            on = _embedding(model, ed.shape[-1], basis if reduced else None)
+            if on is None:  # all the model's coordinates: added as they are
+                d[i] += ed
+                k[i] += ek
+            else:
+                d[i] += on.T @ ed @ on
+                k[i] += on.T @ ek @ on
             if len(extra) > 2:
                 lag = extra[2]
-                lags.append(lag.reduced(basis) if reduced else lag)
+                lags.append(lag.reduced(on) if on is not None else lag)
     states = None
     if lags:
         if len(lags) != len(points):
@@ -435,6 +458,21 @@ def _roots(
         k, m, d, floor=2 * np.pi * 1e-3, overdamped=overdamped, lag=states
     )
     return [(lam, basis @ vec if reduced else vec) for lam, vec in found]
+
+
+def _embedding(model: "Model", size: int, basis: Array | None) -> Array | None:
+    """How a matrix on ``size`` coordinates (the model's, or :attr:`Model.active`) enters
+    the equations solved: the rows of ``basis`` (a Ritz basis) or of the identity that
+    those coordinates are; None where it is added as it is."""
+    lay_size = model.layout.size
+    if size == lay_size:
+        return basis
+    active = model.active
+    if basis is not None:
+        return np.asarray(basis[active])
+    out = np.zeros((size, lay_size))
+    out[np.arange(size), active] = 1.0
+    return out
 
 
 def coordinate_groups(model: "Model") -> dict[str, Index]:
@@ -950,19 +988,21 @@ def perturbed(
     g = d0 + omega * d1
     d, k = extra[0], extra[1]
     x = reference
+    # the extra matrices on the model's coordinates or on Model.active: the shapes there
+    xe = x if d.shape[-1] == model.layout.size else x[model.active]
 
-    def quad(a: Array) -> NDArray[np.complex128]:  # xⱼᴴ A xⱼ for every column (BLAS)
-        return np.asarray(np.sum(x.conj() * (a @ x), axis=0))
+    def quad(a: Array, y: NDArray[np.complex128] = x) -> NDArray[np.complex128]:
+        return np.asarray(np.sum(y.conj() * (a @ y), axis=0))  # yⱼᴴ A yⱼ, every column
 
-    num = lam * quad(d) + quad(k)
+    num = lam * quad(d, xe) + quad(k, xe)
     if len(extra) > 2:
         lag: LiftLag = extra[2]  # type: ignore[misc]
         eye = np.eye(lag.rates.shape[-1])
         for j, lj in enumerate(lam):
             states = np.linalg.solve(
-                lj * eye - lag.rates, (lag.on_position + lj * lag.on_rate) @ x[:, j]
+                lj * eye - lag.rates, (lag.on_position + lj * lag.on_rate) @ xe[:, j]
             )
-            num[j] += x[:, j].conj() @ (lag.force @ states)
+            num[j] += xe[:, j].conj() @ (lag.force @ states)
     den = 2 * lam * quad(m) + quad(g)
     new = lam - num / den
     return modal.damping_ratio(new)
