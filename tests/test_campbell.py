@@ -4,6 +4,7 @@ import numpy as np
 
 from wtvib import audit
 from wtvib.excitation import operating_range
+from wtvib.outputs import campbell_to_csv
 from wtvib.spec import load
 
 
@@ -27,7 +28,7 @@ def test_structural_campbell_samples_standstill_to_overspeed(write_spec):
 
 def test_campbell_csv_has_a_row_per_mode_and_sample(write_spec):
     report = audit.run(load(write_spec(extra="blade: {modes: {flap1: 1.2, edge1: 2.0}}\n")))
-    csv = report.campbell.to_csv().splitlines()
+    csv = campbell_to_csv(report.campbell).splitlines()
     assert csv[0] == (
         "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
         "aeroelastic_frequency_hz,damped_frequency_hz,method,quasi_steady_damping_ratio"

@@ -9,7 +9,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import audit, coupled, floquet, multiblade, spec
+from wtvib import audit, coleman, coupled, floquet, multiblade, spec
 from wtvib.cli import app
 
 SPEC = """\
@@ -154,7 +154,7 @@ def _dense_transform(model, psi):  # type: ignore[no-untyped-def]
     import numpy as np
 
     lay = model.layout
-    b, b1, b2, _ = multiblade.coleman(model.blades, psi)
+    b, b1, b2, _ = coleman.coleman(model.blades, psi)
     eye = np.eye(model.k_blades)
     out = []
     for mat in (b, b1, b2):

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 from .errors import WtvibError
 from .importers import ReadOptions
+from .outputs import campbell_to_csv
 from .rules import STATUS_ORDER, worst_check
 
 if TYPE_CHECKING:
@@ -302,7 +303,7 @@ def _audit_one(
         report=report.to_dict(),
         pngs=pngs,
         timings={"load": t1 - t0, "solve": t2 - t1, "plot": t3 - t2},
-        campbell_csv=report.campbell.to_csv(report.identity),
+        campbell_csv=campbell_to_csv(report.campbell, report.identity),
     )
 
 

@@ -6,8 +6,6 @@ standstill to the overspeed limit and the structural damping. Frequencies are th
 ones (the mode's curve), so each id has one frequency everywhere in the report.
 """
 
-import csv
-import io
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -15,7 +13,6 @@ from typing import Any
 import numpy as np
 
 from .excitation import OperatingRange
-from .outputs import CAMPBELL_HEADER, spreadsheet_cell
 from .results import Mode
 
 #: Rotor speeds sampled without a schedule (standstill … overspeed).
@@ -77,42 +74,6 @@ class Campbell:
             out["aeroelastic_frequency_hz"] = [round(v, 6) for v in natural]
             out["damped_frequency_hz"] = [round(v, 6) for v in damped]
         return out
-
-    def to_csv(self, identity: str | None = None) -> str:
-        """One row per mode and sample: mode, rpm, wind_m_s, pitch_deg, frequency_hz,
-        damping_ratio, aerodynamic_damping_ratio, the aeroelastic root's natural and damped
-        frequency, how the point was obtained and the quasi-steady damping (wind, pitch and
-        the aerodynamic columns empty where there is none); ``identity`` (a comment line
-        first: which wtvib, which input)."""
-        buf = io.StringIO()
-        if identity:
-            buf.write(f"# {identity}\n")
-        w = csv.writer(buf, lineterminator="\n")
-        w.writerow(CAMPBELL_HEADER.decode().split(","))
-        for mid, (f, z) in self.modes.items():
-            natural, damped, method = self.roots.get(mid, (None, None, ()))
-            for i, n in enumerate(self.rpm):
-                wind = f"{self.wind[i]:.4f}" if self.wind else ""
-                pitch = f"{self.pitch_deg[i]:.4f}" if self.pitch_deg else ""
-                aero = f"{self.aero[mid][i]:.6f}" if mid in self.aero else ""
-                root = (
-                    [f"{natural[i]:.6f}", f"{damped[i]:.6f}"]
-                    if natural is not None and damped is not None
-                    else ["", ""]
-                )
-                how = method[i] if method else ""
-                steady = f"{self.quasi_steady[mid][i]:.6f}" if mid in self.quasi_steady else ""
-                row = [
-                    spreadsheet_cell(mid),
-                    f"{n:.4f}",
-                    wind,
-                    pitch,
-                    f"{f[i]:.6f}",
-                    f"{z[i]:.6f}",
-                    aero,
-                ]
-                w.writerow([*row, *root, how, steady])
-        return buf.getvalue()
 
 
 def build(modes: Sequence[Mode], op: OperatingRange) -> Campbell:

@@ -506,7 +506,7 @@ def check(
     debug: DebugOption = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
-    from .outputs import write_atomic
+    from .outputs import campbell_to_csv, write_atomic
 
     if scheduler is not None and not uncertainty:
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
@@ -546,7 +546,7 @@ def check(
                 path = folder / f"{spec_file.stem}{options.tag(uncertainty)}.{suffix}.png"
                 written.append(write_atomic(path, png, force=force, folder=True))
     if campbell_csv is not None:
-        data = report.campbell.to_csv(report.identity).encode()
+        data = campbell_to_csv(report.campbell, report.identity).encode()
         written.append(write_atomic(campbell_csv, data, force=force))
     sys.stdout.write(text)
     if console is None:

@@ -8,13 +8,19 @@ caller passes ``force``.
 """
 
 import contextlib
+import csv
+import io
 import mmap
 import os
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import png
 from .errors import OutputError
+
+if TYPE_CHECKING:
+    from .campbell import Campbell
 
 SOFTWARE_TAG = "wtvib"
 #: First line of the batch summary CSV (recognised as a wtvib output).
@@ -196,3 +202,40 @@ def write_atomic(path: Path, data: bytes, *, force: bool = False, folder: bool =
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def campbell_to_csv(campbell: "Campbell", identity: str | None = None) -> str:
+    """The Campbell data as CSV: one row per mode and sample — mode, rpm, wind_m_s,
+    pitch_deg, frequency_hz, damping_ratio, aerodynamic_damping_ratio, the aeroelastic
+    root's natural and damped frequency, how the point was obtained and the quasi-steady
+    damping (wind, pitch and the aerodynamic columns empty where there is none);
+    ``identity``: a comment line first (which wtvib, which input)."""
+    buf = io.StringIO()
+    if identity:
+        buf.write(f"# {identity}\n")
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(CAMPBELL_HEADER.decode().split(","))
+    for mid, (f, z) in campbell.modes.items():
+        natural, damped, method = campbell.roots.get(mid, (None, None, ()))
+        for i, n in enumerate(campbell.rpm):
+            wind = f"{campbell.wind[i]:.4f}" if campbell.wind else ""
+            pitch = f"{campbell.pitch_deg[i]:.4f}" if campbell.pitch_deg else ""
+            aero = f"{campbell.aero[mid][i]:.6f}" if mid in campbell.aero else ""
+            root = (
+                [f"{natural[i]:.6f}", f"{damped[i]:.6f}"]
+                if natural is not None and damped is not None
+                else ["", ""]
+            )
+            how = method[i] if method else ""
+            steady = f"{campbell.quasi_steady[mid][i]:.6f}" if mid in campbell.quasi_steady else ""
+            row = [
+                spreadsheet_cell(mid),
+                f"{n:.4f}",
+                wind,
+                pitch,
+                f"{f[i]:.6f}",
+                f"{z[i]:.6f}",
+                aero,
+            ]
+            w.writerow([*row, *root, how, steady])
+    return buf.getvalue()
