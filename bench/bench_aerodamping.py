@@ -16,7 +16,8 @@ from pathlib import Path
 
 from timing import machine, median_ms
 
-from wtvib import aerodamping, audit, bem, importers
+from wtvib import audit, importers
+from wtvib.aero import aerodamping, bem
 
 RUNS = 7
 SHARED = Path(__file__).resolve().parents[2] / "shared"

@@ -13,7 +13,8 @@ from pathlib import Path
 import numpy as np
 from timing import machine, median_ms
 
-from wtvib import aeroelastic, audit, spec
+from wtvib import audit, spec
+from wtvib.aero import aeroelastic
 
 TURBINE = Path(__file__).resolve().parents[1] / "turbines" / "stall-rotor-1mw.yaml"
 

@@ -11,7 +11,8 @@ from pathlib import Path
 
 from timing import machine, median_ms
 
-from wtvib import audit, coupled, importers, multiblade
+from wtvib import audit, importers
+from wtvib.subsystems import coupled, multiblade
 
 DECK = (
     Path(__file__).resolve().parents[2]

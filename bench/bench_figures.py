@@ -28,7 +28,7 @@ def main() -> None:
     import wtvib
     from wtvib import audit
     from wtvib.importers import load
-    from wtvib.plots import drawers, png_bytes
+    from wtvib.outputs.plots import drawers, png_bytes
 
     print(machine() + f"; wtvib from {Path(wtvib.__file__).parent}")
     reports = [audit.run(load(p)) for p in INPUTS if p.exists()]

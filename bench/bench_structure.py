@@ -52,7 +52,8 @@ def alternating(a, b, repeat: int = 300, block: int = 20) -> tuple[float, float]
 
 
 def main() -> None:
-    from wtvib import importers, tower
+    from wtvib import importers
+    from wtvib.subsystems import tower
 
     print(
         f"machine: {platform.machine()}, {os.cpu_count()} cores, Python {platform.python_version()}"

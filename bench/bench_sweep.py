@@ -36,7 +36,8 @@ def alternate(runs: dict[str, Callable[[], object]], repeat: int) -> dict[str, l
 
 
 def main() -> None:
-    from wtvib import blade, importers
+    from wtvib import importers
+    from wtvib.subsystems import blade
 
     print(machine() + "; OPENBLAS_NUM_THREADS=1 on both sides")
     structure = importers.load(DECK).blade.structure

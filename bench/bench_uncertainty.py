@@ -10,7 +10,8 @@ import platform
 import statistics
 import time
 
-from wtvib import spec, uncertainty
+from wtvib import spec
+from wtvib.studies import uncertainty
 
 
 def nrel_geometry() -> spec.Spec:

@@ -4,7 +4,8 @@ the audit (the coupled model's validation is in tests/validation/test_aerodynami
 import numpy as np
 import pytest
 
-from wtvib import aerodamping, audit, bem
+from wtvib import audit
+from wtvib.aero import aerodamping, bem
 from wtvib.results import OperatingDamping
 from wtvib.spec import load
 
@@ -205,7 +206,7 @@ def test_a_root_damped_past_critical_reports_a_damping_ratio_of_one():
     "overdamped"; first-order estimates are marked so; every total is at most 1."""
     from types import SimpleNamespace
 
-    from wtvib import aerodamping
+    from wtvib.aero import aerodamping
 
     sol = SimpleNamespace(wind=np.array([5.0, 8, 11, 14]), omega=np.ones(4), pitch=np.zeros(4))
     sch = SimpleNamespace(solution=sol)

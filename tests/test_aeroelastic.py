@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from wtvib import aeroelastic as ae
 from wtvib import audit
+from wtvib.aero import aeroelastic as ae
 from wtvib.spec import load
 
 from . import oracles
@@ -91,7 +91,7 @@ def test_no_aeroelastic_block_no_checks(write_spec: Callable[..., Path]) -> None
 
 
 def test_vg_and_stability_chart_drawn(write_spec: Callable[..., Path]) -> None:
-    from wtvib.plots import diagrams
+    from wtvib.outputs.plots import diagrams
 
     figures = diagrams(audit.run(load(spec(write_spec))))
     assert {"blade-flutter", "blade-stability"} <= set(figures)

@@ -1,8 +1,9 @@
 """The subsystem protocol: every subsystem module the audit loops over satisfies it."""
 
-from wtvib import analysis, audit, spec
-from wtvib.analysis import Analysis, Context, section_damping
-from wtvib.excitation import excitations, operating_range
+from wtvib import audit, spec
+from wtvib.judge import analysis
+from wtvib.judge.analysis import Analysis, Context, section_damping
+from wtvib.judge.excitation import excitations, operating_range
 
 
 def test_every_subsystem_has_the_protocol_and_a_unique_name():

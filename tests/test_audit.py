@@ -54,7 +54,7 @@ def test_a_number_that_is_not_finite_is_null_with_a_reason(write_spec):
     import dataclasses
     import json
 
-    from wtvib.report import to_json
+    from wtvib.outputs.report import to_json
     from wtvib.results import Check, Rule
 
     r = audit.run(spec.load(write_spec()))

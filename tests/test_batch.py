@@ -8,8 +8,8 @@ import pytest
 from typer.testing import CliRunner
 
 from tests.conftest import TURBINES, spec_text
-from wtvib import batch
 from wtvib.cli import app
+from wtvib.workflows import batch
 
 runner = CliRunner()
 

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from wtvib import beam
+from wtvib.numerics import beam
 
 from . import oracles
 

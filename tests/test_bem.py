@@ -13,7 +13,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import bem
+from wtvib.aero import bem
 from wtvib.importers import load
 
 

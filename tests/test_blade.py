@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 
 from tests.conftest import spec_text
-from wtvib import audit, blade, spec
+from wtvib import audit, spec
 from wtvib.results import Southwell
+from wtvib.subsystems import blade
 
 GIVEN = """blade:
   modes: {flap1: 0.84, edge1: {frequency_hz: 1.35, southwell: 0.19}}

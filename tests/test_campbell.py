@@ -3,8 +3,8 @@
 import numpy as np
 
 from wtvib import audit
-from wtvib.excitation import operating_range
-from wtvib.outputs import campbell_to_csv
+from wtvib.judge.excitation import operating_range
+from wtvib.outputs.files import campbell_to_csv
 from wtvib.spec import load
 
 

@@ -198,7 +198,7 @@ def test_numpy_overflow_notes_stay_off_the_one_error_line():
     script = (
         "import sys, numpy as np\n"
         "from wtvib import audit, cli\n"
-        "from wtvib.modal import ModalError\n"
+        "from wtvib.numerics.modal import ModalError\n"
         "def overflowing(*a, **k):\n"
         "    np.array([1e300]) ** 2\n"
         "    raise ModalError('the structural matrices hold NaN or infinite values')\n"

@@ -1,4 +1,4 @@
-"""Subsystems' natural frequencies close to each other (wtvib.closeness; Hau ch. 7 intro,
+"""Subsystems' natural frequencies close to each other (wtvib.judge.closeness; Hau ch. 7 intro,
 7.3.3, 7.5): the pairs the chapter names, compared where both modes exist."""
 
 from dataclasses import replace
@@ -6,8 +6,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from wtvib import closeness
-from wtvib.excitation import OperatingRange
+from wtvib.judge import closeness
+from wtvib.judge.excitation import OperatingRange
 from wtvib.results import Mode
 from wtvib.units import rpm_to_rad_s
 

@@ -6,8 +6,8 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import batch
 from wtvib.cli import app
+from wtvib.workflows import batch
 
 from .conftest import TURBINES
 
@@ -67,7 +67,7 @@ def test_check_uncertainty_on_a_cluster_draws_the_same_samples(scheduler):
 
 
 def test_an_unreachable_scheduler_is_one_line(monkeypatch):
-    from wtvib import cluster
+    from wtvib.studies import cluster
 
     monkeypatch.setattr(cluster, "CONNECT_TIMEOUT_S", 1)
     result = CliRunner().invoke(

@@ -10,7 +10,7 @@ from typer.testing import CliRunner
 from tests.conftest import TURBINES
 from wtvib import audit, importers, spec
 from wtvib.cli import app
-from wtvib.contract import CHECK_NUMBERS, report_schema
+from wtvib.workflows.contract import CHECK_NUMBERS, report_schema
 
 jsonschema = pytest.importorskip("jsonschema", reason="jsonschema (dev extra) validates")
 DATA = Path(__file__).resolve().parent / "data" / "campbell"

@@ -9,8 +9,10 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import audit, coleman, coupled, floquet, multiblade, spec
+from wtvib import audit, spec
 from wtvib.cli import app
+from wtvib.numerics import coleman, floquet
+from wtvib.subsystems import coupled, multiblade
 
 SPEC = """\
 wtvib: 1

@@ -4,7 +4,8 @@ edges and sizing are in tests/validation/test_design.py)."""
 import pytest
 
 from tests.conftest import TURBINES
-from wtvib import audit, design, spec
+from wtvib import audit, spec
+from wtvib.studies import design
 
 
 def windows(write_spec, **parts):  # type: ignore[no-untyped-def]

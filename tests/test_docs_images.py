@@ -8,8 +8,8 @@ from PIL import Image
 
 from tests.conftest import ROOT, TURBINES
 from wtvib import audit, spec
-from wtvib.plots import png_bytes
-from wtvib.plots.campbell import campbell_plot
+from wtvib.outputs.plots import png_bytes
+from wtvib.outputs.plots.campbell import campbell_plot
 
 
 def _pixels(data: bytes) -> np.ndarray:

@@ -6,7 +6,8 @@ import math
 import pytest
 
 from tests.conftest import TURBINES
-from wtvib import audit, drivetrain, spec
+from wtvib import audit, spec
+from wtvib.subsystems import drivetrain
 
 
 @pytest.fixture(scope="module")
@@ -75,8 +76,8 @@ def test_a_drive_train_damped_past_critical_is_one_line(tmp_path):
     saying what happened (exit 2 in the CLI)."""
     from tests.conftest import TURBINES
     from wtvib import audit, spec
-    from wtvib.modal import ModalError
-    from wtvib.yamlio import parse_plain
+    from wtvib.numerics.modal import ModalError
+    from wtvib.spec.yamlio import parse_plain
 
     data = parse_plain((TURBINES / "mod-0-fluid-coupling.yaml").read_text()).data
     data["drivetrain"]["shafts"][2] = {"stiffness_nm_rad": 150.0, "damping_nms_rad": 1.0e9}
@@ -105,8 +106,8 @@ def test_modal_damping_gives_every_elastic_mode_its_ratio():
     mode none (a free train's turning)."""
     import numpy as np
 
-    from wtvib import modal
-    from wtvib.drivetrain import modal_damping
+    from wtvib.numerics import modal
+    from wtvib.subsystems.drivetrain import modal_damping
 
     m = np.diag([3.0, 1.0, 2.0])
     k = np.array([[2.0, -2.0, 0.0], [-2.0, 5.0, -3.0], [0.0, -3.0, 3.0]])  # free: singular
@@ -139,8 +140,9 @@ def test_inertia_shares_are_table_7_8(turbine, table):
     """Hau Table 7.8: the shares of the drive train's inertia on the rotor shaft (blades,
     hub, generator, rest) — reported for every chain; the book's three trains give the
     table's numbers to the percent (their chains are built from the book's inertias)."""
-    from wtvib import audit, drivetrain
+    from wtvib import audit
     from wtvib.spec import load
+    from wtvib.subsystems import drivetrain
 
     from .conftest import TURBINES
 
@@ -153,8 +155,8 @@ def test_inertia_shares_are_table_7_8(turbine, table):
 
 def test_inertia_shares_reduce_each_mass_by_its_speed_squared(write_spec):
     """J·i²: a 10 kg·m² generator on a 50:1 shaft counts 25,000 kg·m² on the rotor's."""
-    from wtvib import drivetrain
     from wtvib.spec import load
+    from wtvib.subsystems import drivetrain
 
     chain = (
         "drivetrain:\n  chain:\n"
@@ -220,7 +222,7 @@ def test_a_fluid_coupling_is_a_damper_of_its_slip_and_no_spring(tmp_path):
         bad.write_text(text.replace(edit, message))
         with pytest.raises(SpecError, match="give fluid_coupling alone"):
             spec.load(bad)
-    from wtvib.yamlio import parse_plain
+    from wtvib.spec.yamlio import parse_plain
 
     data = parse_plain(text).data
     data["drivetrain"]["shafts"][2] = {"speed_ratio": 45.0}  # neither stiffness nor coupling

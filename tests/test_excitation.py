@@ -5,7 +5,8 @@ import math
 import pytest
 
 from tests.conftest import spec_text
-from wtvib import excitation, spec
+from wtvib import spec
+from wtvib.judge import excitation
 
 
 def test_harmonic_energy_classes(write_spec):

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from scipy.linalg import expm
 
-from wtvib import floquet
+from wtvib.numerics import floquet
 
 
 def test_constant_coefficients_give_the_matrix_exponential():

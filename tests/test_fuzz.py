@@ -170,7 +170,7 @@ def test_mutated_specs_fail_cleanly(data):
     except yaml.YAMLError:
         return
     try:
-        loaded = spec.from_document(__import__("wtvib.yamlio", fromlist=["parse"]).parse(text))
+        loaded = spec.from_document(__import__("wtvib.spec.yamlio", fromlist=["parse"]).parse(text))
     except WtvibError:
         return
     try:
@@ -205,7 +205,7 @@ tower:
                 ei_fa_nm2: [1.0e8, 1.0e8, 1.0e8], ei_ss_nm2: [1.0e8, 1.0e8, 1.0e8]}
 tower_head: {mass_kg: 10.0, cm_above_top_m: 1.3407807929942597e+154}
 """
-    from wtvib.yamlio import parse
+    from wtvib.spec.yamlio import parse
 
     try:
         spec.from_document(parse(text))
@@ -227,7 +227,7 @@ blade:
   structure: {hub_radius_m: 1.0, span_m: [0, 5], mass_per_length_kg_m: [20, 20],
               ei_flap_nm2: [1.0e6, 1.0e6], ei_edge_nm2: [2.0e6, 1.0e6]}
 """
-    from wtvib.yamlio import parse
+    from wtvib.spec.yamlio import parse
 
     try:
         spec.from_document(parse(text))

@@ -25,7 +25,7 @@ from hypothesis import strategies as st
 
 from wtvib import audit, importers, spec
 from wtvib.errors import WtvibError
-from wtvib.yamlio import parse_plain
+from wtvib.spec.yamlio import parse_plain
 
 from .conftest import NREL_DECK_FILES, SHARED
 

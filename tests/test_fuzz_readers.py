@@ -21,9 +21,10 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wtvib import audit, batch, importers, spec
+from wtvib import audit, importers, spec
 from wtvib.errors import OutputError, WtvibError
-from wtvib.outputs import write_atomic
+from wtvib.outputs.files import write_atomic
+from wtvib.workflows import batch
 
 DATA = Path(__file__).parent / "data"
 EXAMPLES = int(os.environ.get("WTVIB_FUZZ_READER_EXAMPLES", "25000"))

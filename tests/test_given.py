@@ -1,7 +1,7 @@
 """Given modes: spec entries (a number or a mapping) become modes, sorted by frequency."""
 
-from wtvib.given import given_modes
 from wtvib.spec import ModeSpec
+from wtvib.subsystems.given import given_modes
 
 
 def test_numbers_and_mappings_become_modes_in_frequency_order():

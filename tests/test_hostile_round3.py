@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import batch
 from wtvib.cli import app
+from wtvib.workflows import batch
 
 from .conftest import TURBINES
 

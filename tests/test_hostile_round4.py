@@ -19,8 +19,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import batch
 from wtvib.cli import app
+from wtvib.workflows import batch
 
 from .conftest import TURBINES, edited_reference
 
@@ -404,7 +404,7 @@ def test_a_name_that_would_start_a_formula_is_quoted_in_the_summary_csv(tmp_path
     ],
 )
 def test_a_spreadsheet_cell_is_text_unless_it_is_a_number(cell, shown):
-    from wtvib.outputs import spreadsheet_cell
+    from wtvib.outputs.files import spreadsheet_cell
 
     assert spreadsheet_cell(cell) == shown
 

@@ -1,4 +1,5 @@
-"""wtvib.hull against closed forms: a floating vertical cylinder, a tube's mass and inertia,
+"""wtvib.numerics.hull against closed forms: a floating vertical cylinder, a tube's mass and
+inertia,
 ballast levels, the parallel-axis theorem and the trim balance."""
 
 import dataclasses
@@ -6,7 +7,7 @@ import dataclasses
 import numpy as np
 import pytest
 
-from wtvib import hull
+from wtvib.numerics import hull
 
 RHO, G = 1025.0, 9.80665
 

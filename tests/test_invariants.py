@@ -12,7 +12,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wtvib import drivetrain, modal, spec, tower
+from wtvib import spec
+from wtvib.numerics import modal
+from wtvib.subsystems import drivetrain, tower
 
 floats = st.floats
 

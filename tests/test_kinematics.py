@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import kinematics as kin
+from wtvib.numerics import kinematics as kin
 
 
 def test_small_rotation_generators_give_cross_products():

@@ -1,5 +1,6 @@
-"""The import graph of wtvib has no cycles (issue 16): every module can be read, and
-changed, without the ones that depend on it. Imports inside functions count (they are how
+"""wtvib's packages are its layers, each importing only its own and the ones below it, and
+the import graph has no cycles: every module can be read, and changed, without the ones
+that depend on it. Imports inside functions count (they are how
 the last cycles hid); imports under ``if TYPE_CHECKING:`` never run, and form no cycle
 either (they say which module knows which: a protocol, not the other module's class,
 where a lower layer reads a higher one's object)."""
@@ -86,8 +87,11 @@ def test_the_import_graph_has_no_cycle():
 def test_type_only_imports_close_no_circle_either():
     known = modules()
     graph = {name: imports(name, path, known, typing=True) for name, path in known.items()}
-    assert graph["wtvib.rigid"] and "wtvib.spec" not in graph["wtvib.rigid"]
-    assert "wtvib.coupled" not in graph["wtvib.multiblade"] | graph["wtvib.periodic"]
+    assert graph["wtvib.numerics.rigid"] and "wtvib.spec" not in graph["wtvib.numerics.rigid"]
+    assert (
+        "wtvib.subsystems.coupled"
+        not in graph["wtvib.subsystems.multiblade"] | graph["wtvib.subsystems.periodic"]
+    )
     assert cycle(graph) is None, " → ".join(cycle(graph) or [])
 
 
@@ -100,10 +104,63 @@ def test_models_never_import_the_rendering_layer():
     """Calculate first, draw second: no model or study imports matplotlib, rich or the
     report and figure modules (STYLE.md habit 3)."""
     known = modules()
-    rendering = {m for m in known if m.startswith("wtvib.plots")}
-    rendering |= {"wtvib.report", "wtvib.pdfreport"}
-    models = set(known) - rendering - {"wtvib.cli", "wtvib.batch", "wtvib"}
+    rendering = {m for m in known if m.startswith("wtvib.outputs.plots")}
+    rendering |= {"wtvib.outputs.report", "wtvib.outputs.pdfreport"}
+    models = set(known) - rendering - {"wtvib.cli", "wtvib.workflows.batch", "wtvib"}
     for name in sorted(models):
         text = known[name].read_text(encoding="utf-8")
         assert "import matplotlib" not in text and "from rich" not in text, name
         assert not imports(name, known[name], known) & rendering, name
+
+
+#: The layers, lowest first (docs/DESIGN.md): a module imports from its own layer and the
+#: ones below, never from above — at run time or for its types alone.
+LAYERS = (
+    ("core", ("wtvib", "wtvib.errors", "wtvib.units", "wtvib.rules", "wtvib.results")),
+    ("numerics", ("wtvib.numerics",)),
+    ("spec", ("wtvib.spec",)),
+    ("importers", ("wtvib.importers",)),
+    ("judge", ("wtvib.judge",)),
+    ("subsystems", ("wtvib.subsystems",)),
+    ("aero", ("wtvib.aero",)),
+    ("studies", ("wtvib.studies",)),
+    ("audit", ("wtvib.audit",)),
+    ("outputs", ("wtvib.outputs",)),
+    ("workflows", ("wtvib.workflows",)),
+    ("cli", ("wtvib.cli", "wtvib.__main__")),
+)  # fmt: skip
+
+
+def layer(module: str) -> int:
+    """The index of a module's layer in LAYERS: its package's, or its own."""
+    for i, (_, members) in enumerate(LAYERS):
+        if module in members or any(module.startswith(m + ".") for m in members if m != "wtvib"):
+            return i
+    raise AssertionError(f"{module} belongs to no layer: add it to LAYERS and docs/DESIGN.md")
+
+
+def test_every_import_goes_down_the_layers():
+    """No module imports one of a higher layer (an importer calling a subsystem's model,
+    the reader of linearisations the coupled model's machinery, a model the writer of
+    files: each was once so)."""
+    known = modules()
+    upward = []
+    for name, path in sorted(known.items()):
+        for target in sorted(imports(name, path, known, typing=True)):
+            if layer(target) > layer(name):
+                upward.append(f"{name} ({LAYERS[layer(name)][0]}) imports {target} "
+                              f"({LAYERS[layer(target)][0]})")  # fmt: skip
+    assert not upward, "\n".join(upward)
+
+
+def test_the_layer_check_sees_an_upward_import():
+    assert layer("wtvib.importers.elastodyn") < layer("wtvib.subsystems.blade")
+    assert layer("wtvib.outputs.plots.campbell") > layer("wtvib.audit")
+    assert layer("wtvib.spec.yamlio") == layer("wtvib.spec")
+
+
+def test_a_dozen_modules_at_most_at_the_top():
+    """The top of the package holds the shared types, the orchestrator and the command line;
+    everything else lives in its layer's package."""
+    top = sorted(p.name for p in ROOT.glob("*.py"))
+    assert len(top) <= 12, top

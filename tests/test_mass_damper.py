@@ -1,4 +1,5 @@
-"""Tuned mass dampers on the tower (wtvib.mass_damper, tower.dampers), against closed forms:
+"""Tuned mass dampers on the tower (wtvib.subsystems.mass_damper, tower.dampers), against closed
+forms:
 a damper on a rigid mount, a damper on a one-mass structure (the two-degree-of-freedom
 system's characteristic polynomial, solved here on its own), and Den Hartog's optimum."""
 
@@ -8,8 +9,10 @@ import numpy as np
 import pytest
 
 from tests.conftest import SHARED
-from wtvib import audit, importers, mass_damper, modal
+from wtvib import audit, importers
+from wtvib.numerics import modal
 from wtvib.spec.tower import MassDamper
+from wtvib.subsystems import mass_damper
 
 
 def _damper(mass: float, k: float, c: float, on: str = "nacelle") -> MassDamper:
@@ -55,7 +58,7 @@ def test_den_hartog_s_optimum_damps_both_modes_alike():
     √(3μ/(8(1 + μ)³))) on an undamped mass, the two modes carry about the same damping, near
     √(μ/8)·… — within 15 % of each other and of the equivalent ratio 1/(2√(1 + 2/μ)) the
     blade tip damper uses (tuned_damper.equivalent_damping; Den Hartog 1956, §3.3)."""
-    from wtvib.tuned_damper import equivalent_damping, optimal_tuning
+    from wtvib.aero.tuned_damper import equivalent_damping, optimal_tuning
 
     m1, k1, mu = 1.0e5, 4.0e6, 0.02
     ratio, zeta_d = optimal_tuning(mu)

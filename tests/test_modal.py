@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import modal
+from wtvib.numerics import modal
 
 
 def test_two_mass_chain_against_the_closed_form():
@@ -67,7 +67,7 @@ def test_deep_stacks_invert_their_cholesky_factors_row_by_row():
     rounding; a shallow stack goes to numpy's inverse as it is."""
     import numpy as np
 
-    from wtvib import modal
+    from wtvib.numerics import modal
 
     rng = np.random.default_rng(7)
     a = rng.standard_normal((2000, 6, 6))
@@ -220,7 +220,7 @@ def test_a_modes_eigenvalue_is_the_inverse_of_its_frequency_and_damping():
     m = 1, c = 2 → ω₀ = 20, ζ = 0.05); a root past critical is real."""
     import numpy as np
 
-    from wtvib import modal
+    from wtvib.numerics import modal
 
     lam = modal.eigenvalue(20 / (2 * np.pi), 0.05)
     roots = np.roots([1.0, 2.0, 400.0])
@@ -238,7 +238,7 @@ def test_the_lags_own_whirling_roots_are_told_from_the_structures():
     filter the pair near 3 rad/s — only the structure's is an oscillation of the turbine."""
     import numpy as np
 
-    from wtvib import modal
+    from wtvib.numerics import modal
 
     k, m, d = np.array([[100.0]]), np.array([[1.0]]), np.array([[0.2]])
     rates = np.array([[-1.0, 3.0], [-3.0, -1.0]])
@@ -267,7 +267,7 @@ def test_the_greedy_assignment_serves_the_most_certain_row_first():
     by hand; serving row 1 first would give it column 0 and row 0 column 1."""
     import numpy as np
 
-    from wtvib import modal
+    from wtvib.numerics import modal
 
     score = np.zeros((8, 9))
     score[0, :2] = [0.9, 0.8]

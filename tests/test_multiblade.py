@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import coleman
+from wtvib.numerics import coleman
 
 
 @pytest.mark.parametrize("blades", [3, 4, 5])

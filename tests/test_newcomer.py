@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from wtvib import catalogue
 from wtvib.cli import app
+from wtvib.workflows import catalogue
 
 from .conftest import TURBINES
 
@@ -22,14 +22,14 @@ runner = CliRunner()
 def test_the_catalogue_is_inside_the_package_and_the_repositorys_turbines_is_it():
     """The wheel's package data (pyproject: wtvib/turbines/*.yaml); ``turbines/`` at the
     top of the repository is the same folder."""
-    assert catalogue.FOLDER.parent == Path(catalogue.__file__).resolve().parent
+    assert catalogue.FOLDER.parent == Path(catalogue.__file__).resolve().parents[1]
     assert {p.name for p in catalogue.files()} == {p.name for p in TURBINES.glob("*.yaml")}
     assert TURBINES.resolve() == catalogue.FOLDER
 
 
 def test_the_index_is_what_the_audits_say():
     """``wtvib catalogue`` lists from index.json, written from the audits: it must still be
-    what they say (rerun ``python -m wtvib.catalogue`` after changing a turbine)."""
+    what they say (rerun ``python -m wtvib.workflows.catalogue`` after changing a turbine)."""
     assert catalogue.entries() == catalogue.index()
 
 
@@ -163,7 +163,7 @@ def test_a_broken_spec_is_answered_before_the_models_are_imported(tmp_path):
         "from wtvib import cli\n"
         "sys.argv = ['wtvib', 'check', 't.yaml']\n"
         "try:\n    cli.main()\nexcept SystemExit as e:\n    code = e.code\n"
-        "late = ('wtvib.audit', 'matplotlib', 'wtvib.plots.render')\n"
+        "late = ('wtvib.audit', 'matplotlib', 'wtvib.outputs.plots.render')\n"
         "heavy = [m for m in late if m in sys.modules]\n"
         "print(code, heavy, file=sys.stderr)\n"
     )

@@ -5,8 +5,8 @@ from pathlib import Path
 import pytest
 
 from wtvib.errors import OutputError
-from wtvib.outputs import is_ours, write_atomic
-from wtvib.plots import png_bytes
+from wtvib.outputs.files import is_ours, write_atomic
+from wtvib.outputs.plots import png_bytes
 
 
 def test_a_users_file_is_never_replaced_without_force(tmp_path):

@@ -7,8 +7,9 @@ from pypdf import PdfReader
 from typer.testing import CliRunner
 
 from tests.conftest import TURBINES
-from wtvib import audit, pdfreport, spec
+from wtvib import audit, spec
 from wtvib.cli import app
+from wtvib.outputs import pdfreport
 
 runner = CliRunner()
 
@@ -37,7 +38,7 @@ def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
     reader = PdfReader(io.BytesIO(wka60_pdf.read_bytes()))
     assert 2 <= len(reader.pages) <= 10  # the WKA-60 inputs table now lists its tower sections
     images = [img for page in reader.pages for img in page.images]
-    from wtvib.plots import diagrams
+    from wtvib.outputs.plots import diagrams
 
     # one image per diagram: tower and blades, drive-train Campbell and mode shapes
     assert len(images) == len(diagrams(audit.run(spec.load(TURBINES / "wka-60.yaml")))) == 3
@@ -47,7 +48,7 @@ def test_pdf_has_pages_and_the_campbell_image(wka60_pdf):
 def test_pdf_is_marked_as_wtvib_output_and_reproducible(wka60_pdf, tmp_path, monkeypatch):
     """The same inputs give the same bytes where SOURCE_DATE_EPOCH fixes the date (the
     reproducible-builds convention); without it the PDF carries the day it was made."""
-    from wtvib.outputs import is_ours
+    from wtvib.outputs.files import is_ours
 
     assert is_ours(wka60_pdf)
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1733300000")  # 2024-12-04 08:13:20 UTC
@@ -122,7 +123,7 @@ def test_report_of_a_bad_spec_is_one_line(tmp_path):
 def test_pdf_numbers_are_for_people():
     """Issue 21: a check's numbers are one readable line with units (not `key = value`
     reprs), and inputs are written as engineers write them."""
-    from wtvib.pdfreport import _for_people, _numbers
+    from wtvib.outputs.pdfreport import _for_people, _numbers
 
     c = {
         "mode": "tower.fa1",
@@ -145,11 +146,11 @@ def test_pdf_numbers_are_for_people():
 
 
 def test_pdf_images_are_the_pngs_pixels_passed_through(wka60_pdf):
-    """The figures are embedded as their PNGs' compressed rows (wtvib.pdfpng): a reader that
+    """The figures are embedded as their PNGs' compressed rows (wtvib.outputs.pdfpng): a reader that
     applies the PNG predictors gets exactly the pixels wtvib drew."""
     from PIL import Image
 
-    from wtvib.plots.render import inline
+    from wtvib.outputs.plots.render import inline
 
     reader = PdfReader(io.BytesIO(wka60_pdf.read_bytes()))
     drawn = inline(audit.run(spec.load(TURBINES / "wka-60.yaml")), detail=True)
@@ -170,7 +171,7 @@ def test_png_that_cannot_pass_through_goes_to_reportlab(tmp_path):
     from reportlab.platypus import Image as RLImage
     from reportlab.platypus import SimpleDocTemplate
 
-    from wtvib.pdfpng import PngImage, image, png_stream
+    from wtvib.outputs.pdfpng import PngImage, image, png_stream
 
     def png(mode: str, **kw) -> bytes:
         buf = io.BytesIO()
@@ -199,7 +200,7 @@ def test_a_figure_taller_than_a_page_is_drawn_to_fit():
     results import with very many modes would not build."""
     from PIL import Image
 
-    from wtvib import pdfreport
+    from wtvib.outputs import pdfreport
 
     report = audit.run(spec.load(TURBINES / "wka-60.yaml")).to_dict()
     buf = io.BytesIO()
@@ -246,11 +247,11 @@ def test_a_subsystem_without_checks_says_where_its_modes_are_judged():
 
 
 def test_png_header_is_read_in_one_place():
-    """wtvib.png.header: the IHDR of a PNG wtvib wrote (the size the PDF scales by), None
+    """wtvib.outputs.png.header: the IHDR of a PNG wtvib wrote (the size the PDF scales by), None
     for anything that is not a PNG with its IHDR first."""
-    from wtvib import png
-    from wtvib.plots import png_bytes
-    from wtvib.plots.campbell import campbell_plot
+    from wtvib.outputs import png
+    from wtvib.outputs.plots import png_bytes
+    from wtvib.outputs.plots.campbell import campbell_plot
 
     fig = campbell_plot(audit.run(spec.load(TURBINES / "mod-2.yaml")))
     data = png_bytes(fig)

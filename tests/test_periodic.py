@@ -2,7 +2,9 @@
 said (the multi-blade cross-check is in tests/validation/test_coupled.py)."""
 
 from tests.test_coupled import write
-from wtvib import audit, coupled, floquet, periodic, spec
+from wtvib import audit, spec
+from wtvib.numerics import floquet
+from wtvib.subsystems import coupled, periodic
 
 
 def test_a_slow_two_bladed_rotor_with_stiff_blades_is_analysed_and_stable(tmp_path):

@@ -1,4 +1,4 @@
-"""The floating platform under the tower (wtvib.platform): its matrices against the
+"""The floating platform under the tower (wtvib.subsystems.platform): its matrices against the
 kinematics of point masses, the tower base's transformation against a rigid body's motion,
 a rigid tower on a platform against the rigid-body eigenproblem written out by hand, the
 added mass at a mode's own frequency, and the MAP++ reader's refusals."""
@@ -8,13 +8,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import platform, tower
 from wtvib.errors import SpecError
 from wtvib.importers import mooring
 from wtvib.importers.deck import parse
-from wtvib.modal import ModalError
+from wtvib.numerics.modal import ModalError
 from wtvib.spec import from_data
 from wtvib.spec.tower import Platform
+from wtvib.subsystems import platform, tower
 
 G = 9.80665
 

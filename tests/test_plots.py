@@ -5,9 +5,9 @@ import pytest
 
 from tests.conftest import TURBINES
 from wtvib import audit, spec
-from wtvib.outputs import SOFTWARE_TAG
-from wtvib.plots import blade, campbell, diagrams, drivetrain, png_bytes, rotor, system
-from wtvib.plots.layout import FIGURE_DPI
+from wtvib.outputs.files import SOFTWARE_TAG
+from wtvib.outputs.plots import blade, campbell, diagrams, drivetrain, png_bytes, rotor, system
+from wtvib.outputs.plots.layout import FIGURE_DPI
 
 
 @pytest.fixture(scope="module")
@@ -59,8 +59,8 @@ def test_damping_diagram_and_crossing_dafs(shared, tmp_path):
     the Campbell crossings labelled with their DAF (the numbers the findings hold)."""
     from wtvib import audit
     from wtvib.importers import load as load_any
-    from wtvib.plots import diagrams
-    from wtvib.plots.campbell import campbell_plot
+    from wtvib.outputs.plots import diagrams
+    from wtvib.outputs.plots.campbell import campbell_plot
 
     report = audit.run(load_any(shared / "reference/NREL5MW/NREL-5MW.fst"))
     figs = diagrams(report)
@@ -76,13 +76,13 @@ def test_damping_diagram_and_crossing_dafs(shared, tmp_path):
 
 def test_no_damping_diagram_without_aerodynamics(write_spec):
     from wtvib import audit
-    from wtvib.plots import diagrams
+    from wtvib.outputs.plots import diagrams
     from wtvib.spec import load
 
     assert "damping" not in diagrams(audit.run(load(write_spec())))
 
 
-# --- drawing beside the audit (wtvib.plots.render, issue 20) -----------------------------
+# --- drawing beside the audit (wtvib.outputs.plots.render, issue 20) -----------------------------
 
 
 def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkeypatch):
@@ -90,7 +90,7 @@ def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkey
     bytes of in-process drawing, in the registry's order — here with every detail figure
     of MOD-0 (Floquet, drive train, power sweep), one process per figure (two per core, of
     three cores)."""
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     monkeypatch.setattr(render, "cores", lambda: 3)
@@ -107,7 +107,7 @@ def test_a_report_that_does_not_pickle_is_drawn_in_process(reports, monkeypatch)
     cache a model kept) costs the parallel drawing, never the figures or the verdict."""
     import pickle
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     monkeypatch.setattr(render, "cores", lambda: 3)
@@ -129,7 +129,7 @@ import pickle, sys
 if sys.argv[1] == "plain":
     import matplotlib.pyplot  # matplotlib as a user's program imports it
 from wtvib import audit, spec
-from wtvib.plots import render
+from wtvib.outputs.plots import render
 pngs = render.inline(audit.run(spec.load(sys.argv[2])), detail=True)
 import matplotlib.lines
 sys.stdout.buffer.write(pickle.dumps((pngs, matplotlib.lines.Line2D.set.__doc__)))
@@ -162,7 +162,7 @@ def test_no_fork_while_another_thread_runs(monkeypatch):
     with another thread alive the figures are drawn in-process."""
     import threading
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "cores", lambda: 2)
     monkeypatch.delenv("WTVIB_DRAW", raising=False)
@@ -182,7 +182,7 @@ def test_no_fork_while_another_thread_runs(monkeypatch):
 def test_a_failed_drawing_process_costs_time_not_figures(reports, monkeypatch):
     """A drawing process that fails (here: its import step raises) reports it, and the
     figures are drawn in-process instead — the same bytes."""
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     def broken() -> None:
         raise MemoryError("no room for matplotlib")
@@ -199,7 +199,7 @@ def test_an_audit_that_fails_ends_the_drawing_process(monkeypatch):
     the drawing process: no orphan, no zombie."""
     import os
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     with pytest.raises(ValueError), render.Drawer() as drawer:
@@ -217,7 +217,7 @@ def test_a_caller_that_fails_after_sending_the_report_ends_the_drawing(reports, 
     import os
     import signal
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     kills: list[tuple[int, int]] = []
@@ -236,7 +236,7 @@ def test_a_caller_that_fails_after_sending_the_report_ends_the_drawing(reports, 
 
 
 def test_send_then_pngs_gives_the_figures_once(reports, monkeypatch):
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     with render.Drawer() as drawer:
@@ -248,7 +248,7 @@ def test_send_then_pngs_gives_the_figures_once(reports, monkeypatch):
 def test_a_hung_drawing_process_is_killed_and_the_figures_drawn_in_process(reports, monkeypatch):
     import time
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     monkeypatch.setattr(render, "forking", lambda: True)
     monkeypatch.setattr(render, "_warm", lambda: time.sleep(60))
@@ -263,7 +263,7 @@ def test_a_hung_drawing_process_is_killed_and_the_figures_drawn_in_process(repor
 def test_no_process_to_fork_means_drawing_in_process(reports, monkeypatch):
     import os
 
-    from wtvib.plots import render
+    from wtvib.outputs.plots import render
 
     def refused() -> int:
         raise BlockingIOError(11, "Resource temporarily unavailable")
@@ -282,7 +282,7 @@ def test_a_legend_of_many_rows_makes_the_figure_taller_not_the_axes_vanish():
     MIN_AXES_IN, and drawing does not fail (subplots_adjust refuses bottom ≥ top)."""
     from matplotlib.figure import Figure
 
-    from wtvib.plots.layout import MIN_AXES_IN, fixed_layout, legend_below
+    from wtvib.outputs.plots.layout import MIN_AXES_IN, fixed_layout, legend_below
 
     fig = Figure(figsize=(10, 7), dpi=150)
     ax = fig.add_subplot()
@@ -329,7 +329,7 @@ def test_every_text_prints_at_7_pt_or_more_in_the_pdf(name):
     7 pt or more."""
     from matplotlib.text import Text
 
-    from wtvib.plots.layout import PDF_FIGURE_IN
+    from wtvib.outputs.plots.layout import PDF_FIGURE_IN
 
     report = audit.run(spec.load(TURBINES / f"{name}.yaml"))
     for suffix, fig in diagrams(report, detail=True).items():
@@ -399,7 +399,7 @@ def test_log_axes_label_their_decades_as_plain_numbers(reports):
     numbers, no mathtext powers of ten (plots.layout.plain_decades)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from wtvib.plots.layout import _plain
+    from wtvib.outputs.plots.layout import _plain
 
     assert [_plain(v) for v in (100.0, 1.0, 0.1, 0.0, -0.1, 1e-5, 3e7)] == [
         "100", "1", "0.1", "0", "\u22120.1", "1e-5", "1e7"
@@ -465,7 +465,7 @@ def test_a_crossing_hidden_under_a_worse_one_is_not_in_the_legend(reports):
     once pass. The info marker covers the pass one, so the legend names no pass crossing
     a reader could not find. (Without its gear ratio: the high-speed shaft's 1G line has
     pass crossings of its own, below the operating range, which the legend rightly names.)"""
-    from wtvib.excitation import operating_range
+    from wtvib.judge.excitation import operating_range
 
     data = reports["wka-60"].spec.model_dump(mode="json", exclude_none=True)
     data["drivetrain"].pop("gear_ratio")
@@ -492,7 +492,7 @@ def test_a_crossing_hidden_under_a_worse_one_is_not_in_the_legend(reports):
 def test_the_drive_train_figure_draws_the_chain_it_was_computed_on(reports):
     """Hau Fig. 7.10: the distribution of inertia and stiffness along the train heads the
     mode shapes — the reduced chain the modes came from (the blades' edgewise spring too)."""
-    from wtvib import drivetrain as model
+    from wtvib.subsystems import drivetrain as model
 
     wka = reports["wka-60"]
     chain = wka.result(model.NAME, model.DrivetrainResults).chain

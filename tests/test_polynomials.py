@@ -1,4 +1,5 @@
-"""ElastoDyn's mode-shape polynomials at unit level (wtvib.polynomials): the fit, the blade's
+"""ElastoDyn's mode-shape polynomials at unit level (wtvib.subsystems.polynomials): the fit, the
+blade's
 Rayleigh–Ritz polynomial, the audit's diagnosis, the written coefficients and files.
 
 The exact reference is the uniform cantilever (Euler–Bernoulli): its first mode
@@ -12,10 +13,10 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import polynomials
 from wtvib.errors import SpecError
-from wtvib.polynomials import Fit, Polynomial, Row, fit, mac, patched, written
 from wtvib.spec import Spec
+from wtvib.subsystems import polynomials
+from wtvib.subsystems.polynomials import Fit, Polynomial, Row, fit, mac, patched, written
 
 L_TOWER, M_TOWER, EI_TOWER = 80.0, 4000.0, 2.0e11
 L_BLADE, M_BLADE, EI_FLAP, EI_EDGE = 60.0, 300.0, 2.0e9, 8.0e9

@@ -8,7 +8,7 @@ from rich.console import Console
 
 from tests.conftest import TURBINES
 from wtvib import audit, spec
-from wtvib.report import _shown, terminal, to_json
+from wtvib.outputs.report import _shown, terminal, to_json
 
 
 def strict(text: str) -> object:
@@ -65,7 +65,7 @@ def test_batch_progress_redraws_without_a_thread():
 
     from rich.console import Console
 
-    from wtvib.report import batch_progress
+    from wtvib.outputs.report import batch_progress
 
     out = io.StringIO()
     console = Console(file=out, force_terminal=True, width=80)
@@ -82,7 +82,7 @@ def test_a_report_rendered_ahead_prints_as_one_printed_directly():
     included, as printing it all at once."""
     from pathlib import Path
 
-    from wtvib.report import wrote
+    from wtvib.outputs.report import wrote
 
     r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
     files = [Path("out") / "mod-0.campbell.png", Path("out") / "mod-0.floquet.png"]
@@ -103,7 +103,7 @@ def test_the_batch_summary_breaks_a_long_check_id_after_a_dot_only():
     as it was ("drivetrain.grid.powe" / "r"), and not truncated: the turbine names wrap."""
     from pathlib import Path
 
-    from wtvib.report import batch_summary
+    from wtvib.outputs.report import batch_summary
 
     class Item:
         def __init__(self, name: str, check: str) -> None:

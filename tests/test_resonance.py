@@ -10,8 +10,8 @@ import math
 
 import pytest
 
-from wtvib.excitation import Excitation, OperatingRange, harmonic_energy
-from wtvib.resonance import assess, regime_of, resonance_checks
+from wtvib.judge.excitation import Excitation, OperatingRange, harmonic_energy
+from wtvib.judge.resonance import assess, regime_of, resonance_checks
 from wtvib.results import Mode, Sampled, Southwell
 from wtvib.rules import MarginRule
 from wtvib.units import rad_s_to_rpm, rpm_to_rad_s
@@ -195,7 +195,7 @@ def test_fixed_frame_lines_take_the_class_of_the_blade_harmonic_behind_them():
     whirl is the blades' 4P (minor), on a forward whirl their 2P (secondary), on a
     collective mode 3P (dominant); fixed 4P reaches a symmetric rotor's modes only through
     asymmetry (minor); a tower mode (no whirl) keeps the line's own class."""
-    from wtvib.excitation import driving_harmonic, rotor_harmonics
+    from wtvib.judge.excitation import driving_harmonic, rotor_harmonics
 
     lines = {e.id: e for e in rotor_harmonics(3, 6)}
     assert [driving_harmonic(3, w) for w in ("backward", "forward", "collective")] == [4, 2, 3]
@@ -249,7 +249,7 @@ def test_bisect_solves_a_linear_piece_at_its_first_secant_and_a_curve_to_the_tol
     with roots at ±1) still converges to 1e-12, as the tolerance asks."""
     import numpy as np
 
-    from wtvib.resonance import bisect
+    from wtvib.judge.resonance import bisect
 
     calls = []
 
@@ -270,7 +270,7 @@ def test_all_pairs_at_once_agree_with_each_pair_alone_to_the_bit():
     """assess_all solves every pair's crossings and run edges together: the same numbers as
     judging each pair alone (a sampled curve, a Southwell curve, a soil band, a fixed
     speed range and a quick-pass band among them)."""
-    from wtvib.resonance import assess_all
+    from wtvib.judge.resonance import assess_all
     from wtvib.results import Sampled
 
     sampled = Sampled((0.0, 1.0, 2.0, 3.0), (0.9, 0.95, 1.1, 1.2))
@@ -350,7 +350,7 @@ def test_marks_of_one_line_at_one_place_are_one_mark():
     one resonance: marks within 2 % of each other in speed and frequency merge into the worst
     status, naming both modes, with the larger amplification (the less damped mode); 2.1 %
     apart in either, or on another line, they stay apart."""
-    from wtvib.resonance import Mark, _one_per_place
+    from wtvib.judge.resonance import Mark, _one_per_place
 
     fa = Mark(23.0, 0.767, "warn", "crossing", "2P", ("tower.fa1",), 10.0, 0.05)
     ss = Mark(23.3, 0.775, "fail", "crossing", "2P", ("tower.ss1",), 25.0, 0.02)
@@ -386,7 +386,7 @@ def _standstill_mode(zeta: float | None, source: str) -> Mode:
 def test_a_standstill_audit_judges_the_modes_damping(modes, status):
     """``system.stability`` of a parked audit of wtvib's own models (resonance.
     standstill_stability): what such an audit rests on is the modes' damping."""
-    from wtvib.resonance import standstill_stability
+    from wtvib.judge.resonance import standstill_stability
 
     check = standstill_stability(modes)
     assert (check.id, check.status) == ("system.stability", status), check.message

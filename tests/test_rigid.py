@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from wtvib.errors import SpecError
-from wtvib.rigid import nacelle
+from wtvib.numerics.rigid import nacelle
 from wtvib.spec import TowerHead
 
 
@@ -36,7 +36,7 @@ def test_a_head_lighter_than_its_rotor_is_refused_with_the_field():
 def test_rotor_points_weigh_a_uniform_blade_exactly():
     """A uniform blade of 100 kg/m over 40 m from a 2 m hub radius: mass 4,000 kg, polar
     inertia ∫m r² dr = 100·(42³ − 2³)/3 kg·m² — Gauss points integrate it exactly."""
-    from wtvib.rigid import rotor_points
+    from wtvib.numerics.rigid import rotor_points
 
     pts = rotor_points(2.0, np.array([0.0, 40.0]), np.array([100.0, 100.0]))
     assert pts.mass.sum() == pytest.approx(4000.0)

@@ -4,7 +4,8 @@
 import numpy as np
 
 from tests.conftest import TURBINES
-from wtvib import audit, rotor, spec
+from wtvib import audit, spec
+from wtvib.subsystems import rotor
 
 
 def test_three_blades_need_no_floquet_analysis(write_spec):

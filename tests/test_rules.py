@@ -102,7 +102,8 @@ def test_heavy_damping_is_one_threshold_with_its_stated_peak():
     import inspect
     import math
 
-    from wtvib import resonance, rules
+    from wtvib import rules
+    from wtvib.judge import resonance
     from wtvib.spec import AuditSettings
 
     z = rules.HEAVY_DAMPING

@@ -86,7 +86,7 @@ def test_the_good_spec_loads(write_spec):
 def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
     """The README's ``quick_pass_rpm: [[10, 11]]``: YAML gives lists, which the strict
     schema refused as "not a valid tuple" — the documented field could not be used."""
-    from wtvib.excitation import operating_range
+    from wtvib.judge.excitation import operating_range
     from wtvib.units import rpm_to_rad_s
 
     good = GOOD.replace("max_rpm: 20", "max_rpm: 20\n    quick_pass_rpm: [[12, 13.5]]")
@@ -132,7 +132,7 @@ def test_oversized_file_is_refused_before_parsing(tmp_path):
 
 
 def test_alias_bomb_is_refused(tmp_path, monkeypatch):
-    from wtvib import yamlio
+    from wtvib.spec import yamlio
 
     monkeypatch.setattr(yamlio, "MAX_NODES", 10_000)
     lines = ["a0: &a0 [x, x, x, x, x, x, x, x, x, x]"]

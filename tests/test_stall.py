@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import stall
+from wtvib.aero import stall
 
 
 def test_section_damping_limits_of_the_formula():

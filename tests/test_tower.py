@@ -4,7 +4,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wtvib import audit, spec, tower
+from wtvib import audit, spec
+from wtvib.subsystems import tower
 
 
 def classify(write_spec, f, blades=2, speed="fixed_rpm: 30", margin=None):
@@ -101,7 +102,8 @@ def test_a_long_station_table_is_sampled_by_a_bounded_mesh(write_spec):
     the same taper tabulated at 2,000 and at 11 stations gives one frequency (0.2 %)."""
     import numpy as np
 
-    from wtvib import audit, beam
+    from wtvib import audit
+    from wtvib.numerics import beam
 
     def tube(n: int) -> str:
         h = np.linspace(0, 90, n)
@@ -177,7 +179,7 @@ def test_a_hingeless_two_bladed_rotor_needs_a_stiff_tower(tmp_path, turbine, hub
 def test_the_tower_frequency_is_placed_between_the_rotor_harmonics():
     """f_t against 1P = 0.2 Hz: 0.45 Hz lies between 2P and 3P, 0.2 Hz exactly on 1P counts
     as between 1P and 2P, 0.15 Hz below 1P."""
-    from wtvib.tower import _between
+    from wtvib.subsystems.tower import _between
 
     assert _between(0.45, 3, 0.2) == "between 2P and 3P"
     assert _between(0.2, 3, 0.2) == "between 1P and 2P"
@@ -223,7 +225,7 @@ def test_rigid_share_is_one_for_the_whole_turbines_surge_and_tilt_and_below_for_
     tilt as it is, its share stays below 1 (0.977 with a unit mass matrix)."""
     import numpy as np
 
-    from wtvib.tower import rigid_share
+    from wtvib.subsystems.tower import rigid_share
 
     heights = np.linspace(10.0, 90.0, 9)
     n = 2 * len(heights)

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 
 from tests.conftest import spec_text
-from wtvib import spec, uncertainty
+from wtvib import spec
+from wtvib.studies import uncertainty
 
 
 def test_distributions_have_the_documented_spread():

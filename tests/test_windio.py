@@ -42,7 +42,7 @@ def iea15() -> dict:  # type: ignore[type-arg]
     windio_pkg = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
     from pathlib import Path
 
-    from wtvib.yamlio import parse_plain
+    from wtvib.spec.yamlio import parse_plain
 
     path = Path(windio_pkg.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
     return parse_plain(path.read_text()).data  # type: ignore[no-any-return]

@@ -119,8 +119,8 @@ def test_windio_2_radians_in_a_stiffener_spacing_are_read_and_said():
     """windIO's own 1.x → 2.x converter reads a longitudinal spacing under π/2 as radians;
     so does wtvib, says so once for all the members that share it, and builds the same
     steel as from degrees (12 stiffeners round each column, not 688)."""
-    from wtvib import hull
     from wtvib.importers.windio_platform import _Platform
+    from wtvib.numerics import hull
 
     def stiffened(spacing: float) -> tuple[float, list[str]]:
         doc = yaml.safe_load(OC4.read_text())
@@ -174,8 +174,8 @@ def test_a_joint_s_axial_added_mass_coefficient_is_read():
     """windIO's ``axial_coeffs.Ca`` at a member's end joint sets its end term
     ρ·C_a,end·πD³/12 (else RAFT's 0.6): OC4's main column (6.5 m) on a keel joint with Ca 1.0
     gains ρ·0.4·π·6.5³/12 in heave."""
-    from wtvib import hull
     from wtvib.importers.windio_platform import _Platform
+    from wtvib.numerics import hull
 
     def heave(edit) -> float:  # type: ignore[no-untyped-def]
         doc = yaml.safe_load(OC4.read_text())

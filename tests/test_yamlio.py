@@ -2,8 +2,8 @@
 
 import pytest
 
-from wtvib import yamlio
 from wtvib.errors import SpecError
+from wtvib.spec import yamlio
 
 
 def test_lines_of_field_paths():
@@ -89,7 +89,7 @@ def test_the_fast_windio_reader_reads_plain_scalars_as_the_spec_reader_does(text
     """Issue 19: the fast reader of machine-written files (windIO) used PyYAML's YAML 1.1
     resolvers: 8e-05 and 1e5 stayed text (an airfoil coordinate of the IEA-22 example file
     failed the windIO schema), 1:30 was 90 and on was true. Both readers are YAML 1.2 now."""
-    from wtvib.yamlio import parse, parse_plain
+    from wtvib.spec.yamlio import parse, parse_plain
 
     assert parse_plain(text).data == parse(text).data
 
@@ -102,7 +102,7 @@ def test_plain_number_lists_read_by_json_equal_the_yaml_readers():
     YAML; so does a list with an anchor or a comment, or a text that holds the token."""
     import yaml
 
-    from wtvib import yamlio
+    from wtvib.spec import yamlio
 
     text = """\
 a: [0.0, 1, -2.5e-07, 3E+2]

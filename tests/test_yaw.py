@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from tests.conftest import spec_text
-from wtvib import audit, spec, yaw
+from wtvib import audit, spec
+from wtvib.subsystems import yaw
 
 YAW = """tower_head: {mass_kg: 300000, inertia_yaw_kgm2: 2.0e7}
 yaw:
@@ -57,7 +58,7 @@ def test_a_head_yaw_inertia_below_half_the_rotors_polar_is_refused():
     the head's mean yaw inertia includes the rotor's J_p/2, so it is the input's error."""
     from tests.conftest import TURBINES
     from wtvib.errors import SpecError
-    from wtvib.yamlio import parse_plain
+    from wtvib.spec.yamlio import parse_plain
 
     data = parse_plain((TURBINES / "aeroman.yaml").read_text()).data
     data["yaw"]["rotor_polar_inertia_kgm2"]["value"] = 1.0e9

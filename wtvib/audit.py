@@ -8,38 +8,27 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from . import (
-    aerodamping,
-    aeroelastic,
-    blade,
-    campbell,
-    coupled,
-    drivetrain,
-    polynomials,
-    rotor,
-    scaling,
-    stall,
-    tower,
-    tuned_damper,
-    yaw,
-)
-from .analysis import Analysis, Context, Damping, Modifier, Subsystem
+from .aero import aerodamping, aeroelastic, stall, tuned_damper
 from .errors import SpecError
-from .excitation import OperatingRange, excitations, operating_range
-from .modal import ModalError
-from .resonance import Finding, Mark, assess_all, resonance_checks
-from .resonance import marks as resonance_marks
+from .judge import campbell
+from .judge.analysis import Analysis, Context, Damping, Modifier, Subsystem
+from .judge.excitation import OperatingRange, excitations, operating_range
+from .judge.resonance import Finding, Mark, assess_all, resonance_checks
+from .judge.resonance import marks as resonance_marks
+from .numerics.modal import ModalError
 from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
 from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
-from .tower import is_platform_mode
+from .studies import scaling
+from .subsystems import blade, coupled, drivetrain, polynomials, rotor, tower, yaw
+from .subsystems.tower import is_platform_mode
 
 REPORT_SCHEMA = "wtvib-report/1"
 
 R = TypeVar("R")
 
 #: The analysed parts of a turbine, in report order: each a module with the subsystem
-#: protocol of :mod:`wtvib.analysis` (modes, default damping, its own checks and results).
+#: protocol of :mod:`wtvib.judge.analysis` (modes, default damping, its own checks and results).
 SUBSYSTEMS: tuple[Subsystem, ...] = (
     tower,
     blade,
@@ -53,7 +42,8 @@ SUBSYSTEMS: tuple[Subsystem, ...] = (
     polynomials,
 )
 
-#: What changes every judged mode once the models are built (:class:`wtvib.analysis.Modifier`),
+#: What changes every judged mode once the models are built
+#: (:class:`wtvib.judge.analysis.Modifier`),
 #: in order: a blade tip damper's added damping (structural), then the aerodynamic damping
 #: at the operating points (on top of the structural).
 MODIFIERS: tuple[Modifier, ...] = (tuned_damper, aerodamping)
@@ -109,7 +99,7 @@ class Report:
     @functools.cached_property
     def marks(self) -> tuple[Mark, ...]:
         """Every resonance the findings hold, one mark each (what the Campbell diagrams
-        draw: :func:`wtvib.resonance.marks`)."""
+        draw: :func:`wtvib.judge.resonance.marks`)."""
         return tuple(resonance_marks(self.findings, self.operating_range))
 
     @property
@@ -387,13 +377,13 @@ def _band_of(mode: Mode, isolated: Mode | None) -> tuple[float, float] | None:
 
 
 def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
-    from . import uncertainty
+    from .studies import uncertainty
 
     return [uncertainty.NO_TOLERANCE] if samples and not uncertainty.uncertain(spec) else []
 
 
 def _uncertainty_warnings(spread: dict[str, Any] | None) -> list[str]:
-    from . import uncertainty
+    from .studies import uncertainty
 
     return uncertainty.warnings_of(spread) if spread else []
 
@@ -401,7 +391,7 @@ def _uncertainty_warnings(spread: dict[str, Any] | None) -> list[str]:
 def _uncertainty(
     spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule, client: Any = None
 ) -> dict[str, Any] | None:
-    from . import uncertainty
+    from .studies import uncertainty
 
     if not uncertainty.uncertain(spec):
         return None  # said in the warnings

@@ -244,8 +244,8 @@ def _options(
     rule: RuleKind | None,
     preset: PresetName | None,
 ) -> "batch.Options":  # type: ignore[name-defined]  # noqa: F821
-    from .batch import Options
     from .importers import ReadOptions
+    from .workflows.batch import Options
 
     read = ReadOptions(
         rpm=_rpm_range(rpm),
@@ -318,7 +318,7 @@ _state = {"debug": False}
 
 
 def _shown(text: object) -> str:
-    from .streams import shown
+    from .outputs.streams import shown
 
     return shown(text)
 
@@ -356,7 +356,7 @@ def _user_errors(command: F) -> F:
                 raise
             text = str(exc)
             source = kwargs.get("spec_file")
-            modal = sys.modules.get("wtvib.modal")  # not imported for a typo's error
+            modal = sys.modules.get("wtvib.numerics.modal")  # not imported for a typo's error
             if source is not None and modal is not None and isinstance(exc, modal.ModalError):
                 text = f"{source}: {text}"  # a model that cannot be solved: which input
             typer.echo(f"error: {_shown(text)}", err=True)
@@ -370,7 +370,7 @@ def _user_errors(command: F) -> F:
         except Exception as exc:  # the last line of defence
             if debug:
                 raise
-            from .batch import internal_message
+            from .workflows.batch import internal_message
 
             source = next(
                 (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs),
@@ -386,8 +386,8 @@ def _environment_fault(exc: OSError, kwargs: dict[str, object]) -> None:
     """An operating-system error as one line and exit 2: the standard output that could
     not take the report, or the file named in the error; an OSError naming no file and not
     about the output stays a wtvib bug (exit 3)."""
-    from . import streams
-    from .batch import internal_message
+    from .outputs import streams
+    from .workflows.batch import internal_message
 
     lost = streams.lost_output(exc)
     if lost is not None:
@@ -506,13 +506,13 @@ def check(
     debug: DebugOption = False,
 ) -> None:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
-    from .outputs import campbell_to_csv, write_atomic
+    from .outputs.files import campbell_to_csv, write_atomic
 
     if scheduler is not None and not uncertainty:
         raise typer.BadParameter("--scheduler applies to --uncertainty", param_hint="--scheduler")
     samples, seed = _study(uncertainty, samples, seed)
     if campbell_csv is not None:
-        from .outputs import folder_exists
+        from .outputs.files import folder_exists
 
         folder_exists(campbell_csv)
     plot = not no_plots
@@ -521,7 +521,7 @@ def check(
     turbine = options.load(spec_file)
     settings = options.settings(turbine)
     from . import audit
-    from .plots.render import Drawer
+    from .outputs.plots.render import Drawer
 
     with Drawer(enabled=plot) as drawer:  # imports matplotlib beside the audit
         doing = f"auditing, {samples:,} Monte Carlo samples" if uncertainty else "auditing"
@@ -553,7 +553,7 @@ def check(
         for path in written:
             typer.echo(f"wrote {_shown(path)}", err=True)
     else:
-        from .report import wrote
+        from .outputs.report import wrote
 
         sys.stdout.flush()
         wrote(console, written)
@@ -567,11 +567,11 @@ def _rendered(report: Any, format: Format, *, show_all: bool, detail: bool) -> "
     """The report as the text ``check`` prints: JSON (no console), or the terminal report
     captured from the console it is then printed beside (the files written)."""
     if format is Format.json:
-        from .report import to_json
+        from .outputs.report import to_json
 
         return None, to_json(report)
 
-    from .report import terminal
+    from .outputs.report import terminal
 
     console = _console()
     with console.capture() as captured:
@@ -619,16 +619,18 @@ def report(
     """Write the PDF audit report of one turbine."""
     import dataclasses
 
-    from . import audit, batch, pdfreport  # audit: the models imported before the fork
+    from . import audit
+    from .outputs import pdfreport  # audit: the models imported before the fork
+    from .workflows import batch
 
     samples, seed = _study(uncertainty, samples, seed)
     if uncertainty:
         options = dataclasses.replace(options, samples=samples, seed=seed)
-    from .outputs import folder_exists
+    from .outputs.files import folder_exists
 
     folder_exists(output)  # before the audit, not after it
-    from .outputs import write_atomic
-    from .plots.render import Drawer
+    from .outputs.files import write_atomic
+    from .outputs.plots.render import Drawer
 
     # every figure, drawn beside the audit as check draws its own (plots.render); forked
     # before the spinner's thread starts (a fork copies no thread, but a lock one holds)
@@ -691,8 +693,8 @@ def batch_command(
 
     The operating and rule options apply to every input."""
 
-    from . import batch
-    from .report import batch_progress, batch_summary
+    from .outputs.report import batch_progress, batch_summary
+    from .workflows import batch
 
     plots = not no_plots
     paths, skipped = batch.discover_all(inputs)
@@ -769,7 +771,7 @@ def _alive(client: Any) -> Any:
     """Whether the cluster still has a worker (None: a local run, always alive)."""
     if client is None:
         return None
-    from .cluster import has_workers
+    from .studies.cluster import has_workers
 
     return lambda: has_workers(client)
 
@@ -780,7 +782,7 @@ def _cluster(address: str | None) -> Iterator[Any]:
     if address is None:
         yield None
         return
-    from .cluster import close, connect
+    from .studies.cluster import close, connect
 
     client = connect(address)
     try:
@@ -804,7 +806,7 @@ class _BatchWriter:
     def _write(self, name: str, data: bytes) -> None:
         import time
 
-        from .outputs import write_atomic
+        from .outputs.files import write_atomic
 
         t0 = time.perf_counter()
         self.written.append(write_atomic(self.folder / name, data, force=self.force, folder=True))
@@ -849,7 +851,9 @@ class _BatchWriter:
     def finish(self, items: list, plots: bool, interrupted: bool = False) -> None:  # type: ignore[type-arg]
         import platform
 
-        from . import __version__, batch, pdfreport
+        from . import __version__
+        from .outputs import pdfreport
+        from .workflows import batch
 
         summary = json.dumps(batch.summary(items), indent=2, ensure_ascii=False) + "\n"
         self._write("summary.json", _utf8(summary))
@@ -930,7 +934,8 @@ def window(
     debug: DebugOption = False,
 ) -> None:
     """Allowed frequency windows per subsystem, and where the design sits in them."""
-    from . import audit, design
+    from . import audit
+    from .studies import design
 
     turbine = options.load(spec_file)
     report = audit.run(turbine, options.settings(turbine))
@@ -939,13 +944,13 @@ def window(
     if format is Format.json:
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
     else:
-        from .report import windows_table
+        from .outputs.report import windows_table
 
         windows_table(_console(), doc)
     if not no_plots:
-        from .outputs import write_atomic
-        from .plots import png_bytes
-        from .plots.campbell import windows_plot
+        from .outputs.files import write_atomic
+        from .outputs.plots import png_bytes
+        from .outputs.plots.campbell import windows_plot
 
         tw = design.tower_windows(found)
         tower_w = tw.allowed if tw is not None else ()
@@ -979,7 +984,8 @@ def size_command(
 ) -> None:
     """Scale the tower's wall (or diameter, or both) to put its first bending in a window
     (the windows of `window` under the same operating and rule options)."""
-    from . import audit, design
+    from . import audit
+    from .studies import design
 
     turbine = options.load(spec_file)
     if (target is None) == (target_hz is None):
@@ -1072,7 +1078,7 @@ def convert(
     import yaml
 
     from . import importers
-    from .outputs import converted_spec, write_atomic
+    from .outputs.files import converted_spec, write_atomic
     from .spec import from_data
 
     read = importers.ReadOptions(
@@ -1139,9 +1145,10 @@ def shapes_command(
 ) -> None:
     """ElastoDyn's mode-shape polynomials: computed from the deck's tower and blade, the
     deck's own audited, corrected files written with -o."""
-    from . import importers, polynomials
+    from . import importers
     from .errors import OutputError
-    from .outputs import write_atomic
+    from .outputs.files import write_atomic
+    from .subsystems import polynomials
 
     if importers.kind(deck) != "elastodyn":
         raise typer.BadParameter(
@@ -1171,8 +1178,8 @@ def shapes_command(
             write_atomic(targets[original], text.encode("utf-8"), force=force, folder=True)
             written.append(str(targets[original]))
     if not no_plots:
-        from .plots import png_bytes
-        from .plots.polynomials import polynomials_plot
+        from .outputs.plots import png_bytes
+        from .outputs.plots.polynomials import polynomials_plot
 
         folder = output if output is not None else Path.cwd()
         path = write_atomic(
@@ -1187,7 +1194,7 @@ def shapes_command(
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
         return
 
-    from .report import shapes_table
+    from .outputs.report import shapes_table
 
     shapes_table(_console(), doc)
 
@@ -1206,12 +1213,12 @@ def catalogue_command(
     help_all: HelpAllOption = False,
 ) -> None:
     """List the turbines that ship with wtvib (check one by its name: wtvib check mod-2)."""
-    from . import catalogue
+    from .workflows import catalogue
 
     entries = catalogue.entries()
     if copy is not None:
         from .errors import OutputError
-        from .outputs import write_atomic
+        from .outputs.files import write_atomic
 
         def differs(path: Path) -> bool:  # a file there that is not the catalogue's own
             target = copy / path.name
@@ -1237,7 +1244,7 @@ def catalogue_command(
         sys.stdout.write(json.dumps(doc, indent=2, ensure_ascii=False) + "\n")
         return
 
-    from .report import catalogue_table
+    from .outputs.report import catalogue_table
 
     catalogue_table(_console(), entries, catalogue.FOLDER)
 
@@ -1262,7 +1269,7 @@ def _input(path: Path) -> Path:
     neither is one line before any numerical module is imported."""
     if os.path.lexists(path):
         return path
-    from .catalogue import find
+    from .workflows.catalogue import find
 
     found = find(str(path))
     if found is None:  # said now, not after a second of importing the numerical stack
@@ -1283,7 +1290,7 @@ def schema(
 ) -> None:
     """Print the JSON Schema of the turbine spec, or of the JSON report (--report)."""
     if report:
-        from .contract import report_schema
+        from .workflows.contract import report_schema
 
         doc = report_schema()
     else:
@@ -1294,10 +1301,10 @@ def schema(
 
 
 def main() -> None:
-    """Console entry point: the standard streams made safe first (:mod:`wtvib.streams`),
+    """Console entry point: the standard streams made safe first (:mod:`wtvib.outputs.streams`),
     and what is still buffered for the output flushed here, where a full disk is one line
     and exit 2 rather than Python's "Exception ignored" at exit."""
-    from . import streams
+    from .outputs import streams
 
     streams.guard()
     _reuse_freed_memory()

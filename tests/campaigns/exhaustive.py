@@ -48,7 +48,7 @@ import yaml
 
 from wtvib import audit, importers, spec
 from wtvib.errors import WtvibError
-from wtvib.yamlio import parse, parse_plain
+from wtvib.spec.yamlio import parse, parse_plain
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT))  # run as a script: the tests package beside wtvib

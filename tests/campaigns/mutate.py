@@ -36,27 +36,33 @@ TIMEOUT_S = 300
 
 #: The modules mutated and the tests each runs beside its own test files.
 TESTS: dict[str, tuple[str, ...]] = {
-    "beam": ("tests/test_tower.py",),
-    "modal": ("tests/test_tower.py", "tests/test_drivetrain.py"),
-    "tower": ("tests/validation/test_structure.py", "tests/validation/test_tower_head.py"),
-    "blade": ("tests/validation/test_structure.py",),
-    "drivetrain": (),
-    "yaw": (),
-    "aeroelastic": (),
-    "stall": (),
-    "resonance": ("tests/validation/test_daf.py",),
+    "numerics.beam": ("tests/test_tower.py",),
+    "numerics.modal": ("tests/test_tower.py", "tests/test_drivetrain.py"),
+    "subsystems.tower": (
+        "tests/validation/test_structure.py",
+        "tests/validation/test_tower_head.py",
+    ),
+    "subsystems.blade": ("tests/validation/test_structure.py",),
+    "subsystems.drivetrain": (),
+    "subsystems.yaw": (),
+    "aero.aeroelastic": (),
+    "aero.stall": (),
+    "judge.resonance": ("tests/validation/test_daf.py",),
     "rules": ("tests/test_resonance.py",),
-    "excitation": ("tests/test_resonance.py",),
-    "soil": ("tests/validation/test_soil_pybmodes.py", "tests/validation/test_soil_hawc2.py"),
-    "platform": ("tests/validation/test_floating.py",),
-    "hull": ("tests/validation/test_windio_floating.py", "tests/test_windio_platform.py"),
-    "closeness": (),
-    "rigid": ("tests/test_coupled.py",),
-    "bem": ("tests/validation/test_aerodynamics.py",),
-    "aerodamping": ("tests/validation/test_aerodynamics.py",),
-    "unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
-    "tuned_damper": ("tests/validation/test_tuned_damper.py",),
-    "polynomials": ("tests/test_polynomials.py", "tests/validation/test_polynomials.py"),
+    "judge.excitation": ("tests/test_resonance.py",),
+    "subsystems.soil": (
+        "tests/validation/test_soil_pybmodes.py",
+        "tests/validation/test_soil_hawc2.py",
+    ),
+    "subsystems.platform": ("tests/validation/test_floating.py",),
+    "numerics.hull": ("tests/validation/test_windio_floating.py", "tests/test_windio_platform.py"),
+    "judge.closeness": (),
+    "numerics.rigid": ("tests/test_coupled.py",),
+    "aero.bem": ("tests/validation/test_aerodynamics.py",),
+    "aero.aerodamping": ("tests/validation/test_aerodynamics.py",),
+    "numerics.unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
+    "aero.tuned_damper": ("tests/validation/test_tuned_damper.py",),
+    "subsystems.polynomials": ("tests/test_polynomials.py", "tests/validation/test_polynomials.py"),
 }
 
 
@@ -118,9 +124,14 @@ _SYMBOL = {
 }  # fmt: skip
 
 
+def _path(root: Path, module: str) -> Path:
+    """The file of a module named below wtvib (``subsystems.tower``)."""
+    return root / "wtvib" / (module.replace(".", "/") + ".py")
+
+
 def mutants(module: str) -> list[Mutant]:
     """Every mutant of a module (one per site)."""
-    path = ROOT / "wtvib" / f"{module}.py"
+    path = _path(ROOT, module)
     text = path.read_text()
     out = []
     count = len(_sites(text))
@@ -174,9 +185,9 @@ WHOLE = (
 def _imports(module: str) -> list[str]:
     """The test files that import the module (``from wtvib import … module …``,
     ``wtvib.module``), the fuzzing campaigns left out."""
-    pattern = re.compile(
-        rf"from wtvib import [^\n]*\b{module}\b|wtvib\.{module}\b|from \.\. import {module}\b"
-    )
+    last = module.rsplit(".", 1)[-1]
+    package = ("wtvib." + module).rsplit(".", 1)[0].replace(".", r"\.")
+    pattern = re.compile(rf"from {package} import [^\n]*\b{last}\b|wtvib\.{re.escape(module)}\b")
     files = sorted((ROOT / "tests").glob("test_*.py")) + sorted(
         (ROOT / "tests" / "validation").glob("test_*.py")
     )
@@ -188,14 +199,15 @@ def _imports(module: str) -> list[str]:
 
 
 def _tests(module: str) -> list[str]:
-    own = [f"tests/test_{module}.py", f"tests/validation/test_{module}.py"]
+    last = module.rsplit(".", 1)[-1]
+    own = [f"tests/test_{last}.py", f"tests/validation/test_{last}.py"]
     every = [*own, *TESTS[module], *_imports(module), *WHOLE]
     return [t for t in dict.fromkeys(every) if (ROOT / t).is_file()]
 
 
 def run(mutant: Mutant, tree: Path) -> str:
     """killed, survived or timeout: the module's tests on the mutant, in ``tree``."""
-    target = tree / "wtvib" / f"{mutant.module}.py"
+    target = _path(tree, mutant.module)
     original = target.read_text()
     target.write_text(mutant.source)
     env = {**os.environ, "PYTHONPATH": str(tree), "OPENBLAS_NUM_THREADS": "1"}

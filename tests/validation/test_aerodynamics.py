@@ -25,8 +25,10 @@ import numpy as np
 import pytest
 
 from tests.conftest import edited_reference
-from wtvib import aerodamping, audit, bem, stall, unsteady
+from wtvib import audit
+from wtvib.aero import aerodamping, bem, stall
 from wtvib.importers import ReadOptions, load
+from wtvib.numerics import unsteady
 from wtvib.results import Mode
 
 ROSCO_TABLE = "reference/NREL5MW/Cp_Ct_Cq.NREL5MW.txt"
@@ -289,8 +291,8 @@ def test_coupled_and_isolated_tower_damping_agree_for_the_same_motion(nrel):
     33/140·M_tower)) — within 10 % at every operating point. The full coupled mode is more
     damped (the rotor tilting with the tower top's slope, the blades' flap share), which the
     isolated estimate leaves out by construction."""
-    from wtvib import coupled as coupled_model
-    from wtvib.kinematics import UX
+    from wtvib.numerics.kinematics import UX
+    from wtvib.subsystems import coupled as coupled_model
 
     report = audit.run(nrel)
     isolated = next(m for m in report.modes if m.id == "tower.fa1").operating
@@ -347,7 +349,7 @@ def test_damping_in_operation_belongs_to_the_judged_curve(iea15):
     measured, at the veering; before, the operating points followed their own coarser path
     from standstill and gave an id the shape of another curve: 2.8 % off in frequency at
     7.56 rpm)."""
-    from wtvib import coupled, multiblade
+    from wtvib.subsystems import coupled, multiblade
 
     sec = aerodamping.sections(iea15)
     sweep = coupled.rotating_sweep(iea15)

@@ -10,8 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import aeroelastic as ae
-from wtvib import stall
+from wtvib.aero import aeroelastic as ae
+from wtvib.aero import stall
 
 from .. import oracles
 

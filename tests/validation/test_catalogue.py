@@ -198,7 +198,7 @@ def test_wka60_concrete_tower_uncertainty_and_the_size_that_clears_2p():
     0.767 Hz at rated speed) then holds the frequency with a probability near
     P(|z| < 1.3) ≈ 0.8–0.95. A tower sized by wtvib's `size` into the soft window (wall
     scaled) no longer meets 2P."""
-    from wtvib import design
+    from wtvib.studies import design
 
     s = spec.load(TURBINES / "wka-60.yaml")
     r = audit.run(s, samples=2000, seed=1)

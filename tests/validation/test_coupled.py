@@ -1,4 +1,4 @@
-"""The coupled rotor–tower model (wtvib.coupled) against published and exact values.
+"""The coupled rotor–tower model (wtvib.subsystems.coupled) against published and exact values.
 
 Published: NREL 5-MW full-system natural frequencies, parked, generator locked — Jonkman et
 al. 2009, NREL/TP-500-38060, Table 9-1, FAST and ADAMS columns (the first-mode values are
@@ -6,8 +6,9 @@ also in DOMAIN.md §5; the table's conditions, RotSpeed = 0 and GenDOF = False, 
 by J. Jonkman on the NREL forum, "Full-System natural frequencies", topic 1462).
 
 Exact: limits the coupled model must reach — a rotor made rigid gives back the tower with a
-rigid tower head (wtvib.tower); a rigid support gives back the isolated rotating blade
-(wtvib.blade), and in the fixed frame its cyclic modes at f ∓ Ω/2π (Coleman transformation);
+rigid tower head (wtvib.subsystems.tower); a rigid support gives back the isolated rotating blade
+(wtvib.subsystems.blade), and in the fixed frame its cyclic modes at f ∓ Ω/2π (Coleman
+transformation);
 the multi-blade equations of an isotropic rotor are time-invariant and, with no damping,
 have a symmetric mass and stiffness and a skew-symmetric gyroscopic matrix.
 """
@@ -19,7 +20,8 @@ from typing import Any
 import numpy as np
 import pytest
 
-from wtvib import audit, blade, coupled, importers, multiblade, periodic, spec, tower
+from wtvib import audit, importers, spec
+from wtvib.subsystems import blade, coupled, multiblade, periodic, tower
 
 NREL = "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
 
@@ -239,7 +241,7 @@ def test_floquet_of_the_periodic_equations_matches_the_multiblade_eigenvalues(nr
     eigenvalues of the multi-blade (time-invariant) equations, in the same reduced basis.
     Floquet exponents are defined modulo iΩ, so the multi-blade frequencies are folded into
     [0, Ω/4π]; they agree to 5·10⁻⁴ Hz, and no multiplier exceeds 1 (undamped, stable)."""
-    from wtvib import modal
+    from wtvib.numerics import modal
 
     model = coupled.build(nrel, "locked")
     omega = 12.1 * math.pi / 30
@@ -274,10 +276,10 @@ def test_rotor_gyroscopic_coupling_of_tilt_and_yaw_is_polar_inertia_times_speed(
 @pytest.mark.parametrize("condition", ["free", "locked", "grid"])
 def test_rigid_support_gives_back_the_drive_train_in_each_generator_condition(nrel, condition):
     """Tower, yaw drive and blades made 10⁶ times stiffer, the shaft damper removed: the
-    coupled drive-train modes equal the isolated chain model's (wtvib.drivetrain) in each
+    coupled drive-train modes equal the isolated chain model's (wtvib.subsystems.drivetrain) in each
     generator condition — grid with a made-up synchronous generator (any coupling spring
     will do for an identity)."""
-    from wtvib import drivetrain
+    from wtvib.subsystems import drivetrain
 
     d = nrel.model_dump()
     for part, keys in (
@@ -370,7 +372,7 @@ def test_whirl_labels_map_fixed_frame_lines_to_the_blade_harmonic(nrel, rpm):
     1P, plus the shift of excitation.driving_harmonic (backward +1, forward −1, collective
     0) is the isolated rotating blade's frequency in units of 1P — the blade harmonic that
     meets the mode where a fixed-frame line kP does. Derivation in driving_harmonic."""
-    from wtvib.excitation import driving_harmonic
+    from wtvib.judge.excitation import driving_harmonic
 
     s = stiffened(nrel, tower_ei=1e6)
     omega = rpm * math.pi / 30
@@ -498,7 +500,7 @@ def _assumed_modes(s: spec.Spec, deck: str, names: tuple[str, str], plane: str) 
     polynomial mode shapes φ(x) = Σ cₖxᵏ (k = 2…6, x = z/L) with the tower's distributed
     properties, gravity's geometric stiffness ∫P(z)φ′² dz and the rigid head at the top —
     written out here from the tower file and the spec's head (mass, CM, inertia), not
-    through wtvib.tower."""
+    through wtvib.subsystems.tower."""
     coef = [
         [float(re.search(rf"^\s*(\S+)\s+{n}\({k}\)", deck, re.M).group(1)) for k in range(2, 7)]  # type: ignore[union-attr]
         for n in names

@@ -16,7 +16,8 @@ import math
 import pytest
 
 from tests.conftest import spec_text
-from wtvib import audit, design, spec
+from wtvib import audit, spec
+from wtvib.studies import design
 
 
 def windows_of(write_spec, blades, speed, f=0.5):

@@ -14,7 +14,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wtvib import audit, drivetrain, importers, modal, spec
+from wtvib import audit, importers, spec
+from wtvib.numerics import modal
+from wtvib.subsystems import drivetrain
 
 
 def two_mass(j1=1.0e6, j2=2.0e5, k=3.0e7, ratio=1.0, reference="rotor", c=0.0, **dt):

@@ -46,10 +46,11 @@ from pathlib import Path
 
 import pytest
 
-from wtvib import importers, tower
+from wtvib import importers
 from wtvib.importers import mooring
 from wtvib.importers.deck import parse
 from wtvib.spec import Spec
+from wtvib.subsystems import tower
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 PYBMODES = json.loads((DATA / "floating" / "pybmodes.json").read_text())
@@ -196,7 +197,7 @@ def test_the_coupled_model_stands_on_the_platform(
     frequency), none of them taken for the tower's bending; its first tower pair within
     2.5 % of OpenFAST's, fore-aft below side-side as OpenFAST has it (the isolated tower
     under a rigid rotor puts OC3's the other way round)."""
-    from wtvib import coupled
+    from wtvib.subsystems import coupled
 
     spec = specs[case]
     sw = coupled.rotating_sweep(spec)

@@ -14,11 +14,13 @@ from scipy.linalg import expm
 from scipy.special import mathieu_a, mathieu_b
 
 from tests.conftest import TURBINES
-from wtvib import audit, floquet, rotor, spec
+from wtvib import audit, spec
+from wtvib.numerics import floquet
+from wtvib.subsystems import rotor
 
 
 def largest(a, period: float, steps: int) -> float:  # type: ignore[no-untyped-def]
-    """The largest Floquet multiplier |ρ|: the monodromy's eigenvalues (wtvib.floquet's
+    """The largest Floquet multiplier |ρ|: the monodromy's eigenvalues (wtvib.numerics.floquet's
     integrator, the one the audit's rotor.floquet check runs over its speeds at once)."""
     return float(np.max(np.abs(np.linalg.eigvals(floquet.monodromy(a, period, steps)))))
 

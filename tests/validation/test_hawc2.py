@@ -30,7 +30,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import audit, blade, importers
+from wtvib import audit, importers
+from wtvib.subsystems import blade
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 IEA15 = "HAWC2/IEA-15-240-RWT-Onshore/htc/IEA_15MW_RWT_Onshore.htc"

@@ -19,7 +19,7 @@ from PIL import Image
 from tests.conftest import TURBINES
 from wtvib import audit, spec
 from wtvib.importers import ReadOptions, load
-from wtvib.plots import diagrams, png_bytes
+from wtvib.outputs.plots import diagrams, png_bytes
 from wtvib.rules import worst
 
 LIN = Path(__file__).resolve().parents[1] / "data" / "openfast_lin"
@@ -135,7 +135,7 @@ def test_minor_harmonics_in_steady_operation_are_said_in_the_headline(shared):
     and names them, so that DAF 49 beside it is no contradiction."""
     report = audit.run(load(shared / "reference/NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat",
                             ReadOptions(rpm=(6.9, 12.1))))  # fmt: skip
-    from wtvib.plots import headline
+    from wtvib.outputs.plots import headline
 
     judged = headline.of_modes(report, {"system.tower.fa1", "system.tower.ss1"}, None)
     info = [
@@ -275,7 +275,7 @@ def test_one_point_campbell_draws_its_point_and_holds_the_rest(tmp_path):
     fits the figure."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from wtvib.plots import campbell
+    from wtvib.outputs.plots import campbell
 
     report = audit.run(load(_lin("5MW_Land_Linear_Aero", tmp_path), ReadOptions()))
     assert report.spec.turbine.name.startswith("NREL 5.0 MW Baseline")  # from the header
@@ -335,7 +335,7 @@ def test_wka60s_lumped_damping_is_its_first_bending_modes_only():
     assert zeta["tower.fa2"] == zeta["tower.ss2"] == zeta["tower.tor1"] == 0.01
     from rich.console import Console
 
-    from wtvib.report import terminal
+    from wtvib.outputs.report import terminal
 
     console = Console(record=True, width=200)
     terminal(report, console)
@@ -351,7 +351,7 @@ def test_size_puts_wka60_where_check_passes_and_warns_of_absurd_walls():
     """``size --target soft`` put the WKA-60 at 0.556 Hz, on 2P swept in partial load, which
     check then warned on; the README's ``--target-hz 0.28`` cut the concrete wall to 8 % of
     its thickness (2 cm) without a word."""
-    from wtvib import design
+    from wtvib.studies import design
 
     s = spec.load(TURBINES / "wka-60.yaml")
     goal = design.window_goal(design.all_windows(audit.run(s)), "soft")
@@ -365,7 +365,7 @@ def test_size_puts_wka60_where_check_passes_and_warns_of_absurd_walls():
 
 
 def test_a_slender_steel_tube_warns_and_a_deck_says_why_it_cannot_be_sized(shared):
-    from wtvib import design
+    from wtvib.studies import design
 
     s = spec.load(TURBINES / "mod-2.yaml")
     with pytest.raises(design.DesignError, match="given by its natural frequencies"):
@@ -398,7 +398,7 @@ def test_a_finding_said_by_two_checks_is_one_entry():
     entry naming both; identical warnings are said once."""
     from rich.console import Console
 
-    from wtvib.report import _findings
+    from wtvib.outputs.report import _findings
 
     checks = [
         {"id": "a.one", "status": "warn", "message": "the same words"},

@@ -34,10 +34,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import importers, polynomials, tower
+from wtvib import importers
 from wtvib.importers import elastodyn
-from wtvib.polynomials import Polynomial, mac
 from wtvib.spec.tower import TowerHead
+from wtvib.subsystems import polynomials, tower
+from wtvib.subsystems.polynomials import Polynomial, mac
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "polynomials"
 PYB = json.loads((DATA / "pybmodes.json").read_text())["decks"]

@@ -396,7 +396,8 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
 
 @pytest.mark.parametrize("case", ["StC_test_OC4Semi_Linear_Tow", "StC_test_OC4Semi_Linear_Nac"])
 def test_a_tuned_mass_damper_is_openfasts(decks, tmp_path, case):
-    """ServoDyn's structural control as the mass, spring and dashpot it is (wtvib.mass_damper):
+    """ServoDyn's structural control as the mass, spring and dashpot it is
+    (wtvib.subsystems.mass_damper):
     OpenFAST's damper mode on the rigid OC4 turbine, 0.0503 Hz at ζ 0.0158 (the r-test case's
     README: 0.050 Hz, 0.01581 — √(k/m)/2π and c/(2√(km)) of its 2291.5 kg, 229.15 N/m,
     22.915 N·s/m), within 0.5 % in both."""

@@ -1,4 +1,4 @@
-"""The tower-head mass scaling law (wtvib.scaling) against published tower heads.
+"""The tower-head mass scaling law (wtvib.studies.scaling) against published tower heads.
 
 Published heads: NREL 5-MW rotor 110,000 kg + nacelle 240,000 kg (Jonkman et al. 2009,
 NREL/TP-500-38060, Table 1-1); IEA-15-240-RWT and IEA-22-280-RWT: the windIO examples'
@@ -9,7 +9,8 @@ factor the warning uses, and that a head given in tonnes instead of kilograms is
 
 import pytest
 
-from wtvib import audit, importers, scaling
+from wtvib import audit, importers
+from wtvib.studies import scaling
 
 
 def test_nrel_5mw_head_lies_within_the_plausible_factor_of_the_law():

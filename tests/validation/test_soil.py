@@ -1,4 +1,4 @@
-"""Monopile foundations (wtvib.soil) against closed forms (issue 23).
+"""Monopile foundations (wtvib.subsystems.soil) against closed forms (issue 23).
 
 Exact: a beam on a Winkler foundation of constant modulus k [N/m²] (Hetényi, Beams on
 Elastic Foundation, 1946, ch. 2: semi-infinite beam loaded at its end), head stiffness in
@@ -12,8 +12,9 @@ from typing import Any
 
 import pytest
 
-from wtvib import audit, soil, spec, tower
+from wtvib import audit, spec
 from wtvib.spec.tower import Pile, SoilLayer
+from wtvib.subsystems import soil, tower
 
 E = 2.1e11
 
@@ -185,7 +186,7 @@ def test_shadlou_closed_form_reproduces_yu_and_amdahl_table_9(behaviour, publish
 
 def test_winkler_closed_form_and_fixity_depth_agree_on_the_tower_frequency():
     """Three ways to put the same tower on the same soil (a constant E_py = 50 MN/m²): the
-    Winkler pile (wtvib.soil), Shadlou & Bhattacharya's closed form with E_so = E_py as
+    Winkler pile (wtvib.subsystems.soil), Shadlou & Bhattacharya's closed form with E_so = E_py as
     mudline springs, and the pile clamped at Davisson & Robinson's fixity depth 1.4·R —
     within 6 % of each other, all 15 % or more below the tower clamped at the mudline."""
     base = monopile_turbine()

@@ -27,8 +27,9 @@ from pathlib import Path
 
 import pytest
 
-from wtvib import importers, soil, tower
+from wtvib import importers
 from wtvib.spec.tower import Foundation, Pile, SoilLayer, TowerHead
+from wtvib.subsystems import soil, tower
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 REF = json.loads((DATA / "soil" / "pybmodes.json").read_text())
@@ -75,7 +76,7 @@ def _winkler(soil_e: float) -> Foundation:
 
 @pytest.mark.parametrize("case", REF["cases"], ids=lambda c: f"{c['formula']}-{c['soil_E_pa']:g}")
 def test_mudline_stiffness_is_pybmodes(case):
-    """Shadlou's closed forms (wtvib.soil.shadlou) give pyBModes' K_hh, K_hr, K_rr to
+    """Shadlou's closed forms (wtvib.subsystems.soil.shadlou) give pyBModes' K_hh, K_hr, K_rr to
     1e-9; wtvib's finite-element Winkler pile, condensed to the mudline, gives the
     Psaroudakis closed form pyBModes evaluates for the same line stiffness to 1e-4."""
     if case["formula"] == "shadlou":

@@ -13,7 +13,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import audit, stall
+from wtvib import audit
+from wtvib.aero import stall
 from wtvib.spec import load
 
 BETA_L = 1.87510407

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from tests.conftest import TURBINES
-from wtvib import audit, blade, importers, spec, tower
+from wtvib import audit, importers, spec
+from wtvib.subsystems import blade, tower
 
 
 def cantilever(f_l: float, ei: float = 2.0, m: float = 3.0, length: float = 5.0) -> float:
@@ -93,7 +94,7 @@ def test_stiffer_tower_is_never_lower():
 
 
 def test_buckling_under_gravity_is_a_clear_error():
-    from wtvib.modal import ModalError
+    from wtvib.numerics.modal import ModalError
 
     t, h = uniform(head=5.0, gravity=True)  # EI = 2 N·m²: buckles under 5 kg
     with pytest.raises(ModalError, match="unstable"):
@@ -154,7 +155,7 @@ def test_nrel5mw_tower_from_geometry_matches_the_table(nrel):
         }
     )
     b = tower.discretise(geo)
-    from wtvib.beam import gauss_points
+    from wtvib.numerics.beam import gauss_points
 
     _, w = gauss_points(b.nodes)
     assert float(np.sum(w * b.mass)) == pytest.approx(347_460, rel=0.005)
@@ -316,7 +317,7 @@ def test_blade_tip_mass_against_the_closed_form():
     Shape, Table 8-8). Issue 18: ElastoDyn TipMass reached only the head's mass."""
     import math
 
-    from wtvib import blade as blade_mod
+    from wtvib.subsystems import blade as blade_mod
 
     length, m, ei = 30.0, 200.0, 4.0e9
     s = uniform_blade(length, m, ei, 4.0, tip_mass_kg=m * length)
@@ -396,7 +397,9 @@ def test_rotating_blade_in_its_standstill_basis_equals_the_full_model(shared):
     every speed of the sweep — NREL 5-MW blade, 0 … 1.5 rad/s (14 rpm), within 1e-7."""
     import numpy as np
 
-    from wtvib import beam, blade, importers, modal
+    from wtvib import importers
+    from wtvib.numerics import beam, modal
+    from wtvib.subsystems import blade
 
     s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst").blade.structure
     assert s is not None
@@ -417,7 +420,7 @@ def test_a_rotating_tip_mass_pulls_from_its_own_radius():
     the pull over R_h = 0; the model must give it (the beam's own mass is 1e-4 of M)."""
     import math
 
-    from wtvib import blade as blade_mod
+    from wtvib.subsystems import blade as blade_mod
 
     length, ei, tip = 20.0, 2.0e8, 1000.0
     omega = 0.05 * math.sqrt(3 * ei / (tip * length**3))  # Ω² a quarter of a per cent of ω₀²
@@ -437,7 +440,7 @@ def test_a_blade_modes_reported_shape_is_its_deflection_in_its_own_plane():
     − σ(sinh βx − sin βx), β₁L = 1.8751, normalised to the tip (Blevins Table 8-1)."""
     import math
 
-    from wtvib import blade as blade_mod
+    from wtvib.subsystems import blade as blade_mod
 
     length, m, ei = 30.0, 200.0, 4.0e9
     structure = uniform_blade(length, m, ei, 5.0)
@@ -476,7 +479,7 @@ def test_in_plane_a_rotating_blade_loses_omega_squared_tip_mass_included():
     quotient (the masses swing in the plane of rotation), so that exactly
     f_edge² = f_flap² − (Ω/2π)² for each pair — with a tip mass as heavy as the blade too
     (the point mass is in both planes' inertia and in the in-plane softening)."""
-    from wtvib import blade as blade_mod
+    from wtvib.subsystems import blade as blade_mod
 
     length, m, ei = 30.0, 200.0, 4.0e9
     omega = 2.5
@@ -492,7 +495,7 @@ def test_a_constant_structural_twist_only_turns_the_principal_axes():
     turned about its axis: at standstill its frequencies are the untwisted one's (the
     flapwise and edgewise stiffnesses 4:1 rotated into the rotor's axes, EI_ww = EI_f·cos²β +
     EI_e·sin²β, EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sin β·cos β)."""
-    from wtvib import blade as blade_mod
+    from wtvib.subsystems import blade as blade_mod
 
     length, m, ei = 40.0, 300.0, 5.0e9
     straight = uniform_blade(length, m, ei, 4.0)

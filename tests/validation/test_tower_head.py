@@ -10,8 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import tower
 from wtvib.spec import from_data
+from wtvib.subsystems import tower
 
 L, D, T, E, G = 50.0, 4.0, 0.02, 2.1e11, 8.1e10
 M, X, I_PITCH, I_ROLL, I_YAW = 1.0e5, 5.0, 2.0e6, 1.5e6, 1.0e6

@@ -1,4 +1,4 @@
-"""The blade tip damper (wtvib/tuned_damper.py) against Den Hartog's tuned mass damper,
+"""The blade tip damper (wtvib/aero/tuned_damper.py) against Den Hartog's tuned mass damper,
 computed here as a two-degree-of-freedom frequency response, and wired into the audit."""
 
 import math
@@ -7,8 +7,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import audit, spec, tuned_damper
-from wtvib.aerodamping import generalised_mass
+from wtvib import audit, spec
+from wtvib.aero import tuned_damper
+from wtvib.aero.aerodamping import generalised_mass
 
 TURBINES = Path(__file__).parents[2] / "turbines"
 

@@ -10,7 +10,8 @@ import math
 import numpy as np
 import pytest
 
-from wtvib import audit, spec, uncertainty
+from wtvib import audit, spec
+from wtvib.studies import uncertainty
 
 SIGMA = 0.02  # 2 % standard deviation of E
 

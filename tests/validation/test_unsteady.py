@@ -1,7 +1,7 @@
-"""The shed wake's lag of the lift (wtvib/unsteady.py), term by term against textbook
+"""The shed wake's lag of the lift (wtvib/numerics/unsteady.py), term by term against textbook
 results, then the whole turbine against the reference codes' aeroelastic Campbell data.
 
-Textbook: Theodorsen's C(k) (exact, Hankel functions: wtvib.aeroelastic.theodorsen, itself
+Textbook: Theodorsen's C(k) (exact, Hankel functions: wtvib.aero.aeroelastic.theodorsen, itself
 checked against Hodges & Pierce in test_aeroelastic.py); Wagner's indicial lift, which
 starts at half the steady value (Leishman, *Principles of Helicopter Aerodynamics*, §8.5).
 """
@@ -12,9 +12,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wtvib import aerodamping, aeroelastic, audit, coupled, unsteady
+from wtvib import audit
+from wtvib.aero import aerodamping, aeroelastic
 from wtvib.importers import load
-from wtvib.multiblade import lift_lag
+from wtvib.numerics import unsteady
+from wtvib.subsystems import coupled
+from wtvib.subsystems.multiblade import lift_lag
 
 
 def test_jones_approximates_theodorsen_within_one_and_a_half_per_cent():

@@ -14,7 +14,7 @@ import pytest
 
 from tests.conftest import TURBINES
 from wtvib import audit, importers, spec
-from wtvib.report import to_json
+from wtvib.outputs.report import to_json
 
 DECKS = [
     ("NREL5MW/NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", (6.9, 12.1)),

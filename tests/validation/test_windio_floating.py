@@ -1,4 +1,4 @@
-"""A floating platform read from windIO (wtvib.importers.windio_platform, wtvib.hull), side
+"""A floating platform read from windIO (wtvib.importers.windio_platform, wtvib.numerics.hull), side
 by side with two other tools on the same files, and the whole floating turbine with NREL's
 RAFT.
 
@@ -29,8 +29,8 @@ import numpy as np
 import pytest
 import yaml
 
-from wtvib import hull
 from wtvib.importers.windio_platform import _Platform
+from wtvib.numerics import hull
 
 DATA = Path(__file__).parents[1] / "data" / "windio_floating"
 RAFT_G = 9.81
@@ -150,7 +150,7 @@ def test_the_floating_turbine_s_platform_modes_match_raft(name):
     wtvib's bends, which lowers the pitch mode: IEA-22's first tower bending is 0.34 Hz, ten
     times pitch)."""
     from wtvib import importers
-    from wtvib.tower import modes
+    from wtvib.subsystems.tower import modes
 
     head, (surge, heave, pitch, yaw) = RAFT_SYSTEM[name]
     spec = importers.load(windio_example(name), importers.ReadOptions(head_mass=head))

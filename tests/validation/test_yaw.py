@@ -12,7 +12,8 @@ import numpy as np
 import pytest
 
 from tests.conftest import TURBINES
-from wtvib import audit, importers, spec, yaw
+from wtvib import audit, importers, spec
+from wtvib.subsystems import yaw
 
 
 @pytest.mark.parametrize(("ratio", "expected"), [(1.2, 0.0796), (2.0, 0.3910), (5.0, 0.7471)])

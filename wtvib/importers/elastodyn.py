@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..rigid import Part, assembled, rotor_points
+from ..numerics.rigid import Part, assembled, rotor_points
 from ..spec.base import SHAPE_SUM_TOLERANCE
 from . import beamdyn, stc
 from .deck import Deck, _file, beside, parse, present
@@ -381,12 +381,15 @@ def _beam_data(main: Deck, fst: Deck) -> dict[str, Any]:
             line=main.values["RotSpeed"][1] if "RotSpeed" in main.values else None,
             source=str(main.path),
         )
-    damping, how = (
-        _bd_damping(bd, None)
-        if bd.mu is not None
-        else (0.0, "Blade damping: none — BeamDyn's beam is undamped (damp_type 0), as OpenFAST "
-              "models it.")
-    )  # fmt: skip
+    damping, how = _bd_damping(bd, None)
+    if bd.mu is None:
+        damping, how = (
+            0.0,
+            (
+                "Blade damping: none — BeamDyn's beam is undamped (damp_type 0), as OpenFAST "
+                "models it."
+            ),
+        )
     root = (
         "free: ElastoDyn's platform is free in all six motions, with nothing under it and a "
         f"mass ({platform_mass:g} kg) negligible beside the blade's {bd.mass_kg:,.0f} kg"
@@ -410,7 +413,8 @@ def _beam_data(main: Deck, fst: Deck) -> dict[str, Any]:
         },
         "blade": {
             "structure": {**bd.structure, "root": "free" if free else "clamped"},
-            "damping_ratio": damping,
+            **({"damping_ratio": damping} if damping is not None else {}),
+            **_mu(bd),
         },
         "assumptions": [
             f"A BeamDyn beam alone: the deck set's ElastoDyn has no DOF around its "
@@ -635,16 +639,11 @@ def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -
     tip_mass = main.num("TipMass(1)", "TipMass1", default=0.0)
     if tip_mass > 0:
         structure["tip_mass_kg"] = tip_mass
-    mu = (
-        {"stiffness_damping_s": {"bending_1": bl.mu[0], "bending_2": bl.mu[1]}}
-        if bl.mu is not None
-        else {}
-    )  # BeamDyn's damping as it is: stiffness-proportional, ζ = π·μ·f on every mode
     return {
         "length_m": _value(length, "TipRad − HubRad", "derived"),
         "mass_kg": _value(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
-        "damping_ratio": bl.damping,
-        **mu,
+        **({"damping_ratio": bl.damping} if bl.damping is not None else {}),
+        **(_mu(bl) if bl.mu is not None else {}),
         "structure": structure,
     }
 
@@ -956,7 +955,7 @@ class _BladeTable:
     span: np.ndarray
     mass: np.ndarray
     structure: dict[str, Any]
-    damping: float
+    damping: float | None  # None: BeamDyn's μ, mode by mode (_bd_damping)
     mass_source: str
     notes: list[str]
     warnings: list[str]
@@ -1054,31 +1053,28 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
     )
 
 
-def _bd_damping(bd: beamdyn.Blade, ed: Deck | None) -> tuple[float, str]:
-    """The blade's damping ratio: BeamDyn's stiffness-proportional μ at the first flapwise
-    and edgewise frequencies of the blade (ζ = π·μ·f, the lower taken); without μ,
-    ElastoDyn's BldFlDmp, else 1 %."""
+def _bd_damping(bd: beamdyn.Blade, ed: Deck | None) -> tuple[float | None, str]:
+    """The blade's damping ratio and how it was found: with BeamDyn's stiffness-proportional
+    μ none (each mode is damped ζ = π·μ·f at its own frequency, :func:`_mu`; a mode without
+    one takes the blade's default, :func:`wtvib.subsystems.blade.default_damping`); without
+    μ, ElastoDyn's BldFlDmp, else 1 %."""
     if bd.mu is None:
         if ed is not None:
             return main_damping(ed, "BldFlDmp(1)"), (
                 "Blade damping: BeamDyn has none (damp_type 0); ElastoDyn's BldFlDmp(1) taken."
             )
         return 0.01, "Blade damping: BeamDyn has none (damp_type 0); 1 % of critical assumed."
-    from ..blade import rotating_modes
-    from ..spec.blade import BladeStructure
+    return None, (
+        f"Blade damping from BeamDyn's stiffness-proportional μ (flapwise {bd.mu[0]:.4g} s, "
+        f"edgewise {bd.mu[1]:.4g} s): each blade mode ζ = π·μ·f at its own frequency."
+    )
 
-    names, freqs, _, _ = rotating_modes(
-        BladeStructure.model_validate(bd.structure), np.array([0.0]), count=4
-    )
-    first = {n: float(f) for n, f in zip(names, freqs[0], strict=True)}
-    zeta_f = math.pi * bd.mu[0] * first.get("flap1", 0.0)
-    zeta_e = math.pi * bd.mu[1] * first.get("edge1", 0.0)
-    zeta = min(z for z in (zeta_f, zeta_e) if z > 0) if max(zeta_f, zeta_e) > 0 else 0.0
-    return zeta, (
-        f"Blade damping from BeamDyn's stiffness-proportional μ (ζ = π·μ·f): flapwise "
-        f"{100 * zeta_f:.3g} % at {first.get('flap1', 0):.3g} Hz, edgewise {100 * zeta_e:.3g} % "
-        f"at {first.get('edge1', 0):.3g} Hz; the lower, {100 * zeta:.3g} %, for every blade mode."
-    )
+
+def _mu(bl: Any) -> dict[str, Any]:
+    """BeamDyn's damping as it is, stiffness-proportional (ζ = π·μ·f on every mode)."""
+    if bl.mu is None:
+        return {}
+    return {"stiffness_damping_s": {"bending_1": bl.mu[0], "bending_2": bl.mu[1]}}
 
 
 def _compare(ed: Deck, bd: beamdyn.Blade, length: float) -> str:

@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..rigid import Part, assembled
+from ..numerics.rigid import Part, assembled
 from . import htc
 from .htc import Block, Command
 

@@ -24,8 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from .. import hull
 from ..errors import SpecError
+from ..numerics import hull
 from ..spec import read_text
 from ..units import STANDARD_GRAVITY
 from .deck import (
@@ -112,7 +112,8 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
         f"where the file has no others) and hydrostatics ({root}.hst; ρ {rho:g} kg/m³, L "
         f"{length:g} m), "
         f"AddCLin, and {mooring_note}; the platform is a rigid body with six DOFs under the "
-        "tower (wtvib.platform), its radiation damping, viscous drag and second-order loads "
+        "tower (wtvib.subsystems.platform), its radiation damping, viscous drag and second-order "
+        "loads "
         "left out." + members.left_out
     ]
     return block, notes

@@ -12,8 +12,8 @@ description, frame (rotating or not) and, in newer files, derivative order. This
    blade its description names (``blade 2``, ``BD_2``);
 2. takes the azimuth files of each point into multi-blade coordinates (MBC3, Bir 2008,
    NREL/CP-500-42553: A_NR = T⁻¹(A·T − Ṫ) with the project's one Coleman transformation,
-   :func:`wtvib.coleman.coleman`) and averages them;
-3. solves the averaged system once (:func:`wtvib.modal.state_modes`) and keeps the
+   :func:`wtvib.numerics.coleman.coleman`) and averages them;
+3. solves the averaged system once (:func:`wtvib.numerics.modal.state_modes`) and keeps the
    oscillating roots in which the structural states (ElastoDyn, BeamDyn, SubDyn, structural
    control) take part most — by participation factors, which do not depend on the units of
    the states — listing the others (inflow, unsteady aerodynamics, radiation) as
@@ -44,9 +44,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..coleman import coleman
 from ..errors import SpecError
-from ..modal import ModalError, assign, damping_ratio, mac, state_modes
+from ..numerics.coleman import coleman
+from ..numerics.modal import ModalError, assign, damping_ratio, mac, state_modes
 from ..spec import read_bytes
 from ..spec.load import MAX_FILE_BYTES
 from .campbell_results import results_spec

@@ -139,7 +139,7 @@ def _one(stc: Deck, place: str, out: Control) -> None:
         + ("above the tower top" if place == "nacelle" else "above the tower's base")
         + (" (its X, Y offsets neglected)" if stc.num("StC_P_X", default=0.0)
            or stc.num("StC_P_Y", default=0.0) else "")
-        + "; a mass on a spring and a dashpot per direction (wtvib.mass_damper)."
+        + "; a mass on a spring and a dashpot per direction (wtvib.subsystems.mass_damper)."
     )  # fmt: skip
 
 

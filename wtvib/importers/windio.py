@@ -28,8 +28,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import SpecError
-from ..rigid import Part, assembled
-from ..yamlio import format_path, parse, parse_plain
+from ..numerics.rigid import Part, assembled
+from ..spec.yamlio import format_path, parse, parse_plain
 from .floating import refusal
 
 #: Index of the mass and polar inertia in a row-major upper triangle of the 6×6 mass matrix.

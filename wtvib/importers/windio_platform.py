@@ -1,6 +1,6 @@
 """windIO 2.x ``floating_platform`` and ``mooring`` → wtvib's ``platform`` foundation.
 
-The platform is the hull of :mod:`wtvib.hull`: each member a circular tube between two
+The platform is the hull of :mod:`wtvib.numerics.hull`: each member a circular tube between two
 joints (cartesian, cylindrical (r, θ°, z) or relative to another joint), its outer diameter,
 wall layers, bulkheads, ring and longitudinal stiffeners, outfitting factor and ballast as
 the file gives them; pontoons that enter another member's side are cut at its surface (so
@@ -25,8 +25,8 @@ from typing import Any
 
 import numpy as np
 
-from .. import hull
 from ..errors import SpecError
+from ..numerics import hull
 from ..units import STANDARD_GRAVITY
 
 #: Sea water where the file gives no density [kg/m³] (OpenFAST's and WISDEM's default).
@@ -406,7 +406,8 @@ class _Platform:
             "inertia_yaw_kgm2": float(inertia[2, 2]),
             "added_mass": _list(added),
             "stiffness": _list(restoring),
-            "source": f"windIO floating_platform and mooring of {self.path.name} (wtvib.hull: "
+            "source": f"windIO floating_platform and mooring of {self.path.name} "
+            "(wtvib.numerics.hull: "
             f"strip theory, waterplane hydrostatics; {moor_note})",
         }
         self.trim_notes(trimmed, steel, fixed, water, float_)
@@ -418,13 +419,14 @@ class _Platform:
             )
         self.notes.append(
             f"Floating platform from the windIO file's {len(members)} members "
-            f"(wtvib.hull, circular members cut where they enter another's side): "
+            f"(wtvib.numerics.hull, circular members cut where they enter another's side): "
             f"{mass:,.0f} kg with its ballast, CM {cm[2]:.3g} m, displacement "
             f"{float_.volume:,.0f} m³ (centre of buoyancy {float_.centre[2]:.3g} m), "
             f"waterplane {float_.area:.4g} m²; added mass by strip theory (members' Ca, "
             f"axial {DEFAULT_CA_END:g} at free ends and steps of diameter, ρ {self.rho:g} "
             f"kg/m³), {moor_note}. The platform is a rigid body with six DOFs under the tower "
-            "(wtvib.platform); its radiation damping, viscous drag, wave excitation and the "
+            "(wtvib.subsystems.platform); its radiation damping, viscous drag, wave excitation "
+            "and the "
             "added mass's change with frequency are left out."
         )
         return Floater(block, self.notes, self.warnings)

@@ -11,7 +11,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from ..yamlio import parse_plain
+from ..spec.yamlio import parse_plain
 
 
 @lru_cache(maxsize=1)

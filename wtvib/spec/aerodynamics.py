@@ -1,8 +1,8 @@
 """The rotor's aerodynamics: blade stations, aerofoil polars and the controller's schedule.
 
 With this block the audit solves steady blade-element momentum operating points over the
-wind range and adds the quasi-steady aerodynamic damping to the modes (``wtvib.bem``,
-``wtvib.aerodamping``); without it the audit is structural and says so.
+wind range and adds the quasi-steady aerodynamic damping to the modes (``wtvib.aero.bem``,
+``wtvib.aero.aerodamping``); without it the audit is structural and says so.
 """
 
 from typing import Literal

@@ -3,10 +3,10 @@
 import numpy as np
 
 from ..errors import SpecError
-from ..yamlio import Document
 from .base import Quantity
 from .messages import _split
 from .turbine import Spec
+from .yamlio import Document
 
 
 def _check_sources(spec: Spec, provenance: dict[str, Quantity], doc: Document) -> None:
@@ -98,7 +98,7 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
         )
     s, head = spec.blade.structure, spec.tower_head
     assert s is not None and head is not None
-    from ..rigid import nacelle, rotor_points  # the one place that splits the head
+    from ..numerics.rigid import nacelle, rotor_points  # the one place that splits the head
 
     # the rotor's mass and polar inertia: the blades as the coupled model carries them
     points = rotor_points(s.hub_radius_m, np.asarray(s.span_m), np.asarray(s.mass_per_length_kg_m))

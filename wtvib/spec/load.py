@@ -9,7 +9,6 @@ from typing import Any
 from pydantic import ValidationError
 
 from ..errors import SpecError
-from ..yamlio import Document, Path, format_path, parse
 from .base import Quantity
 from .checks import (
     _check_aerodynamics,
@@ -21,6 +20,7 @@ from .checks import (
 )
 from .messages import _spec_error
 from .turbine import Spec
+from .yamlio import Document, Path, format_path, parse
 
 FORMAT_VERSION = 1
 
@@ -100,7 +100,7 @@ def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
 
 
 #: Every file this process has read (device, inode): an output is never written over one
-#: of them (:func:`wtvib.outputs.write_atomic`), however it is named — a path, a link.
+#: of them (:func:`wtvib.outputs.files.write_atomic`), however it is named — a path, a link.
 _READ: set[tuple[int, int]] = set()
 
 

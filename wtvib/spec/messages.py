@@ -6,7 +6,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from ..errors import SpecError
-from ..yamlio import Document, Path, format_path
+from .yamlio import Document, Path, format_path
 
 
 def _split(dotted: str) -> Path:

@@ -170,7 +170,7 @@ class SoilLayer(_Strict):
     """A soil layer down to ``bottom_m`` below the mudline, as an initial lateral (p-y)
     stiffness per unit pile length E_py [N/m²]: sand from its friction angle, stiff clay
     from its undrained shear strength (E_py = k·z, k the initial modulus of subgrade
-    reaction; wtvib.soil), or E_py given (soft clay or a site's own value: at the layer's
+    reaction; wtvib.subsystems.soil), or E_py given (soft clay or a site's own value: at the layer's
     top plus a gradient with depth)."""
 
     bottom_m: Annotated[float, Field(gt=0, le=500)] = Field(
@@ -341,7 +341,7 @@ class Foundation(_Strict):
         ge=-1e15,
         le=1e15,
         description="Lateral-rocking coupling K_LR of the springs (a pile head's: negative, "
-        "e.g. wtvib.soil.shadlou). [N]",
+        "e.g. wtvib.subsystems.soil.shadlou). [N]",
     )
     torsional_nm_rad: Positive | None = Field(None, description="Torsional spring. [N·m/rad]")
     pile: Pile | None = Field(None, description="The embedded pile (kind soil).")

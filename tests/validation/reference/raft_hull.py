@@ -120,8 +120,8 @@ def system(path: Path, raft_design: Path, head_mass: float) -> None:
     with its platform and moorings replaced by the windIO file's, the members as wtvib reads
     them and each ballast compartment filled with wtvib's trimmed water (RAFT fills along a
     member's axis: a partly filled pontoon's water is spread along it at the axis)."""
-    from wtvib import hull
     from wtvib.importers import windio as w
+    from wtvib.numerics import hull
 
     d = yaml.safe_load(path.read_text())
     data = w.to_spec_data(path, path.read_text(), head_mass=head_mass)

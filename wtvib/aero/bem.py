@@ -1,0 +1,581 @@
+"""Steady blade-element momentum (BEM) operating points over the wind range.
+
+The textbook method (Hansen, *Aerodynamics of Wind Turbines*, ch. 6; Hau ch. 5): each blade
+station is an aerofoil in the relative wind W of axial speed V(1 − a) and tangential speed
+Ωr(1 + a′); momentum balance gives the inductions a, a′ with Prandtl's tip and hub losses
+and Buhl's correction of the thrust coefficient for a > 0.4. The equations are solved in
+the inflow angle φ alone, after S. A. Ning, "A simple solution method for the blade element
+momentum equations with guaranteed convergence", Wind Energy 17 (2014) 1327–1345: one
+residual R(φ) with a bracketed root, found by bisection for all stations and operating
+points at once (no iteration that can fail to converge).
+
+The controller's steady schedule (Jonkman et al. 2009 §7): variable speed holds the optimal
+tip-speed ratio between the minimum and rated rotor speed (region 2), then rated speed;
+pitch regulation pitches to feather where the aerodynamic power would exceed rated power /
+efficiency (region 3); stall regulation holds the fine pitch at every wind. Neglected and
+stated: shaft tilt, precone, prebend, blade deflection, wind shear, tower shadow and skewed
+inflow (uniform steady axial wind on a rigid, planar rotor).
+"""
+
+import functools
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..numerics.modal import ModalError
+from ..spec import Spec
+from ..units import rad_s_to_rpm, rpm_to_rad_s
+
+Array = NDArray[np.float64]
+
+#: Wind speeds of the schedule: this many from cut-in to cut-out (the rated wind is added).
+WIND_SAMPLES = 25
+
+#: Resampled polars: every POLAR_STEP_DEG from −180° to 180° (linear between the given points).
+POLAR_STEP_DEG = 0.25
+
+#: Lift and drag slopes by central differences over ±SLOPE_STEP_DEG (smooths the kinks of a
+#: tabulated polar).
+SLOPE_STEP_DEG = 0.5
+
+#: The φ residual's root: BISECTIONS halvings of the bracket (≤ π/2 → 0.006 rad), then
+#: FALSI steps of Illinois regula falsi inside it (|R| at machine level on the NREL 5-MW).
+BISECTIONS, FALSI = 8, 8
+
+_EPS = 1e-6
+
+
+@dataclass(frozen=True)
+class Rotor:
+    """The rotor's aerodynamic tables, ready for vectorised solves."""
+
+    radius: Array  # stations from the rotor axis, (S,) [m]
+    chord: Array  # (S,) [m]
+    twist: Array  # aerodynamic twist, (S,) [rad]
+    cl: Array  # lift per station on the resampled α grid, (S, A)
+    cd: Array  # drag, (S, A)
+    blades: int
+    tip_radius: float  # [m]
+    hub_radius: float  # [m]
+    rho: float  # [kg/m³]
+    tip_loss: bool
+    hub_loss: bool
+
+    def polar(self, alpha: Array) -> tuple[Array, Array]:
+        """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
+        reads the table at 0°: the solution's finiteness check names the failure)."""
+        x = (np.degrees(np.where(np.isfinite(alpha), alpha, 0.0)) + 180.0) % 360.0
+        x = x / POLAR_STEP_DEG
+        i = np.minimum(x.astype(np.intp), self.cl.shape[1] - 2)
+        t = x - i
+        k = i + self._row_start  # into the flattened tables: station s's row starts at s·A
+        cl_flat, cd_flat = self._flat
+        u = 1 - t
+        k1 = k + 1
+        cl = cl_flat.take(k) * u + cl_flat.take(k1) * t
+        cd = cd_flat.take(k) * u + cd_flat.take(k1) * t
+        return cl, cd
+
+    @functools.cached_property
+    def solidity(self) -> Array:
+        """Local solidity B·c/(2πr) per station."""
+        return np.asarray(self.blades * self.chord / (2 * np.pi * self.radius))
+
+    @functools.cached_property
+    def loss_terms(self) -> tuple["_Loss | None", "_Loss | None"]:
+        """Prandtl's exponents, tip then hub (None: that loss off; no hub, no hub loss and
+        no 1/0)."""
+        tip = hub = None
+        if self.tip_loss:
+            tip = _Loss.of(
+                self.blades / 2 * (self.tip_radius - self.radius), np.maximum(self.radius, 1e-12)
+            )
+        if self.hub_loss and self.hub_radius > 0:
+            hub = _Loss.of(
+                self.blades / 2 * (self.radius - self.hub_radius),
+                np.full_like(self.radius, self.hub_radius),
+            )
+        return tip, hub
+
+    @functools.cached_property
+    def _flat(self) -> tuple[Array, Array]:
+        return self.cl.ravel(), self.cd.ravel()
+
+    @functools.cached_property
+    def _row_start(self) -> NDArray[np.intp]:
+        return np.arange(self.cl.shape[0], dtype=np.intp) * self.cl.shape[1]
+
+
+def rotor(spec: Spec) -> Rotor:
+    """The spec's aerodynamic tables (computed once per spec object)."""
+    aero = spec.aerodynamics
+    assert aero is not None and spec.turbine.rotor_diameter_m is not None
+    out: Rotor = spec.derived(("bem.rotor", 0), aero, lambda: _rotor(spec))
+    return out
+
+
+def _rotor(spec: Spec) -> Rotor:
+    aero = spec.aerodynamics
+    assert aero is not None and spec.turbine.rotor_diameter_m is not None
+    grid = np.arange(-180.0, 180.0 + 1e-9, POLAR_STEP_DEG)
+    tables = {}
+    for name, p in aero.airfoils.items():
+        a = np.asarray(p.alpha_deg, float)
+        # periodic in α: a polar that stops short of ±180° is continued to its other end
+        a_ext = np.concatenate([a[-1:] - 360.0, a, a[:1] + 360.0])
+        cl = np.asarray(p.cl, float)
+        cd = np.asarray(p.cd, float)
+        tables[name] = (
+            np.interp(grid, a_ext, np.concatenate([cl[-1:], cl, cl[:1]])),
+            np.interp(grid, a_ext, np.concatenate([cd[-1:], cd, cd[:1]])),
+        )
+    st = aero.stations
+    hub = spec.blade.structure.hub_radius_m if spec.blade.structure else st.radius_m[0]
+    return Rotor(
+        np.asarray(st.radius_m, float),
+        np.asarray(st.chord_m, float),
+        np.radians(np.asarray(st.twist_deg, float)),
+        np.stack([tables[n][0] for n in st.airfoil]),
+        np.stack([tables[n][1] for n in st.airfoil]),
+        spec.rotor.blades,
+        spec.turbine.rotor_diameter_m / 2,
+        min(hub, st.radius_m[0]),
+        aero.air_density_kg_m3,
+        aero.tip_loss,
+        aero.hub_loss,
+    )
+
+
+@dataclass(frozen=True)
+class Solution:
+    """Steady BEM solution at K operating points (station arrays shaped (K, S))."""
+
+    wind: Array  # (K,) [m/s]
+    omega: Array  # (K,) [rad/s]
+    pitch: Array  # (K,) [rad]
+    phi: Array  # inflow angle to the rotor plane [rad]
+    alpha: Array  # angle of attack [rad]
+    a: Array  # axial induction
+    a_t: Array  # tangential induction
+    w: Array  # relative wind [m/s]
+    cl: Array
+    cd: Array
+    thrust: Array  # (K,) [N]
+    torque: Array  # (K,) [N·m]
+    converged: NDArray[np.bool_]  # (K, S): a bracketed root was found
+
+    @property
+    def power(self) -> Array:
+        """Aerodynamic power [W]."""
+        return np.asarray(self.torque * self.omega)
+
+
+@dataclass(frozen=True)
+class _Loss:
+    """One of Prandtl's loss factors, F = (2/π)·arccos(e^(−x)) with x = a / (b·|sin φ|)."""
+
+    minus_a: Array  # −a per station (−(a/d) is (−a)/d exactly)
+    b: Array
+    beyond: bool  # some a < 0 (a station past the tip): e^(−x) > 1 there, clipped to 1
+
+    @classmethod
+    def of(cls, a: Array, b: Array) -> "_Loss":
+        return cls(-a, b, bool(np.any(a < 0)))
+
+    def arccos(self, s: Array) -> Array:
+        """arccos(e^(−x)) at |sin φ| = ``s``."""
+        e = np.exp(self.minus_a / (self.b * s))
+        return np.asarray(np.arccos(np.minimum(e, 1.0) if self.beyond else e))
+
+
+def _losses(r: Rotor, phi: Array, sin_phi: Array | None = None) -> Array:
+    """Prandtl's tip and hub loss factor F(φ) at each station (≥ 1e-6); ``sin_phi``: sin φ,
+    where already computed."""
+    s = np.maximum(np.abs(np.sin(phi) if sin_phi is None else sin_phi), 1e-9)
+    tip, hub = r.loss_terms
+    f: Array | None = None
+    if tip is not None:
+        f = (2 / np.pi) * tip.arccos(s)
+    if hub is not None:
+        g = hub.arccos(s)
+        f = (2 / np.pi) * g if f is None else f * (2 / np.pi) * g
+    return np.maximum(f, 1e-6) if f is not None else np.ones_like(phi)
+
+
+def _coefficients(r: Rotor, phi: Array, theta: Array) -> tuple[Array, ...]:
+    """sin φ, cos φ, C_L, C_D, F and Ning's k, k′ at inflow angles φ (twist + pitch θ)."""
+    s, c = np.sin(phi), np.cos(phi)
+    cl, cd = r.polar(phi - theta)
+    cn = cl * c + cd * s
+    ct = cl * s - cd * c
+    f = _losses(r, phi, s)
+    sigma = r.solidity
+    k = sigma * cn / (4 * f * s * s)
+    kp = sigma * ct / (4 * f * s * c)
+    return s, c, cl, cd, f, k, kp
+
+
+def _momentum(k: Array, f: Array) -> Array:
+    """The axial induction of the momentum region (φ > 0): a = k/(1 + k), Buhl's empirical
+    thrust above k = 2/3."""
+    light = k <= 2 / 3
+    if light.all():  # no station in Buhl's region (each branch costs what all of it does)
+        return np.asarray(k / (1 + k))
+    two_f = 2 * f
+    fk = two_f * k
+    g1 = fk - (10 / 9 - f)
+    g2 = np.maximum(fk - f * (4 / 3 - f), 0.0)
+    g3 = fk - (25 / 9 - two_f)
+    flat = np.abs(g3) < 1e-6  # g3 = 0: the quadratic's linear limit
+    if flat.any():
+        buhl = np.where(
+            flat,
+            1 - 1 / (2 * np.sqrt(np.maximum(g2, 1e-12))),
+            (g1 - np.sqrt(g2)) / np.where(flat, 1.0, g3),
+        )
+    else:
+        buhl = (g1 - np.sqrt(g2)) / g3
+    return np.asarray(np.where(light, k / (1 + k), buhl))
+
+
+def _balance(
+    phi: Array, s: Array, c: Array, k: Array, kp: Array, a_pos: Array, speed_ratio: Array
+) -> Array:
+    """Ning's residual R(φ) (momentum region with ``a_pos``; propeller brake for φ < 0)."""
+    one_minus_a = np.where(np.abs(1 - a_pos) < 1e-12, 1e-12, 1 - a_pos)  # a = 1: no flow
+    swirl = c / speed_ratio * (1 - kp)
+    return np.asarray(np.where(phi > 0, s / one_minus_a - swirl, s * (1 - k) - swirl))
+
+
+def _residual(r: Rotor, phi: Array, theta: Array, speed_ratio: Array) -> Array:
+    """Ning's residual R(φ) alone (the root search's evaluations)."""
+    s, c, _, _, f, k, kp = _coefficients(r, phi, theta)
+    return _balance(phi, s, c, k, kp, _momentum(k, f), speed_ratio)
+
+
+def _induction(
+    r: Rotor, phi: Array, theta: Array, speed_ratio: Array
+) -> tuple[Array, Array, Array, Array, Array]:
+    """Ning's residual R(φ) and the inductions, C_L, C_D it implies."""
+    s, c, cl, cd, f, k, kp = _coefficients(r, phi, theta)
+    a_pos = _momentum(k, f)
+    a_neg = k / np.where(np.abs(k - 1) < 1e-12, 1e-12, k - 1)  # propeller brake (φ < 0)
+    a = np.where(phi > 0, a_pos, a_neg)
+    a_t = kp / np.where(np.abs(1 - kp) < 1e-12, 1e-12, 1 - kp)
+    return _balance(phi, s, c, k, kp, a_pos, speed_ratio), a, a_t, cl, cd
+
+
+def solve(
+    r: Rotor, wind: Array, omega: Array, pitch: Array, motion: tuple[float, float] = (0.0, 0.0)
+) -> Solution:
+    """The steady BEM solution at operating points (wind [m/s], Ω [rad/s], pitch [rad]),
+    all stations and points at once; ``motion``: every section moving at (v_n, v_t) [m/s]
+    (downwind, in the direction of rotation), its momentum balance solved in the flow it
+    meets — V − v_n axially, Ωr + v_t in the rotor plane — as AeroDyn's BEMT takes a
+    blade's own velocity into its inflow (the induction in equilibrium with the motion)."""
+    wind = np.asarray(wind, float)
+    omega = np.asarray(omega, float)
+    pitch = np.asarray(pitch, float)
+    if not (
+        np.all(np.isfinite(wind)) and np.all(np.isfinite(omega)) and np.all(np.isfinite(pitch))
+    ):
+        raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
+    shape = (len(wind), len(r.radius))
+    theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
+    axial = wind[:, None] - motion[0]  # the flow each section meets
+    spin = omega[:, None] * r.radius[None, :] + motion[1]
+    lam = np.maximum(spin / axial, 1e-9)
+    lam = np.broadcast_to(lam, shape)
+
+    def res(phi: Array) -> Array:
+        return _residual(r, phi, theta, lam)
+
+    # brackets in Ning's order: momentum/windmill (0, π/2], propeller brake [−π/4, 0),
+    # then (π/2, π); the next is tried only where no bracket is found yet
+    def ends(low: float, high: float) -> tuple[Array, Array, Array, Array]:
+        """A bracket's ends at every station and point, and R there (one evaluation)."""
+        both = np.stack([np.full(shape, low), np.full(shape, high)])
+        r_both = res(both)
+        return both[0], both[1], r_both[0], r_both[1]
+
+    lo, hi, r_lo, r_hi = ends(_EPS, np.pi / 2)
+    found = r_lo * r_hi < 0
+    for low, high in ((-np.pi / 4, -_EPS), (np.pi / 2, np.pi - _EPS)):
+        if found.all():
+            break
+        la, lb, ra, rb = ends(low, high)
+        ok = ~found & (ra * rb < 0)
+        lo, r_lo = np.where(ok, la, lo), np.where(ok, ra, r_lo)
+        hi, r_hi = np.where(ok, lb, hi), np.where(ok, rb, r_hi)
+        found |= ok
+    for _ in range(BISECTIONS):  # halve the bracket: it stays a bracket whatever R looks like
+        mid = 0.5 * (lo + hi)
+        r_mid = res(mid)
+        left = np.sign(r_mid) == np.sign(r_lo)
+        lo, r_lo = np.where(left, mid, lo), np.where(left, r_mid, r_lo)
+        hi, r_hi = np.where(left, hi, mid), np.where(left, r_hi, r_mid)
+    for _ in range(FALSI):  # then regula falsi (Illinois) inside it: superlinear
+        den = np.where(r_hi != r_lo, r_hi - r_lo, 1.0)
+        x = np.clip(hi - r_hi * (hi - lo) / den, np.minimum(lo, hi), np.maximum(lo, hi))
+        r_x = res(x)
+        same = np.sign(r_x) == np.sign(r_hi)
+        # the end that stays has its residual halved (Illinois), the other moves to x
+        lo, r_lo = np.where(same, lo, hi), np.where(same, 0.5 * r_lo, r_hi)
+        hi, r_hi = x, r_x
+    phi = np.where(
+        found,
+        np.where(np.abs(r_hi) <= np.abs(r_lo), hi, lo),
+        np.arctan2(np.broadcast_to(axial, shape), np.broadcast_to(spin, shape)),
+    )
+    _, a, a_t, cl, cd = _induction(r, phi, theta, lam)
+    a = np.where(found, a, 0.0)  # no root: the geometric inflow, no induction
+    a_t = np.where(found, a_t, 0.0)
+    if not np.all(found):
+        cl, cd = r.polar(phi - theta)
+    u_n = axial * (1 - a)
+    u_t = spin * (1 + a_t)
+    w = np.hypot(u_n, u_t)
+    q = 0.5 * r.rho * w * w * r.chord
+    s, c = np.sin(phi), np.cos(phi)
+    f_n = q * (cl * c + cd * s)
+    f_t = q * (cl * s - cd * c)
+    thrust = np.asarray(r.blades * np.trapezoid(f_n, r.radius, axis=1))
+    torque = np.asarray(r.blades * np.trapezoid(f_t * r.radius, r.radius, axis=1))
+    if not (np.all(np.isfinite(thrust)) and np.all(np.isfinite(torque))):
+        raise ModalError(
+            "the blade-element momentum solution is not finite (thrust or torque overflows): "
+            "check the magnitudes of the aerodynamics, rotor speed and wind"
+        )
+    return Solution(wind, omega, pitch, phi, phi - theta, a, a_t, w, cl, cd, thrust, torque, found)
+
+
+def power_coefficient(r: Rotor, tsr: Array, pitch_deg: float, wind: float = 10.0) -> Array:
+    """C_p at tip-speed ratios ``tsr`` and one pitch [deg] (the C_p(λ, β) surface's row)."""
+    tsr = np.asarray(tsr, float)
+    v = np.full_like(tsr, wind)
+    sol = solve(r, v, tsr * wind / r.tip_radius, np.full_like(tsr, math.radians(pitch_deg)))
+    return np.asarray(sol.power / (0.5 * r.rho * np.pi * r.tip_radius**2 * v**3))
+
+
+# ---------------------------------------------------------------------------------------
+# The controller's schedule
+
+
+@dataclass(frozen=True)
+class Schedule:
+    """Steady operating points over the wind range, in wind order."""
+
+    solution: Solution
+    region: tuple[str, ...]  # "partial load", "full load" (pitching) or "stall" per point
+    rated_wind: float | None  # [m/s]
+    tip_speed_ratio: float  # region-2 λ
+    tsr_source: str  # given / optimum of the BEM C_p
+    rated_power: float | None  # aerodynamic power held in region 3 [W]
+    assumptions: tuple[str, ...]
+
+    @property
+    def wind(self) -> Array:
+        return self.solution.wind
+
+    @property
+    def rpm(self) -> Array:
+        return np.asarray(rad_s_to_rpm(self.solution.omega))
+
+    @property
+    def pitch_deg(self) -> Array:
+        return np.degrees(self.solution.pitch)
+
+    def coefficients(self, r: Rotor) -> tuple[Array, Array]:
+        """C_p and C_t at each point."""
+        area = np.pi * r.tip_radius**2
+        v = self.solution.wind
+        cp = self.solution.power / (0.5 * r.rho * area * v**3)
+        ct = self.solution.thrust / (0.5 * r.rho * area * v**2)
+        return np.asarray(cp), np.asarray(ct)
+
+
+def optimal_tsr(r: Rotor, pitch_deg: float) -> float:
+    """The tip-speed ratio of the highest C_p at a pitch (a scan, refined by a parabola)."""
+    tsr = np.arange(2.0, 16.01, 0.25)
+    cp = power_coefficient(r, tsr, pitch_deg)
+    i = int(np.clip(np.argmax(cp), 1, len(tsr) - 2))
+    y0, y1, y2 = cp[i - 1 : i + 2]
+    den = y0 - 2 * y1 + y2
+    shift = 0.5 * (y0 - y2) / den if den < 0 else 0.0
+    return float(tsr[i] + np.clip(shift, -1, 1) * 0.25)
+
+
+def schedule(spec: Spec) -> Schedule:
+    """The steady operating points of the spec's rotor and controller (computed once per
+    spec object)."""
+    assert spec.aerodynamics is not None
+    out: Schedule = spec.derived(("bem.schedule", 0), spec.aerodynamics, lambda: _schedule(spec))
+    return out
+
+
+def _rotor_speed(spec: Spec, r: Rotor, wind: Array, tsr: float, fine: float) -> Array:
+    speed = spec.rotor.speed
+    if speed.fixed_rpm is not None:
+        fixed = sorted(speed.fixed_rpm if isinstance(speed.fixed_rpm, list) else [speed.fixed_rpm])
+        if len(fixed) == 1:
+            return np.full_like(wind, float(rpm_to_rad_s(fixed[0])))
+        # pole-changing: at each wind the speed that gives the higher power at the fine pitch
+        options = np.array([float(rpm_to_rad_s(n)) for n in fixed])
+        power = np.stack(
+            [
+                solve(r, wind, np.full_like(wind, om), np.full_like(wind, fine)).power
+                for om in options
+            ]
+        )
+        return np.asarray(options[np.argmax(power, axis=0)])
+    low = float(rpm_to_rad_s(speed.steady_rpm[0][0]))
+    top = float(rpm_to_rad_s(speed.rated_rpm or speed.top_rpm))
+    return np.clip(tsr * wind / r.tip_radius, low, top)
+
+
+def _schedule(spec: Spec) -> Schedule:
+    aero = spec.aerodynamics
+    assert aero is not None
+    r = rotor(spec)
+    c = aero.control
+    fine = math.radians(c.fine_pitch_deg)
+    notes = [
+        "steady BEM (Ning 2014 residual; Prandtl tip/hub losses "
+        f"{'on' if r.tip_loss else 'off'}/{'on' if r.hub_loss else 'off'}, Buhl's high-"
+        "induction thrust): uniform steady axial wind on a rigid planar rotor (no tilt, "
+        "precone, prebend, shear or tower shadow)"
+    ]
+    if c.tip_speed_ratio is not None:
+        tsr, tsr_source = c.tip_speed_ratio, "given as aerodynamics.control.tip_speed_ratio"
+    else:
+        tsr = optimal_tsr(r, c.fine_pitch_deg)
+        tsr_source = f"the BEM's highest C_p at {c.fine_pitch_deg:g}° pitch"
+    rated_kw = c.rated_power_kw or spec.turbine.rated_power_kw
+    p_rated = rated_kw * 1e3 / c.generator_efficiency if rated_kw is not None else None
+    winds = np.linspace(c.cut_in_wind_m_s, c.cut_out_wind_m_s, WIND_SAMPLES)
+
+    def lowest(v: Array) -> Array:  # the pitch below rated: fine, or the peak-shaving table
+        base = np.full_like(v, fine)
+        if c.min_pitch is None:
+            return base
+        table = np.radians(np.interp(v, c.min_pitch.wind_m_s, c.min_pitch.pitch_deg))
+        return np.maximum(base, table)
+
+    def at_fine(v: Array) -> Solution:
+        return solve(r, v, _rotor_speed(spec, r, v, tsr, fine), lowest(v))
+
+    rated_wind = None
+    pitching = c.regulation == "pitch" and p_rated is not None
+    if pitching:
+        assert p_rated is not None
+        excess = at_fine(winds).power - p_rated
+        above = np.nonzero(excess > 0)[0]
+        if len(above) and above[0] > 0:
+            rated_wind = _rated_wind(
+                lambda v: at_fine(v).power - p_rated,
+                float(winds[above[0] - 1]),
+                float(winds[above[0]]),
+            )
+            winds = np.sort(np.append(winds, rated_wind))
+        elif len(above):
+            rated_wind = float(winds[0])
+            notes.append("the rotor exceeds rated power already at cut-in: pitched from there")
+        else:
+            notes.append(
+                f"rated power {p_rated / 1e3:,.0f} kW (aerodynamic) is not reached below "
+                "cut-out: no pitching"
+            )
+    omega = _rotor_speed(spec, r, winds, tsr, fine)
+    pitch = lowest(winds)
+    if c.min_pitch is not None:
+        notes.append("below rated the pitch follows the controller's minimum-pitch table")
+    region = ["stall" if c.regulation == "stall" else "partial load"] * len(winds)
+    if pitching and rated_wind is not None:
+        assert p_rated is not None
+        full = winds > rated_wind * (1 + 1e-9)
+        if np.any(full):
+            pitch[full] = _pitch_to_rated(r, winds[full], omega[full], pitch[full], p_rated)
+            for i in np.nonzero(full)[0]:
+                region[i] = "full load"
+    sol = solve(r, winds, omega, pitch)
+    bad = int(np.count_nonzero(~sol.converged))
+    if bad:
+        notes.append(
+            f"{bad} of {sol.converged.size} station solutions had no BEM root: geometric "
+            "inflow used there"
+        )
+    return Schedule(
+        sol,
+        tuple(region),
+        rated_wind,
+        float(tsr),
+        tsr_source,
+        p_rated,
+        tuple(notes),
+    )
+
+
+#: The rated wind: RATED_ROUNDS grids of RATED_GRID winds, each inside the cell of the one
+#: before where the power excess changes sign (a bracket of 0.9 m/s → 3.5 mm), then the
+#: secant in that cell (the power is smooth and monotonic there: error far below 1 mm/s).
+RATED_GRID, RATED_ROUNDS = 17, 2
+
+
+def _rated_wind(excess: Callable[[Array], Array], lo: float, hi: float) -> float:
+    """The root of the fine-pitch power excess between two winds (``excess`` ≤ 0 at
+    ``lo``, > 0 at ``hi``), each round one BEM solve of a grid of winds at once."""
+    f_lo = f_hi = 0.0
+    for _ in range(RATED_ROUNDS):
+        v = np.linspace(lo, hi, RATED_GRID)
+        f = excess(v)
+        j = int(np.clip(np.argmax(f > 0), 1, RATED_GRID - 1))  # the first wind above rated
+        lo, hi, f_lo, f_hi = float(v[j - 1]), float(v[j]), float(f[j - 1]), float(f[j])
+    if f_hi == f_lo:
+        return hi
+    return float(np.clip(lo - f_lo * (hi - lo) / (f_hi - f_lo), lo, hi))
+
+
+#: Pitch search above rated: a grid of this step [deg] up to PITCH_SPAN_DEG past the fine
+#: pitch brackets rated power at each wind, then PITCH_REFINE steps of regula falsi, all
+#: winds at once (the power is smooth and monotonic in pitch within a bracket). The grid is
+#: solved PITCH_CHUNK points at a time, further points only for the winds still above rated
+#: (the reference turbines pitch at most 23–25° at cut-out: one chunk).
+PITCH_STEP_DEG, PITCH_SPAN_DEG, PITCH_REFINE, PITCH_CHUNK = 5.0, 60.0, 5, 6
+
+
+def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: float) -> Array:
+    """The pitch (towards feather from ``low``, each wind's lowest) at which each wind's
+    aerodynamic power is rated."""
+    steps = np.radians(np.arange(0.0, PITCH_SPAN_DEG + 1e-9, PITCH_STEP_DEG))
+    grid = low[:, None] + steps[None, :]  # (winds, grid)
+    k, g = grid.shape
+    excess = np.full((k, g), np.inf)  # a point not solved: above rated, as far as we know
+    for start in range(0, g, PITCH_CHUNK):
+        rows = np.flatnonzero(~np.any(excess <= 0, axis=1))  # no bracket yet
+        if rows.size == 0:
+            break
+        cols = np.arange(start, min(start + PITCH_CHUNK, g))
+        pts = np.ix_(rows, cols)
+        n = cols.size
+        power = solve(r, np.repeat(wind[rows], n), np.repeat(omega[rows], n), grid[pts].ravel())
+        excess[pts] = power.power.reshape(rows.size, n) - p_rated
+    below = excess <= 0
+    j = np.where(below.any(axis=1), np.argmax(below, axis=1), g - 1)
+    j = np.maximum(j, 1)
+    rows = np.arange(k)
+    lo, hi = grid[rows, j - 1], grid[rows, j]
+    f_lo, f_hi = excess[rows, j - 1], excess[rows, j]
+    x = hi
+    for _ in range(PITCH_REFINE):
+        den = np.where(f_hi != f_lo, f_hi - f_lo, 1.0)
+        x = np.clip(hi - f_hi * (hi - lo) / den, np.minimum(lo, hi), np.maximum(lo, hi))
+        f_x = solve(r, wind, omega, x).power - p_rated
+        swap = f_x * f_hi < 0
+        lo = np.where(swap, hi, lo)
+        f_lo = np.where(swap, f_hi, 0.5 * f_lo)  # Illinois: halve the end that stays
+        hi, f_hi = x, f_x
+    # a wind whose power stays above rated at the last grid pitch: the last grid pitch
+    return np.where(below.any(axis=1) | (j < g - 1), x, grid[:, -1])
