@@ -9,7 +9,7 @@ RUNTIME := $(VENV)/.runtime-installed
 DEV     := $(VENV)/.dev-installed
 PIP_TOOLS := pip-tools==7.6.2
 
-.PHONY: demo test lint venv clean fuzz lock install-check docs-images mutate
+.PHONY: demo test test-fast lint venv clean fuzz lock install-check docs-images mutate
 
 $(BIN)/python:
 	@$(PYTHON) -m venv $(VENV)
@@ -46,6 +46,11 @@ lint: $(DEV)
 # OpenBLAS's spinning threads only slow them on a 2-core machine.
 test: lint install-check
 	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/pytest -q
+
+# The unit tier while working: every test but the slow tier (tests/conftest.py SLOW:
+# validation, fuzzing, hostile input, documents, pixels), no lint, no wheel. CI runs `test`.
+test-fast: $(DEV)
+	OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 $(BIN)/pytest -q -m "not slow"
 
 # wtvib as a user installs it: the wheel built from this tree (isolated build, as `pip
 # install .` does), installed into a fresh virtual environment without extras and without

@@ -27,6 +27,29 @@ settings.register_profile(
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
 
+#: The slow tier (``make test-fast`` leaves it out, ``make test`` and CI run it): validation
+#: against published and other tools' numbers, the fuzzing and hostile-input campaigns, the
+#: documents whose commands are run and the pixel comparisons of figures and PDF pages.
+SLOW = (
+    "validation/",
+    "test_fuzz",
+    "test_hostile",
+    "test_readme.py",
+    "test_docs_images.py",
+    "test_plots.py",
+    "test_pdfreport.py",
+    "test_windio.py",
+)
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Mark the slow tier's tests ``slow`` by their file (see SLOW)."""
+    for item in items:
+        path = Path(str(item.fspath)).as_posix()
+        if any(part in path for part in SLOW):
+            item.add_marker(pytest.mark.slow)
+
+
 ROOT = Path(__file__).resolve().parents[1]
 TURBINES = ROOT / "turbines"
 SHARED = ROOT.parent / "shared"
@@ -129,7 +152,7 @@ def _outputs_in_a_temporary_folder(
     tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Every test runs in a folder of its own, so that outputs written to the current
-    directory (PNGs by default, issue 21) never land in the clone."""
+    directory (PNGs by default) never land in the clone."""
     monkeypatch.chdir(tmp_path_factory.mktemp("cwd"))
 
 

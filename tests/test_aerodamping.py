@@ -147,7 +147,7 @@ def test_a_rotor_that_draws_no_power_is_a_warning_not_a_crash(write_spec):
 
 
 def test_a_structural_audit_says_which_aeroelastic_checks_it_made():
-    """Issue 39: Euros 44 m's report said 'no aeroelastic instability looked for' beside its
+    """Euros 44 m's report said 'no aeroelastic instability looked for' beside its
     own divergence, flutter and stall checks; MOD-2 has no section data and says so."""
     from wtvib import audit
     from wtvib.spec import from_data, load

@@ -15,7 +15,7 @@ yaw:
 
 
 def test_a_head_without_yaw_inertia_is_a_warning_with_an_estimate(write_spec):
-    """Issue 15: with no yaw inertia the yaw model saw only m·x² = 75,000 kg·m² and gave a
+    """With no yaw inertia the yaw model saw only m·x² = 75,000 kg·m² and gave a
     yaw frequency of 26 Hz silently; the rotor's J_p/2 = 1.75e7 kg·m² alone gives
     √(2e9/(1.75e7 + 7.5e4))/2π = 1.70 Hz (one-mass model, the yaw module's)."""
     r = audit.run(spec.load(write_spec(extra=HEAD)))
@@ -49,7 +49,7 @@ def test_a_given_damping_ratio_is_not_called_an_assumption(write_spec):
 
 
 def test_a_number_that_is_not_finite_is_null_with_a_reason(write_spec):
-    """Issue 19: reports carried Infinity/NaN (invalid JSON). Whatever a model returns, the
+    """Reports carried Infinity/NaN (invalid JSON). Whatever a model returns, the
     JSON contract writes null for it and names the field in warnings."""
     import dataclasses
     import json
@@ -74,7 +74,7 @@ def test_a_number_that_is_not_finite_is_null_with_a_reason(write_spec):
 
 
 def test_a_slow_tip_speed_for_the_rotor_size_is_a_warning(shared):
-    """Issue 18: the IEA-3.4 ElastoDyn file alone (no ServoDyn, no range) is audited at its
+    """The IEA-3.4 ElastoDyn file alone (no ServoDyn, no range) is audited at its
     initial RotSpeed, 5 rpm: 34 m/s at the tip of a 130 m rotor, well under audit.SLOW_TIP
     (the turbine runs 3.8–11.75 rpm, 80 m/s at rated). Given the range, no warning."""
     from wtvib import importers
@@ -87,7 +87,7 @@ def test_a_slow_tip_speed_for_the_rotor_size_is_a_warning(shared):
 
 
 def test_a_rated_power_implausible_for_the_rotor_is_a_warning(write_spec):
-    """Issue 21: 2 kW on a 90 m rotor (0.31 W/m², a kW/MW slip) warns; 2 MW does not
+    """2 kW on a 90 m rotor (0.31 W/m², a kW/MW slip) warns; 2 MW does not
     (314 W/m², between the catalogue's 88 and 837 W/m²)."""
 
     def warned(kw: float) -> list[str]:
@@ -104,7 +104,7 @@ def test_a_rated_power_implausible_for_the_rotor_is_a_warning(write_spec):
 
 
 def test_a_lowest_speed_far_below_the_highest_is_a_warning(write_spec):
-    """Issue 21: min_rpm 0.94 on a 90 m rotor running up to 16 rpm (rad/s typed as rpm?)
+    """A min_rpm of 0.94 on a 90 m rotor running up to 16 rpm (rad/s typed as rpm?)
     warns; 5 rpm does not."""
 
     def warned(low: float) -> list[str]:
@@ -118,7 +118,7 @@ def test_a_lowest_speed_far_below_the_highest_is_a_warning(write_spec):
 
 
 def test_a_natural_frequency_under_a_hundredth_of_a_hertz_is_a_warning():
-    """Issue 19 (found setting every catalogue number to 1e-15): MOD-2 with a yaw mode of
+    """Found setting every catalogue number to 1e-15: MOD-2 with a yaw mode of
     1e-15 Hz passed without a word; any mode under 0.01 Hz (a period over 100 s, below the
     slowest of the catalogue and the reference turbines, 0.126 Hz) now warns."""
     from tests.conftest import TURBINES
@@ -172,13 +172,13 @@ def test_a_table_station_far_from_both_neighbours_is_a_warning(shared, tmp_path)
         w for w in audit.suspicious(importers.load(deck / "NREL-5MW.fst"), []) if "exponent" in w
     ]
     assert len(warned) == 1
-    # named by the deck's file, line (header 18 + units + 6th row) and column (issue 56)
+    # named by the deck's file, line (header 18 + units + 6th row) and column
     assert warned[0].startswith(f"{tower}:25: TwFAStif: 2.91e-09 at 43.8 m"), warned[0]
     assert "below both its neighbours" in warned[0]
 
 
 def test_a_verdict_resting_on_no_judged_mode_is_an_error_not_a_pass(monkeypatch):
-    """A verdict that judged nothing is not a pass (issue 35: a linearisation whose
+    """A verdict that judged nothing is not a pass (a linearisation whose
     structural modes were all dropped passed): with no finding on any judged mode the audit
     stops with one line naming the input."""
     from wtvib import audit as audit_module

@@ -146,7 +146,7 @@ def test_interrupted_batch_says_what_was_completed(folder, tmp_path, monkeypatch
     result = runner.invoke(app, ["batch", str(folder), "--out", str(out), "--no-plots"])
     assert result.exit_code == 130
     assert "interrupted: 1 of 5 inputs completed" in result.stderr
-    # issue 19: what is complete is written — its summary says so — and nothing is half
+    # What is complete is written — its summary says so — and nothing is half
     summary = json.loads((out / "summary.json").read_text())
     assert len(summary["turbines"]) == 1
     assert json.loads((out / "run-metadata.json").read_text())["interrupted"] is True
@@ -169,7 +169,7 @@ def test_a_10_kw_and_a_22_mw_turbine_in_one_batch(tmp_path):
 
 
 def test_an_unexpected_exception_in_one_turbine_is_that_rows_internal_error(folder, tmp_path):
-    """Issue 15: one turbine whose audit raises something wtvib did not expect (here a
+    """One turbine whose audit raises something wtvib did not expect (here a
     LinAlgError, as the Floquet check once did) must not empty the batch: its row is an
     internal error naming the exception, the rest completes, summaries and PDF are written,
     and the exit code is 3 — never 1, the code of a FAIL."""
@@ -218,7 +218,7 @@ def test_report_and_batch_take_the_operating_and_rule_options(shared, tmp_path):
 
 
 def test_output_keys_never_collide_nor_take_the_batch_own_names():
-    """Issue 19: a/t/x.yaml and b/t/x.yaml both wrote t__x.json, y.yaml and y.yml both
+    """Two files a/t/x.yaml and b/t/x.yaml both wrote t__x.json, y.yaml and y.yml both
     y.json, and an input named summary.yaml was overwritten by the summary."""
     paths = [Path(p) for p in ("a/t/x.yaml", "b/t/x.yaml", "y.yaml", "y.yml", "summary.yaml")]
     keys = batch.output_keys(paths)
@@ -227,7 +227,7 @@ def test_output_keys_never_collide_nor_take_the_batch_own_names():
 
 
 def test_two_batches_never_write_into_one_folder(folder, tmp_path):
-    """Issue 19: two batches into one --out interleaved (the summary disagreed with the
+    """Two batches into one --out interleaved (the summary disagreed with the
     reports). A live lock refuses the second; a stale one (its process gone) is taken over."""
     import os
 

@@ -43,7 +43,7 @@ def test_aeroelastic_campbell_follows_the_operating_points(shared):
     report = audit.run(load_any(shared / "reference/NREL5MW/NREL-5MW.fst"))
     data = report.to_dict()["campbell"]
     assert data["damping"].startswith("in operation")
-    # issue 37: each point says how it was obtained, with the aeroelastic root's natural and
+    # Each point says how it was obtained, with the aeroelastic root's natural and
     # damped frequencies; no oscillating point carries ζ > 1, an overdamped one none
     for mid, mode in data["modes"].items():
         if "method" not in mode:

@@ -1,4 +1,4 @@
-"""Campbell results of other tools through the CLI: formats, mistakes, judgement (issue 22)."""
+"""Campbell results of other tools through the CLI: formats, mistakes, judgement."""
 
 import json
 from pathlib import Path

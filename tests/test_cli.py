@@ -75,7 +75,7 @@ def test_bad_margin_is_a_usage_error(write_spec):
 def test_png_written_to_the_current_directory_not_beside_the_spec(
     write_spec, tmp_path, monkeypatch
 ):
-    """Issue 21: a read-only reference folder or a shared catalogue must not collect PNGs:
+    """A read-only reference folder or a shared catalogue must not collect PNGs:
     they go to the current directory (or --out), and the run says where."""
     path = write_spec(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
     here = tmp_path / "here"
@@ -159,7 +159,7 @@ def test_unusable_files_are_one_line_and_exit_2(tmp_path, content, words):
     "name", ["mod-2", "mod-0", "mod-1", "wts-3", "wts-4", "wts-75", "growian", "aeroman"]
 )
 def test_two_bladed_rotors_at_slow_speeds_are_audited_not_crashed(name):
-    # issue 15: --rpm 5:17.5 on MOD-2 (and every two-bladed turbine at 2:20) overflowed RK4
+    # --rpm 5:17.5 on MOD-2 (and every two-bladed turbine at 2:20) overflowed RK4
     # and ended in a LinAlgError traceback with exit 1, the code of a FAIL
     import warnings
 
@@ -189,8 +189,8 @@ def test_an_unexpected_exception_is_one_line_and_exit_3_never_a_fail(monkeypatch
 
 
 def test_numpy_overflow_notes_stay_off_the_one_error_line():
-    """A hostile number can overflow inside numpy before the model's own check names it
-    (issue 19): the user sees the one line, not numpy's RuntimeWarning and its source line.
+    """A hostile number can overflow inside numpy before the model's own check names it:
+    the user sees the one line, not numpy's RuntimeWarning and its source line.
     A separate process: pytest records warnings itself, so only a real run shows them."""
     import subprocess
     import sys
@@ -291,7 +291,7 @@ def test_check_writes_the_campbell_csv_and_never_clobbers(tmp_path):
     result = runner.invoke(app, args)
     assert result.exit_code in (0, 1), result.output
     lines = out.read_text().splitlines()
-    # issue 21: which wtvib made it from which input (with its hash), as a comment line
+    # Which wtvib made it from which input (with its hash), as a comment line
     assert lines[0].startswith("# produced by wtvib ") and "wka-60.yaml, SHA-256 " in lines[0]
     assert lines[1] == (
         "mode,rpm,wind_m_s,pitch_deg,frequency_hz,damping_ratio,aerodynamic_damping_ratio,"
@@ -322,7 +322,7 @@ def test_a_bad_option_value_is_a_usage_error_not_an_internal_one(args):
 
 @pytest.mark.parametrize(("given", "expected"), [(None, "1"), ("2", "2")])
 def test_the_cli_pins_blas_to_one_thread_unless_the_user_chose(given, expected):
-    """Issue 20: one BLAS thread by default, set before numpy loads (importing the CLI must
+    """One BLAS thread by default, set before numpy loads (importing the CLI must
     not import numpy, or the setting would come too late); a user's own setting stands."""
     import os
     import subprocess
@@ -342,7 +342,7 @@ def test_the_cli_pins_blas_to_one_thread_unless_the_user_chose(given, expected):
 
 
 def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_spec, tmp_path):
-    """Issue 21: files are written with the mode the umask gives (0644 under 022, not
+    """Files are written with the mode the umask gives (0644 under 022, not
     mkstemp's 0600); --version prints the version; the JSON report names wtvib's version and
     the input with its SHA-256 (of the file as read)."""
     import hashlib
@@ -368,7 +368,7 @@ def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_
 
 
 def test_check_draws_the_main_figures_and_the_detail_on_request(tmp_path):
-    """Issue 20: check writes the diagrams a reader looks at first (Campbell, damping);
+    """Check writes the diagrams a reader looks at first (Campbell, damping);
     the detail figures (flutter, stability chart, stall) with --figures all."""
     spec_file = TURBINES / "stall-rotor-1mw.yaml"
     main, every = tmp_path / "main", tmp_path / "all"
@@ -382,7 +382,7 @@ def test_check_draws_the_main_figures_and_the_detail_on_request(tmp_path):
     }
 
 
-# --- one vocabulary (issue 34) -------------------------------------------------------------
+# --- one vocabulary -------------------------------------------------------------
 
 COMMANDS = ("check", "batch", "report", "window", "size", "convert", "schema")
 

@@ -1,4 +1,4 @@
-"""Scale-out on Dask (issue 20): batch and check --uncertainty on a scheduler give the
+"""Scale-out on Dask: batch and check --uncertainty on a scheduler give the
 results of a local run; an unreachable scheduler or a missing extra is one line, exit 2."""
 
 import json

@@ -1,4 +1,4 @@
-"""The JSON contract (issue 21): every report validates against the published schema
+"""The JSON contract: every report validates against the published schema
 (`wtvib schema --report`), strict JSON, every key described."""
 
 import json

@@ -72,7 +72,7 @@ def test_json_carries_the_coupled_modes_and_the_comparison(tmp_path):
     assert {"system.tower.fa1", "system.tower.ss1", "system.blade.flap1.collective"} <= ids
     assert all(m["speed_dependent"] for m in data["modes"] if m["subsystem"] == "system")
     check = next(c for c in data["checks"] if c["id"] == "system.coupling")
-    # issue 15, one truth per mode: the table is in the condition the modes are judged in
+    # one truth per mode: the table is in the condition the modes are judged in
     # (rotating: generator free, at standstill), so every id has one frequency in the report;
     # the parked (locked) frequencies are a separate list under their own names
     assert check["status"] == "info" and check["condition"] == "generator free, standstill"

@@ -35,7 +35,7 @@ def test_window_goal_is_the_middle_of_a_closed_window(write_spec):
 
 @pytest.mark.parametrize("target", [0.0, -1.0, float("nan"), 1e4])
 def test_size_never_calls_an_unreached_target_a_success(write_spec, target):
-    """Issue 19: --target-hz 0 returned a tower scaled to its buckling limit as a success.
+    """--target-hz 0 returned a tower scaled to its buckling limit as a success.
     A target at or below 0 is refused; one no scaling reaches (10 kHz) is said so."""
     from tests.validation.test_design import TUBE
 
@@ -78,7 +78,7 @@ def test_size_takes_the_windows_of_window_under_the_same_options():
 def test_a_forbidden_mode_names_only_the_line_whose_band_holds_it():
     """WKA-60's tower (0.767 Hz) sits in 2P's band (0.69–0.843 Hz at 17.5–23 rpm); 3P's
     band (0.79–1.27 Hz) overlaps 2P's and the merged band was named "2P+3P": the window
-    said "FORBIDDEN by 2P+3P" where only 2P forbids it (issue 34)."""
+    said "FORBIDDEN by 2P+3P" where only 2P forbids it."""
     s = spec.load(TURBINES / "wka-60.yaml")
     report = audit.run(s)
     tower = next(w for w in design.all_windows(report) if w.subsystem == "tower")

@@ -1,4 +1,4 @@
-"""The README's figure shows what wtvib draws today (issue 34: it no longer matched `make
+"""The README's figure shows what wtvib draws today (it no longer matched `make
 demo`'s output). `make docs-images` redraws it; this test fails when it is stale."""
 
 import io

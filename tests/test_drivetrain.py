@@ -55,7 +55,7 @@ def test_the_synchronous_power_curve_is_a_result_the_figure_draws():
 
 
 def test_a_pull_out_power_below_rated_is_refused_with_the_field(tmp_path):
-    """Issue 19: a pull-out power of 1e-15 kW ended in an internal ValueError inside the
+    """A pull-out power of 1e-15 kW ended in an internal ValueError inside the
     magnetic-spring formula; the spec now refuses P_max ≤ P_rated with field and line."""
     from tests.conftest import TURBINES
     from wtvib import spec
@@ -71,7 +71,7 @@ def test_a_pull_out_power_below_rated_is_refused_with_the_field(tmp_path):
 
 
 def test_a_drive_train_damped_past_critical_is_one_line(tmp_path):
-    """Issue 19 (the extreme-value campaign): a 1e9 N·m·s/rad shaft damper left the
+    """The extreme-value campaign: a 1e9 N·m·s/rad shaft damper left the
     grid-coupled power sweep no oscillatory mode and an IndexError; now a ModalError
     saying what happened (exit 2 in the CLI)."""
     from tests.conftest import TURBINES
@@ -118,7 +118,7 @@ def test_modal_damping_gives_every_elastic_mode_its_ratio():
 
 
 def test_shaft_torque_amplification_is_bounded_by_the_modal_damping():
-    """Issue 39: Aeroman's train has no damper: at its 5P resonance the forced response
+    """Aeroman's train has no damper: at its 5P resonance the forced response
     gave 9.02·10⁵. With the drive train's modal damping (2 %, the DAF's) it stays below
     the resonance's 1/(2ζ) = 25."""
     from wtvib import audit

@@ -119,9 +119,9 @@ def test_a_switch_must_be_a_whole_number(tmp_path):
     ],
 )
 def test_a_hostile_deck_is_one_line_with_file_and_line(tmp_path, edit, message, line):
-    """Issue 19's ElastoDyn classes: a text cell, a file cut off mid-number, NaN, a
-    fractional or NaN blade count — each one line naming file and line, never a traceback
-    or a silently truncated value."""
+    """The ElastoDyn mistakes of the extreme-value campaign: a text cell, a file cut off mid-number,
+    NaN, a fractional or NaN blade count — each one line naming file and line, never a traceback or
+    a silently truncated value."""
     text = DECK.replace(*edit)
     with pytest.raises(elastodyn.SpecError, match=message) as err:
         deck = elastodyn.parse(tmp_path / "d.dat", text)

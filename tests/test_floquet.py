@@ -26,7 +26,7 @@ def test_step_control_follows_the_fastest_mode():
 
 
 def test_a_tower_mode_far_faster_than_the_rotor_is_said_not_analysed(tmp_path):
-    """Issue 19: a 1e9 Hz tower on the two-bladed MOD-0 asked the Floquet sweep for ~1e10
+    """A 1e9 Hz tower on the two-bladed MOD-0 asked the Floquet sweep for ~1e10
     Magnus steps a revolution (an audit of minutes and gigabytes); speeds needing more than
     MAX_STEPS are now not analysed, and a rotor analysed at no operating speed is a warning
     saying so — not "stable"."""

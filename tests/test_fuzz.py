@@ -1,4 +1,4 @@
-"""Property-based fuzzing of the spec loader and the audit (issue 9).
+"""Property-based fuzzing of the spec loader and the audit.
 
 Generated valid specs always audit with finite, non-negative frequencies; mutated specs
 (deleted keys, wrong types, extreme numbers) and random bytes always end in a wtvib error

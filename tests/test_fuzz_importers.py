@@ -1,4 +1,4 @@
-"""Property-based fuzzing of the importers (issue 19): reference files mutated one or two
+"""Property-based fuzzing of the importers: reference files mutated one or two
 places at a time — a windIO key deleted, emptied, retyped or pushed to an extreme number; an
 ElastoDyn/ServoDyn/AeroDyn/controller line's token replaced by junk, a line deleted or
 doubled, a file cut short. The invariant is the CLI's contract: the import and the audit

@@ -1,4 +1,4 @@
-"""Property-based fuzzing of the readers issue 41 attacked: OpenFAST ``.lin`` sets,
+"""Property-based fuzzing of the readers hostile input attacked: OpenFAST ``.lin`` sets,
 HAWCStab2 ``.cmb``/``.amp``/``.opt``, Campbell tables, output paths and batch discovery.
 
 The invariant is the README's: a user's input ends in a typed wtvib error (one line, exit

@@ -107,7 +107,7 @@ def _edited(path: Path, edit: str) -> str:
 def test_hostile_importer_input_gives_one_line_and_exit_2(
     tmp_path, name, checked, edited, edit, words
 ):
-    """Issue 19: ElastoDyn and windIO files edited as a reviewer would — a text cell, a file
+    """ElastoDyn and windIO files edited as a reviewer would — a text cell, a file
     cut mid-number, a NaN blade count, a missing member file, a true blade count, a negative
     mass, a modulus of `true`, a tower of no length or apart from its monopile, a water depth
     below the pile — each one line naming file and field, exit 2."""

@@ -1,4 +1,4 @@
-"""Hostile input, round three (issue 41): the new readers, outputs at their limits, batch
+"""Hostile input, round three: the new readers, outputs at their limits, batch
 discovery — one line and exit 2 for a user's input, never an internal error, never a
 hang or a file read whole when only its head is needed; one bad input never stops or
 silently shrinks a batch."""

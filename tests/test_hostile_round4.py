@@ -1,4 +1,4 @@
-"""Hostile input, round four (issue 56): batch integrity, outputs that never destroy an
+"""Hostile input, round four: batch integrity, outputs that never destroy an
 input, impossible turbines that never pass, numbers only as the formats write them, the
 environment's faults as one line, and processes that never outlive their parent.
 

@@ -1,6 +1,5 @@
 """wtvib.numerics.hull against closed forms: a floating vertical cylinder, a tube's mass and
-inertia,
-ballast levels, the parallel-axis theorem and the trim balance."""
+inertia, ballast levels, the parallel-axis theorem and the trim balance."""
 
 import dataclasses
 

@@ -34,7 +34,7 @@ def test_head_mass_is_for_windio_files_only(tmp_path):
 
 
 def test_the_headline_says_where_imported_speeds_come_from(shared):
-    """Issue 18 (windIO 1.x speeds): the IEA-3.4 1.x file's control block carries 6.9–12.1
+    """windIO 1.x speeds: the IEA-3.4 1.x file's control block carries 6.9–12.1
     rpm; the report says they are the file's (operation.source, and the headline's Speed
     row), and a range given on the command line says so instead."""
     from wtvib import audit

@@ -1,4 +1,4 @@
-"""Invariants of the structural models (issue 9): properties that must hold for any input.
+"""Invariants of the structural models: properties that must hold for any input.
 
 * scaling every stiffness by s scales every frequency by √s (K φ = ω² M φ);
 * adding mass never raises the first frequency (Rayleigh's principle);

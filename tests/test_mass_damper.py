@@ -1,6 +1,5 @@
 """Tuned mass dampers on the tower (wtvib.subsystems.mass_damper, tower.dampers), against closed
-forms:
-a damper on a rigid mount, a damper on a one-mass structure (the two-degree-of-freedom
+forms: a damper on a rigid mount, a damper on a one-mass structure (the two-degree-of-freedom
 system's characteristic polynomial, solved here on its own), and Den Hartog's optimum."""
 
 import math

@@ -202,7 +202,7 @@ def test_a_pair_within_rounding_of_the_real_axis_keeps_both_roots_on_both_paths(
 
 
 def test_state_modes_keep_the_real_roots_of_an_overdamped_mode():
-    """Issue 40's survivor `modal` (state_modes' tolerance sign): a root with Im λ = 0 — an
+    """A mutation survivor (`modal`, state_modes' tolerance sign): a root with Im λ = 0 — an
     overdamped mode's, ẍ + 3ẋ + x = 0, λ = (−3 ± √5)/2 — is listed (the .lin reader names
     the roots it leaves out from this list), each with participation summing to 1."""
     import math

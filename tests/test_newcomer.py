@@ -1,4 +1,4 @@
-"""A newcomer's first hour (issue 57): the catalogue ships in the wheel and answers to its
+"""A newcomer's first hour: the catalogue ships in the wheel and answers to its
 names, a typo is answered before the numerical stack is imported, an output file's folder
 is never made, the figures of a preset's run do not replace the plain run's, and piped
 text is not hard-wrapped."""

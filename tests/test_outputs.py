@@ -37,7 +37,7 @@ def test_an_unwritable_folder_is_an_output_error(tmp_path):
 
 
 def test_a_device_or_pipe_is_never_an_output(tmp_path):
-    """Issue 19: the overwrite check opened the target for reading (a FIFO blocked forever)
+    """The overwrite check opened the target for reading (a FIFO blocked forever)
     and --force replaced a device node."""
     import os
 

@@ -121,7 +121,7 @@ def test_report_of_a_bad_spec_is_one_line(tmp_path):
 
 
 def test_pdf_numbers_are_for_people():
-    """Issue 21: a check's numbers are one readable line with units (not `key = value`
+    """A check's numbers are one readable line with units (not `key = value`
     reprs), and inputs are written as engineers write them."""
     from wtvib.outputs.pdfreport import _for_people, _numbers
 

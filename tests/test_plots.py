@@ -82,7 +82,7 @@ def test_no_damping_diagram_without_aerodynamics(write_spec):
     assert "damping" not in diagrams(audit.run(load(write_spec())))
 
 
-# --- drawing beside the audit (wtvib.outputs.plots.render, issue 20) -----------------------------
+# --- drawing beside the audit (wtvib.outputs.plots.render) -----------------------------
 
 
 def test_forked_drawing_gives_the_bytes_drawing_in_process_gives(reports, monkeypatch):
@@ -325,7 +325,7 @@ def test_every_text_of_a_figure_is_inside_it(name):
 @pytest.mark.parametrize("name", ["aeroman", "stall-rotor-1mw", "mod-0", "wka-60"])
 def test_every_text_prints_at_7_pt_or_more_in_the_pdf(name):
     """The PDF prints each figure at its text width (6.85 in): a 10-in figure's 8-pt text
-    came out at 5.5 pt (issue 34). Every text of every figure, scaled to that width, is
+    came out at 5.5 pt. Every text of every figure, scaled to that width, is
     7 pt or more."""
     from matplotlib.text import Text
 

@@ -1,6 +1,5 @@
 """ElastoDyn's mode-shape polynomials at unit level (wtvib.subsystems.polynomials): the fit, the
-blade's
-Rayleigh–Ritz polynomial, the audit's diagnosis, the written coefficients and files.
+blade's Rayleigh–Ritz polynomial, the audit's diagnosis, the written coefficients and files.
 
 The exact reference is the uniform cantilever (Euler–Bernoulli): its first mode
 φ(x) = cosh βx − cos βx − σ(sinh βx − sin βx), βL = 1.875104, σ = (cosh βL + cos βL) /

@@ -1,5 +1,5 @@
 """Every command in the README's shell blocks runs as written, from the repository root with
-``../shared`` beside it (issue 34: `check spec.yaml`, `convert deck_ElastoDyn.dat` named
+``../shared`` beside it (`check spec.yaml`, `convert deck_ElastoDyn.dat` named
 files no one had, and the IEA-15 windIO example stopped asking for --head-mass).
 
 The commands run in a scratch copy of that layout — the catalogue and ``../shared`` linked,
@@ -22,7 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 HARNESS = ("make demo", "make test")
 
 
-#: The documents whose commands must run: the README and the user guide (issue 57: every
+#: The documents whose commands must run: the README and the user guide (every
 #: command shown anywhere runs as written).
 DOCUMENTS = ("README.md", "docs/guide.md")
 
@@ -47,7 +47,7 @@ def readme_commands() -> list[str]:
 
 
 def test_the_readme_is_a_five_minute_read():
-    """≤ 300 lines (issue 57: it was 1,220); the rest lives in docs/guide.md."""
+    """≤ 300 lines (it was 1,220); the rest lives in docs/guide.md."""
     assert len((ROOT / "README.md").read_text(encoding="utf-8").splitlines()) <= 300
 
 

@@ -37,7 +37,7 @@ def test_terminal_leads_with_the_verdict_and_warnings(write_spec):
 
 
 def test_terminal_leads_with_a_summary_and_never_cuts_an_id():
-    """Issue 21: at 80 columns the default report is the headline, each failing or warning
+    """At 80 columns the default report is the headline, each failing or warning
     check with its numbers, the info checks by id, and the assumptions; --detail adds the
     tables, whose id columns are as wide as the longest id (no "drivetrain.resonance.me…")."""
     r = audit.run(spec.load(TURBINES / "mod-0.yaml"))
@@ -143,7 +143,7 @@ def _text(report, width=80, **kw) -> str:  # type: ignore[no-untyped-def]
 
 
 def test_wrapped_findings_and_assumptions_hang_under_their_first_line():
-    """Issue 34: a finding wrapped at 80 columns continued at column 0."""
+    """A finding wrapped at 80 columns continued at column 0."""
     text = _text(audit.run(spec.load(TURBINES / "wka-60.yaml")))
     body = text.split("Findings\n", 1)[1].split("\n14 modes", 1)[0]
     lines = body.splitlines()
@@ -155,7 +155,7 @@ def test_wrapped_findings_and_assumptions_hang_under_their_first_line():
 
 
 def test_the_overspeed_reads_the_same_in_headline_and_assumptions():
-    # the headline gave 26.45 rpm, the assumption 26.4 rpm (issue 34)
+    # the headline gave 26.45 rpm, the assumption 26.4 rpm
     text = _text(audit.run(spec.load(TURBINES / "wka-60.yaml")), width=200)
     assert "overspeed 26.45 rpm" in text and "(26.45 rpm) is checked" in text
 

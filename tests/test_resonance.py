@@ -285,9 +285,9 @@ def test_all_pairs_at_once_agree_with_each_pair_alone_to_the_bit():
 
 
 def test_a_crossing_mark_carries_the_damping_judged_there():
-    """Issue 40's survivor `resonance` 841: the Campbell diagram's mark of a crossing shows
-    the ζ its DAF came from — the crossed mode's damping at that rotor speed (its damping in
-    operation where the aerodynamics give one; the least of coincident modes') — on every
+    """A mutation survivor (`resonance` 841, tests/MUTATION.md): the Campbell diagram's mark of a
+    crossing shows the ζ its DAF came from — the crossed mode's damping at that rotor speed (its
+    damping in operation where the aerodynamics give one; the least of coincident modes') — on every
     crossing of two catalogue turbines and an aeroelastic deck."""
     from tests.conftest import SHARED, TURBINES
     from wtvib import audit, importers, spec

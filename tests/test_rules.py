@@ -95,10 +95,10 @@ def test_the_deciding_check_is_the_most_severe_then_the_least_margin():
 
 
 def test_heavy_damping_is_one_threshold_with_its_stated_peak():
-    """Issue 40's survivor `resonance` 84: the resonance routine's default heavy-damping
-    limit was a second 0.3 beside the spec's; one constant now (rules.HEAVY_DAMPING), the
-    limit at which the peak amplification 1/(2ζ√(1 − ζ²)) falls to 1.75 (its stated
-    reason), the default of the audit setting and of the routine alike."""
+    """A mutation survivor (`resonance` 84, tests/MUTATION.md): the resonance routine's default
+    heavy-damping limit was a second 0.3 beside the spec's; one constant now (rules.HEAVY_DAMPING),
+    the limit at which the peak amplification 1/(2ζ√(1 − ζ²)) falls to 1.75 (its stated reason), the
+    default of the audit setting and of the routine alike."""
     import inspect
     import math
 

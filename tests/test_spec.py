@@ -199,7 +199,7 @@ def test_json_schema_accepts_quantities():
         ("  blades: 2", "  blades: true", "rotor.blades: should be a whole number, not true"),
         ("  blades: 2", "  blades: 2.0", "rotor.blades: should be a whole number (got 2.0)"),
         ("    fixed_rpm: 30", "    fixed_rpm: 1:30", "should be a number, not text (got '1:30')"),
-        # a quoted number: what the field wants, and how to write it (issue 34: a quoted
+        # a quoted number: what the field wants, and how to write it (a quoted
         # float in a quantity was told "Input should be a valid integer")
         (
             "    fixed_rpm: 30",
@@ -215,7 +215,7 @@ def test_json_schema_accepts_quantities():
     ],
 )
 def test_numbers_must_be_numbers(write_spec, line, replacement, message):
-    """Issue 19: YAML 1.1 and lax validation made ``blades: true`` one blade, ``1:30`` 90 rpm
+    """YAML 1.1 and lax validation made ``blades: true`` one blade, ``1:30`` 90 rpm
     and "0_5" 5 Hz, and took the text "30" for a number. Strict types refuse each with the
     field and line."""
     text = spec_text(blades=2, speed="fixed_rpm: 30", modes="fa1: 0.75")
@@ -225,7 +225,7 @@ def test_numbers_must_be_numbers(write_spec, line, replacement, message):
 
 
 def test_special_files_are_not_specs(tmp_path):
-    """Issue 19: /dev/zero has size 0 and grew to gigabytes; a FIFO blocked the read."""
+    """/dev/zero has size 0 and grew to gigabytes; a FIFO blocked the read."""
     import os
 
     fifo = tmp_path / "spec.yaml"
@@ -236,7 +236,7 @@ def test_special_files_are_not_specs(tmp_path):
 
 
 def test_an_absurd_wind_speed_is_refused(write_spec):
-    # issue 19: max_wind_m_s: 1e9 allocated 24 GB in the stall sweep
+    # Max_wind_m_s: 1e9 allocated 24 GB in the stall sweep
     from tests.conftest import TURBINES
 
     text = (TURBINES / "stall-rotor-1mw.yaml").read_text()
@@ -285,7 +285,8 @@ def test_the_readmes_aerodynamics_example_is_a_valid_block(write_spec):
     ],
 )
 def test_aerodynamics_mistakes_are_one_line(write_spec, old, new, said):
-    """Magnitudes no rotor has (issue 19's class) are refused with the field, not solved."""
+    """Magnitudes no rotor has (the extreme-value campaign's class) are refused with the field, not
+    solved."""
     head, text = _readme_aerodynamics()
     assert old in text
     with pytest.raises(SpecError, match=re.escape(said)) as err:
@@ -306,7 +307,7 @@ def test_aerodynamics_mistakes_are_one_line(write_spec, old, new, said):
     ],
 )
 def test_a_speed_table_is_validated(write_spec, entry, message):
-    """A mode's frequency over rotor speed (issue 18: measured Campbell curves) must be a
+    """A mode's frequency over rotor speed (measured Campbell curves) must be a
     table that increases in rpm, has a frequency per speed, agrees with the standstill value
     at 0 rpm and does not come with a Southwell coefficient too."""
     path = write_spec(extra=f"blade:\n  modes:\n    flap1: {entry}\n")
@@ -315,7 +316,7 @@ def test_a_speed_table_is_validated(write_spec, entry, message):
 
 
 def test_a_misspelt_key_names_itself_and_the_field_it_should_be(write_spec):
-    """Issue 21: a key typo used to report only "required field is missing (and 1 more
+    """A key typo used to report only "required field is missing (and 1 more
     problem)" on the missing field's parent, never naming the unknown key."""
     extra = (
         "tower:\n  sections:\n    height_m: [0, 60]\n    outer_diamter_m: [4, 4]\n"

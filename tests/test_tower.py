@@ -85,7 +85,7 @@ def test_stiffer_tower_never_classifies_softer(tmp_path_factory, f, factor):
 
 
 def test_resonant_class_names_the_speed_where_the_margin_is_violated(shared):
-    """Issue 15: the NREL 5-MW's 3P meets the tower at the lowest speed, 6.9 rpm (3P =
+    """The NREL 5-MW's 3P meets the tower at the lowest speed, 6.9 rpm (3P =
     0.345 Hz), not at 12.1 rpm where the message used to place it."""
     from wtvib import audit, importers
 
@@ -97,7 +97,7 @@ def test_resonant_class_names_the_speed_where_the_margin_is_violated(shared):
 
 
 def test_a_long_station_table_is_sampled_by_a_bounded_mesh(write_spec):
-    """Issue 19: a 10,000-station tower took 300 s and 15 GB meshed at every station. Past
+    """A 10,000-station tower took 300 s and 15 GB meshed at every station. Past
     beam.MAX_STATION_NODES stations a uniform mesh samples the table (said in the report):
     the same taper tabulated at 2,000 and at 11 stations gives one frequency (0.2 %)."""
     import numpy as np
@@ -154,7 +154,7 @@ def test_the_class_gives_the_modes_frequency_where_its_separation_is_measured(sh
     ],
 )
 def test_a_hingeless_two_bladed_rotor_needs_a_stiff_tower(tmp_path, turbine, hub, status):
-    """Issue 39, Hau 7.5.1: "a turbine with a hingeless rotor and flexible tower design would
+    """Hau 7.5.1: "a turbine with a hingeless rotor and flexible tower design would
     be an extremely hazardous concept" — MOD-2 with a hingeless hub audited PASS."""
     import re
 

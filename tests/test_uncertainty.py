@@ -34,7 +34,7 @@ def test_a_given_frequency_with_a_tolerance_is_sampled_about_its_value(write_spe
 
 
 def test_the_reduced_tower_samples_equal_each_sample_solved_anew():
-    """Issue 20: the tower samples are solved on a Rayleigh–Ritz basis (the nominal's
+    """The tower samples are solved on a Rayleigh–Ritz basis (the nominal's
     lowest modes and each input's doubled system's first): against every sample's own full
     beam problem (the path the non-linear soil inputs take), within 1e-9 over ±50 %."""
     from tests.conftest import TURBINES

@@ -81,7 +81,7 @@ def load_mutated(tmp_path, doc):  # type: ignore[no-untyped-def]
 )
 @pytest.mark.parametrize("schema", [False, True], ids=["own checks", "windIO schema"])
 def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message, schema, monkeypatch):
-    """Issue 19: two thirds of ~750 single-key mutations of the IEA-15 2.x example ended in a
+    """Two thirds of ~750 single-key mutations of the IEA-15 2.x example ended in a
     KeyError, TypeError or IndexError; blades: true was one blade. wtvib's own checks name
     the field where the windIO schema is not at hand; with it (the windio package), the
     schema refuses the file first, with field and line."""
@@ -100,7 +100,7 @@ def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message, schema, mo
 @pytest.mark.parametrize(
     ("mutate", "message"),
     [
-        (  # issue 37: the drive train's spring is read now
+        (  # The drive train's spring is read now
             lambda d: d["components"]["drivetrain"]["elastic_properties"].update(
                 spring_constant="stiff"
             ),
@@ -115,7 +115,7 @@ def test_a_hostile_windio_file_is_one_line(tmp_path, mutate, message, schema, mo
     ],
 )
 def test_a_hostile_drive_train_is_one_line(tmp_path, mutate, message):
-    """Issue 37: the drive train's spring and the generator's inertia are read now (the
+    """The drive train's spring and the generator's inertia are read now (the
     windIO schema lets a string or a negative inertia through): one line naming the field."""
     doc = iea15()
     mutate(doc)
@@ -145,7 +145,7 @@ def test_a_negative_component_mass_is_refused(tmp_path, monkeypatch):
 
 
 def test_a_part_given_two_different_masses_is_warned_about():
-    """Issue 18: the windIO 2.1.1 IEA-22 example gives its generator as 508 t (`mass`) and
+    """The windIO 2.1.1 IEA-22 example gives its generator as 508 t (`mass`) and
     1,269 t (`elastic_properties.mass`); the audit says so with both numbers, in the
     headline's warnings. The IEA-15 example's two generator masses agree (372 / 369 t)."""
     from pathlib import Path
@@ -177,7 +177,7 @@ def test_a_part_given_two_different_masses_is_warned_about():
     ],
 )
 def test_a_windio_file_is_checked_against_the_windio_schema_first(tmp_path, edit, where, message):
-    """Issue 19: `number_of_blades: true` was one blade and a −1 kg generator was taken
+    """`number_of_blades: true` was one blade and a −1 kg generator was taken
     silently; the windIO 2.x schema (the windio package's, checked without importing windIO)
     refuses both, one line with file, line and field, exit 2."""
     windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
@@ -272,7 +272,7 @@ def test_a_windio_file_without_a_speed_range_takes_the_command_lines(tmp_path):
 
 
 def test_the_schema_checks_long_number_lists_as_samples_with_the_same_verdicts():
-    """Issue 42: the windIO schema's check of the IEA-22 file cost 0.45 s, its long number
+    """The windIO schema's check of the IEA-22 file cost 0.45 s, its long number
     lists one validator call per entry; they are checked as samples that keep the smallest,
     the largest and a repeated entry. Planted faults in such lists — out of a minimum or
     maximum, a repeat in a list whose entries must be unique — give the full check's

@@ -58,7 +58,7 @@ def test_a_number_of_thousands_of_digits_is_refused():
 
 
 def test_legal_yaml_stays_legal_and_a_recursive_alias_is_one_line():
-    """Issue 19: a merge key followed by an override was refused as a duplicate, indented
+    """A merge key followed by an override was refused as a duplicate, indented
     comments counted as nesting, and a recursive alias ended in a RecursionError."""
     doc = yamlio.parse("base: &b {x: 1, y: 2}\nother:\n  <<: *b\n  y: 3\n", "t.yaml")
     assert doc.data["other"] == {"x": 1, "y": 3}  # the explicit key wins (YAML merge)
@@ -86,7 +86,7 @@ def test_legal_yaml_stays_legal_and_a_recursive_alias_is_one_line():
     ],
 )
 def test_the_fast_windio_reader_reads_plain_scalars_as_the_spec_reader_does(text):
-    """Issue 19: the fast reader of machine-written files (windIO) used PyYAML's YAML 1.1
+    """The fast reader of machine-written files (windIO) used PyYAML's YAML 1.1
     resolvers: 8e-05 and 1e5 stayed text (an airfoil coordinate of the IEA-22 example file
     failed the windIO schema), 1:30 was 90 and on was true. Both readers are YAML 1.2 now."""
     from wtvib.spec.yamlio import parse, parse_plain
@@ -95,7 +95,7 @@ def test_the_fast_windio_reader_reads_plain_scalars_as_the_spec_reader_does(text
 
 
 def test_plain_number_lists_read_by_json_equal_the_yaml_readers():
-    """Issue 42: parse_plain reads a line's flow list of plain numbers with json (in C) —
+    """Parse_plain reads a line's flow list of plain numbers with json (in C) —
     the IEA-22 windIO file's 46,000 numbers cost PyYAML 0.15 s — and must give what the
     YAML 1.2 core reading gives: ints stay ints, floats floats; a list with an entry json
     would read otherwise (.5, +1, 01, .inf, 1e5 as YAML 1.2 reads it: a float) stays with

@@ -53,7 +53,7 @@ def test_a_head_without_any_yaw_inertia_is_one_line_with_the_field(write_spec):
 
 
 def test_a_head_yaw_inertia_below_half_the_rotors_polar_is_refused():
-    """Issue 19 (the extreme-value campaign): on the two-bladed Aeroman a yaw inertia
+    """The extreme-value campaign: on the two-bladed Aeroman a yaw inertia
     below J_p/2 made the lowest instantaneous inertia negative and a math domain error;
     the head's mean yaw inertia includes the rotor's J_p/2, so it is the input's error."""
     from tests.conftest import TURBINES

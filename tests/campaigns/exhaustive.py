@@ -1,4 +1,4 @@
-"""Exhaustive mutation campaigns (issue 19), complementing the hypothesis properties: every
+"""Exhaustive mutation campaigns, complementing the hypothesis properties: every
 place of a reference input mutated in turn, not a random sample of them.
 
     .venv/bin/python tests/campaigns/exhaustive.py deck      # NREL 5-MW OpenFAST deck set

@@ -363,7 +363,7 @@ def test_damping_in_operation_belongs_to_the_judged_curve(iea15):
 
 
 def test_stall_checks_judge_modes_by_where_their_energy_sits(iea15):
-    """Issue 37: a Campbell curve is one physical mode from end to end. The IEA-15's first
+    """A Campbell curve is one physical mode from end to end. The IEA-15's first
     collective flap and first edge modes (0.53–0.62 Hz) cross near 7 rpm; before, the curve
     named ``blade.flap1.collective`` at standstill continued as the edgewise mode past it
     (lightly damped, 1.6–3 %). Now it stays flapwise at every operating point, damped tens

@@ -267,9 +267,9 @@ def test_the_speed_margin_bands_warn_between_one_and_one_plus_margin() -> None:
 
 
 def test_the_figures_station_is_the_one_nearest_to_flutter() -> None:
-    """Issue 40's survivor `aeroelastic` 679: of several sections, the V-g curves and the
-    stability chart are drawn for the one whose flutter speed is the least multiple of its
-    section speed — the one the flutter check names."""
+    """A mutation survivor (`aeroelastic` 679, tests/MUTATION.md): of several sections, the V-g
+    curves and the stability chart are drawn for the one whose flutter speed is the least multiple
+    of its section speed — the one the flutter check names."""
     from tests.conftest import TURBINES
     from wtvib import audit
     from wtvib import spec as spec_mod

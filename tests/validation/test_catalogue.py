@@ -38,7 +38,7 @@ STORIES = {
     "aeroman-retrofit": ("stiff", "fail"),  # yaw cured by the active drive; gearbox unchanged
     "euros-44m": (None, "warn"),  # blade case: no tower; 3P meets flap only at 18 rpm
     # vertical axis: no stiff/soft class; with the measured Campbell diagram (SAND91-2228
-    # Fig. 4.5, issue 18) the 1st flatwise mode is 11 % above 2P at 34 rpm and meets it at
+    # Fig. 4.5) the 1st flatwise mode is 11 % above 2P at 34 rpm and meets it at
     # overspeed: warn (the representative values it replaced passed)
     "darrieus": (None, "warn"),
     "nrel-5mw": ("resonant", "fail"),  # 3P at 6.9 rpm is 6 % from the tower (< 10 %)
@@ -190,7 +190,7 @@ def test_stall_rotor_edgewise_damping_goes_negative_at_high_wind():
 
 
 def test_wka60_concrete_tower_uncertainty_and_the_size_that_clears_2p():
-    """Issue 18: the WKA-60's concrete tower as sections (representative geometry scaled to
+    """The WKA-60's concrete tower as sections (representative geometry scaled to
     the 2P coincidence Hau reports) with tolerances on E (15 %), density and head mass
     (5 %). Hau §7.5.2: "the actual natural frequencies of concrete towers differ
     considerably from the calculated values". Exact: f ∝ √(E/m), so the sensitivity to E is
@@ -218,7 +218,7 @@ def test_wka60_concrete_tower_uncertainty_and_the_size_that_clears_2p():
 
 
 def test_euros_blade_gets_its_stability_checks_and_the_closed_form_divergence():
-    """Issue 18 / Hau §7.2.1 ("it should nevertheless be checked in all real cases"): the
+    """Hau §7.2.1 ("it should nevertheless be checked in all real cases"): the
     Euros 44 m blade carries representative section data, so divergence, flutter and the
     stall checks are analysed, not skipped. Exact: the typical-section divergence dynamic
     pressure q_D = K_θ/(c·C_Lα·e), K_θ = I_θ·ω_θ² per unit span with the torsion stiffened by
@@ -242,7 +242,7 @@ def test_euros_blade_gets_its_stability_checks_and_the_closed_form_divergence():
 
 
 def test_tjaereborg_tower_from_the_stas_model_gives_its_frequency():
-    """Issue 18: the Tjæreborg tower and head from SINTEF's STAS model (spec sources: stas).
+    """The Tjæreborg tower and head from SINTEF's STAS model (spec sources: stas).
     Published there: E = 4.7e10 Pa, 'to be calibrated. ft = 0.81 Hz'. wtvib's beam with the
     source's own E lands within 1.5 % of 0.81 Hz (its head a rigid point mass, the source's
     nacelle a frame of beams); the spec's E is re-calibrated to 0.81 Hz (derived, +2.3 %)."""
@@ -258,7 +258,7 @@ def test_tjaereborg_tower_from_the_stas_model_gives_its_frequency():
 
 
 def test_darrieus_modes_follow_the_measured_campbell_diagram():
-    """Issue 18: the Sandia 34 m test bed's measured Campbell diagram (SAND91-2228 Fig. 4.5,
+    """The Sandia 34 m test bed's measured Campbell diagram (SAND91-2228 Fig. 4.5,
     digitised in OWENS.jl) as tables of rpm and Hz: the lead-lag mode 1BE softens with speed
     — 1.6389 Hz at 30 rpm, 1.5713 Hz at 35.169 rpm, so 1.5866 Hz at the 34 rpm of normal
     operation (linear between the points) — and the first flatwise 1F stiffens (1.2603 Hz at

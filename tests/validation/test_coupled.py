@@ -225,7 +225,7 @@ def test_iea15_windio2_coupled_tower_mode_stays_in_the_published_band():
     f = parked(s)
     for name in ("tower.fa1", "tower.ss1"):
         assert 0.17 * 0.95 <= f[name] <= 0.18 * 1.05
-    # the drive train read from the file (issue 37): the rotor turns on its chain, not held
+    # the drive train read from the file: the rotor turns on its chain, not held
     model = coupled.build(s, "locked")
     assert not any("rotor is held" in a for a in model.assumptions)
     assert s.drivetrain is not None and [c.name for c in s.drivetrain.chain] == [
@@ -368,7 +368,7 @@ def test_the_dampers_add_to_every_coupled_modes_material_damping(shared, deck):
 
 @pytest.mark.parametrize("rpm", [9.0, 12.1])
 def test_whirl_labels_map_fixed_frame_lines_to_the_blade_harmonic(nrel, rpm):
-    """Issue 15: on a rigid support the fixed-frame frequency of each whirl mode, in units of
+    """On a rigid support the fixed-frame frequency of each whirl mode, in units of
     1P, plus the shift of excitation.driving_harmonic (backward +1, forward −1, collective
     0) is the isolated rotating blade's frequency in units of 1P — the blade harmonic that
     meets the mode where a fixed-frame line kP does. Derivation in driving_harmonic."""
@@ -542,7 +542,7 @@ def _assumed_modes(s: spec.Spec, deck: str, names: tuple[str, str], plane: str) 
 
 
 def test_fasts_fore_aft_above_side_side_is_its_assumed_mode_shapes(nrel, shared):
-    """Issue 37: FAST puts the parked NREL 5-MW's first fore-aft mode above the side-side
+    """FAST puts the parked NREL 5-MW's first fore-aft mode above the side-side
     one (0.3240 against 0.3120 Hz, Table 9-1; ADAMS 0.3195 / 0.3164). No term is missing
     from the coupled model: generator locked, as the table is, its side-side mode (the
     rotor's polar inertia rolling with the nacelle) lies below the fore-aft one too, within
@@ -585,7 +585,7 @@ def test_fasts_fore_aft_above_side_side_is_its_assumed_mode_shapes(nrel, shared)
     ],
 )
 def test_every_parked_mode_has_a_name_of_its_own(shared, deck):
-    """Issue 37: two coupled modes that share one blade family's coordinate (the AOC 15/50's
+    """Two coupled modes that share one blade family's coordinate (the AOC 15/50's
     cyclic edge modes with its tower torsion, 49 % and 43 %; its second flap modes, collective
     and cyclic mixed by the tower) were named alike and numbered (``cyclic_yaw_2``,
     ``collective_2``) while the family's other name went unused. The second takes its next

@@ -148,7 +148,7 @@ def test_sizing_a_tower_given_by_frequencies_is_a_clear_error(write_spec):
 
 
 def test_window_judges_every_mode_check_judges():
-    """Issue 15: on the Aeroman, window said 'in window' where check fails on
+    """On the Aeroman, window said 'in window' where check fails on
     drivetrain.grid.4 (stage-2 mesh) and yaw.play.1 (2P with gear play)."""
     from tests.conftest import TURBINES
 

@@ -2,7 +2,7 @@
 
 Two-mass closed forms (any vibration text, e.g. Den Hartog, *Mechanical Vibrations*, §5.2):
 free–free ω² = k·(1/J₁ + 1/J₂); one end clamped ω² = roots of J₁J₂ω⁴ − (k(J₁+J₂)+… ) —
-derived in the tests. Generator coupling examples: DOMAIN.md §3 / issue 4 (c_m ≈ 33,080
+derived in the tests. Generator coupling examples: DOMAIN.md §3 (c_m ≈ 33,080
 N·m/rad, d_m ≈ 6,019 N·m·s/rad). NREL 5-MW: Jonkman et al. 2009, NREL/TP-500-38060,
 Table 9-1: 1st drivetrain torsion 0.6205 Hz (FAST) / 0.6094 Hz (ADAMS), parked with the
 generator locked (RotSpeed = 0, GenDOF = False, NREL forum answer by J. Jonkman).

@@ -1,4 +1,4 @@
-"""HAWC2 models read by wtvib (issue 53), against what the other tools computed of the same
+"""HAWC2 models read by wtvib, against what the other tools computed of the same
 turbines.
 
 * **The IEA-15-240-RWT's HAWC2 onshore model** (IEAWindTask37/IEA-15-240-RWT,

@@ -97,7 +97,7 @@ def test_beamdyn_rotor_against_openfasts_linearisation(decks):
     rpm is wtvib's mode of the same name within 3 % (measured ≤ 2.2 %, the second flap
     family the farthest) — the BeamDyn blade's 6×6 sections read right (flapwise K55,
     edgewise K44: swapped, the first flap family moves 30 %), and each Campbell curve the
-    same physical mode as OpenFAST's (issue 37: before, the curve named after the collective
+    same physical mode as OpenFAST's (before, the curve named after the collective
     flap mode at standstill was the forward whirl at 12.1 rpm). The tower's first pair
     within 5 % (measured −3.8 % fore-aft, +2.7 % side-side: ElastoDyn's assumed shapes, see
     the module notes) and its second fore-aft within 2 %."""
@@ -157,7 +157,7 @@ def test_iea_monopile_deck_sets_audit_without_edits_on_their_monopile(decks, tur
 
 @pytest.mark.parametrize("turbine", sorted(DECKS))
 def test_the_direct_drive_train_is_read_and_judged_once(decks, turbine):
-    """Issue 37: the windIO files of the IEA-15 and IEA-22 give the drive train's spring and
+    """The windIO files of the IEA-15 and IEA-22 give the drive train's spring and
     the generator's inertia (drivetrain.elastic_properties), which wtvib did not read — their
     coupled models had no drive train. Read as WISDEM writes them into the ElastoDyn decks of
     these deck sets (GenIner, DTTorSpr, DTTorDmp: the IEA-15's the same numbers, compared

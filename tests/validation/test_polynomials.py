@@ -1,4 +1,4 @@
-"""ElastoDyn's mode-shape polynomials (issue 52) against the decks' own, pyBModes' and the
+"""ElastoDyn's mode-shape polynomials against the decks' own, pyBModes' and the
 written files.
 
 References, each on the same input:

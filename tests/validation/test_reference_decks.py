@@ -27,7 +27,7 @@ def test_nrel5mw_spec_matches_its_elastodyn_deck(shared):
 
 
 def test_openfast_deck_set_gives_the_operating_range_from_rosco(shared):
-    """Issue 15: the .fst names ServoDyn, which names ROSCO's DISCON.IN: VS_MinOMSpd
+    """The .fst names ServoDyn, which names ROSCO's DISCON.IN: VS_MinOMSpd
     34.64286 and VS_RefSpd 122.90967 rad/s (generator) over WE_GearboxRatio 97 are
     3.41–12.1 rpm at the rotor (DISCON.IN of ../shared/reference/NREL5MW)."""
     from wtvib import importers

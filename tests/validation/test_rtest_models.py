@@ -1,5 +1,5 @@
 """wtvib's own model of OpenFAST's regression-test deck sets against OpenFAST's linearisation
-of the same decks, mode by mode (issue 51).
+of the same decks, mode by mode.
 
 Each r-test linearisation case (OpenFAST/r-test, ``glue-codes/openfast/*Linear*``) ships the
 deck set OpenFAST linearised: the comparison is like for like. The decks are in
@@ -397,10 +397,9 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
 @pytest.mark.parametrize("case", ["StC_test_OC4Semi_Linear_Tow", "StC_test_OC4Semi_Linear_Nac"])
 def test_a_tuned_mass_damper_is_openfasts(decks, tmp_path, case):
     """ServoDyn's structural control as the mass, spring and dashpot it is
-    (wtvib.subsystems.mass_damper):
-    OpenFAST's damper mode on the rigid OC4 turbine, 0.0503 Hz at ζ 0.0158 (the r-test case's
-    README: 0.050 Hz, 0.01581 — √(k/m)/2π and c/(2√(km)) of its 2291.5 kg, 229.15 N/m,
-    22.915 N·s/m), within 0.5 % in both."""
+    (wtvib.subsystems.mass_damper): OpenFAST's damper mode on the rigid OC4 turbine, 0.0503 Hz at ζ
+    0.0158 (the r-test case's README: 0.050 Hz, 0.01581 — √(k/m)/2π and c/(2√(km)) of its 2291.5 kg,
+    229.15 N/m, 22.915 N·s/m), within 0.5 % in both."""
     ref = _openfast(case, tmp_path)
     name = next(n for n in ref.names if n.startswith("damper."))
     f, zeta = (float(x[ref.names.index(name)]) for x in (ref.frequency_hz, ref.damping_ratio))

@@ -1,4 +1,4 @@
-"""Monopile foundations (wtvib.subsystems.soil) against closed forms (issue 23).
+"""Monopile foundations (wtvib.subsystems.soil) against closed forms.
 
 Exact: a beam on a Winkler foundation of constant modulus k [N/m²] (Hetényi, Beams on
 Elastic Foundation, 1946, ch. 2: semi-infinite beam loaded at its end), head stiffness in
@@ -228,7 +228,7 @@ def test_winkler_closed_form_and_fixity_depth_agree_on_the_tower_frequency():
 
 
 def test_soil_parameters_are_uncertain_inputs():
-    """Issue 23: --uncertainty takes soil parameters too (sampled one by one: they enter the
+    """--uncertainty takes soil parameters too (sampled one by one: they enter the
     mudline stiffness non-linearly). First order (delta method): σ_f/f = S·σ_φ with the
     normalised sensitivity S the run reports; the samples agree within 20 %."""
     from tests.conftest import with_tolerance

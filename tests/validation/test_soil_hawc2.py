@@ -1,4 +1,4 @@
-"""HAWC2's distributed soil springs read as they are written (issue 38): the IEA-15 monopile
+"""HAWC2's distributed soil springs read as they are written: the IEA-15 monopile
 model's soil file (tests/data/soil/IEA_15MW_Soil.dat, SOURCES.md there), the windio
 package's IEA-15 on it.
 

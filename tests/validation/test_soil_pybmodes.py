@@ -1,4 +1,4 @@
-"""The monopile on soil, side by side with pyBModes (issue 38).
+"""The monopile on soil, side by side with pyBModes.
 
 Reference: pyBModes 1.19.1 run once on the same input (``bench/pybmodes_soil.py`` →
 ``tests/data/soil/pybmodes.json``): the OC3 monopile deck set of OpenFAST's regression tests

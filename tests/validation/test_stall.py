@@ -134,10 +134,10 @@ def test_builtin_polar_shape() -> None:
 
 
 def test_builtin_polar_blends_continuously_into_the_flat_plate() -> None:
-    """Issue 40's survivor `stall` 67: between stall (STALL_DEG) and the flat plate
-    (FLAT_PLATE_DEG) lift and drag blend linearly in α — continuous at both ends (a jump in
-    C_D there would be a step in the damping the stall check integrates), the drag halfway
-    between its attached value and the plate's 2·sin²α_f."""
+    """A mutation survivor (`stall` 67, tests/MUTATION.md): between stall (STALL_DEG) and the flat
+    plate (FLAT_PLATE_DEG) lift and drag blend linearly in α — continuous at both ends (a jump in
+    C_D there would be a step in the damping the stall check integrates), the drag halfway between
+    its attached value and the plate's 2·sin²α_f."""
     import math
 
     eps = 1e-7

@@ -314,7 +314,7 @@ def test_windio_six_by_six_condensation_removes_the_offset_term():
 def test_blade_tip_mass_against_the_closed_form():
     """A uniform cantilever carrying a tip mass equal to its own mass: β₁L = 1.247917, so
     f₁ = β₁²/(2πL²)·√(EI/m) (DOMAIN.md §5; Blevins, Formulas for Natural Frequency and Mode
-    Shape, Table 8-8). Issue 18: ElastoDyn TipMass reached only the head's mass."""
+    Shape, Table 8-8). ElastoDyn's TipMass once reached only the head's mass."""
     import math
 
     from wtvib.subsystems import blade as blade_mod
@@ -331,7 +331,7 @@ def test_blade_tip_mass_against_the_closed_form():
 
 def test_elastodyn_tip_mass_reaches_the_blade(shared):
     """The AWT-27 deck's 11.34 kg tip brakes are on the blade model (and so in the rotor's
-    polar inertia of the coupled model): the blade frequencies drop (issue 18)."""
+    polar inertia of the coupled model): the blade frequencies drop."""
     from wtvib import importers
 
     s = importers.load(shared / "reference" / "AWT27" / "Test01.fst")
@@ -339,7 +339,7 @@ def test_elastodyn_tip_mass_reaches_the_blade(shared):
 
 
 def test_steel_tube_torsion_default_is_the_nrel_towers_own(shared):
-    """Issue 18: where a deck set has neither tower torsion nor a yaw spring, wtvib gives a
+    """Where a deck set has neither tower torsion nor a yaw spring, wtvib gives a
     steel tube's GJ = 2(G/E)·EI and ρJ = 2ρ·EI/E (E 210, G 80.8 GPa, ρ 8,500 kg/m³,
     Jonkman et al. 2009 §6). The NREL 5-MW's FAST v7 tower file (published) carries exactly
     these in TwGJStif and TwFAIner + TwSSIner at every station."""
@@ -360,7 +360,7 @@ def test_steel_tube_torsion_default_is_the_nrel_towers_own(shared):
 def test_a_deck_without_torsion_or_yaw_spring_no_longer_holds_the_nacelle(shared):
     """IEA-3.4 ElastoDyn deck (no ServoDyn, no torsion): with the steel-tube default the
     nacelle can yaw, the coupled cyclic (yaw) flap mode comes down by several per cent (the
-    6–14 % issue 18 measured against published full-system values), and it is stated."""
+    6–14 % once measured against published full-system values), and it is stated."""
     from wtvib import audit
     from wtvib.importers import ReadOptions, load
 
@@ -392,7 +392,7 @@ def test_a_deck_without_torsion_or_yaw_spring_no_longer_holds_the_nacelle(shared
 
 
 def test_rotating_blade_in_its_standstill_basis_equals_the_full_model(shared):
-    """Issue 20: the rotating blade solved in the basis of its lowest standstill modes
+    """The rotating blade solved in the basis of its lowest standstill modes
     (blade.RITZ_BLADE per mode kept) gives the full finite-element model's frequencies at
     every speed of the sweep — NREL 5-MW blade, 0 … 1.5 rad/s (14 rpm), within 1e-7."""
     import numpy as np
@@ -412,12 +412,12 @@ def test_rotating_blade_in_its_standstill_basis_equals_the_full_model(shared):
 
 
 def test_a_rotating_tip_mass_pulls_from_its_own_radius():
-    """Issue 40's mutation survivor `blade` 102: a tip mass M on a nearly massless uniform
-    cantilever of length L whose root sits at hub radius R_h. Rotating slowly, its flapwise
-    ω² rises by the tension's work on the static shape: first order (Southwell), with the
-    tip-loaded cantilever's shape φ = (3x²L − x³)/(2L³) — exact for a massless beam —
-    Δω² = Ω²·M(R_h + L)·∫φ′² dx / M = Ω²·(R_h + L)·6/(5L). A hub radius equal to L doubles
-    the pull over R_h = 0; the model must give it (the beam's own mass is 1e-4 of M)."""
+    """A mutation survivor (`blade` 102, tests/MUTATION.md): a tip mass M on a nearly massless
+    uniform cantilever of length L whose root sits at hub radius R_h. Rotating slowly, its flapwise
+    ω² rises by the tension's work on the static shape: first order (Southwell), with the tip-loaded
+    cantilever's shape φ = (3x²L − x³)/(2L³) — exact for a massless beam — Δω² = Ω²·M(R_h + L)·∫φ′²
+    dx / M = Ω²·(R_h + L)·6/(5L). A hub radius equal to L doubles the pull over R_h = 0; the model
+    must give it (the beam's own mass is 1e-4 of M)."""
     import math
 
     from wtvib.subsystems import blade as blade_mod
@@ -434,7 +434,8 @@ def test_a_rotating_tip_mass_pulls_from_its_own_radius():
 
 
 def test_a_blade_modes_reported_shape_is_its_deflection_in_its_own_plane():
-    """Issue 40's survivor `blade` 251: the shape a computed blade mode reports (and the
+    """A mutation survivor (`blade` 251, tests/MUTATION.md): the shape a computed blade mode
+    reports (and the
     aerodynamic estimates weigh the sections with) is the deflection of its own plane, flap
     or edge — for a uniform cantilever both first modes the closed form φ = cosh βx − cos βx
     − σ(sinh βx − sin βx), β₁L = 1.8751, normalised to the tip (Blevins Table 8-1)."""

@@ -1,4 +1,4 @@
-"""Monte Carlo uncertainty against first-order (delta-method) predictions (issue 10).
+"""Monte Carlo uncertainty against first-order (delta-method) predictions.
 
 A tip-mass cantilever with a normally distributed Young's modulus, E ~ N(E₀, (σE₀)²):
 f ∝ √E, so to first order mean f = f₀(1 − σ²/8) and std f = f₀·σ/2 (delta method), and
@@ -148,7 +148,7 @@ blade:
 
 
 def test_probabilities_agree_with_the_deterministic_checks_of_the_run(tmp_path):
-    """Issue 15: with a vanishing tolerance every sample is the nominal turbine, so the
+    """With a vanishing tolerance every sample is the nominal turbine, so the
     probability of a margin violation is 1 exactly where the run's own check finds one in
     steady operation and 0 elsewhere — under the run's margin (--margin), over the whole
     steady range (2P at 10.5 rpm here is partial load, not the 14 rpm dwell speed), and
@@ -183,7 +183,7 @@ def test_uncertainty_without_any_tolerance_says_so_in_one_line(write_spec):
 
 
 def test_uncertainty_runs_the_audit_once(monkeypatch):
-    """Issue 16: --uncertainty ran the whole audit once per 2,000-sample chunk plus twice
+    """--uncertainty ran the whole audit once per 2,000-sample chunk plus twice
     per uncertain input for the sensitivities (7 audits for one run); now the audit runs
     once and hands its modes to one batched sampling."""
     calls = []

@@ -1,4 +1,4 @@
-"""Issue 15: every verdict coherent with its own numbers and with every other line of the
+"""Every verdict coherent with its own numbers and with every other line of the
 same report, over the whole catalogue and the reference decks (the property test).
 
 * no check passes whose own ``margin`` is below its ``required_margin``;
