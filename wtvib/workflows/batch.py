@@ -263,7 +263,7 @@ def audit_one(
     unless ``draw`` is given. Never raises (but for Ctrl-C): a user's mistake is an input
     error, any other exception an internal error naming it."""
     try:
-        return _audit_one(path, key, plots, options or Options(), draw)
+        return audit_one_raising(path, key, plots, options or Options(), draw)
     except WtvibError as exc:
         return Item(path, key, error=str(exc))
     except Exception as exc:  # the last line of defence: one turbine, not the batch
@@ -279,9 +279,10 @@ def internal_message(path: str, exc: BaseException) -> str:
     )
 
 
-def _audit_one(
+def audit_one_raising(
     path: str, key: str, plots: bool, options: Options, draw: Draw | None = None
 ) -> Item:
+    """:func:`audit_one` letting every exception through (``--debug``: its traceback)."""
     from .. import audit
 
     t0 = time.perf_counter()

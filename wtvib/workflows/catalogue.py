@@ -94,3 +94,63 @@ def write_index() -> Path:
 
 if __name__ == "__main__":
     print(f"wrote {write_index()}")
+
+
+def listing(*, copy: Path | None = None, force: bool = False, json_out: bool = False) -> int:
+    """``wtvib catalogue``: the turbines as a table (or JSON), or their specs copied into
+    ``copy`` to edit — all or none: a file there that differs from the catalogue's stops
+    the copy before any is written, unless ``force``."""
+    from . import ui
+
+    found = entries()
+    if copy is not None:
+        _copy(copy, force)
+        ui.say(f"copied {len(found)} turbine specs to {ui.shown(copy)}")
+        return ui.EXIT_PASS
+    if json_out:
+        ui.dump({"schema": "wtvib-catalogue/1", "turbines": [asdict(e) for e in found]})
+        return ui.EXIT_PASS
+    from ..outputs.report import catalogue_table
+
+    catalogue_table(ui.console(), found, FOLDER)
+    return ui.EXIT_PASS
+
+
+def _copy(folder: Path, force: bool) -> None:
+    from ..errors import OutputError
+    from ..outputs.files import write_atomic
+
+    def differs(path: Path) -> bool:  # a file there that is not the catalogue's own
+        target = folder / path.name
+        return target.exists() and (
+            not target.is_file() or target.read_bytes() != path.read_bytes()
+        )
+
+    edited = [p for p in files() if differs(p)]
+    if edited and not force:  # checked before any is written: all or none
+        raise OutputError(
+            f"{folder / edited[0].name} exists"
+            + (f" (and {len(edited) - 1} more)" if len(edited) > 1 else "")
+            + " and differs from the catalogue's; use --force to replace"
+        )
+    for path in files():
+        write_atomic(folder / path.name, path.read_bytes(), force=True, folder=True)
+
+
+def resolve(path: Path) -> Path:
+    """The file a command reads: ``path``, or — where no such file exists and the name is a
+    catalogue turbine's (``mod-2``) — the catalogue's spec, said on stderr; a file that is
+    neither is one line before any numerical module is imported."""
+    import os
+
+    if os.path.lexists(path):
+        return path
+    from . import ui
+
+    found = find(str(path))
+    if found is None:  # said now, not after a second of importing the numerical stack
+        from ..errors import SpecError
+
+        raise SpecError("no such file", source=str(path))
+    ui.say(f"note: {ui.shown(path)} is the catalogue's {found.name} ({ui.shown(found)})", err=True)
+    return found

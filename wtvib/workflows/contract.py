@@ -284,3 +284,16 @@ def report_schema() -> dict[str, Any]:
         },
         "additionalProperties": False,
     }
+
+
+def schema(report: bool = False) -> int:
+    """``wtvib schema``: the JSON Schema of the turbine spec, or of the report."""
+    from . import ui
+
+    if report:
+        ui.dump(report_schema())
+    else:
+        from ..spec import json_schema
+
+        ui.dump(json_schema())
+    return ui.EXIT_PASS
