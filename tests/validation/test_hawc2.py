@@ -99,23 +99,26 @@ def _at(report: audit.Report, name: str, rpm: float) -> float:
 
 def test_the_iea15_hawc2_model_against_hawcstab2(iea15, hs2_iea15):
     """HAWCStab2's whole-turbine structural modes of the IEA-15 at 5 rpm against wtvib's
-    coupled model of the HAWC2 model: the tower pair within 2 % (measured −1.3 %, −1.4 %),
-    the first flap backward and collective within 3 % (+2.1 %, +2.2 %). OPEN, held to what
-    they measure: the second flap family +5 … +7 %, the first edge backward +11 %, the
-    forward flap −5 % (module notes)."""
+    coupled model of the HAWC2 model, its blades Timoshenko beams as HAWC2's are (the st
+    file's k·G·A): the tower pair within 2 % (measured −1.4 %, −1.4 %), the first flap
+    backward and collective, the first edge forward and the second flap family within 3 %
+    (+0.1, +0.4, +1.0; +2.2, +2.3, +2.8 %; the Euler–Bernoulli blade had the second flap
+    +5 … +7 %). OPEN, held to what they measure: the first edge backward +8.9 % and the
+    first flap forward −6.4 % — two whirls 0.04 Hz apart named the other way round (each
+    within 1.5 % of the other's), and the second edge family."""
     report = audit.run(importers.load(iea15))
     for name, tol in (
         ("tower.fa1", 0.02), ("tower.ss1", 0.02),
         ("blade.flap1.backward", 0.03), ("blade.flap1.collective", 0.03),
-        ("blade.edge1.forward", 0.03),
+        ("blade.edge1.forward", 0.03), ("blade.flap2.backward", 0.03),
+        ("blade.flap2.forward", 0.03), ("blade.flap2.collective", 0.03),
     ):  # fmt: skip
         ref = hs2_iea15.modes[name]
         got = _at(report, name, ref.rpm[0])
         assert got == pytest.approx(ref.frequency_hz[0], rel=tol), (name, got)
     for name, lo, hi in (
-        ("blade.flap2.collective", 0.04, 0.09),
-        ("blade.edge1.backward", 0.08, 0.13),
-        ("blade.flap1.forward", -0.07, -0.03),
+        ("blade.edge1.backward", 0.07, 0.11),
+        ("blade.flap1.forward", -0.08, -0.05),
     ):
         ref = hs2_iea15.modes[name]
         diff = _at(report, name, ref.rpm[0]) / ref.frequency_hz[0] - 1
@@ -134,26 +137,24 @@ def test_the_iea15_onshore_model_tells_its_story(iea15):
 
 
 def test_the_dtu10mw_blade_against_hawcstab2(dtu10):
-    """The DTU 10 MW blade from its HAWC2 st file, cantilevered, against HAWCStab2's
-    structural blade modes (blade.cmb, 0–10 rpm): first flap and edge within 3 % at every
-    speed (measured +1.7 … +2.6 %); the higher modes high by a share that grows with the
-    mode (module notes), held to it: second flap +3 … +4 %, third flap +5 … +6 %."""
+    """The DTU 10 MW blade from its HAWC2 st file, cantilevered — a Timoshenko beam, its
+    shear stiffness k·G·A from the st file as HAWC2's — against HAWCStab2's structural
+    blade modes (blade.cmb, 0–10 rpm): the first five (flap 1–3, edge 1–2) within 3 % at
+    every speed (measured +1.0 … +1.7 %; the Euler–Bernoulli blade had the second and third
+    flap +3 … +6.5 %, shear deformation lowering a blade's higher modes most)."""
     ref = importers.load(
         DATA / "campbell" / "hawcstab2" / "blade.cmb",
         importers.ReadOptions(blades=3, rpm=(6.0, 9.6)),
     ).results
     assert ref is not None
     structure = importers.load(dtu10).blade.structure
-    assert structure is not None
-    for name, lo, hi in (
-        ("flap1", -0.03, 0.03), ("edge1", -0.03, 0.03),
-        ("flap2", 0.02, 0.045), ("flap3", 0.04, 0.065),
-    ):  # fmt: skip
+    assert structure is not None and structure.ga_flap_n is not None
+    for name in ("flap1", "edge1", "flap2", "edge2", "flap3"):
         m = ref.modes[f"blade.{name}"] if f"blade.{name}" in ref.modes else ref.modes[name]
         rpm = np.asarray(m.rpm)
         names, freqs, _, _ = blade.rotating_modes(structure, rpm * math.pi / 30, count=8)
         diff = freqs[:, names.index(name)] / np.asarray(m.frequency_hz) - 1
-        assert np.all((lo <= diff) & (diff <= hi)), (name, diff)
+        assert np.all(np.abs(diff) <= 0.03), (name, diff)
 
 
 def test_the_dtu10mw_model_audits(dtu10):

@@ -108,8 +108,14 @@ def test_beamdyn_rotor_against_openfasts_linearisation(decks):
     for name, openfast in BD_TOWER.items():
         tol = 0.05 if name.endswith("1") else 0.02
         assert f[name] == pytest.approx(openfast, rel=tol), name
+    from tests.validation.test_rtest_models import EXCEPTIONS
+
     for name, openfast in BD_ROTOR.items():
-        assert f[name] == pytest.approx(openfast, rel=0.03), name
+        if ("5MW_Land_BD_Linear", name) in EXCEPTIONS:  # the two held there, with why
+            lo, hi, _ = EXCEPTIONS[("5MW_Land_BD_Linear", name)]
+            assert lo <= f[name] / openfast - 1 <= hi, name
+        else:  # 3 %, 5 % above 2 Hz (as test_rtest_models.py holds every case)
+            assert f[name] == pytest.approx(openfast, rel=0.03 if openfast <= 2 else 0.05), name
 
 
 def test_beamdyn_blade_damping_is_its_stiffness_proportional_mu(decks):

@@ -98,14 +98,23 @@ EXCEPTIONS: dict[tuple[str, str], tuple[float, float, str]] = {
     },
     **{
         ("5MW_Land_BD_Linear", mode): (
-            0.07,
-            0.10,
-            "OPEN: the BeamDyn blade's second edgewise bending, 3.6/4.0 Hz in OpenFAST, "
-            "4.1 Hz as wtvib's Euler–Bernoulli blade of the same sections has it (isolated) "
-            "— without BeamDyn's shear flexibility, rotary inertia and the sections' "
-            "offsets, which lower a blade's higher modes most. Measured +8.8 %, +7.3 %",
+            lo,
+            hi,
+            "OPEN, untraced: the BeamDyn blade's sections carry shear stiffness (K11, K22: a "
+            "tenth of EA in this file), and wtvib's blade is a Timoshenko beam with it as "
+            "BeamDyn's is — which brings the second edgewise pair from +8.8/+7.3 % (Euler–"
+            "Bernoulli) to −0.7/−0.6 % and HAWC2's IEA-15 and DTU 10 MW blades within 3 % of "
+            "HAWCStab2 (test_hawc2.py), but lowers the first edgewise backward whirl and the "
+            "second flapwise backward whirl below OpenFAST's, where the Euler–Bernoulli "
+            "blade was within 0.1 and 2.3 %: BeamDyn softens these two less than a "
+            "Timoshenko beam of its sections does (its first edgewise pair's centre, 1.119 "
+            "Hz, sits 0.5 % below the Euler–Bernoulli blade's, 2.1 % above the Timoshenko "
+            f"one's). Measured {said}",
         )
-        for mode in ("blade.edge2.backward", "blade.edge2.forward")
+        for mode, lo, hi, said in (
+            ("blade.edge1.backward", -0.045, -0.02, "−3.0 %"),
+            ("blade.flap2.backward", -0.06, -0.03, "−4.6 %"),
+        )
     },
     **{
         (case, mode): (

@@ -72,11 +72,15 @@ def blade(fst: Deck) -> Blade:
     if np.all(gj > 0) and np.all(polar > 0):
         structure["gj_nm2"] = _list(gj)
         structure["torsional_inertia_kgm"] = _list(polar)
+    shear = _shear(k)
+    if shear is not None:  # BeamDyn's beam is a Timoshenko beam: flapwise K55 with K11
+        structure["ga_flap_n"], structure["ga_edge_n"] = _list(shear[1]), _list(shear[0])
     notes = [
         f"Blade from BeamDyn ({main.path.name}, {bld.path.name}): {len(eta)} stations of 6×6 "
         "stiffness and mass matrices; flapwise K55 and edgewise K44 (BeamDyn's axes) and "
-        "torsion K66 condensed about the section's own centres, mass M11, torsional inertia "
-        "M66; structural twist from the key points' initial twist."
+        "torsion K66 condensed about the section's own centres, with their shear K11 and K22 "
+        "(a Timoshenko beam), mass M11, torsional inertia M66; structural twist from the key "
+        "points' initial twist."
     ]
     centres = _centres(k, m)
     if centres:
@@ -178,6 +182,13 @@ def _stations(bld: Deck) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             source=str(bld.path),
         )
     return eta, 0.5 * (k + k.transpose(0, 2, 1)), m
+
+
+def _shear(k: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """The transverse shear stiffnesses (K22's, K11's), other strains free."""
+    from .windio import _shear as shear
+
+    return shear(k)
 
 
 def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -24,7 +24,10 @@ The structural pitch of the principal axes adds to the centre line's twist; HAWC
 positive about the blade's z (root to tip), the opposite sense of wtvib's (towards
 feather), so both are negated. Prebend and sweep, shaft tilt and cone are said and
 neglected, as for the other importers; damping is stiffness-proportional as HAWC2 gives it
-(ζ = π·β·f, the K coefficients of ``damping_posdef``).
+(ζ = π·β·f, the K coefficients of ``damping_posdef``). The blades are Timoshenko beams as
+HAWC2's are: the shear deflecting along y, k_y·G·A, goes with E·I_x (flapwise), k_x·G·A
+with E·I_y (a fully populated set: K22 with K44, K11 with K55); the tower stays an
+Euler–Bernoulli beam (a tube, whose shear deformation is negligible).
 """
 
 import math
@@ -335,19 +338,25 @@ def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float
     z_c2 = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1))])
     r = st[:, 0]
     if body.fpm:
-        from .windio import _condensed
+        from .windio import _condensed, _shear
 
         k = np.zeros((len(st), 6, 6))
         iu = np.triu_indices(6)
         k[:, iu[0], iu[1]] = st[:, 9:30]
         k[:, iu[1], iu[0]] = st[:, 9:30]
         flap, edge, tors = _condensed(k)
+        shear = _shear(k)  # K22's with K44 (flap), K11's with K55 (edge)
         m, ri_x, ri_y, pitch = st[:, 1], st[:, 4], st[:, 5], st[:, 6]
     else:
         cols = {name: st[:, i] for i, name in enumerate(ST)}
         flap = cols["E"] * cols["I_x"]
         edge = cols["E"] * cols["I_y"]
         tors = cols["G"] * cols["I_p"]
+        # the shear deflecting along y goes with E·I_x (flapwise): k_y·G·A
+        ga = cols["G"] * cols["A"]
+        shear = (cols["k_y"] * ga, cols["k_x"] * ga)
+        if not all(np.all(np.isfinite(g)) and np.all(g > 0) for g in shear):
+            shear = None
         m, ri_x, ri_y, pitch = cols["m"], cols["ri_x"], cols["ri_y"], cols["pitch"]
     twist = np.interp(r, z_c2, c2[:, 3]) + pitch
     span = r - r[0]
@@ -360,6 +369,9 @@ def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float
         "gj_nm2": [float(v) for v in tors],
         "torsional_inertia_kgm": [float(v) for v in m * (ri_x**2 + ri_y**2)],
     }
+    if shear is not None:  # HAWC2's beams are Timoshenko beams
+        structure["ga_flap_n"] = [float(v) for v in shear[0]]
+        structure["ga_edge_n"] = [float(v) for v in shear[1]]
     return structure, span, m, float(body.length)
 
 

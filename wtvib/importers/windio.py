@@ -339,6 +339,25 @@ def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return k44, k55, k66
 
 
+def _shear(k: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """Transverse shear stiffnesses of 6×6 section matrices with the other strains free
+    (:func:`_condensed`'s condensation of the shear block): the one that goes with K44's
+    bending (about axis 1, deflecting along axis 2: K22's shear) and the one with K55's
+    (K11's). None where a section has none (a zero or missing shear entry): the blade is
+    then an Euler–Bernoulli beam."""
+    s44, s55 = k[:, 1, 1].copy(), k[:, 0, 0].copy()
+    for i, mat in enumerate(k):
+        try:
+            shear = np.linalg.inv(np.linalg.inv(mat)[0:2, 0:2])
+        except np.linalg.LinAlgError:
+            continue
+        if np.all(np.isfinite(shear)) and shear[0, 0] > 0 and shear[1, 1] > 0:
+            s44[i], s55[i] = shear[1, 1], shear[0, 0]
+    if not (np.all(np.isfinite(s44)) and np.all(s44 > 0) and np.all(s55 > 0)):
+        return None
+    return s44, s55
+
+
 def _carried(tower: dict[str, Any], head: dict[str, Any]) -> float:
     """The mass a platform carries: the tower (its sections, material and point masses)
     and the head [kg]."""
@@ -653,7 +672,9 @@ class _Reader:
                 np.asarray(k.get(f"K{a + 1}{c + 1}", np.zeros(len(grid))), float)
                 for a, c in zip(*np.triu_indices(6), strict=True)
             ]
-            flap, edge, gj = _condensed(_symmetric(np.stack(upper, axis=1)))
+            six = _symmetric(np.stack(upper, axis=1))
+            flap, edge, gj = _condensed(six)
+            shear = _shear(six)
             ip = _at({"grid": im["grid"], "values": im["i_plr"]}, grid) if "i_plr" in im else None
             twist = _at(b["outer_shape"]["twist"], grid)  # degrees in 2.x
         else:
@@ -664,12 +685,14 @@ class _Reader:
             kv = np.asarray(six["stiff_matrix"]["values"], float)
             mv = np.asarray(six["inertia_matrix"]["values"], float)
             flap, edge, gj = _condensed(_symmetric(kv[:, :21]))
+            shear = _shear(_symmetric(kv[:, :21]))
             mass, ip = mv[:, _UT["mass"]], mv[:, _UT["i_plr"]]
             twist = np.degrees(_at(six["twist"], grid))  # radians in 1.x
         if np.count_nonzero(flap > edge) > len(flap) / 2:
             # The schema text calls K44 flapwise, but the published IEA-15/22 files follow
             # BeamDyn (K44 edgewise): the lower stiffness over most of the span is flapwise.
             flap, edge = edge, flap
+            shear = shear[::-1] if shear is not None else None
         span = grid * length
         structure: dict[str, Any] = {
             "hub_radius_m": hub_r,
@@ -682,6 +705,8 @@ class _Reader:
         if ip is not None and np.all(ip > 0) and np.all(gj > 0):
             structure["gj_nm2"] = _list(gj)
             structure["torsional_inertia_kgm"] = _list(ip)
+        if shear is not None:  # the shear with each bending: K22 with K44, K11 with K55
+            structure["ga_flap_n"], structure["ga_edge_n"] = _list(shear[0]), _list(shear[1])
         return structure, float(np.trapezoid(mass, span)), length
 
     # -- tower head ---------------------------------------------------------------------

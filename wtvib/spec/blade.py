@@ -39,6 +39,16 @@ class BladeStructure(_Strict):
     torsional_inertia_kgm: list[Positive] | None = Field(
         None, description="Mass moment of inertia per length about the pitch axis. [kg·m]"
     )
+    ga_flap_n: list[Positive] | None = Field(
+        None,
+        description="Transverse shear stiffness κ·G·A of the flapwise deflection (the shear "
+        "that goes with ei_flap_nm2). With ga_edge_n the blade is a Timoshenko beam: its "
+        "shear deformation lowers the higher modes (the sections' rotary inertia is "
+        "neglected); without, an Euler–Bernoulli beam, as ElastoDyn's. [N]",
+    )
+    ga_edge_n: list[Positive] | None = Field(
+        None, description="Transverse shear stiffness κ·G·A of the edgewise deflection. [N]"
+    )
     rows: TableRows | None = Field(
         None, description="Where the stations stand in the file they were read from."
     )
@@ -64,6 +74,8 @@ class BladeStructure(_Strict):
         _same_length(self, "span_m")
         if (self.gj_nm2 is None) != (self.torsional_inertia_kgm is None):
             raise ValueError("give gj_nm2 and torsional_inertia_kgm together")
+        if (self.ga_flap_n is None) != (self.ga_edge_n is None):
+            raise ValueError("give ga_flap_n and ga_edge_n together")
         return self
 
 

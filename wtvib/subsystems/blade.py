@@ -84,7 +84,10 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     geometric stiffness of the centrifugal tension N(r) = Ω²∫_r^R m(s)·(r_hub + s) ds to both
     planes and the in-plane softening −Ω²·M_v (the centrifugal force has a component along
     an in-plane displacement). The root is clamped (its four dofs removed), or free
-    (``s.root``: every dof kept; the model then has four rigid-body modes at 0 Hz).
+    (``s.root``: every dof kept; the model then has four rigid-body modes at 0 Hz). With
+    shear stiffnesses (``ga_flap_n``, ``ga_edge_n``) the blade is a Timoshenko beam
+    (:func:`_shear_blocks`): the second dof of each plane is the section's rotation, not
+    the slope.
 
     References
     ----------
@@ -103,24 +106,27 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     # a tip mass pulls on every section (its centrifugal force per Ω²: m_tip·R)
     tension = _centrifugal_integral(nodes, m, s.hub_radius_m)
     tension = tension + s.tip_mass_kg * (s.hub_radius_m + nodes[-1])
-    k_ww, geo, mass = beam.bending_elements(b, ei_ww, m, tension)
-    k_vv, _, _ = beam.bending_elements(b, ei_vv, m)
-    k_wv, _, _ = beam.bending_elements(b, ei_wv, m)
     n_el = len(nodes) - 1
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
     both = np.concatenate([w_dofs, v_dofs], axis=1)
     size = 4 * len(nodes)
-    blocks = np.zeros((4, n_el, 8, 8))  # K₀, G, M_v, M
-    blocks[0, :, :4, :4] = k_ww
-    blocks[0, :, 4:, 4:] = k_vv
-    blocks[0, :, :4, 4:] = k_wv
-    blocks[0, :, 4:, :4] = k_wv
-    blocks[1, :, :4, :4] = geo
-    blocks[1, :, 4:, 4:] = geo
-    blocks[2, :, 4:, 4:] = mass
-    blocks[3, :, :4, :4] = mass
-    blocks[3, :, 4:, 4:] = mass
+    if s.ga_flap_n is not None:
+        blocks = _shear_blocks(s, b, m, ef, ee, beta, tension)[0]
+    else:
+        k_ww, geo, mass = beam.bending_elements(b, ei_ww, m, tension)
+        k_vv, _, _ = beam.bending_elements(b, ei_vv, m)
+        k_wv, _, _ = beam.bending_elements(b, ei_wv, m)
+        blocks = np.zeros((4, n_el, 8, 8))  # K₀, G, M_v, M
+        blocks[0, :, :4, :4] = k_ww
+        blocks[0, :, 4:, 4:] = k_vv
+        blocks[0, :, :4, 4:] = k_wv
+        blocks[0, :, 4:, :4] = k_wv
+        blocks[1, :, :4, :4] = geo
+        blocks[1, :, 4:, 4:] = geo
+        blocks[2, :, 4:, 4:] = mass
+        blocks[3, :, :4, :4] = mass
+        blocks[3, :, 4:, 4:] = mass
     kept = 0 if s.root == "free" else 4
     k0, g, m_v, mm = (beam.assemble(blk, both, size)[kept:, kept:] for blk in blocks)
     if s.tip_mass_kg:  # a point mass on the tip node's deflections (w, v): dofs −4 and −2
@@ -128,6 +134,97 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
             mm[dof, dof] += s.tip_mass_kg
         m_v[-2, -2] += s.tip_mass_kg
     return k0, g, m_v, mm
+
+
+def _shear_blocks(
+    s: BladeStructure, b: beam.Basis, m: Array, ef: Array, ee: Array, beta: Array, tension: Array
+) -> tuple[Array, Array, Array]:
+    """K₀, G, M_v, M of each element of a shear-deformable (Timoshenko) blade, (4, n, 8, 8)
+    on the element dofs (w₁, θ_w₁, w₂, θ_w₂, v₁, θ_v₁, v₂, θ_v₂), and the deflections w
+    and v at the Gauss points per element dof, (n, 4, 8) each.
+
+    Each element is interpolated in its own principal frame, turned by its mean twist
+    β_e (u_f = w·cos β_e − v·sin β_e, u_e = w·sin β_e + v·cos β_e), each plane with its
+    own φ = 12·EI/(κGA·L²) (:func:`wtvib.numerics.beam.timoshenko`); the sections'
+    principal axes, at β − β_e in that frame, give the bending and shear stiffness tensors
+    at each Gauss point as in the Euler–Bernoulli blade. Energy: ½∫κᵀ·EI·κ + ½∫γᵀ·κGA·γ
+    (κ = Θ′, γ = w′ − Θ per plane); mass m on the deflections only (rotary inertia
+    neglected); the tension on the deflections' slopes. As κGA → ∞ the blade of
+    :func:`blade_parts` without shear.
+    """
+    span = np.asarray(s.span_m, dtype=float)
+    assert s.ga_flap_n is not None and s.ga_edge_n is not None
+    gf = beam.interpolate(b.x, span, np.asarray(s.ga_flap_n))
+    ge = beam.interpolate(b.x, span, np.asarray(s.ga_edge_n))
+    lengths = np.diff(b.nodes)
+    weight = b.w / lengths[:, None]  # the Gauss weights on [0, 1]
+
+    def mean(x: Array) -> Array:  # an element's average
+        return np.asarray(np.sum(weight * x, axis=1))
+
+    tables = [beam.timoshenko(lengths, 12 * mean(ei) / (mean(ga) * lengths**2))
+              for ei, ga in ((ef, gf), (ee, ge))]  # fmt: skip
+    (nf, nf1, rf, rf1), (ne, ne1, re, re1) = tables
+    zero = np.zeros_like(nf)
+
+    # element-frame rows (n, 4, 2, 8): the two planes' interpolation side by side
+    def planes(a: Array, c: Array) -> Array:
+        return np.stack([np.concatenate([a, zero], -1), np.concatenate([zero, c], -1)], axis=2)
+
+    curvature, strain = planes(rf1, re1), planes(nf1 - rf, ne1 - re)
+    deflection, slope = planes(nf, ne), planes(nf1, ne1)
+    be = mean(beta)
+    d = beta - be[:, None]
+    c, sn = np.cos(d), np.sin(d)
+
+    def tensor(f: Array, e: Array) -> Array:  # the section's tensor in the element frame
+        return np.stack(
+            [np.stack([f * c**2 + e * sn**2, (e - f) * sn * c], -1),
+             np.stack([(e - f) * sn * c, f * sn**2 + e * c**2], -1)], -2
+        )  # fmt: skip
+
+    def energy(rows: Array, mid: Array) -> Array:
+        return np.asarray(np.einsum("eg,egai,egab,egbj->eij", b.w, rows, mid, rows))
+
+    eye = np.broadcast_to(np.eye(2), (*b.w.shape, 2, 2))
+    ce, se = np.cos(be)[:, None, None], np.sin(be)[:, None, None]
+    # w = u_f·cos β_e + u_e·sin β_e, v = −u_f·sin β_e + u_e·cos β_e
+    h_w = ce * deflection[:, :, 0] + se * deflection[:, :, 1]
+    h_v = -se * deflection[:, :, 0] + ce * deflection[:, :, 1]
+    blocks = np.stack(
+        [
+            energy(curvature, tensor(ef, ee)) + energy(strain, tensor(gf, ge)),
+            energy(slope, eye * tension[..., None, None]),
+            np.einsum("eg,egi,egj->eij", b.w * m, h_v, h_v),
+            energy(deflection, eye * m[..., None, None]),
+        ]
+    )
+    # from the element frame to the rotor's dofs: p = T·q
+    t = np.zeros((len(lengths), 8, 8))
+    i4 = np.eye(4)
+    t[:, :4, :4], t[:, :4, 4:] = ce * i4, -se * i4
+    t[:, 4:, :4], t[:, 4:, 4:] = se * i4, ce * i4
+    out = np.einsum("eki,xekl,elj->xeij", t, blocks, t)
+    return out, np.einsum("egk,ekj->egj", h_w, t), np.einsum("egk,ekj->egj", h_v, t)
+
+
+def deflections(s: BladeStructure, nodes: Array) -> tuple[Array, Array]:
+    """How the blade model interpolates its deflections: w (out of the rotor plane) and v
+    (in it) at the Gauss points of each element per element dof (w₁, w₁′ or θ₁, w₂, …,
+    v₂′ or θ_v₂), (n, 4, 8) each — the Hermite cubics of an Euler–Bernoulli blade, the
+    Timoshenko interpolation of a shear-deformable one (:func:`_shear_blocks`)."""
+    b = beam.basis(nodes)
+    if s.ga_flap_n is None:
+        zero = np.zeros_like(b.n)
+        return np.concatenate([b.n, zero], -1), np.concatenate([zero, b.n], -1)
+    span = np.asarray(s.span_m, dtype=float)
+    m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
+    ef = beam.interpolate(b.x, span, np.asarray(s.ei_flap_nm2))
+    ee = beam.interpolate(b.x, span, np.asarray(s.ei_edge_nm2))
+    twist = np.asarray(s.twist_deg) if s.twist_deg else np.zeros_like(span)
+    beta = np.radians(beam.interpolate(b.x, span, twist))
+    _, h_w, h_v = _shear_blocks(s, b, m, ef, ee, beta, np.zeros_like(m))
+    return h_w, h_v
 
 
 def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:
