@@ -135,7 +135,8 @@ class Report:
                 + ", ".join(nonfinite[:20])
                 + (f" and {len(nonfinite) - 20} more" if len(nonfinite) > 20 else ""),
             ]
-        return doc
+        out: dict[str, Any] = doc
+        return out
 
     def _document(self) -> dict[str, Any]:
         spec = self.spec

@@ -55,7 +55,7 @@ class Sampled:
     hz: tuple[float, ...]
 
     def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
-        return np.interp(np.asarray(omega, dtype=float), *self._arrays)
+        return np.asarray(np.interp(np.asarray(omega, dtype=float), *self._arrays))
 
     @functools.cached_property
     def _arrays(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

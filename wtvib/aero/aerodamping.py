@@ -392,7 +392,7 @@ def blade_shape(mode: Mode, r: Array, root: float) -> Array:
     first bending mode (β₁l = 1.8751, Blevins Table 8-1), normalised to the tip."""
     if mode.shape is not None:
         x = np.asarray(mode.shape.position_m) + root
-        return np.interp(r, x, np.asarray(mode.shape.deflection))
+        return np.asarray(np.interp(r, x, np.asarray(mode.shape.deflection)))
     bl = 1.8751040687
     length = r[-1] - root
     xi = np.clip((r - root) / length, 0, 1) * bl

@@ -106,7 +106,7 @@ class Rotor:
 
     @functools.cached_property
     def _row_start(self) -> NDArray[np.intp]:
-        return np.arange(self.cl.shape[0], dtype=np.intp) * self.cl.shape[1]
+        return np.asarray(np.arange(self.cl.shape[0], dtype=np.intp) * self.cl.shape[1])
 
 
 def rotor(spec: Spec) -> Rotor:
@@ -578,4 +578,4 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
         f_lo = np.where(swap, f_hi, 0.5 * f_lo)  # Illinois: halve the end that stays
         hi, f_hi = x, f_x
     # a wind whose power stays above rated at the last grid pitch: the last grid pitch
-    return np.where(below.any(axis=1) | (j < g - 1), x, grid[:, -1])
+    return np.asarray(np.where(below.any(axis=1) | (j < g - 1), x, grid[:, -1]))

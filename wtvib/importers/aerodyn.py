@@ -29,7 +29,9 @@ def _number(cell: str, what: str, line: int, path: Path) -> float:
     return value
 
 
-def _table(path: Path, lines: list[str], start: int, rows: int, width: int, what: str) -> list:
+def _table(
+    path: Path, lines: list[str], start: int, rows: int, width: int, what: str
+) -> list[list[float]]:
     """``rows`` numeric rows of at least ``width`` cells from line index ``start`` on
     (comment lines starting with ! skipped)."""
     out: list[list[float]] = []

@@ -77,7 +77,7 @@ class Body:
 
     def at(self, which: str) -> np.ndarray:
         """A node's global position."""
-        return self.origin + self.frame @ self.node(which)
+        return np.asarray(self.origin + self.frame @ self.node(which))
 
 
 def _rotation(angles: list[float]) -> np.ndarray:
@@ -86,7 +86,7 @@ def _rotation(angles: list[float]) -> np.ndarray:
     rx = np.array([[1, 0, 0], [0, math.cos(ax), -math.sin(ax)], [0, math.sin(ax), math.cos(ax)]])
     ry = np.array([[math.cos(ay), 0, math.sin(ay)], [0, 1, 0], [-math.sin(ay), 0, math.cos(ay)]])
     rz = np.array([[math.cos(az), -math.sin(az), 0], [math.sin(az), math.cos(az), 0], [0, 0, 1]])
-    return rx @ ry @ rz
+    return np.asarray(rx @ ry @ rz)
 
 
 def _bodies(structure: Block, root: Path) -> dict[str, Body]:
@@ -493,7 +493,8 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     aerodynamics = _aerodynamics(top, root, chain, control)
     if aerodynamics is not None:
         data["aerodynamics"] = aerodynamics
-    return _plain(data)
+    out: dict[str, Any] = _plain(data)
+    return out
 
 
 def _plain(value: Any) -> Any:

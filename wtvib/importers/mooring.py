@@ -246,7 +246,7 @@ def _body_stiffness(system: Any, path: Path) -> np.ndarray:
                 f"strains under {MAX_STRAIN:.0%}) — check its length and its nodes",
                 source=str(path),
             )
-    return 0.5 * (k + k.T)
+    return np.asarray(0.5 * (k + k.T))
 
 
 #: windIO line types → MoorPy's line property library (``getLineProps``).

@@ -354,7 +354,7 @@ def _matrix(raw: bytes, marker: "re.Match[bytes]", n: int, fail: Any) -> Array:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # numpy says where parsing stopped; we say which row
         try:
-            values = np.fromstring(body, sep=" ")  # type: ignore[call-overload]
+            values = np.fromstring(body, sep=" ")
         except ValueError:  # numpy ≥ 2.3 raises where older ones warned and stopped
             values = np.zeros(0)
     if values.size != n * n or not np.all(np.isfinite(values)):

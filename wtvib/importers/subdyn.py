@@ -492,7 +492,7 @@ class _Coefficients:
         """Ca at heights ``z`` (``s``: 0 at the member's joint 1, 1 at joint 2) of a member
         of coefficient model ``kind`` (1 simple, 2 depth-based, 3 member-based)."""
         if kind == 2 and self.depth is not None:
-            return np.interp(z, *self.depth)
+            return np.asarray(np.interp(z, *self.depth))
         if kind == 3 and member in self.member:
             c1, c2 = self.member[member]
             return c1 + s * (c2 - c1)

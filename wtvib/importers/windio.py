@@ -368,7 +368,7 @@ def _carried(tower: dict[str, Any], head: dict[str, Any]) -> float:
     area = np.pi / 4 * (d**2 - (d - 2 * t) ** 2)
     steel = float(np.trapezoid(area, z)) * mat["density_kg_m3"] * mat.get("mass_factor", 1.0)
     points = sum(p["mass_kg"] for p in tower.get("point_masses", []))
-    return steel + points + float(head["mass_kg"])
+    return float(steel + points + float(head["mass_kg"]))
 
 
 def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
@@ -377,7 +377,9 @@ def _opt(key: str, value: Any, scale: float = 1.0) -> dict[str, float]:
 
 def _at(field: dict[str, Any], grid: np.ndarray) -> np.ndarray:
     """A windIO ``{grid, values}`` field evaluated on another grid (linear)."""
-    return np.interp(grid, np.asarray(field["grid"], float), np.asarray(field["values"], float))
+    return np.asarray(
+        np.interp(grid, np.asarray(field["grid"], float), np.asarray(field["values"], float))
+    )
 
 
 #: Two masses of one part differing by more than this factor are reported (wtvib's threshold:
@@ -412,7 +414,7 @@ class _Reader:
         from ..spec import read_text
 
         try:
-            line = parse(read_text(self.path), str(self.path)).line_of(where)  # type: ignore[arg-type]
+            line = parse(read_text(self.path), str(self.path)).line_of(where)
         except SpecError:
             line = None
         return SpecError(message, path=format_path(where) or None, line=line, source=str(self.path))
@@ -448,7 +450,7 @@ class _Reader:
             raise self.fail_at(
                 f"is {v[k]:g}: a tube's diameter and wall are positive", (*where, "values", k)
             )
-        return np.interp(grid, g, v)
+        return np.asarray(np.interp(grid, g, v))
 
     def material(self, name: str) -> dict[str, Any]:
         """The named material, its E, G (where given) and ρ checked positive numbers; a
@@ -886,7 +888,7 @@ class _Reader:
         values: dict[str, float] = {}
         for name, v in raw.items():
             try:
-                values[name] = float(v)  # type: ignore[arg-type]
+                values[name] = float(v)
             except (TypeError, ValueError):
                 raise self.fail(f"components.{name} must be a number (got {v!r})") from None
             may_be_zero = name.startswith(("hub", "drivetrain.elastic_properties.damping"))

@@ -105,7 +105,7 @@ def propagate(
     root3 = math.sqrt(3.0)
     if vectorised:
         times = (np.arange(steps)[:, None] + np.asarray(_GAUSS)[None, :]).ravel() * h
-        both = a(times)  # type: ignore[arg-type]
+        both = a(times)
         a1, a2 = both[0::2], both[1::2]
         stacked = 0.5 * h * (a1 + a2) + root3 / 12 * h * h * (a2 @ a1 - a1 @ a2)
     else:

@@ -91,7 +91,7 @@ def frequencies_stacked(k: Array, m: Array, count: int, *, unstable_as_nan: bool
         _check_stable(w2)
     hz = np.sqrt(np.clip(w2[:, :count], 0.0, None)) / (2.0 * np.pi)
     hz[_unstable(w2)] = np.nan
-    return hz
+    return np.asarray(hz)
 
 
 def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
@@ -212,7 +212,7 @@ def assign(score: NDArray[Any], optimal: bool = False) -> NDArray[np.intp]:
     if optimal:
         best = np.argmax(score, axis=1)
         if len(np.unique(best)) == len(best):  # each row's best column, none shared: the
-            return best.astype(np.intp)  # sum of the row maxima, which nothing exceeds
+            return np.asarray(best, dtype=np.intp)  # sum of the row maxima, which nothing exceeds
         return _hungarian(np.asarray(score, float))
     n, candidates = score.shape
     if n <= 7 and candidates == n:

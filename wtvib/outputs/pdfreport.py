@@ -52,7 +52,7 @@ def once_wrapped(paragraph: type) -> type:
     again at each split across pages — two thirds of a catalogue PDF's build went to
     breaking the same lines again (the same bytes, a test)."""
 
-    class OnceWrapped(paragraph):  # type: ignore[misc,valid-type]
+    class OnceWrapped(paragraph):  # type: ignore[misc]
         def wrap(self, width: float, height: float) -> tuple[float, float]:
             # (split() drops the broken lines where a paragraph moves on whole)
             if getattr(self, "_wrapped_at", None) != width or not hasattr(self, "blPara"):
@@ -274,7 +274,7 @@ def _outlined(template: type) -> type:
     """The document template with an outline (bookmarks): each turbine (its Heading1) and,
     under it, each of its sections (Heading2)."""
 
-    class Outlined(template):  # type: ignore[misc,valid-type]
+    class Outlined(template):  # type: ignore[misc]
         _marks = 0
 
         def afterFlowable(self, flowable: Any) -> None:  # noqa: N802 (reportlab's hook)

@@ -61,6 +61,6 @@ def header(data: bytes) -> tuple[int, int, int, int, int, int, int] | None:
     interlace methods — or None if ``data`` is not a PNG with a whole IHDR first."""
     for kind, body in chunks(data):
         if kind == b"IHDR" and len(body) >= 13:
-            return struct.unpack(">IIBBBBB", body[:13])  # type: ignore[return-value]
+            return struct.unpack(">IIBBBBB", body[:13])
         return None  # IHDR must come first (§5.6)
     return None

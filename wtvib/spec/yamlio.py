@@ -74,8 +74,8 @@ class _Loader(yaml.SafeLoader):
         super().__init__(stream)
         self.redefined: list[str] = []
 
-    def compose_node(self, parent: Any, index: Any) -> Any:  # type: ignore[override]
-        event = self.peek_event()
+    def compose_node(self, parent: Any, index: Any) -> Any:
+        event = self.peek_event()  # type: ignore[no-untyped-call]  # PyYAML: no annotations
         anchor = getattr(event, "anchor", None)
         if anchor is not None and not isinstance(event, yaml.AliasEvent) and anchor in self.anchors:
             self.redefined.append(anchor)

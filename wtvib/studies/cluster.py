@@ -53,7 +53,9 @@ def connect(address: str) -> Any:
             "transport needs its own security or network setup); give tcp://host:port"
         )
     client = _within(
-        lambda: Client(address, timeout=CONNECT_TIMEOUT_S - 2, set_as_default=False),
+        lambda: Client(  # type: ignore[no-untyped-call]  # distributed has no annotations
+            address, timeout=CONNECT_TIMEOUT_S - 2, set_as_default=False
+        ),
         f"--scheduler {address}: no Dask scheduler answers there",
     )
     try:
@@ -150,7 +152,7 @@ def gather(client: Any, futures: list[Any]) -> list[Any]:
     pending = list(futures)
     while True:
         with contextlib.suppress(Exception):  # distributed's TimeoutError: look again
-            wait(pending, timeout=POLL_S)
+            wait(pending, timeout=POLL_S)  # type: ignore[no-untyped-call]
         not_done = [f for f in pending if not f.done()]
         if not not_done:
             return list(client.gather(futures))

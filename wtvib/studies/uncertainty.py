@@ -310,7 +310,7 @@ def tower_ritz(spec: Spec) -> TowerRitz | None:
                 b, s.tower_head, s.tower.point_masses, s.tower.foundation, d, s.tower.gravity
             )
             for d in ("fa", "ss")
-        ]  # type: ignore[arg-type]
+        ]
 
     base = systems(spec)
     deltas = {p: systems(_with_scaled(spec, p, 2.0)) for p in paths}

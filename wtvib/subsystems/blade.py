@@ -235,7 +235,7 @@ def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:
     top = nodes[1:, None]
     f_here = m * (hub_radius + x)
     f_top = m[:, -1:] * (hub_radius + top)
-    return beyond[:, None] + (top - x) * 0.5 * (f_here + f_top)
+    return np.asarray(beyond[:, None] + (top - x) * 0.5 * (f_here + f_top))
 
 
 #: Standstill modes the finite-element model keeps (:func:`fe_model`): the basis of a sweep

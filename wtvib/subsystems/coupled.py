@@ -373,7 +373,7 @@ class Model:
         """(blades, P·2·2, n·n): J[p, a, i]·J[p, b, k] of each blade's section velocities."""
         jac = self.section_velocity
         b, p, _, n = jac.shape
-        return np.einsum("jpai,jpbk->jpabik", jac, jac).reshape(b, p * 4, n * n)
+        return np.asarray(np.einsum("jpai,jpbk->jpabik", jac, jac).reshape(b, p * 4, n * n))
 
     def _scatter(
         self,
@@ -549,7 +549,7 @@ def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]
             t.foundation,
             direction,
             t.gravity,
-            False,  # type: ignore[arg-type]
+            False,
         )
         parts_k.append(k)
         parts_m.append(m)
@@ -1172,7 +1172,7 @@ def _tower_alone_ratios(
             e_i = np.abs(phi @ kt @ x) ** 2 / stiff
             rest = rest - e_i
             name = f"{plane}{i + 1}"
-            z = t.damping_by_mode.get(name, t.damping_ratio)  # type: ignore[call-overload]
+            z = t.damping_by_mode.get(name, t.damping_ratio)
             zetas.append(float(z) / ref[name])
             weighted += e_i * zetas[-1] * frequency_hz
         weighted += np.maximum(rest, 0.0) * zetas[-1] * frequency_hz

@@ -981,7 +981,7 @@ def perturbed(
 
     num = lam * quad(d, xe) + quad(k, xe)
     if len(extra) > 2:
-        lag: LiftLag = extra[2]  # type: ignore[misc]
+        lag: LiftLag = extra[2]
         eye = np.eye(lag.rates.shape[-1])
         for j, lj in enumerate(lam):
             states = np.linalg.solve(

@@ -53,13 +53,14 @@ class Periodic:
     def at(self, x: Array, psi: Array) -> Array:
         """X at the azimuths ψ (array), stacked along the first axis."""
         psi = np.asarray(psi, dtype=float)[:, None, None]
-        return (
+        out: Array = (
             x[0]
             + np.cos(psi) * x[1]
             + np.sin(psi) * x[2]
             + np.cos(2 * psi) * x[3]
             + np.sin(2 * psi) * x[4]
         )
+        return out
 
     def states(self, omega: float, psi: Array) -> Array:
         """A(ψ) of ẋ = A x at rotor speed Ω for each azimuth ψ, stacked."""

@@ -68,9 +68,9 @@ def added_mass(p: "Platform", frequency_hz: float | None = None) -> Array:
     a = np.array([point.matrix for point in table], dtype=float)
     i = int(np.searchsorted(f, frequency_hz))
     if i == 0:
-        return a[0]
+        return np.asarray(a[0])
     if i == len(f):
-        return a[-1]
+        return np.asarray(a[-1])
     w = (frequency_hz - f[i - 1]) / (f[i] - f[i - 1])
     return np.asarray((1 - w) * a[i - 1] + w * a[i])
 

@@ -228,7 +228,7 @@ class Beam:
         top = self.nodes[1:, None]
         # mass between the Gauss point and the element's top, trapezoidal in the element
         m_top = self.mass[:, -1:]
-        return above_element[:, None] + (top - x) * 0.5 * (self.mass + m_top)
+        return np.asarray(above_element[:, None] + (top - x) * 0.5 * (self.mass + m_top))
 
 
 def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
@@ -861,7 +861,7 @@ def _above(
 
     def at(values: Sequence[float]) -> list[float]:
         v = np.asarray(values, dtype=float)
-        return np.concatenate([[np.interp(base, h, v)], v[keep]]).tolist()
+        return [float(x) for x in np.concatenate([[np.interp(base, h, v)], v[keep]])]
 
     return d.model_copy(
         update={
@@ -885,7 +885,7 @@ def mode_damping(spec: Spec, name: str, f: float) -> float:
     t = spec.tower
     if t.stiffness_damping_s is not None:  # stiffness-proportional: ζ = π·β·f
         return t.stiffness_damping_s.ratio(name.rstrip("0123456789"), f)
-    zeta = t.damping_by_mode.get(name, t.damping_ratio)  # type: ignore[call-overload]
+    zeta = t.damping_by_mode.get(name, t.damping_ratio)
     if t.damping_at != "tower-alone":
         return float(zeta)
     ref = alone_frequencies(spec).get(name)
@@ -1150,8 +1150,7 @@ def _damping_statement(spec: Spec) -> tuple[str, ...]:
         return ()
     ref = alone_frequencies(spec)
     given = ", ".join(
-        f"{name} {100 * t.damping_by_mode.get(name, t.damping_ratio):.3g} % at "  # type: ignore[call-overload]
-        f"{ref[name]:.3g} Hz"
+        f"{name} {100 * t.damping_by_mode.get(name, t.damping_ratio):.3g} % at {ref[name]:.3g} Hz"
         for name in ref
     )
     return (

@@ -37,13 +37,13 @@ def png_bytes(fig: "Figure") -> bytes:
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     canvas = fig.canvas if isinstance(fig.canvas, FigureCanvasAgg) else FigureCanvasAgg(fig)
-    canvas.draw()
+    canvas.draw()  # type: ignore[no-untyped-call]
     width, height = canvas.get_width_height(physical=True)
     rows = np.empty((height, 1 + 3 * width), dtype=np.uint8)  # each row: filter 0, RGB
     rows[:, 0] = 0
     pixels = rows[:, 1:].reshape(height, width, 3)  # a view: the last axis splits in place
     assert np.may_share_memory(pixels, rows)
-    pixels[...] = np.asarray(canvas.buffer_rgba())[:, :, :3]
+    pixels[...] = np.asarray(canvas.buffer_rgba())[:, :, :3]  # type: ignore[no-untyped-call]
     per_metre = round(fig.dpi / 0.0254)
     stamped = headline.stamp_of(fig)
     meta = (

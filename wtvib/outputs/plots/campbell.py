@@ -513,7 +513,7 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
         # at the window's top edge, clear of the mode lines that sit inside it
         ax.annotate(
             f"{w.name} window",
-            (0.01, high),  # type: ignore[attr-defined]
+            (0.01, high),
             xycoords=("axes fraction", "data"),
             xytext=(0, -3),
             textcoords="offset points",

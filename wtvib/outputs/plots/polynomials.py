@@ -15,6 +15,7 @@ from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, titl
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+    from numpy.typing import ArrayLike, NDArray
 
     from ...audit import Report
 
@@ -64,7 +65,7 @@ def polynomials_plot(result: Shapes, spec: Spec) -> "Figure":
     return fig
 
 
-def _scaled(y):  # type: ignore[no-untyped-def]
+def _scaled(y: "ArrayLike") -> "NDArray[np.float64]":
     """A shape scaled to its largest deflection, its tip positive: a second mode barely
     moves its tip, where ElastoDyn normalises, and scaled there a small difference of the
     tip looks like a different shape (the MAC, which the panel states, does not care)."""

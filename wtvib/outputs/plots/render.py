@@ -105,9 +105,7 @@ def _lean_matplotlib() -> None:
         if hasattr(artist.Artist, "_update_set_signature_and_docstring") and hasattr(
             artist, "kwdoc"
         ):
-            artist.Artist._update_set_signature_and_docstring = classmethod(  # type: ignore[method-assign,assignment]
-                lambda cls: None
-            )
+            artist.Artist._update_set_signature_and_docstring = classmethod(lambda cls: None)
             artist.kwdoc = lambda artist: ""
 
 
