@@ -867,23 +867,7 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
     """Negative total damping of a judged mode at any operating point is an instability —
     an isolated estimate's in attached flow a warning (:func:`attached_flow_note`; with
     ``spec``, whose operating points tell)."""
-    lift = (
-        "the lift lagged by the shed wake (Jones's approximation of Wagner's function)"
-        if spec is None or _shed_wake(spec)
-        else "the lift quasi-steady"
-    )
-    rule = Rule(
-        "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
-        "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; blade-element section damping "
-        f"(M. H. Hansen, Wind Energy 10 (2007) 551–577), {lift}, "
-        + (
-            "induction in equilibrium"
-            if spec is not None
-            and spec.aerodynamics is not None
-            and spec.aerodynamics.induction == "equilibrium"
-            else "frozen induction"
-        ),
-    )
+    rule = _stability_rule(spec)
     damped = [m for m in modes if m.judged and m.operating is not None]
     if not damped:
         return Check(
@@ -895,18 +879,7 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
             "structure and tower_head; the coupled model damps every mode it holds)",
             rule,
         )
-    unstable, attached = [], []
-    for m in damped:
-        op = m.operating
-        assert op is not None
-        at = [k for k, z in enumerate(op.total) if z < -NEGATIVE]  # beyond rounding's sign
-        if not at:
-            continue
-        bad = [op.wind[k] for k in at]
-        if spec is not None and isolated_in_attached_flow(spec, op, at):
-            attached.append((m, bad))
-        else:
-            unstable.append((m, bad))
+    unstable, attached = _negative(damped, spec)
     low = min(damped, key=lambda m: m.operating.total[m.operating.lowest])  # type: ignore[union-attr]
     lop = low.operating
     assert lop is not None
@@ -924,21 +897,7 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
         numbers["negative_in_attached_flow"] = {
             m.id: [round(v, 4) for v in bad] for m, bad in attached
         }
-    # a mode shown but judged on a better model (an isolated estimate a coupled mode
-    # supersedes) whose own damping goes negative: said, with the mode that judges it
-    shown, hidden = [], {}
-    for m in modes:
-        op = m.operating
-        if m.judged or op is None or min(op.total) >= -NEGATIVE:
-            continue
-        j = int(np.argmin(op.total))
-        # said without its number beside a pass (the JSON keeps it): the verdict is the
-        # judged model's, which stays positive
-        shown.append(
-            f"{m.id}'s own isolated estimate falls below zero at {op.wind[j]:.3g} m/s "
-            f"(judged on {m.superseded_by or 'another model'}, which stays positive)"
-        )
-        hidden[m.id] = round(op.total[j], 6)
+    shown, hidden = _negative_where_not_judged(modes)
     if hidden:
         numbers["negative_where_not_judged"] = hidden
     if unstable:
@@ -960,3 +919,65 @@ def stability(modes: Sequence[Mode], spec: Spec | None = None) -> Check:
         rule,
         numbers,
     )
+
+
+def _stability_rule(spec: Spec | None) -> Rule:
+    """The stability check's rule, naming the aerodynamic model the damping came from."""
+    lift = (
+        "the lift lagged by the shed wake (Jones's approximation of Wagner's function)"
+        if spec is None or _shed_wake(spec)
+        else "the lift quasi-steady"
+    )
+    equilibrium = (
+        spec is not None
+        and spec.aerodynamics is not None
+        and spec.aerodynamics.induction == "equilibrium"
+    )
+    return Rule(
+        "total damping (aerodynamic + structural) > 0 at every operating point, every judged mode",
+        "Hau ch. 7.2.3 (stall-induced vibration) and 7.5.1; blade-element section damping "
+        f"(M. H. Hansen, Wind Energy 10 (2007) 551–577), {lift}, "
+        + ("induction in equilibrium" if equilibrium else "frozen induction"),
+    )
+
+
+#: Modes whose total damping falls below zero, each with the winds where.
+Negative = list[tuple[Mode, list[float]]]
+
+
+def _negative(damped: Sequence[Mode], spec: Spec | None) -> tuple[Negative, Negative]:
+    """The judged modes whose total damping falls below zero: those unstable, and the
+    isolated estimates that do so in attached flow (a warning)."""
+    unstable: Negative = []
+    attached: Negative = []
+    for m in damped:
+        op = m.operating
+        assert op is not None
+        at = [k for k, z in enumerate(op.total) if z < -NEGATIVE]  # beyond rounding's sign
+        if not at:
+            continue
+        bad = [op.wind[k] for k in at]
+        if spec is not None and isolated_in_attached_flow(spec, op, at):
+            attached.append((m, bad))
+        else:
+            unstable.append((m, bad))
+    return unstable, attached
+
+
+def _negative_where_not_judged(modes: Sequence[Mode]) -> tuple[list[str], dict[str, float]]:
+    """A mode shown but judged on a better model (an isolated estimate a coupled mode
+    supersedes) whose own damping goes negative: the sentence saying so, with the mode
+    that judges it — without its number beside a pass (the verdict is the judged model's,
+    which stays positive) — and the number for the JSON."""
+    shown, hidden = [], {}
+    for m in modes:
+        op = m.operating
+        if m.judged or op is None or min(op.total) >= -NEGATIVE:
+            continue
+        j = int(np.argmin(op.total))
+        shown.append(
+            f"{m.id}'s own isolated estimate falls below zero at {op.wind[j]:.3g} m/s "
+            f"(judged on {m.superseded_by or 'another model'}, which stays positive)"
+        )
+        hidden[m.id] = round(op.total[j], 6)
+    return shown, hidden

@@ -277,93 +277,92 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
         "Hau ch. 6.8.2 and 7.6 (periodic coefficients, Floquet theory)",
     )
     if spec.rotor.orientation == "vertical-axis":
-        return Check(
-            "rotor.floquet",
-            "rotor",
-            "info",
-            "vertical-axis rotor: the tower-head yaw/tilt model does not apply",
-            rule,
-        ), None
+        why = "vertical-axis rotor: the tower-head yaw/tilt model does not apply"
+        return Check("rotor.floquet", "rotor", "info", why, rule), None
     if spec.rotor.blades >= 3:
-        return Check(
-            "rotor.floquet",
-            "rotor",
-            "info",
+        why = (
             f"{spec.rotor.blades} blades: the rotor's inertia is isotropic in its plane, "
-            "the equations are time-invariant — no parametric excitation",
-            rule,
-        ), None
+            "the equations are time-invariant — no parametric excitation"
+        )
+        return Check("rotor.floquet", "rotor", "info", why, rule), None
     model, missing = head_model(spec, modes)
     if model is None:
-        return Check(
-            "rotor.floquet",
-            "rotor",
-            "info",
+        why = (
             f"{_BLADED.get(spec.rotor.blades, 'two')}-bladed rotor not analysed: needs "
-            + ", ".join(missing),
-            rule,
-        ), None
+            + ", ".join(missing)
+        )
+        return Check("rotor.floquet", "rotor", "info", why, rule), None
     speed = spec.rotor.speed
-    op = operating_range(speed)
-    smap = map_for(op, model)
-    unstable = list(smap.unstable)
-    split = split_by_regime(unstable, op, lambda w: any(a <= w <= b for a, b in unstable))
-    steady = split["steady"] + split["quick-pass"]
-    transient = split["overspeed"] + split["start-up"]
-    bands = ", ".join(f"{a:.3g}–{b:.3g} rpm" for a, b in smap.unstable_rpm) or "none"
-    hub = model.hub  # the hub the model has (a hinged hub's flap hinges it has not)
-    if steady:
-        status = "fail"
-        text = (
-            f"{hub} two-bladed rotor: parametric instability in steady operation "
-            f"(unstable bands {bands})"
-        )
-        if hub != "teetered":
-            text += " — the hazardous concept of a hingeless rotor on a flexible tower (Hau 7.5.1)"
-    elif transient:
-        status = "warn"
-        text = f"{hub} two-bladed rotor: unstable only at start-up or overspeed ({bands})"
-    else:
-        status = "pass"
-        text = (
-            f"{hub} two-bladed rotor: stable over the operating range (unstable bands "
-            f"outside it: {bands})"
-        )
-        if hub == "teetered":
-            text += " — the teetered hub decouples the rotor moments"
+    smap = map_for(operating_range(speed), model)
+    status, text = _verdict(smap, model.hub, operating_range(speed))
     steady_rpm = np.concatenate(
         [np.linspace(a, b, 25) if b > a else np.array([a]) for a, b in speed.steady_rpm]
     )
     in_operation = stability_map(model, rpm_to_rad_s(steady_rpm))
     skipped = [float(x) for x in smap.speeds_rpm[np.isnan(smap.largest)]]
-    why = (
-        f"multipliers not finite, or a mode so much faster than the rotor that one "
-        f"revolution would need over {MAX_STEPS:,} integration steps"
-    )
-    if np.isnan(in_operation).all():  # nothing known in operation: say that, nothing else
-        status = "warn"
-        text = f"{hub} two-bladed rotor: not analysed at any operating speed ({why})"
-    elif skipped:
+    status, text = _unanalysed(status, text, model.hub, in_operation, skipped)
+    if spec.rotor.hub != model.hub:
         text += (
-            f"; not analysed at {len(skipped)} speeds between {min(skipped):.3g} and "
-            f"{max(skipped):.3g} rpm ({why})"
-        )
-        if status == "pass" and np.isnan(in_operation).any():
-            status = "warn"  # part of the operating range is unknown: not a pass
-    if spec.rotor.hub != hub:
-        text += (
-            f" (the spec's {spec.rotor.hub} hub modelled as {hub}: the tower-head model has "
-            "no flap hinges)"
+            f" (the spec's {spec.rotor.hub} hub modelled as {model.hub}: the tower-head model "
+            "has no flap hinges)"
         )
     finite = in_operation[np.isfinite(in_operation)]
     numbers = {
         "max_multiplier_in_operation": round(float(np.max(finite)), 6) if finite.size else None,
         "not_analysed_rpm": [round(x, 4) for x in skipped],
         "unstable_rpm": [[round(a, 4), round(b, 4)] for a, b in smap.unstable_rpm],
-        "hub": hub,
+        "hub": model.hub,
         "polar_inertia_kgm2": model.polar,
     }
     return Check("rotor.floquet", "rotor", status, text, rule, numbers), smap  # type: ignore[arg-type]
+
+
+def _verdict(smap: "StabilityMap", hub: str, op: "OperatingRange") -> tuple[str, str]:
+    """The status and sentence of the unstable bands by where they lie: in steady operation
+    a failure, only at start-up or overspeed a warning, outside the range a pass."""
+    unstable = list(smap.unstable)
+    split = split_by_regime(unstable, op, lambda w: any(a <= w <= b for a, b in unstable))
+    steady = split["steady"] + split["quick-pass"]
+    transient = split["overspeed"] + split["start-up"]
+    bands = ", ".join(f"{a:.3g}–{b:.3g} rpm" for a, b in smap.unstable_rpm) or "none"
+    if steady:
+        text = (
+            f"{hub} two-bladed rotor: parametric instability in steady operation "
+            f"(unstable bands {bands})"
+        )
+        if hub != "teetered":
+            text += " — the hazardous concept of a hingeless rotor on a flexible tower (Hau 7.5.1)"
+        return "fail", text
+    if transient:
+        return "warn", f"{hub} two-bladed rotor: unstable only at start-up or overspeed ({bands})"
+    text = (
+        f"{hub} two-bladed rotor: stable over the operating range (unstable bands "
+        f"outside it: {bands})"
+    )
+    if hub == "teetered":
+        text += " — the teetered hub decouples the rotor moments"
+    return "pass", text
+
+
+def _unanalysed(
+    status: str, text: str, hub: str, in_operation: NDArray[np.float64], skipped: list[float]
+) -> tuple[str, str]:
+    """The verdict where some speeds could not be integrated: nothing known in operation
+    is a warning that says only that; part of the range unknown is not a pass."""
+    why = (
+        f"multipliers not finite, or a mode so much faster than the rotor that one "
+        f"revolution would need over {MAX_STEPS:,} integration steps"
+    )
+    if np.isnan(in_operation).all():  # nothing known in operation: say that, nothing else
+        return "warn", f"{hub} two-bladed rotor: not analysed at any operating speed ({why})"
+    if skipped:
+        text += (
+            f"; not analysed at {len(skipped)} speeds between {min(skipped):.3g} and "
+            f"{max(skipped):.3g} rpm ({why})"
+        )
+        if status == "pass" and np.isnan(in_operation).any():
+            status = "warn"  # part of the operating range is unknown: not a pass
+    return status, text
 
 
 # ---------------------------------------------------------------------------------------

@@ -365,14 +365,7 @@ def run(
     keys = output_keys(paths)
     jobs = jobs or os.cpu_count() or 1
     if executor is None and (jobs == 1 or len(paths) < 2):
-        items = []
-        for p, k in zip(paths, keys, strict=True):
-            item = audit_one(str(p), k, plots, options)
-            if on_done:
-                on_done(item)
-            items.append(item)
-        return items
-    results: dict[int, Item] = {}
+        return _in_turn(paths, keys, plots, options, on_done)
     own = executor is None
     pool = executor or ProcessPoolExecutor(
         max_workers=min(jobs, len(paths)), initializer=worker_start, initargs=(os.getpid(),)
@@ -383,45 +376,7 @@ def run(
             for i, (p, k) in enumerate(zip(paths, keys, strict=True))
         }
         try:
-            from concurrent.futures import FIRST_COMPLETED, wait
-
-            pending = set(futures)
-            since: float | None = None
-            while pending:
-                done, pending = wait(pending, timeout=POLL_S, return_when=FIRST_COMPLETED)
-                for fut in done:
-                    i = futures[fut]
-                    try:
-                        item = fut.result()
-                    except Exception as exc:  # a worker died (memory, signal): that row only
-                        item = Item(
-                            str(paths[i]),
-                            keys[i],
-                            error=internal_message(str(paths[i]), exc),
-                            internal=True,
-                        )
-                    results[i] = item
-                    if on_done:
-                        on_done(item)
-                if done or alive is None or alive():
-                    since = None
-                    continue
-                since = since or time.monotonic()
-                if time.monotonic() - since < WORKERLESS_S:
-                    continue
-                for fut in pending:  # a cluster without workers: the rest fail, said
-                    fut.cancel()
-                    i = futures[fut]
-                    results[i] = Item(
-                        str(paths[i]),
-                        keys[i],
-                        error=f"{paths[i]}: not audited — the cluster had no worker for "
-                        f"{WORKERLESS_S} s (its workers were lost); run it again",
-                        internal=True,
-                    )
-                    if on_done:
-                        on_done(results[i])
-                break
+            results = _gathered(futures, paths, keys, on_done, alive)
         except BaseException:
             # stop now: pending work is cancelled and running workers are ended (their
             # results would be thrown away), so Ctrl-C or SIGTERM returns at once
@@ -431,6 +386,72 @@ def run(
                 _stop(pool)  # type: ignore[arg-type]
             raise
     return [results[i] for i in range(len(paths))]
+
+
+def _in_turn(
+    paths: Sequence[Path],
+    keys: Sequence[str],
+    plots: bool,
+    options: Options | None,
+    on_done: Callable[[Item], None] | None,
+) -> list[Item]:
+    """The inputs audited one after another in this process."""
+    items = []
+    for p, k in zip(paths, keys, strict=True):
+        item = audit_one(str(p), k, plots, options)
+        if on_done:
+            on_done(item)
+        items.append(item)
+    return items
+
+
+def _gathered(
+    futures: "dict[Future[Item], int]",
+    paths: Sequence[Path],
+    keys: Sequence[str],
+    on_done: Callable[[Item], None] | None,
+    alive: Callable[[], bool] | None,
+) -> dict[int, Item]:
+    """Each submitted audit's item by its input's index, as they complete; a worker that
+    died is that row's internal error; on a cluster without a worker for
+    :data:`WORKERLESS_S` the items left are not audited, said."""
+    from concurrent.futures import FIRST_COMPLETED, wait
+
+    results: dict[int, Item] = {}
+
+    def arrived(i: int, item: Item) -> None:
+        results[i] = item
+        if on_done:
+            on_done(item)
+
+    pending = set(futures)
+    since: float | None = None
+    while pending:
+        done, pending = wait(pending, timeout=POLL_S, return_when=FIRST_COMPLETED)
+        for fut in done:
+            i = futures[fut]
+            try:
+                item = fut.result()
+            except Exception as exc:  # a worker died (memory, signal): that row only
+                error = internal_message(str(paths[i]), exc)
+                item = Item(str(paths[i]), keys[i], error=error, internal=True)
+            arrived(i, item)
+        if done or alive is None or alive():
+            since = None
+            continue
+        since = since or time.monotonic()
+        if time.monotonic() - since < WORKERLESS_S:
+            continue
+        for fut in pending:  # a cluster without workers: the rest fail, said
+            fut.cancel()
+            i = futures[fut]
+            error = (
+                f"{paths[i]}: not audited — the cluster had no worker for "
+                f"{WORKERLESS_S} s (its workers were lost); run it again"
+            )
+            arrived(i, Item(str(paths[i]), keys[i], error=error, internal=True))
+        break
+    return results
 
 
 def _stop(pool: ProcessPoolExecutor) -> None:

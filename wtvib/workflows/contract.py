@@ -189,100 +189,94 @@ def report_schema() -> dict[str, Any]:
         "title": "wtvib audit report",
         "type": "object",
         "required": [
-            "schema",
-            "produced_by",
-            "turbine",
-            "verdict",
-            "tower_class",
-            "operation",
-            "rule",
-            "damping",
-            "aerodynamics",
-            "modes",
-            "campbell",
-            "checks",
-            "assumptions",
-            "warnings",
-            "inputs",
+            "schema", "produced_by", "turbine", "verdict", "tower_class", "operation", "rule",
+            "damping", "aerodynamics", "modes", "campbell", "checks", "assumptions",
+            "warnings", "inputs",
         ],
-        "properties": {
-            "schema": _d("This contract's id and version.", {"const": REPORT_SCHEMA}),
-            "produced_by": _d(
-                "wtvib's version and the input with its SHA-256 (as read).",
-                {
-                    "type": "object",
-                    "required": ["tool", "version", "input"],
-                    "properties": {
-                        "tool": {"const": "wtvib"},
-                        "version": _STR,
-                        "input": {
-                            "type": "object",
-                            "required": ["file", "sha256"],
-                            "properties": {
-                                "file": {"type": ["string", "null"]},
-                                "sha256": {"type": ["string", "null"], "pattern": "^[0-9a-f]{64}$"},
-                            },
-                        },
-                    },
-                },
-            ),
-            "turbine": _d(
-                "Name, source file, the spec's turbine block, blades, orientation, hub.",
-                {"type": "object", "required": ["name", "blades"]},
-            ),
-            "verdict": _d(
-                "pass, warn or fail: the worst check.", {"enum": ["pass", "warn", "fail"]}
-            ),
-            "tower_class": _d(
-                "stiff, soft, soft-soft, resonant, or null (no tower mode).",
-                {"enum": ["stiff", "soft", "soft-soft", "resonant", None]},
-            ),
-            "operation": _d(
-                "Steady speed intervals, variable speed, overspeed, quick-pass bands, where the "
-                "speeds came from [rpm].",
-                {"type": "object", "required": ["steady_rpm", "variable_speed", "overspeed_rpm"]},
-            ),
-            "rule": _d(
-                "The margin rule in force: kind, margin, preset, source, harmonics, severity.",
-                {"type": "object", "required": ["kind", "margin"]},
-            ),
-            "damping": _d(
-                "How the judged modes were damped.",
-                {"enum": ["structural", "aeroelastic", "imported"]},
-            ),
-            "aerodynamics": _d("Whether the spec has an aerodynamics block.", {"type": "boolean"}),
-            "results": _d(
-                "Another tool's results the modes came from: tool, files.",
-                {"type": "object", "required": ["tool", "files"]},
-            ),
-            "modes": _d("Every mode, judged or shown.", {"type": "array", "items": _MODE}),
-            "campbell": _d(
-                "Every judged mode's frequency and damping sampled over speed (the CSV's data).",
-                {"type": "object", "required": ["damping", "rpm", "modes"]},
-            ),
-            "checks": _d("Every check, in report order.", {"type": "array", "items": _CHECK}),
-            "assumptions": _d(
-                "What the audit assumed, each stated where it was made.",
-                {"type": "array", "items": _STR},
-            ),
-            "warnings": _d(
-                "Suspicious or missing inputs, what an importer had to assume, numbers written "
-                "as null.",
-                {"type": "array", "items": _STR},
-            ),
-            "uncertainty": _d(
-                "Monte Carlo results (--uncertainty): samples, per-mode percentiles and "
-                "margin-band probabilities (and the share of samples that buckle, "
-                "`unstable`), sensitivities, inputs not propagated, and draws outside an "
-                "input's valid range drawn again (`truncated`).",
-                {"type": "object"},
-            ),
-            "inputs": _d(
-                "Every value with provenance: value, provenance, source, note, tolerance.",
-                {"type": "object"},
-            ),
-        },
+        "properties": _report_properties(),
         "additionalProperties": False,
+    }  # fmt: skip
+
+
+#: The provenance of a report: which wtvib read which input (its SHA-256 as read).
+_PRODUCED_BY = {
+    "type": "object",
+    "required": ["tool", "version", "input"],
+    "properties": {
+        "tool": {"const": "wtvib"},
+        "version": _STR,
+        "input": {
+            "type": "object",
+            "required": ["file", "sha256"],
+            "properties": {
+                "file": {"type": ["string", "null"]},
+                "sha256": {"type": ["string", "null"], "pattern": "^[0-9a-f]{64}$"},
+            },
+        },
+    },
+}
+
+
+def _report_properties() -> dict[str, Any]:
+    """The report's top-level keys, each described."""
+    return {
+        "schema": _d("This contract's id and version.", {"const": REPORT_SCHEMA}),
+        "produced_by": _d(
+            "wtvib's version and the input with its SHA-256 (as read).", _PRODUCED_BY
+        ),
+        "turbine": _d(
+            "Name, source file, the spec's turbine block, blades, orientation, hub.",
+            {"type": "object", "required": ["name", "blades"]},
+        ),
+        "verdict": _d("pass, warn or fail: the worst check.", {"enum": ["pass", "warn", "fail"]}),
+        "tower_class": _d(
+            "stiff, soft, soft-soft, resonant, or null (no tower mode).",
+            {"enum": ["stiff", "soft", "soft-soft", "resonant", None]},
+        ),
+        "operation": _d(
+            "Steady speed intervals, variable speed, overspeed, quick-pass bands, where the "
+            "speeds came from [rpm].",
+            {"type": "object", "required": ["steady_rpm", "variable_speed", "overspeed_rpm"]},
+        ),
+        "rule": _d(
+            "The margin rule in force: kind, margin, preset, source, harmonics, severity.",
+            {"type": "object", "required": ["kind", "margin"]},
+        ),
+        "damping": _d(
+            "How the judged modes were damped.",
+            {"enum": ["structural", "aeroelastic", "imported"]},
+        ),
+        "aerodynamics": _d("Whether the spec has an aerodynamics block.", {"type": "boolean"}),
+        "results": _d(
+            "Another tool's results the modes came from: tool, files.",
+            {"type": "object", "required": ["tool", "files"]},
+        ),
+        "modes": _d("Every mode, judged or shown.", {"type": "array", "items": _MODE}),
+        "campbell": _d(
+            "Every judged mode's frequency and damping sampled over speed (the CSV's data).",
+            {"type": "object", "required": ["damping", "rpm", "modes"]},
+        ),
+        "checks": _d("Every check, in report order.", {"type": "array", "items": _CHECK}),
+        "assumptions": _d(
+            "What the audit assumed, each stated where it was made.",
+            {"type": "array", "items": _STR},
+        ),
+        "warnings": _d(
+            "Suspicious or missing inputs, what an importer had to assume, numbers written "
+            "as null.",
+            {"type": "array", "items": _STR},
+        ),
+        "uncertainty": _d(
+            "Monte Carlo results (--uncertainty): samples, per-mode percentiles and "
+            "margin-band probabilities (and the share of samples that buckle, "
+            "`unstable`), sensitivities, inputs not propagated, and draws outside an "
+            "input's valid range drawn again (`truncated`).",
+            {"type": "object"},
+        ),
+        "inputs": _d(
+            "Every value with provenance: value, provenance, source, note, tolerance.",
+            {"type": "object"},
+        ),
     }
 
 
