@@ -60,7 +60,7 @@ analysis", AIAA 2008-1300 (MBC); Jonkman et al. 2009, NREL/TP-500-38060, Table 9
 
 import functools
 import re
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any, Literal
 
@@ -806,43 +806,66 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     assert spec.coupled is not None
     cond = spec.coupled.rotating_condition
     model = build(spec, cond)
-    condition = f"coupled model, generator {cond}"
     known = isolated or {}
-
-    def exists(name: str) -> frozenset[str] | None:
-        # the drive train's modes hold in its generator condition; the rest do in any
-        return drivetrain.regimes(spec, cond) if name.startswith("drivetrain") else None
-
-    def stands_for(j: int, name: str, f: float) -> str | None:
-        # the names' counterparts (pairs, chained) are found below, before any call
-        iso = pairs[name]
-        if j < kept(spec) or iso not in known or name in chained:
-            return iso
-        return iso if max(f, known[iso]) <= PAIRED * min(f, known[iso]) else None
-
     if spec.rotor.blades < 3:
-        res = parked_named(model)
-        pairs, chained = counterparts(spec, res.names, cond)
-        return [
-            Mode(
-                f"system.{n}",
-                "system",
-                f"{d}, parked (coupled)",
-                float(f),
-                regimes=exists(n),
-                condition=f"{condition}, parked",
-                origin="coupled",
-                replaces=stands_for(j, n, float(f)),
-            )
-            for j, (f, n, d) in enumerate(
-                zip(res.frequency_hz, res.names, res.descriptions, strict=True)
-            )
-            if not n.startswith(PLATFORM)
-        ]
+        return _parked_modes(spec, model, cond, known)
+    return _rotating_modes(spec, model, cond, known)
+
+
+@dataclass(frozen=True)
+class _Standing:
+    """What a coupled mode stands for: its isolated counterpart (:func:`counterparts`) and
+    the regimes it exists in (the drive train's modes in its generator condition)."""
+
+    spec: Spec
+    condition: str
+    known: Mapping[str, float]
+    pairs: Mapping[str, str]
+    chained: Collection[str]
+
+    def exists(self, name: str) -> frozenset[str] | None:
+        if name.startswith("drivetrain"):
+            return drivetrain.regimes(self.spec, self.condition)
+        return None
+
+    def stands_for(self, j: int, name: str, f: float) -> str | None:
+        iso = self.pairs[name]
+        if j < kept(self.spec) or iso not in self.known or name in self.chained:
+            return iso
+        return iso if max(f, self.known[iso]) <= PAIRED * min(f, self.known[iso]) else None
+
+
+def _parked_modes(spec: Spec, model: Model, cond: str, known: Mapping[str, float]) -> list[Mode]:
+    """A two-bladed turbine's coupled modes: parked only (its rotation is periodic)."""
+    res = parked_named(model)
+    at = _Standing(spec, cond, known, *counterparts(spec, res.names, cond))
+    return [
+        Mode(
+            f"system.{n}",
+            "system",
+            f"{d}, parked (coupled)",
+            float(f),
+            regimes=at.exists(n),
+            condition=f"coupled model, generator {cond}, parked",
+            origin="coupled",
+            replaces=at.stands_for(j, n, float(f)),
+        )
+        for j, (f, n, d) in enumerate(
+            zip(res.frequency_hz, res.names, res.descriptions, strict=True)
+        )
+        if not n.startswith(PLATFORM)
+    ]
+
+
+def _rotating_modes(spec: Spec, model: Model, cond: str, known: Mapping[str, float]) -> list[Mode]:
+    """The rotating sweep's modes, each with its curve, whirl and damping: the parts'
+    material damping weighted by strain energy, with the drive train's and tuned mass
+    dampers' added where they give some. A floating platform's modes are left to the
+    isolated model (judged at their own frequency)."""
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
     order = np.argsort(sw.frequency_hz[0])
-    pairs, chained = counterparts(spec, [sw.names[j] for j in order], cond)
+    at = _Standing(spec, cond, known, *counterparts(spec, [sw.names[j] for j in order], cond))
     weighted = strain_weighted(spec, model, sw.path.shapes[0], sw.frequency_hz[0])
     lower = default_damping(spec)
     said = "the drive train's dampers" + (
@@ -850,10 +873,9 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
     )
     out = []
     for j, name in enumerate(sw.names):
-        if name.startswith(PLATFORM):  # judged from the isolated model, at its own frequency
+        if name.startswith(PLATFORM):
             continue
         material = weighted[j]
-        curve = Sampled(omega, tuple(sw.frequency_hz[:, j].tolist()))
         # the drive train's dampers (the eigenvalue damping at standstill) add to the
         # parts' own material damping: a tower mode that moves the gearbox a little must
         # not lose its structural damping to the dampers' 0.0002 (AOC 15/50: side-side
@@ -868,7 +890,7 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
             else None
         )
         text = sw.descriptions[j]
-        if name in chained and not name.startswith("drivetrain"):
+        if name in at.chained and not name.startswith("drivetrain"):
             text += ", the drive train's first torsion (the blades against the generator)"
         out.append(
             Mode(
@@ -878,12 +900,12 @@ def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]
                 float(sw.frequency_hz[0, j]),
                 damping_ratio=ratio,
                 damping_source=source,
-                curve=curve,
-                regimes=exists(name),
-                condition=condition,
+                curve=Sampled(omega, tuple(sw.frequency_hz[:, j].tolist())),
+                regimes=at.exists(name),
+                condition=f"coupled model, generator {cond}",
                 whirl=whirl,
                 origin="coupled",
-                replaces=stands_for(j, name, float(sw.frequency_hz[0, j])),
+                replaces=at.stands_for(j, name, float(sw.frequency_hz[0, j])),
             )
         )
     return sorted(out, key=lambda m: m.frequency_hz)

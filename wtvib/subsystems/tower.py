@@ -1061,11 +1061,45 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         if head
         else "no tower head given (bare tower)"
     )
-    f = t.foundation
+    base = _foundation_statement(spec)
+    table = t.sections.height_m if t.sections is not None else t.distributed.height_m  # type: ignore[union-attr]
+    mesh = (
+        f"a uniform mesh of {beam.MAX_STATION_NODES} elements sampling the table's "
+        f"{len(table):,} stations"
+        if beam.resampled(np.asarray(table))
+        else f"{DEFAULT_ELEMENTS} elements"
+    )
+    concrete = (
+        (
+            f"Concrete tower with no tolerance stated: its bending stiffness taken "
+            f"{CONCRETE_MODULUS[0] - 1:+.0%} … {CONCRETE_MODULUS[1] - 1:+.0%} of the given "
+            "modulus (EN 1992-1-1 §3.1.3(2): the modulus by aggregate, sandstone 30 % lower, "
+            "basalt 20 % higher), since concrete towers' frequencies \"differ considerably "
+            'from the calculated values" (Hau 7.5.2): each bending mode is judged as its '
+            f"band, f·{CONCRETE_MODULUS[0] ** 0.5:.2f} … f·{CONCRETE_MODULUS[1] ** 0.5:.2f}; a "
+            "tolerance on the tower's numbers (--uncertainty) replaces it.",
+        )
+        if concrete_band(spec)
+        else ()
+    )
+    return (
+        f"Tower modes computed: Euler–Bernoulli beam, {mesh}, from "
+        f"{kind}; {head_text}; foundation: {base}; gravity "
+        f"{'included' if t.gravity else 'not included'}.",
+        *concrete,
+        *_damping_statement(spec),
+    )
+
+
+def _foundation_statement(spec: Spec) -> str:
+    """What the tower stands on, as the statement of its modes says it: clamped, springs,
+    a floating platform (its mass, added mass and restoring) or a monopile in soil (its
+    layers and head stiffness, the soil's bounds)."""
+    f = spec.tower.foundation
     if f.kind == "clamped":
-        base = "clamped base"
+        return "clamped base"
     elif f.kind == "springs":
-        base = (
+        return (
             f"base on springs (lateral {f.lateral_n_m or '—'} N/m, rocking "
             f"{f.rocking_nm_rad or '—'} N·m/rad)"
         )
@@ -1075,7 +1109,7 @@ def _statements(spec: Spec) -> tuple[str, ...]:
         m6, k6 = platform.mass(p), platform.restoring(p)
         added_surge = m6[0, 0] - p.mass_kg
         added_pitch = m6[4, 4] - p.inertia_pitch_kgm2 - p.mass_kg * p.cm_m**2
-        base = (
+        return (
             f"base free on a floating platform ({p.mass_kg:,.0f} kg, CM {p.cm_m:g} m from the "
             f"PRP, tower base {p.tower_base_m:g} m above it; added mass A11 {added_surge:.3g} "
             f"kg, A55 {added_pitch:.3g} kg·m²; restoring "
@@ -1104,7 +1138,7 @@ def _statements(spec: Spec) -> tuple[str, ...]:
             )
             for x in f.soil
         )
-        base = (
+        return (
             f"a monopile in soil at the mudline (tower base): {f.pile.diameter_m:g} m × "
             f"{f.pile.wall_thickness_m:g} m, {f.pile.embedded_length_m:g} m embedded, on "
             f"initial p-y springs ({layers}; wtvib.subsystems.soil) — K_L {k.lateral:.3g} N/m, "
@@ -1114,33 +1148,6 @@ def _statements(spec: Spec) -> tuple[str, ...]:
             "mode a band, judged as a band (coupled tower modes take their isolated "
             "counterpart's band as factors); torsion clamped at the mudline"
         )
-    table = t.sections.height_m if t.sections is not None else t.distributed.height_m  # type: ignore[union-attr]
-    mesh = (
-        f"a uniform mesh of {beam.MAX_STATION_NODES} elements sampling the table's "
-        f"{len(table):,} stations"
-        if beam.resampled(np.asarray(table))
-        else f"{DEFAULT_ELEMENTS} elements"
-    )
-    concrete = (
-        (
-            f"Concrete tower with no tolerance stated: its bending stiffness taken "
-            f"{CONCRETE_MODULUS[0] - 1:+.0%} … {CONCRETE_MODULUS[1] - 1:+.0%} of the given "
-            "modulus (EN 1992-1-1 §3.1.3(2): the modulus by aggregate, sandstone 30 % lower, "
-            "basalt 20 % higher), since concrete towers' frequencies \"differ considerably "
-            'from the calculated values" (Hau 7.5.2): each bending mode is judged as its '
-            f"band, f·{CONCRETE_MODULUS[0] ** 0.5:.2f} … f·{CONCRETE_MODULUS[1] ** 0.5:.2f}; a "
-            "tolerance on the tower's numbers (--uncertainty) replaces it.",
-        )
-        if concrete_band(spec)
-        else ()
-    )
-    return (
-        f"Tower modes computed: Euler–Bernoulli beam, {mesh}, from "
-        f"{kind}; {head_text}; foundation: {base}; gravity "
-        f"{'included' if t.gravity else 'not included'}.",
-        *concrete,
-        *_damping_statement(spec),
-    )
 
 
 def _damping_statement(spec: Spec) -> tuple[str, ...]:
