@@ -24,7 +24,7 @@ from ..spec.base import SHAPE_SUM_TOLERANCE
 from . import beamdyn, stc
 from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
-from .servodyn import operation
+from .servodyn import Operation, operation
 from .subdyn import STEP_M, Monopile, monopile, water
 
 
@@ -282,22 +282,9 @@ def to_spec_data(
         blade["polynomials"] = bl.polynomials
     data: dict[str, Any] = {
         "wtvib": 1,
-        "turbine": {
-            "name": path.stem.replace("_ElastoDyn", ""),
-            "rotor_diameter_m": _value(2 * tip, "2 × TipRad", "derived"),
-            "hub_height_m": _value(
-                main.num("TowerHt") + head["hub_above_top"],
-                "TowerHt + Twr2Shft + OverHang·sin(ShftTilt)",
-                "derived",
-            ),
-        },
+        "turbine": _turbine_block(main, path, tip, head),
         "sources": {"deck": source},
-        "rotor": {
-            "blades": n_blades,
-            "orientation": "upwind" if main.num("OverHang") < 0 else "downwind",
-            "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
-            "speed": _speed_block(operating.speed),
-        },
+        "rotor": _rotor_block(main, n_blades, operating),
         "tower": _tower_section(tw, tower_file, floater is not None, tower_height),
         "tower_head": _head_block(head),
         "blade": blade,
@@ -317,15 +304,7 @@ def to_spec_data(
         ],
     }
     if beamdyn:
-        # BeamDyn's blade has every mode: the coupled model takes the second edgewise
-        # bending too, which carries the collective edge's coupling with the shaft and the
-        # tower's second side-side (5MW_Land_BD_Linear: 2.84/3.23 Hz against OpenFAST's
-        # 2.78/3.21, where three modes gave 2.94/3.92) and the yaw mode's root stiffness
-        data["coupled"]["blade_modes"] = 5
-        data["assumptions"].append(
-            "BeamDyn blades: the coupled model carries five blade modes (flap 1 and 2, edge "
-            "1 and 2 and the next), one more than by default — BeamDyn's blade has them all."
-        )
+        _beamdyn_coupling(data)
     control = stc.read(servo if fst is not None else None)
     if control.dampers:
         data["tower"]["dampers"] = control.dampers
@@ -343,6 +322,41 @@ def to_spec_data(
     if aero is not None:
         _add_aerodynamics(data, aero, operating)
     return data
+
+
+def _turbine_block(main: Deck, path: Path, tip: float, head: dict[str, Any]) -> dict[str, Any]:
+    """The spec's turbine block: the deck's name, rotor diameter and hub height."""
+    return {
+        "name": path.stem.replace("_ElastoDyn", ""),
+        "rotor_diameter_m": _value(2 * tip, "2 × TipRad", "derived"),
+        "hub_height_m": _value(
+            main.num("TowerHt") + head["hub_above_top"],
+            "TowerHt + Twr2Shft + OverHang·sin(ShftTilt)",
+            "derived",
+        ),
+    }
+
+
+def _rotor_block(main: Deck, n_blades: int, operating: Operation) -> dict[str, Any]:
+    """The spec's rotor block: blades, orientation, hub and the operating speeds."""
+    return {
+        "blades": n_blades,
+        "orientation": "upwind" if main.num("OverHang") < 0 else "downwind",
+        "hub": "teetered" if n_blades == 2 and main.num("TeetMod", default=0) else "hingeless",
+        "speed": _speed_block(operating.speed),
+    }
+
+
+def _beamdyn_coupling(data: dict[str, Any]) -> None:
+    """BeamDyn's blade has every mode: the coupled model takes the second edgewise bending
+    too, which carries the collective edge's coupling with the shaft and the tower's second
+    side-side (5MW_Land_BD_Linear: 2.84/3.23 Hz against OpenFAST's 2.78/3.21, where three
+    modes gave 2.94/3.92) and the yaw mode's root stiffness."""
+    data["coupled"]["blade_modes"] = 5
+    data["assumptions"].append(
+        "BeamDyn blades: the coupled model carries five blade modes (flap 1 and 2, edge "
+        "1 and 2 and the next), one more than by default — BeamDyn's blade has them all."
+    )
 
 
 #: ElastoDyn's DOFs of the turbine around its blades: all off (and no hub or nacelle mass),

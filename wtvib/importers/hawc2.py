@@ -384,41 +384,24 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     """wtvib spec data from a HAWC2 htc file and the files it names."""
     top = htc.parse(path)
     root = htc.root_folder(path)
-    structure = top.block("new_htc_structure")
-    if structure is None:
-        raise SpecError("no new_htc_structure block: not a HAWC2 turbine model", source=str(path))
-    bodies = _bodies(structure, root)
-    orientation = structure.block("orientation")
-    if orientation is None:
-        raise SpecError("no orientation block", line=structure.line, source=str(path))
-    _place(bodies, orientation)
-    soil = top.block("soil")
-    embedded = {
-        e.need("mbdy_name").values[0].lower() for e in (soil.each("soil_element") if soil else [])
-    }
-    chain = _chain(bodies, structure, embedded)
+    chain, embedded = _model_chain(top, root, path)
     tower_table, tower_length, top_pos = _tower(chain)
     blade_structure, span, bmass, blade_length = _blade(chain)
     n_blades = len(chain.blades)
     aero = top.block("aero")
     if aero is not None and aero.get("nblades") is not None:
         n_blades = int(aero.need("nblades").number(0))
-    hub = chain.hubs[0]
-    hub_radius = hub.length
+    hub_radius = chain.hubs[0].length
     apex = chain.shaft.at("last")
     # HAWC2's global frame: z down, y downwind; the tower top is the reference
     downwind = float(apex[1] - top_pos[1])
     above = float(top_pos[2] - apex[2])
     blade_mass = float(np.trapezoid(bmass, span))
-    radius_pts = hub_radius + span
-    j_blades = n_blades * float(np.trapezoid(bmass * radius_pts**2, span))
+    j_blades = n_blades * float(np.trapezoid(bmass * (hub_radius + span) ** 2, span))
     parts, hub_mass, hub_inertia, gen_inertia = _head_parts(chain, top_pos)
     parts.append(Part("blades", n_blades * blade_mass, downwind, above, j_blades / 2, j_blades,
                       j_blades / 2))  # fmt: skip
-    head = assembled(parts)
-    tilt = _tilt(chain.shaft)
     speed, control, statement = _operation(top, root, path)
-    shaft_k = _shaft_stiffness(chain.shaft)
     data: dict[str, Any] = {
         "wtvib": 1,
         "turbine": {
@@ -437,45 +420,88 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             **_tower_damping(chain.tower[0]),
             "distributed": tower_table,
         },
-        "tower_head": head.as_head(),
+        "tower_head": assembled(parts).as_head(),
         "blade": {
             "length_m": round(blade_length, 6),
             "mass_kg": round(blade_mass, 3),
             **_blade_damping(chain.blades[0]),
             "structure": {"hub_radius_m": round(hub_radius, 6), **blade_structure},
         },
-        "drivetrain": {
-            "chain": [
-                {"name": "blades", "inertia_kgm2": j_blades},
-                {"name": "hub", "inertia_kgm2": hub_inertia},
-                {"name": "generator", "inertia_kgm2": gen_inertia},
-            ],
-            "shafts": [
-                {"stiffness_nm_rad": None},
-                {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * chain.shaft.damping[5]},
-            ],
-        },
+        "drivetrain": _drivetrain(chain.shaft, j_blades, hub_inertia, gen_inertia),
         "coupled": {
             "apex_downwind_m": round(downwind, 6),
             "apex_above_top_m": round(above, 6),
             "hub_mass_kg": hub_mass,
             "hub_inertia_kgm2": hub_inertia,
         },
-        "assumptions": [
-            f"Imported from the HAWC2 model {path.name}: bodies "
-            + ", ".join(b.name for b in (*chain.tower, *chain.head, chain.shaft))
-            + f", {len(chain.hubs)} hubs and blades ({chain.blades[0].name}'s st set "
-            f"{'fully populated (6×6, condensed)' if chain.blades[0].fpm else 'classical'}); "
-            f"the tower ({', '.join(b.name for b in chain.tower)}) clamped at "
-            f"{chain.tower[0].name}'s base; the rotor apex "
-            f"{downwind:+.3g} m downwind of the tower top and {above:.3g} m above it; shaft "
-            f"tilt {tilt:.3g}° and the blades' prebend and cone neglected.",
-            "Tower head assembled from the bodies above the tower: their concentrated "
-            "masses (nacelle, yaw system), the shaft's (hub mass, hub and generator inertia) "
-            "and the blades at the apex.",
-            statement,
+        "assumptions": [*_assembly_notes(path, chain, downwind, above), statement],
+    }
+    warnings = _support_warnings(top, embedded)
+    if warnings:
+        data["warnings"] = warnings
+    aerodynamics = _aerodynamics(top, root, chain, control)
+    if aerodynamics is not None:
+        data["aerodynamics"] = aerodynamics
+    out: dict[str, Any] = _plain(data)
+    return out
+
+
+def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]]:
+    """The model's main bodies, placed by its orientation block and recognised by their
+    place in the chain, and the bodies its soil block embeds."""
+    structure = top.block("new_htc_structure")
+    if structure is None:
+        raise SpecError("no new_htc_structure block: not a HAWC2 turbine model", source=str(path))
+    bodies = _bodies(structure, root)
+    orientation = structure.block("orientation")
+    if orientation is None:
+        raise SpecError("no orientation block", line=structure.line, source=str(path))
+    _place(bodies, orientation)
+    soil = top.block("soil")
+    embedded = {
+        e.need("mbdy_name").values[0].lower() for e in (soil.each("soil_element") if soil else [])
+    }
+    return _chain(bodies, structure, embedded), embedded
+
+
+def _drivetrain(
+    shaft: Body, j_blades: float, hub_inertia: float, gen_inertia: float
+) -> dict[str, Any]:
+    """The drive train: the blades on a rigid hub, the shaft's torsion to the generator."""
+    shaft_k = _shaft_stiffness(shaft)
+    return {
+        "chain": [
+            {"name": "blades", "inertia_kgm2": j_blades},
+            {"name": "hub", "inertia_kgm2": hub_inertia},
+            {"name": "generator", "inertia_kgm2": gen_inertia},
+        ],
+        "shafts": [
+            {"stiffness_nm_rad": None},
+            {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * shaft.damping[5]},
         ],
     }
+
+
+def _assembly_notes(path: Path, chain: "_Chain", downwind: float, above: float) -> list[str]:
+    """What the import assembled, and from which bodies."""
+    tilt = _tilt(chain.shaft)
+    return [
+        f"Imported from the HAWC2 model {path.name}: bodies "
+        + ", ".join(b.name for b in (*chain.tower, *chain.head, chain.shaft))
+        + f", {len(chain.hubs)} hubs and blades ({chain.blades[0].name}'s st set "
+        f"{'fully populated (6×6, condensed)' if chain.blades[0].fpm else 'classical'}); "
+        f"the tower ({', '.join(b.name for b in chain.tower)}) clamped at "
+        f"{chain.tower[0].name}'s base; the rotor apex "
+        f"{downwind:+.3g} m downwind of the tower top and {above:.3g} m above it; shaft "
+        f"tilt {tilt:.3g}° and the blades' prebend and cone neglected.",
+        "Tower head assembled from the bodies above the tower: their concentrated "
+        "masses (nacelle, yaw system), the shaft's (hub mass, hub and generator inertia) "
+        "and the blades at the apex.",
+    ]
+
+
+def _support_warnings(top: Block, embedded: set[str]) -> list[str]:
+    """What of the model's support is not read: its pile in the soil, its hydro block."""
     warnings = []
     if embedded:
         warnings.append(
@@ -488,13 +514,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "tower.added_mass: HAWC2's hydro block (the water moving with the monopile) is "
             "not read: the submerged part's added mass is missing"
         )
-    if warnings:
-        data["warnings"] = warnings
-    aerodynamics = _aerodynamics(top, root, chain, control)
-    if aerodynamics is not None:
-        data["aerodynamics"] = aerodynamics
-    out: dict[str, Any] = _plain(data)
-    return out
+    return warnings
 
 
 def _plain(value: Any) -> Any:
