@@ -94,13 +94,8 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     Hansen, *Aerodynamics of Wind Turbines*, 3rd ed., ch. 12; Wright et al., "Vibration
     modes of centrifugally stiffened beams", J. Appl. Mech. 49, 1982 (Southwell K ≈ 1.19).
     """
-    span = np.asarray(s.span_m, dtype=float)
     b = beam.basis(nodes)
-    m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
-    ef = beam.interpolate(b.x, span, np.asarray(s.ei_flap_nm2))
-    ee = beam.interpolate(b.x, span, np.asarray(s.ei_edge_nm2))
-    twist = np.asarray(s.twist_deg) if s.twist_deg else np.zeros_like(span)
-    beta = np.radians(beam.interpolate(b.x, span, twist))
+    m, ef, ee, beta = _sections(s, b)
     c, sn = np.cos(beta), np.sin(beta)
     ei_ww, ei_vv, ei_wv = ef * c**2 + ee * sn**2, ef * sn**2 + ee * c**2, (ee - ef) * sn * c
     # a tip mass pulls on every section (its centrifugal force per Ω²: m_tip·R)
@@ -217,14 +212,20 @@ def deflections(s: BladeStructure, nodes: Array) -> tuple[Array, Array]:
     if s.ga_flap_n is None:
         zero = np.zeros_like(b.n)
         return np.concatenate([b.n, zero], -1), np.concatenate([zero, b.n], -1)
+    m, ef, ee, beta = _sections(s, b)
+    _, h_w, h_v = _shear_blocks(s, b, m, ef, ee, beta, np.zeros_like(m))
+    return h_w, h_v
+
+
+def _sections(s: BladeStructure, b: beam.Basis) -> tuple[Array, Array, Array, Array]:
+    """Mass per length, flapwise and edgewise bending stiffness and the principal axes'
+    twist [rad] at the Gauss points (linear between the table's stations)."""
     span = np.asarray(s.span_m, dtype=float)
     m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
     ef = beam.interpolate(b.x, span, np.asarray(s.ei_flap_nm2))
     ee = beam.interpolate(b.x, span, np.asarray(s.ei_edge_nm2))
     twist = np.asarray(s.twist_deg) if s.twist_deg else np.zeros_like(span)
-    beta = np.radians(beam.interpolate(b.x, span, twist))
-    _, h_w, h_v = _shear_blocks(s, b, m, ef, ee, beta, np.zeros_like(m))
-    return h_w, h_v
+    return m, ef, ee, np.radians(beam.interpolate(b.x, span, twist))
 
 
 def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:

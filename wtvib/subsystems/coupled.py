@@ -159,14 +159,11 @@ def _blade_modes(
     w_dofs = beam.chain_dofs(n_el, 4, (0, 1))
     v_dofs = beam.chain_dofs(n_el, 4, (2, 3))
     points_n = b.n.shape[0] * b.n.shape[1]  # Gauss points (element × point)
-    if s.ga_flap_n is None:  # Euler–Bernoulli: the Hermite cubics on each plane's dofs
-        flap = np.einsum("ega,eak->egk", b.n, full[w_dofs]).reshape(points_n, phi.shape[1])
-        edge = np.einsum("ega,eak->egk", b.n, full[v_dofs]).reshape(points_n, phi.shape[1])
-    else:  # shear-deformable: the blade model's own interpolation of its deflections
-        h_w, h_v = blade.deflections(s, nodes)
-        on = full[np.concatenate([w_dofs, v_dofs], axis=1)]
-        flap = np.einsum("ega,eak->egk", h_w, on).reshape(points_n, phi.shape[1])
-        edge = np.einsum("ega,eak->egk", h_v, on).reshape(points_n, phi.shape[1])
+    # the deflections as the blade model interpolates them (Hermite or Timoshenko)
+    h_w, h_v = blade.deflections(s, nodes)
+    on = full[np.concatenate([w_dofs, v_dofs], axis=1)]
+    flap = np.einsum("ega,eak->egk", h_w, on).reshape(points_n, phi.shape[1])
+    edge = np.einsum("ega,eak->egk", h_v, on).reshape(points_n, phi.shape[1])
     radius, mass = points.radius, points.mass
     length = np.asarray(b.w, float).ravel()
     if s.tip_mass_kg:  # one more point: the tip mass, moving with the tip node
