@@ -90,6 +90,10 @@ class Deck:
     #: the inputs read as "default", and what they were taken as (for the assumptions)
     defaulted: dict[str, str] = field(default_factory=dict)
 
+    def line(self, key: str) -> int | None:
+        """The line the input ``key`` stands on (None: not in this file)."""
+        return self.values[key][1] if key in self.values else None
+
     def is_default(self, key: str) -> bool:
         """Whether the input is OpenFAST's "default" keyword (quoted or not)."""
         return key in self.values and self.values[key][0].strip('"').lower() == "default"
@@ -153,7 +157,7 @@ class Deck:
         if not value > 0:
             raise SpecError(
                 f"{key} must be positive (got {value:g}): it scales a mass or stiffness",
-                line=self.values[key][1] if key in self.values else None,
+                line=self.line(key),
                 source=str(self.path),
             )
         return value

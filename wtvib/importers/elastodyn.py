@@ -392,7 +392,7 @@ def _beam_data(main: Deck, fst: Deck) -> dict[str, Any]:
         raise SpecError(
             f"RotSpeed = {rpm:g} rpm for a beam free on nothing (every platform DOF on, "
             f"PtfmMass {platform_mass:g} kg): nothing holds it against the centrifugal force",
-            line=main.values["RotSpeed"][1] if "RotSpeed" in main.values else None,
+            line=main.line("RotSpeed"),
             source=str(main.path),
         )
     damping, how = _bd_damping(bd, None)
@@ -472,7 +472,7 @@ def _check_geometry(main: Deck, tip: float) -> None:
         raise SpecError(
             f"TowerHt {main.num('TowerHt'):g} m puts the hub at about {hub:g} m under a rotor "
             f"radius TipRad = {tip:g} m: the blade tips would strike the ground",
-            line=main.values["TowerHt"][1] if "TowerHt" in main.values else None,
+            line=main.line("TowerHt"),
             source=str(main.path),
         )
     blades = int(main.num("NumBl", default=3.0))
@@ -1199,7 +1199,7 @@ def _hub_inertia(main: Deck, hub_radius: float) -> dict[str, Any]:
             "no mass or inertia (HubIner, HubMass 0) — there is no structure to audit"
             if rigid
             else "HubIner is 0 and HubMass or HubRad too: the drive train's hub has no inertia",
-            line=main.values["HubIner"][1] if "HubIner" in main.values else None,
+            line=main.line("HubIner"),
             source=str(main.path),
         )
     return {

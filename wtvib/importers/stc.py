@@ -119,7 +119,7 @@ def _one(stc: Deck, place: str, out: Control) -> None:
         if not mass > 0:
             raise SpecError(
                 f"{mass_key} = {mass:g} kg: a damper needs a mass above 0",
-                line=stc.values[mass_key][1] if mass_key in stc.values else None,
+                line=stc.line(mass_key),
                 source=str(stc.path),
             )
         stiffness = _spring(stc, axis)
@@ -158,7 +158,7 @@ def _spring(stc: Deck, axis: str) -> float:
     if not k > 0:
         raise SpecError(
             f"{key}: a stiffness of {k:g} N/m — a damper needs a spring above 0 N/m",
-            line=stc.values[key][1] if key in stc.values else None,
+            line=stc.line(key),
             source=str(stc.path),
         )
     return k
