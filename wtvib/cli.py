@@ -3,12 +3,14 @@
 
 Exit codes: 0 pass or warn, 1 fail (or warn with ``--strict``), 2 bad input or output,
 3 internal error (an exception wtvib did not expect: a bug, never a verdict). Errors are
-caught in one place (:func:`_user_errors`); a traceback only with ``--debug``.
+caught in one place (:func:`_command`); a traceback only with ``--debug``.
 """
 
+import contextlib
+import copy
 import functools
+import importlib
 import inspect
-import math
 import os
 import sys
 import warnings
@@ -21,7 +23,7 @@ import click
 import typer
 
 from .workflows import ui  # the standard library only: numpy waits for the BLAS setting
-from .workflows.ui import EXIT_INPUT, EXIT_PASS
+from .workflows.ui import EXIT_PASS
 
 # One BLAS thread unless the user chose: the models solve small dense problems,
 # where OpenBLAS's busy-waiting threads only fight each other and a batch's workers (one
@@ -35,9 +37,10 @@ for _threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 #: command → {old token: today's (None: the old token is dropped, it only restated the
 #: default)}.
 _FOLDER_ALIASES: dict[str, str | None] = {"--out": "--out-dir", "-o": "--out-dir"}
+_PLOT_ALIASES: dict[str, str | None] = {"--no-plot": "--no-plots", "--plot": None, "--plots": None}
 ALIASES: dict[str, dict[str, str | None]] = {
-    "check": {**_FOLDER_ALIASES, "--no-plot": "--no-plots", "--plot": None, "--plots": None},
-    "window": {**_FOLDER_ALIASES, "--no-plot": "--no-plots", "--plot": None, "--plots": None},
+    "check": {**_FOLDER_ALIASES, **_PLOT_ALIASES},
+    "window": {**_FOLDER_ALIASES, **_PLOT_ALIASES},
     "batch": {**_FOLDER_ALIASES, "--plots": None},
 }
 
@@ -73,10 +76,6 @@ class _Command(typer.core.TyperCommand):
         return super().parse_args(ctx, _respell(args, ALIASES.get(self.name or "", {})))
 
 
-#: The most Monte Carlo samples a run may ask for: 2,000 give the spread to a few per cent;
-#: a million take minutes; more would only run without end.
-MAX_SAMPLES = 1_000_000
-
 app = typer.Typer(
     help="Vibration audit of wind turbines: natural frequencies against rotor excitations, "
     "after Hau, Wind Turbines, ch. 7.",
@@ -95,302 +94,220 @@ def _usage_error_on_one_line(self: Any, file: Any = None) -> None:
     print(f"error: {message}{where}", file=file or sys.stderr)
 
 
-def _one_line_usage_errors() -> None:
-    """Typer's click (its own copy from 0.16 on, ``typer._click``) and click's, both."""
-    import importlib
-
-    for name in ("typer._click.exceptions", "click.exceptions"):
-        try:
-            module = importlib.import_module(name)
-        except ImportError:
-            continue
-        module.UsageError.show = _usage_error_on_one_line
+# typer's own copy of click (from 0.16 on, ``typer._click``) and click's, both
+for _name in ("typer._click.exceptions", "click.exceptions"):
+    with contextlib.suppress(ImportError):
+        importlib.import_module(_name).UsageError.show = _usage_error_on_one_line
 
 
-_one_line_usage_errors()
+Format = StrEnum("Format", {"text": "text", "json": "json"})
+Figures = StrEnum("Figures", {"main": "main", "all": "all"})
+RuleKind = StrEnum("RuleKind", {"band": "band", "ratio": "ratio"})
+SortBy = StrEnum("SortBy", {"file": "file", "verdict": "verdict", "name": "name"})
+PresetName = StrEnum("PresetName", {"hau": "hau", "gl2010": "gl2010"})
+Target = StrEnum("Target", {"soft_soft": "soft-soft", "soft": "soft", "stiff": "stiff"})
+ScaleWhat = StrEnum("ScaleWhat", {"wall": "wall", "diameter": "diameter", "both": "both"})
+
+#: The most Monte Carlo samples a run may ask for: 2,000 give the spread to a few per cent;
+#: a million take minutes; more would only run without end.
+MAX_SAMPLES = 1_000_000
+
+#: Every option's help, by the key its declaration names (one wording per idea).
+HELP = {
+    "rpm": "Operating range [rpm] (or one fixed speed) for imports that do not give it.",
+    "rated": "Rated speed [rpm].",
+    "head_mass": "Tower-head mass [kg] for windIO files (1.x hold no hub/nacelle).",
+    "clamped_base": "Read a floating turbine's tower (windIO, OpenFAST) as clamped at its base "
+    "(said in the report; platform and moorings are not modelled).",
+    "deck_dofs": "Model an OpenFAST deck with the degrees of freedom it switches on (FlapDOF1 … "
+    "PtfmYDOF), as OpenFAST does; by default every mode is audited and the switches said.",
+    "soil": "Soil profile (YAML: soil layers, bounds) for a windIO monopile.",
+    "blades": "Number of blades, for Campbell results that do not say.",
+    "margin": "Margin, e.g. 0.05 (overrides the spec).",
+    "rule": "Margin rule (overrides the spec).",
+    "preset": "Code preset for rule and margin.",
+    "help_all": "Show every option (import, rule, figure and study options too).",
+    "uncertainty": "Propagate the spec's tolerances (Monte Carlo).",
+    "samples": "Monte Carlo samples (2,000); needs --uncertainty.",
+    "seed": "Seed of the sampling (0); needs --uncertainty.",
+    "scheduler": "Sample on a Dask scheduler (tcp://host:8786); needs --uncertainty.",
+    "debug": "Show tracebacks for errors.",
+    "version": "Print the version.",
+    "force": "Replace existing output files not written by wtvib.",
+    "format": "Output format.",
+    "no_plots": "Write no figures.",
+    "strict": "Exit 1 on warn as well as fail.",
+    "spec": "Turbine file: a wtvib spec, a windIO turbine YAML, an OpenFAST deck (.fst or "
+    "ElastoDyn .dat), or another tool's Campbell results (.cmb, .csv, .lin, a linearisation "
+    "folder).",
+    "check.out": "Folder for the figures (default: the current directory).",
+    "detail": "Print the tables of modes and checks too.",
+    "campbell_csv": "Write the Campbell data (each judged mode's frequency and damping per "
+    "operating point) as CSV.",
+    "show_all": "Show passing minor checks too.",
+    "figures": "main: the Campbell diagrams and damping; all: the detail figures too.",
+    "report.output": "PDF file to write.",
+    "inputs": "Spec files or folders.",
+    "batch.out": "Folder for the JSON, CSV, PNG and PDF files.",
+    "jobs": "Processes (default: all cores).",
+    "batch.no_plots": "Write no figures and no PDF report.",
+    "sort": "Order of the summary table.",
+    "batch.scheduler": "Audit on a Dask scheduler's workers (tcp://host:8786), not locally.",
+    "window.out": "Folder for the figure (default: the current directory).",
+    "size.spec": "Turbine spec with tower sections.",
+    "target": "Window to land in (its middle).",
+    "target_hz": "Or a first bending frequency [Hz].",
+    "scale": "What to scale.",
+    "convert.source": "windIO YAML, OpenFAST deck or Campbell results to convert.",
+    "convert.output": "wtvib spec to write.",
+    "convert.force": "Replace an existing file.",
+    "deck": "ElastoDyn main file (.dat), or the OpenFAST .fst that names it.",
+    "shapes.output": "Folder for tower and blade files with the computed polynomials (never the "
+    "deck's own).",
+    "shapes.rpm": "Rotor speed [rpm] of the blade shapes (default: the highest steady speed).",
+    "copy": "Write the catalogue's specs into DIR, to edit.",
+    "schema.report": "The report's schema (wtvib-report/1) instead.",
+}
 
 
-class Format(StrEnum):
-    text = "text"
-    json = "json"
+def _o(key: str, *names: str, hidden: bool = False, **kw: Any) -> Any:
+    """An option with its help from :data:`HELP`."""
+    return typer.Option(*names, hidden=hidden, help=HELP[key], **kw)
 
 
-class Figures(StrEnum):
-    main = "main"
-    all = "all"
+def _h(key: str, *names: str, **kw: Any) -> Any:
+    """A hidden option: shown by ``--help-all`` only."""
+    return _o(key, *names, hidden=True, **kw)
 
 
-class RuleKind(StrEnum):
-    band = "band"
-    ratio = "ratio"
+def _arg(key: str, metavar: str = "FILE") -> Any:
+    return typer.Argument(metavar=metavar, help=HELP[key])
 
 
-class SortBy(StrEnum):
-    file = "file"
-    verdict = "verdict"
-    name = "name"
-
-
-class PresetName(StrEnum):
-    hau = "hau"
-    gl2010 = "gl2010"
-
-
-def _option(*names: str, hidden: bool = False, **kw: Any) -> Any:
-    return typer.Option(*names, hidden=hidden, **kw)
-
-
-RpmOption = Annotated[
-    str | None,
-    _option(
-        metavar="MIN:MAX",
-        help="Operating range [rpm] (or one fixed speed) for imports that do not give it.",
-    ),
-]
-RatedOption = Annotated[
-    float | None, _option(metavar="RPM", hidden=True, help="Rated speed [rpm].")
-]
-HeadMassOption = Annotated[
-    float | None,
-    _option(
-        metavar="KG",
-        hidden=True,
-        help="Tower-head mass [kg] for windIO files (1.x hold no hub/nacelle).",
-    ),
-]
-CLAMPED = (
-    "Audit a floating turbine's tower (windIO file or OpenFAST deck set) as if clamped at its "
-    "base (said in the report's headline; platform and moorings are not modelled)."
-)
-ClampedOption = Annotated[bool, _option("--clamped-base", hidden=True, help=CLAMPED)]
-DeckDofsOption = Annotated[
-    bool,
-    _option(
-        "--deck-dofs",
-        hidden=True,
-        help="Model an OpenFAST deck with its degrees of freedom as it switches them (FlapDOF1 … "
-        "PtfmYDOF, as OpenFAST models it); by default every mode of the structure is audited"
-        " and the switches said.",
-    ),
-]
-SoilOption = Annotated[
-    Path | None,
-    _option(
-        metavar="FILE",
-        hidden=True,
-        help="Soil profile (YAML: soil layers, bounds) for a windIO monopile.",
-    ),
-]
-BladesOption = Annotated[
-    int | None,
-    _option(
-        min=1,
-        max=10,
-        metavar="N",
-        hidden=True,
-        help="Number of blades, for Campbell results that do not say.",
-    ),
-]
-MarginOption = Annotated[
-    float | None, _option(metavar="M", help="Margin, e.g. 0.05 (overrides the spec).")
-]
-RuleOption = Annotated[
-    RuleKind | None, _option(hidden=True, help="Margin rule (overrides the spec).")
-]
-PresetOption = Annotated[PresetName | None, _option(help="Code preset for rule and margin.")]
-DebugOption = Annotated[bool, _option("--debug", hidden=True, help="Show tracebacks for errors.")]
-ForceOption = Annotated[
-    bool,
-    _option("--force", hidden=True, help="Replace existing output files not written by wtvib."),
-]
-FormatOption = Annotated[Format, _option("--format", "-f", help="Output format.")]
-NoPlotsOption = Annotated[bool, _option("--no-plots", help="Write no figures.")]
-StrictOption = Annotated[bool, _option("--strict", help="Exit 1 on warn as well as fail.")]
-HelpAllOption = Annotated[
-    bool,
-    _option(
-        "--help-all",
-        is_eager=True,
-        expose_value=False,
-        callback=_help_all,
-        help="Show every option (import, rule, figure and study options too).",
-    ),
-]
-UncertaintyOption = Annotated[
-    bool,
-    _option("--uncertainty", hidden=True, help="Propagate the spec's tolerances (Monte Carlo)."),
-]
-SamplesOption = Annotated[
-    int | None,
-    _option(
-        min=10,
-        max=MAX_SAMPLES,
-        metavar="N",
-        hidden=True,
-        help="Monte Carlo samples (2,000); needs --uncertainty.",
-    ),
-]
-SeedOption = Annotated[
-    int | None,
-    _option(min=0, metavar="N", hidden=True, help="Seed of the sampling (0); needs --uncertainty."),
-]
-SchedulerOption = Annotated[
-    str | None,
-    _option(
-        metavar="ADDRESS",
-        hidden=True,
-        help="Sample on a Dask scheduler (tcp://host:8786); needs --uncertainty.",
-    ),
-]
-OutputOption = Annotated[Path, _option("--output", "-o", metavar="FILE", help="PDF file to write.")]
-#: What a turbine file may be (wtvib.importers.load tells them apart).
-SPEC_HELP = (
-    "Turbine file: a wtvib spec, a windIO turbine YAML, an OpenFAST deck (.fst or ElastoDyn "
-    ".dat), or another tool's Campbell results (.cmb, .csv, .lin, a linearisation folder)."
-)
-SpecArgument = Annotated[Path, typer.Argument(metavar="FILE", help=SPEC_HELP)]
-
-
-def _out_dir(what: str) -> Any:
-    return _option("--out-dir", "-d", metavar="DIR", help=what)
-
-
-def _study(
-    uncertainty: bool, samples: int | None, seed: int | None, scheduler: str | None = None
-) -> tuple[int | None, int]:
-    """--samples, --seed and --scheduler, which only an --uncertainty run uses (said where
-    given without it), with their defaults; no samples without --uncertainty."""
-    given = ((scheduler, "--scheduler"), (samples, "--samples"), (seed, "--seed"))
-    for value, name in given:
-        if value is not None and not uncertainty:
-            raise typer.BadParameter(f"{name} applies to --uncertainty", param_hint=name)
-    return ((2000 if samples is None else samples) if uncertainty else None), seed or 0
-
-
-def _read(rpm: str | None, **given: Any) -> Any:
-    from .importers import ReadOptions
-
-    return ReadOptions(rpm=_rpm_range(rpm), **given)
-
-
-def _options(
-    rpm: str | None,
-    rated: float | None,
-    head_mass: float | None,
-    clamped_base: bool,
-    deck_dofs: bool,
-    soil: Path | None,
-    blades: int | None,
-    margin: float | None,
-    rule: RuleKind | None,
-    preset: PresetName | None,
-) -> Any:
-    from .workflows.batch import Options
-
-    read = _read(
-        rpm,
-        rated=rated,
-        head_mass=head_mass,
-        clamped_base=clamped_base,
-        blades=blades,
-        soil=soil,
-        deck_dofs=deck_dofs,
-    )
-    return Options(
-        read=read,
-        margin=margin,
-        rule=rule.value if rule is not None else None,
-        preset=preset.value if preset is not None else None,
-    )
-
+DebugOption = Annotated[bool, _h("debug", "--debug")]
+ForceOption = Annotated[bool, _h("force", "--force")]
+FormatOption = Annotated[Format, _o("format", "--format", "-f")]
+NoPlotsOption = Annotated[bool, _o("no_plots", "--no-plots")]
+StrictOption = Annotated[bool, _o("strict", "--strict")]
+SoilOption = Annotated[Path | None, _h("soil", metavar="FILE")]
+HelpAll = _o("help_all", "--help-all", is_eager=True, expose_value=False, callback=_help_all)
+HelpAllOption = Annotated[bool, HelpAll]
+SpecArgument = Annotated[Path, _arg("spec")]
 
 F = TypeVar("F", bound=Callable[..., int | None])
+#: Options several commands share: name, declaration, default.
+Group = tuple[tuple[str, Any, Any], ...]
+KEYWORD_ONLY = inspect.Parameter.KEYWORD_ONLY
 
 #: The options every command that audits shares (an import's operating range, the rule).
-RUN_OPTIONS: tuple[tuple[str, Any, Any], ...] = (
-    ("rpm", RpmOption, None),
-    ("rated", RatedOption, None),
-    ("head_mass", HeadMassOption, None),
-    ("clamped_base", ClampedOption, False),
-    ("deck_dofs", DeckDofsOption, False),
+RUN_OPTIONS: Group = (
+    ("rpm", Annotated[str | None, _o("rpm", metavar="MIN:MAX")], None),
+    ("rated", Annotated[float | None, _h("rated", metavar="RPM")], None),
+    ("head_mass", Annotated[float | None, _h("head_mass", metavar="KG")], None),
+    ("clamped_base", Annotated[bool, _h("clamped_base", "--clamped-base")], False),
+    ("deck_dofs", Annotated[bool, _h("deck_dofs", "--deck-dofs")], False),
     ("soil", SoilOption, None),
-    ("blades", BladesOption, None),
-    ("margin", MarginOption, None),
-    ("rule", RuleOption, None),
-    ("preset", PresetOption, None),
-    ("help_all", HelpAllOption, False),  # --help shows the common options; this, every one
+    ("blades", Annotated[int | None, _h("blades", min=1, max=10, metavar="N")], None),
+    ("margin", Annotated[float | None, _o("margin", metavar="M")], None),
+    ("rule", Annotated[RuleKind | None, _h("rule")], None),
+    ("preset", Annotated[PresetName | None, _o("preset")], None),
 )
 
 
-def _run_options(command: F) -> F:
-    """Give a command the shared run options (RUN_OPTIONS) as one ``options`` argument:
-    typer reads a command's parameters from its signature; this rewrites the signature so
-    that the shared options are declared once, here, instead of in every command."""
-    sig = inspect.signature(command)
-    own = [p for name, p in sig.parameters.items() if name != "options"]
-    extra = [
-        inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=kind)
-        for name, kind, default in RUN_OPTIONS
-    ]
-    debug = [p for p in own if p.name == "debug"]
-    rest = [p.replace(kind=inspect.Parameter.KEYWORD_ONLY) for p in own if p.name != "debug"]
-
-    @functools.wraps(command)
-    def wrapper(*args: object, **kwargs: Any) -> int | None:
-        kwargs.pop("help_all", None)  # not exposed: its callback prints the help and exits
-        if isinstance(kwargs.get("spec_file"), Path):  # a typo answered before the imports
-            from .workflows.catalogue import resolve
-
-            kwargs["spec_file"] = resolve(kwargs["spec_file"])
-        shared = [kwargs.pop(name) for name, _, _ in RUN_OPTIONS if name != "help_all"]
-        return command(*args, options=_options(*shared), **kwargs)
-
-    wrapper.__signature__ = sig.replace(parameters=[*rest, *extra, *debug])  # type: ignore[attr-defined]
-    wrapper.__annotations__ = {
-        **{k: v for k, v in command.__annotations__.items() if k != "options"},
-        **{name: kind for name, kind, _ in RUN_OPTIONS},
-    }
-    return wrapper  # type: ignore[return-value]
+def _shown(group: Group) -> Group:
+    """The options of ``group``, every one shown by ``--help``."""
+    shown = []
+    for name, declared, default in group:
+        info = copy.copy(declared.__metadata__[0])
+        info.hidden = False
+        shown.append((name, Annotated[declared.__origin__, info], default))
+    return tuple(shown)
 
 
-_state = {"debug": False}
+#: What a file's reading takes (``convert``, which shows them): the first run options.
+READ_OPTIONS = _shown(RUN_OPTIONS[:6])
+#: Every command's: --help-all (--help shows the common options; this, every one), --debug.
+COMMON: Group = (("help_all", HelpAllOption, False), ("debug", DebugOption, False))
+#: The uncertainty study's options (``check``, ``report``).
+STUDY_OPTIONS: Group = (
+    ("uncertainty", Annotated[bool, _h("uncertainty", "--uncertainty")], False),
+    ("samples", Annotated[int | None, _h("samples", min=10, max=MAX_SAMPLES, metavar="N")], None),
+    ("seed", Annotated[int | None, _h("seed", min=0, metavar="N")], None),
+)
+SCHEDULER: Group = (("scheduler", Annotated[str | None, _h("scheduler", metavar="ADDRESS")], None),)
+
 
 #: Exceptions the last line of defence lets through for typer to report: exits, Ctrl-C and
 #: usage errors — click's, and those of the click typer vendors (typer ≥ 0.16 raises
 #: ``typer.BadParameter`` from its own copy, which click's class does not catch).
-_PASS_THROUGH: tuple[type[BaseException], ...] = (
-    typer.Exit,
-    typer.Abort,
-    KeyboardInterrupt,
-    click.exceptions.ClickException,
-    *((typer.TyperException,) if hasattr(typer, "TyperException") else ()),
-)
+_PASS_THROUGH: tuple[type[BaseException], ...] = (typer.Exit, typer.Abort, KeyboardInterrupt)
+_PASS_THROUGH += (click.exceptions.ClickException, getattr(typer, "TyperException", typer.Exit))
+_state = {"debug": False}
 
 
-def _user_errors(command: F) -> F:
-    """The command's return as its exit code; an exception as one line and exit 2 or 3
-    (:func:`wtvib.workflows.ui.failed`), a traceback with --debug."""
+def _command(name: str | None = None, *groups: Group) -> Callable[[F], F]:
+    """Register ``function`` as a command with the shared options of ``groups`` and
+    :data:`COMMON`. Typer reads a command's options from its signature, so the signature is
+    rewritten with them; the run options arrive as one ``options`` argument, the study's as
+    ``study`` (:func:`_arguments`). The command's return is its exit code; an exception is
+    one line and exit 2 or 3 (:func:`wtvib.workflows.ui.failed`), a traceback with --debug."""
+    table = [*(row for group in groups for row in group), *COMMON]
+    names = {row[0] for row in table}
 
-    @functools.wraps(command)
-    def wrapper(*args: object, **kwargs: object) -> None:
-        debug = _state["debug"] or kwargs.get("debug")
-        try:
-            with warnings.catch_warnings():
-                if not debug:  # numpy's overflow notes on hostile numbers: the error or
-                    warnings.simplefilter("ignore", RuntimeWarning)  # warning line says it
-                code = command(*args, **kwargs)
-        except _PASS_THROUGH:
-            raise  # typer reports a usage error itself (one line, exit 2)
-        except Exception as exc:
-            if debug:
-                raise
-            inputs = next(
-                (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs), "wtvib"
-            )
-            raise typer.Exit(ui.failed(exc, kwargs.get("spec_file"), inputs)) from None
-        raise typer.Exit(code or EXIT_PASS)
+    def decorate(function: F) -> F:
+        sig = inspect.signature(function)
+        own = [p for n, p in sig.parameters.items() if n not in {"options", "study", *names}]
+        shared = [inspect.Parameter(n, KEYWORD_ONLY, default=d, annotation=a) for n, a, d in table]
 
-    return wrapper  # type: ignore[return-value]
+        @functools.wraps(function)
+        def wrapper(**kwargs: Any) -> None:
+            kwargs.pop("help_all", None)  # not exposed: its callback prints the help and exits
+            debug = bool(kwargs.pop("debug") or _state["debug"])
+            try:
+                with warnings.catch_warnings():
+                    if not debug:  # numpy's overflow notes on hostile numbers: the error or
+                        warnings.simplefilter("ignore", RuntimeWarning)  # warning line says it
+                    code = function(**_arguments(kwargs, sig.parameters, debug, names))
+            except _PASS_THROUGH:
+                raise  # typer reports a usage error itself (one line, exit 2)
+            except Exception as exc:
+                if debug:
+                    raise
+                given = (str(kwargs[k]) for k in ("spec_file", "source", "inputs") if k in kwargs)
+                code = ui.failed(exc, kwargs.get("spec_file"), next(given, "wtvib"))
+            raise typer.Exit(code or EXIT_PASS)
+
+        keyword = [p.replace(kind=KEYWORD_ONLY) for p in own]
+        wrapper.__signature__ = sig.replace(parameters=[*keyword, *shared])  # type: ignore[attr-defined]
+        annotations = {k: v for k, v in function.__annotations__.items() if k in sig.parameters}
+        wrapper.__annotations__ = {**annotations, **{n: a for n, a, _ in table}}
+        app.command(name, cls=_Command)(wrapper)
+        return function
+
+    return decorate
+
+
+def _arguments(
+    kwargs: dict[str, Any], wanted: Any, debug: bool, shared: set[str]
+) -> dict[str, Any]:
+    """The command's arguments from its options: the input's name resolved (a typo answered
+    before the imports), the run options as ``options``, the study's as ``study``."""
+    from .workflows import catalogue
+
+    kwargs = dict(kwargs)
+    if isinstance(kwargs.get("spec_file"), Path):
+        kwargs["spec_file"] = catalogue.resolve(kwargs["spec_file"])
+    from .workflows import options  # the importers: after a typo's answer
+
+    if "uncertainty" in shared:
+        asked = [kwargs.pop(k, None) for k in ("uncertainty", "samples", "seed", "scheduler")]
+        kwargs["study"] = options.study(*asked)
+        kwargs.update({"scheduler": asked[3]} if "scheduler" in wanted else {})
+    run = {n: kwargs.pop(n) for n, _, _ in RUN_OPTIONS if n in shared}
+    if run:
+        run = {k: v.value if isinstance(v, StrEnum) else v for k, v in run.items()}
+        kwargs["options"] = options.options(**run)
+    return {**kwargs, **({"debug": debug} if "debug" in wanted else {})}
 
 
 def _version(value: bool) -> None:
@@ -403,126 +320,81 @@ def _version(value: bool) -> None:
 
 @app.callback()
 def _root(
-    debug: Annotated[bool, _option("--debug", help="Show tracebacks for errors.")] = False,
-    version: Annotated[
-        bool, _option("--version", callback=_version, is_eager=True, help="Print the version.")
-    ] = False,
+    debug: Annotated[bool, _o("debug", "--debug")] = False,
+    version: Annotated[bool, _o("version", "--version", callback=_version, is_eager=True)] = False,
 ) -> None:
     _state["debug"] = debug
 
 
-CheckOut = Annotated[
-    Path | None, _out_dir("Folder for the figures (default: the current directory).")
-]
-CheckDetail = Annotated[bool, _option("--detail", help="Print the tables of modes and checks too.")]
-CheckCampbellCsv = Annotated[
-    Path | None,
-    _option(
-        "--campbell-csv",
-        metavar="FILE",
-        help="Write the Campbell data (frequency and damping of every judged mode per "
-        "operating point) as CSV.",
-    ),
-]
-CheckShowAll = Annotated[bool, _option("--all", hidden=True, help="Show passing minor checks too.")]
-CheckFigures = Annotated[
-    Figures,
-    _option(
-        hidden=True,
-        help="main: the Campbell diagrams and damping; all: the detail figures too.",
-    ),
-]
-
-
-@app.command(cls=_Command)
-@_user_errors
-@_run_options
+@_command(None, RUN_OPTIONS, STUDY_OPTIONS, SCHEDULER)
 def check(
     spec_file: SpecArgument,
     format: FormatOption = Format.text,
-    out: CheckOut = None,
+    out: Annotated[Path | None, _o("check.out", "--out-dir", "-d", metavar="DIR")] = None,
     no_plots: NoPlotsOption = False,
-    detail: CheckDetail = False,
+    detail: Annotated[bool, _o("detail", "--detail")] = False,
     strict: StrictOption = False,
-    campbell_csv: CheckCampbellCsv = None,
+    campbell_csv: Annotated[Path | None, _o("campbell_csv", metavar="FILE")] = None,
     force: ForceOption = False,
-    show_all: CheckShowAll = False,
-    figures: CheckFigures = Figures.main,
-    uncertainty: UncertaintyOption = False,
-    samples: SamplesOption = None,
-    seed: SeedOption = None,
-    scheduler: SchedulerOption = None,
+    show_all: Annotated[bool, _h("show_all", "--all")] = False,
+    figures: Annotated[Figures, _h("figures")] = Figures.main,
     *,
     options: Any,
-    debug: DebugOption = False,
+    study: tuple[int | None, int],
+    scheduler: str | None = None,
 ) -> int:
     """Audit one turbine: modes against excitations, tower class, verdict, Campbell PNGs."""
     from .workflows.check import Check, check
 
-    drawn, seed_ = _study(uncertainty, samples, seed, scheduler)
-    json_out, every = format is Format.json, figures is Figures.all
-    shown = (json_out, out, not no_plots, detail, strict, campbell_csv, force, show_all, every)
-    return check(Check(spec_file, options, *shown, drawn, seed_, scheduler))
+    asked = Check(
+        spec_file,
+        options,
+        json=format is Format.json,
+        out=out,
+        plots=not no_plots,
+        detail=detail,
+        strict=strict,
+        campbell_csv=campbell_csv,
+        force=force,
+        show_all=show_all,
+        all_figures=figures is Figures.all,
+        samples=study[0],
+        seed=study[1],
+        scheduler=scheduler,
+    )
+    return check(asked)
 
 
-@app.command(cls=_Command)
-@_user_errors
-@_run_options
+@_command(None, RUN_OPTIONS, STUDY_OPTIONS)
 def report(
     spec_file: SpecArgument,
-    output: OutputOption,
+    output: Annotated[Path, _o("report.output", "--output", "-o", metavar="FILE")],
     force: ForceOption = False,
-    uncertainty: UncertaintyOption = False,
-    samples: SamplesOption = None,
-    seed: SeedOption = None,
     *,
     options: Any,
-    debug: DebugOption = False,
+    study: tuple[int | None, int],
+    debug: bool = False,
 ) -> int:
     """Write the PDF audit report of one turbine."""
     from .workflows.check import pdf
 
-    drawn, seed_ = _study(uncertainty, samples, seed)
-    debugging = bool(debug or _state["debug"])
-    return pdf(spec_file, output, options, force=force, samples=drawn, seed=seed_, debug=debugging)
+    samples, seed = study
+    return pdf(spec_file, output, options, force=force, samples=samples, seed=seed, debug=debug)
 
 
-BatchInputs = Annotated[
-    list[Path], typer.Argument(metavar="FILE|FOLDER...", help="Spec files or folders.")
-]
-BatchOut = Annotated[Path | None, _out_dir("Folder for the JSON, CSV, PNG and PDF files.")]
-BatchJobs = Annotated[
-    int | None,
-    _option("--jobs", "-j", min=1, metavar="N", help="Processes (default: all cores)."),
-]
-BatchNoPlots = Annotated[bool, _option("--no-plots", help="Write no figures and no PDF report.")]
-BatchSort = Annotated[SortBy, _option(help="Order of the summary table.")]
-BatchScheduler = Annotated[
-    str | None,
-    _option(
-        metavar="ADDRESS",
-        hidden=True,
-        help="Audit on a Dask scheduler's workers (tcp://host:8786), not locally.",
-    ),
-]
-
-
-@app.command("batch", cls=_Command)
-@_user_errors
-@_run_options
+@_command("batch", RUN_OPTIONS)
 def batch_command(
-    inputs: BatchInputs,
-    out: BatchOut = None,
+    inputs: Annotated[list[Path], _arg("inputs", metavar="FILE|FOLDER...")],
+    out: Annotated[Path | None, _o("batch.out", "--out-dir", "-d", metavar="DIR")] = None,
     format: FormatOption = Format.text,
-    jobs: BatchJobs = None,
-    no_plots: BatchNoPlots = False,
-    sort: BatchSort = SortBy.file,
+    jobs: Annotated[int | None, _o("jobs", "--jobs", "-j", min=1, metavar="N")] = None,
+    no_plots: Annotated[bool, _o("batch.no_plots", "--no-plots")] = False,
+    sort: Annotated[SortBy, _o("sort")] = SortBy.file,
     strict: StrictOption = False,
-    scheduler: BatchScheduler = None,
+    scheduler: Annotated[str | None, _h("batch.scheduler", metavar="ADDRESS")] = None,
     force: ForceOption = False,
     *,
     options: Any,
-    debug: DebugOption = False,
 ) -> int:
     """Audit a catalogue: every spec found, in parallel, with a summary and reports.
 
@@ -530,230 +402,97 @@ def batch_command(
     The operating and rule options apply to every input."""
     from .workflows.fleet import Batch, run
 
+    json_out = format is Format.json
     return run(
         Batch(
             inputs,
             options,
             out,
-            format is Format.json,
-            jobs,
-            not no_plots,
-            sort.value,
-            strict,
-            scheduler,
-            force,
+            json=json_out,
+            jobs=jobs,
+            plots=not no_plots,
+            sort=sort.value,
+            strict=strict,
+            scheduler=scheduler,
+            force=force,
         )
     )
 
 
-class Target(StrEnum):
-    soft_soft = "soft-soft"
-    soft = "soft"
-    stiff = "stiff"
-
-
-class ScaleWhat(StrEnum):
-    wall = "wall"
-    diameter = "diameter"
-    both = "both"
-
-
-@app.command(cls=_Command)
-@_user_errors
-@_run_options
+@_command(None, RUN_OPTIONS)
 def window(
     spec_file: SpecArgument,
     format: FormatOption = Format.text,
-    out: Annotated[
-        Path | None, _out_dir("Folder for the figure (default: the current directory).")
-    ] = None,
+    out: Annotated[Path | None, _o("window.out", "--out-dir", "-d", metavar="DIR")] = None,
     no_plots: NoPlotsOption = False,
     force: ForceOption = False,
     *,
     options: Any,
-    debug: DebugOption = False,
 ) -> int:
     """Allowed frequency windows per subsystem, and where the design sits in them."""
     from .workflows.windows import window
 
-    return window(
-        spec_file, options, json=format is Format.json, out=out, plots=not no_plots, force=force
-    )
+    json_out, plots = format is Format.json, not no_plots
+    return window(spec_file, options, json=json_out, out=out, plots=plots, force=force)
 
 
-@app.command("size", cls=_Command)
-@_user_errors
-@_run_options
+@_command("size", RUN_OPTIONS)
 def size_command(
-    spec_file: Annotated[
-        Path, typer.Argument(metavar="FILE", help="Turbine spec with tower sections.")
-    ],
-    target: Annotated[Target | None, _option(help="Window to land in (its middle).")] = None,
-    target_hz: Annotated[
-        float | None, _option(min=0.0, metavar="HZ", help="Or a first bending frequency [Hz].")
-    ] = None,
-    scale: Annotated[ScaleWhat, _option(help="What to scale.")] = ScaleWhat.wall,
+    spec_file: Annotated[Path, _arg("size.spec")],
+    target: Annotated[Target | None, _o("target")] = None,
+    target_hz: Annotated[float | None, _o("target_hz", min=0.0, metavar="HZ")] = None,
+    scale: Annotated[ScaleWhat, _o("scale")] = ScaleWhat.wall,
     format: FormatOption = Format.text,
     *,
     options: Any,
-    debug: DebugOption = False,
 ) -> int:
     """Scale the tower's wall (or diameter, or both) to put its first bending in a window
     (the windows of `window` under the same operating and rule options)."""
     from .workflows.windows import size
 
-    if (target is None) == (target_hz is None):
-        options.load(spec_file)  # a mistake in the input first
-        raise typer.BadParameter("give --target WINDOW or --target-hz HZ")
     goal = target.value if target is not None else None
+    json_out = format is Format.json
     return size(
-        spec_file,
-        options,
-        target=goal,
-        target_hz=target_hz,
-        scale=scale.value,
-        json=format is Format.json,
+        spec_file, options, target=goal, target_hz=target_hz, scale=scale.value, json=json_out
     )
 
 
-def _rpm_range(text: str | None) -> tuple[float, float] | None:
-    """``--rpm 6.9:12.1`` → (6.9, 12.1); ``--rpm 20`` → (20, 20)."""
-    if text is None:
-        return None
-    try:
-        parts = [float(x) for x in text.split(":")]
-    except ValueError:
-        raise typer.BadParameter(
-            f"--rpm takes MIN:MAX in rpm, e.g. 6.9:12.1 (got {text!r})"
-        ) from None
-    if len(parts) == 1:
-        parts *= 2
-    if len(parts) != 2 or not (math.isfinite(parts[1]) and 0 <= parts[0] <= parts[1] > 0):
-        raise typer.BadParameter(
-            f"--rpm takes MIN:MAX with 0 <= MIN <= MAX and MAX above 0 (got {text!r}); a "
-            "standstill linearisation is audited as one without --rpm"
-        )
-    return parts[0], parts[1]
-
-
-ConvertSource = Annotated[
-    Path,
-    typer.Argument(
-        metavar="FILE",
-        help="windIO YAML, OpenFAST deck (.fst or ElastoDyn .dat) or Campbell results to convert.",
-    ),
-]
-ConvertOutput = Annotated[
-    Path, _option("--output", "-o", metavar="FILE", help="wtvib spec to write.")
-]
-ConvertRpm = Annotated[
-    str | None, _option(metavar="MIN:MAX", help="Operating range [rpm] to put in the spec.")
-]
-ConvertRated = Annotated[
-    float | None, _option(metavar="RPM", help="Rated speed [rpm] to put in the spec.")
-]
-ConvertHeadMass = Annotated[
-    float | None,
-    _option(
-        metavar="KG",
-        help="Tower-head mass [kg] to put in the spec (windIO files: 1.x hold no hub/nacelle).",
-    ),
-]
-ConvertClampedBase = Annotated[
-    bool,
-    _option(
-        "--clamped-base",
-        help="Convert a floating turbine's tower (windIO file or OpenFAST deck set) as "
-        "clamped at its base (the spec's assumptions say so; platform and moorings are "
-        "not converted).",
-    ),
-]
-ConvertForce = Annotated[bool, _option("--force", help="Replace an existing file.")]
-
-
-@app.command(cls=_Command)
-@_user_errors
+@_command(None, READ_OPTIONS)
 def convert(
-    source: ConvertSource,
-    output: ConvertOutput,
-    rpm: ConvertRpm = None,
-    rated: ConvertRated = None,
-    head_mass: ConvertHeadMass = None,
-    clamped_base: ConvertClampedBase = False,
-    soil: SoilOption = None,
-    force: ConvertForce = False,
-    help_all: HelpAllOption = False,
-    debug: DebugOption = False,
+    source: Annotated[Path, _arg("convert.source")],
+    output: Annotated[Path, _o("convert.output", "--output", "-o", metavar="FILE")],
+    force: Annotated[bool, _o("convert.force", "--force")] = False,
+    *,
+    options: Any,
 ) -> int:
     """Write an imported turbine as an editable wtvib spec (validated before writing)."""
     from .workflows.convert import convert
 
-    read = _read(rpm, rated=rated, head_mass=head_mass, clamped_base=clamped_base, soil=soil)
-    return convert(source, output, read, force=force)
+    return convert(source, output, options.read, force=force)
 
 
-ShapesDeck = Annotated[
-    Path,
-    typer.Argument(
-        metavar="DECK", help="ElastoDyn main file (.dat), or the OpenFAST .fst that names it."
-    ),
-]
-ShapesOutput = Annotated[
-    Path | None,
-    _option(
-        "--output",
-        "-o",
-        metavar="DIR",
-        help="Folder to write the tower and blade files with the computed polynomials into "
-        "(never over the deck's own).",
-    ),
-]
-ShapesRpm = Annotated[
-    float | None,
-    _option(
-        min=0.0,
-        metavar="RPM",
-        help="Rotor speed [rpm] of the blade shapes (default: the highest steady speed).",
-    ),
-]
-
-
-@app.command("shapes", cls=_Command)
-@_user_errors
+@_command("shapes")
 def shapes_command(
-    deck: ShapesDeck,
-    output: ShapesOutput = None,
-    rpm: ShapesRpm = None,
+    deck: Annotated[Path, _arg("deck", metavar="DECK")],
+    output: Annotated[Path | None, _o("shapes.output", "--output", "-o", metavar="DIR")] = None,
+    rpm: Annotated[float | None, _o("shapes.rpm", min=0.0, metavar="RPM")] = None,
     format: FormatOption = Format.text,
     no_plots: NoPlotsOption = False,
     force: ForceOption = False,
-    help_all: HelpAllOption = False,
-    debug: DebugOption = False,
 ) -> int:
     """ElastoDyn's mode-shape polynomials: computed from the deck's tower and blade, the
     deck's own audited, corrected files written with -o."""
-    from . import importers
     from .workflows.convert import shapes
 
-    if importers.kind(deck) != "elastodyn":
-        raise typer.BadParameter(
-            f"{deck} is not an ElastoDyn deck: shapes takes an ElastoDyn main file or the .fst "
-            f"that names it"
-        )
     json_out = format is Format.json
     return shapes(deck, output=output, rpm=rpm, json=json_out, plots=not no_plots, force=force)
 
 
-@app.command("catalogue", cls=_Command)
-@_user_errors
+@_command("catalogue")
 def catalogue_command(
-    copy: Annotated[
-        Path | None,
-        _option("--copy", metavar="DIR", help="Write the catalogue's specs into DIR, to edit."),
-    ] = None,
+    copy: Annotated[Path | None, _o("copy", "--copy", metavar="DIR")] = None,
     force: ForceOption = False,
     format: FormatOption = Format.text,
-    help_all: HelpAllOption = False,
 ) -> int:
     """List the turbines that ship with wtvib (check one by its name: wtvib check mod-2)."""
     from .workflows.catalogue import listing
@@ -761,13 +500,9 @@ def catalogue_command(
     return listing(copy=copy, force=force, json_out=format is Format.json)
 
 
-@app.command(cls=_Command)
-@_user_errors
+@_command()
 def schema(
-    report: Annotated[
-        bool, _option("--report", help="The report's schema (wtvib-report/1) instead.")
-    ] = False,
-    help_all: HelpAllOption = False,
+    report: Annotated[bool, _o("schema.report", "--report")] = False,
 ) -> int:
     """Print the JSON Schema of the turbine spec, or of the JSON report (--report)."""
     from .workflows.contract import schema
@@ -776,23 +511,5 @@ def schema(
 
 
 def main() -> None:
-    """Console entry point: the standard streams made safe first (:mod:`wtvib.outputs.streams`),
-    and what is still buffered for the output flushed here, where a full disk is one line
-    and exit 2 rather than Python's "Exception ignored" at exit."""
-    from .outputs import streams
-
-    streams.guard()
-    ui.reuse_freed_memory()
-    try:
-        app()
-        code: object = 0
-    except SystemExit as exc:
-        code = exc.code
-    try:
-        sys.stdout.flush()
-    except OSError as exc:
-        lost = streams.lost_output(exc) or str(exc)
-        streams.discard_stdout()
-        print(f"error: {lost}", file=sys.stderr)
-        code = EXIT_INPUT
-    raise SystemExit(code)
+    """Console entry point (:func:`wtvib.workflows.ui.main`)."""
+    ui.main(app)

@@ -58,3 +58,11 @@ def _short(text: str) -> str:
 
 class OutputError(WtvibError, OSError):
     """An output file that could not be written (read-only folder, full disk, would overwrite)."""
+
+
+class OptionError(WtvibError, ValueError):
+    """A command-line option given a value it cannot take: ``--rpm: takes MIN:MAX …``."""
+
+    def __init__(self, option: str, message: str) -> None:
+        self.option = option
+        super().__init__(f"{option}: {message}")

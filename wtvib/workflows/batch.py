@@ -20,9 +20,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..errors import WtvibError
-from ..importers import ReadOptions
 from ..outputs.files import campbell_to_csv
 from ..rules import STATUS_ORDER, worst_check
+from .options import Options
 
 if TYPE_CHECKING:
     from ..audit import Report
@@ -37,43 +37,6 @@ OUTCOME_ORDER = {**STATUS_ORDER, "input-error": 4, "internal-error": 5}
 
 #: Exit code of a run with an internal error (a bug in wtvib, not the user's input).
 EXIT_INTERNAL = 3
-
-
-@dataclass(frozen=True)
-class Options:
-    """What ``check``, ``report`` and ``batch`` share: how a file is read (``read``: the
-    import options, :class:`~wtvib.importers.ReadOptions`), the audit overrides ``margin``,
-    ``rule``, ``preset``, and the uncertainty study (``samples``, ``seed``)."""
-
-    read: ReadOptions = field(default_factory=ReadOptions)
-    margin: float | None = None
-    rule: str | None = None
-    preset: str | None = None
-    samples: int | None = None  # Monte Carlo samples of the spec's tolerances (None: none)
-    seed: int = 0
-
-    def tag(self, uncertainty: bool = False) -> str:
-        """What the options change in the figures, for their file names: ``.gl2010``,
-        ``.margin15``, ``.ratio``, ``.uncertainty`` — a preset's run does not replace the
-        plain run's ``mod-2.campbell.png``, it writes ``mod-2.gl2010.campbell.png``."""
-        parts = [self.preset or "", self.rule or ""]
-        if self.margin is not None:
-            parts.append(f"margin{self.margin * 100:g}")
-        if uncertainty or self.samples is not None:
-            parts.append("uncertainty")
-        return "".join(f".{p}" for p in parts if p)
-
-    def load(self, path: str | Path) -> Any:
-        """The turbine at ``path``, read with the import options."""
-        from .. import importers
-
-        return importers.load(path, self.read)
-
-    def settings(self, turbine: Any) -> Any:
-        """The turbine's audit settings with the overrides applied."""
-        from ..audit import override
-
-        return override(turbine.audit, margin=self.margin, rule=self.rule, preset=self.preset)
 
 
 @dataclass(frozen=True)

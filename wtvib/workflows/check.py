@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from . import ui
-from .batch import Options
+from .options import Options
 
 if TYPE_CHECKING:
     from ..audit import Report

@@ -13,7 +13,8 @@ from pathlib import Path
 from typing import Any
 
 from . import batch, ui
-from .batch import Item, Options
+from .batch import Item
+from .options import Options
 
 
 @dataclass(frozen=True)

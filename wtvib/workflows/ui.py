@@ -4,9 +4,9 @@ a step runs on a terminal, and the rich console the tables are drawn on."""
 
 import contextlib
 import sys
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 #: Exit codes: pass or warn, fail (or warn with --strict), bad input or output, a wtvib bug.
 EXIT_PASS, EXIT_FAIL, EXIT_INPUT, EXIT_INTERNAL = 0, 1, 2, 3
@@ -135,3 +135,27 @@ def reuse_freed_memory() -> None:
         return
     mallopt(-3, 1 << 30)  # M_MMAP_THRESHOLD
     mallopt(-1, (1 << 31) - 1)  # M_TRIM_THRESHOLD (a C int)
+
+
+def main(command: Callable[[], object]) -> NoReturn:
+    """Run the command line ``command`` as a process: the standard streams made safe first
+    (:mod:`wtvib.outputs.streams`), and what is still buffered for the output flushed here,
+    where a full disk is one line and exit 2 rather than Python's "Exception ignored" at
+    exit."""
+    from ..outputs import streams
+
+    streams.guard()
+    reuse_freed_memory()
+    try:
+        command()
+        code: object = 0
+    except SystemExit as exc:
+        code = exc.code
+    try:
+        sys.stdout.flush()
+    except OSError as exc:
+        lost = streams.lost_output(exc) or str(exc)
+        streams.discard_stdout()
+        print(f"error: {lost}", file=sys.stderr)
+        code = EXIT_INPUT
+    raise SystemExit(code)

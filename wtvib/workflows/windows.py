@@ -4,7 +4,7 @@ the tower scaled to put its first bending in one (:mod:`wtvib.studies.design`)."
 from pathlib import Path
 
 from . import ui
-from .batch import Options
+from .options import Options
 
 
 def window(
@@ -62,7 +62,11 @@ def size(
     from .. import audit
     from ..studies import design
 
-    turbine = options.load(spec_file)
+    turbine = options.load(spec_file)  # a mistake in the input first
+    if (target is None) == (target_hz is None):
+        from ..errors import OptionError
+
+        raise OptionError("--target", "give --target WINDOW or --target-hz HZ")
     design.require_sections(turbine)
     goal = target_hz
     if target is not None:
