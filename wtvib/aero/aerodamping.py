@@ -53,7 +53,7 @@ import functools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -65,6 +65,9 @@ from ..rules import HEAVY_DAMPING, NEGATIVE
 from ..spec import Spec
 from ..subsystems import blade
 from . import bem
+
+if TYPE_CHECKING:
+    from ..subsystems.multiblade import Extra, Model, Path
 
 Array = NDArray[np.float64]
 
@@ -309,7 +312,6 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         lift_lag,
         matched,
         parts,
-        perturbed,
     )
 
     if not coupled_model.applies(spec) or spec.rotor.blades < 3:
@@ -326,10 +328,6 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     path = at_speeds(model, sw, speeds, reduced)
     at = {w: i for i, w in enumerate(speeds)}
     where = [at[round(float(om), 12)] for om in sol.omega]  # each point's speed in the path
-    kept = path.kept
-    freq = np.empty((len(sol.omega), kept))
-    zeta = np.empty((len(sol.omega), kept))
-    unresolved = np.zeros((len(sol.omega), kept), dtype=bool)
     part = [parts(model, model.multiblade[0], shapes) for shapes in path.shapes]
     # every operating point's aerodynamic damping and stiffness at once (stacks): the
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
@@ -354,8 +352,43 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         damped = matched(model, points, refs, reduced=path.basis)
     else:  # quasi-steady: the judged damping is the quasi-steady one
         extras, damped = [extra for _, extra in qs_points], steady
-    quasi = np.empty((len(sol.omega), kept))
-    for k, (om, i) in enumerate(zip(sol.omega, where, strict=True)):
+    freq, zeta, unresolved, quasi = _matched_roots(
+        model, path, sol.omega, where, refs, extras, damped, steady, qs_points
+    )
+    assert path.first.damping_ratio is not None
+    return Coupled(
+        tuple(f"system.{n}" for n in sw.names),
+        freq,
+        zeta,
+        np.asarray(path.first.damping_ratio),
+        unresolved,
+        tuple(part[i] for i in where),
+        np.minimum(quasi, 1.0),
+    )
+
+
+def _matched_roots(
+    model: "Model",
+    path: "Path",
+    omega: Array,
+    where: list[int],
+    refs: list[NDArray[np.complex128]],
+    extras: list["Extra"],
+    damped: list[tuple[Array, Array, Array]],
+    steady: list[tuple[Array, Array, Array]],
+    qs_points: list[tuple[float, "Extra"]],
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_], NDArray[np.float64]]:
+    """Each operating point's frequency and damping of every structural mode from its
+    matched damped root, the first-order estimate where none matched (and where), and the
+    quasi-steady damping beside it."""
+    from ..subsystems.multiblade import perturbed
+
+    kept = path.kept
+    freq = np.empty((len(omega), kept))
+    zeta = np.empty((len(omega), kept))
+    unresolved = np.zeros((len(omega), kept), dtype=bool)
+    quasi = np.empty((len(omega), kept))
+    for k, (om, i) in enumerate(zip(omega, where, strict=True)):
         ref, extra = refs[k], extras[k]
         freq[k], zeta[k], score = damped[k]
         _, quasi[k], qs_score = steady[k]
@@ -371,16 +404,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
             zeta[k, poor] = first[poor]
             freq[k, poor] = path.frequency_hz[i][poor]
             unresolved[k] = poor
-    assert path.first.damping_ratio is not None
-    return Coupled(
-        tuple(f"system.{n}" for n in sw.names),
-        freq,
-        zeta,
-        np.asarray(path.first.damping_ratio),
-        unresolved,
-        tuple(part[i] for i in where),
-        np.minimum(quasi, 1.0),
-    )
+    return freq, zeta, unresolved, quasi
 
 
 # ---------------------------------------------------------------------------------------
@@ -602,6 +626,21 @@ def in_operation(
                 replace(m, operating=_operating(sch, aero, structural, source, part, roots, quasi))
             )
         out[sub] = done
+    return out, _notes(spec, cpl, heavy, shift, out, skipped)
+
+
+def _notes(
+    spec: Spec,
+    cpl: Coupled | None,
+    heavy: float,
+    shift: float,
+    out: Mapping[str, list[Mode]],
+    skipped: Mapping[str, list[str]],
+) -> tuple[str, ...]:
+    """What the report says of the damping in operation: the operating points, the
+    aerodynamic model, the coupled modes (``shift``: how far their |λ| departs from the
+    judged curves), where a first-order estimate stood in, the modes left structural."""
+    sch = sections(spec).schedule
     notes = [*sch.assumptions, _statement(spec, sch)]
     lift = (
         "the lift's response lagged by the shed wake (Jones's approximation of Wagner's "
@@ -647,7 +686,7 @@ def in_operation(
             f"No aerodynamic damping for {', '.join(ids)} ({why}): judged with the "
             "structural damping."
         )
-    return out, tuple(notes)
+    return tuple(notes)
 
 
 #: Why a mode has no aerodynamic damping (the report says it, mode by mode).
@@ -772,6 +811,34 @@ class AerodynamicsResults:
     schedule: bem.Schedule
 
 
+def _points(sch: bem.Schedule, cp: Array, ct: Array) -> list[dict[str, Any]]:
+    """The steady operating points as the check's numbers (``aerodynamics.operation``)."""
+    sol = sch.solution
+    return [
+        {
+            "wind_m_s": round(float(v), 4),
+            "rpm": round(float(n), 4),
+            "pitch_deg": round(float(p), 4),
+            "region": reg,
+            "power_kw": round(float(pw) / 1e3, 3),
+            "thrust_kn": round(float(t) / 1e3, 3),
+            "cp": round(float(a), 5),
+            "ct": round(float(b), 5),
+        }
+        for v, n, p, reg, pw, t, a, b in zip(
+            sch.wind,
+            sch.rpm,
+            sch.pitch_deg,
+            sch.region,
+            sol.power,
+            sol.thrust,
+            cp,
+            ct,
+            strict=True,
+        )
+    ]
+
+
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """``aerodynamics.operation`` (the schedule, or that the audit is structural) and
     ``aerodynamics.stability`` (negative total damping of a judged mode anywhere in
@@ -827,29 +894,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         {
             "rated_wind_m_s": round(sch.rated_wind, 4) if sch.rated_wind is not None else None,
             "tip_speed_ratio": round(sch.tip_speed_ratio, 4),
-            "points": [
-                {
-                    "wind_m_s": round(float(v), 4),
-                    "rpm": round(float(n), 4),
-                    "pitch_deg": round(float(p), 4),
-                    "region": reg,
-                    "power_kw": round(float(pw) / 1e3, 3),
-                    "thrust_kn": round(float(t) / 1e3, 3),
-                    "cp": round(float(a), 5),
-                    "ct": round(float(b), 5),
-                }
-                for v, n, p, reg, pw, t, a, b in zip(
-                    sch.wind,
-                    sch.rpm,
-                    sch.pitch_deg,
-                    sch.region,
-                    sol.power,
-                    sol.thrust,
-                    cp,
-                    ct,
-                    strict=True,
-                )
-            ],
+            "points": _points(sch, cp, ct),
         },
     )
     return Analysis(

@@ -268,30 +268,12 @@ def _induction(
     return _balance(phi, s, c, k, kp, a_pos, speed_ratio), a, a_t, cl, cd
 
 
-def solve(
-    r: Rotor, wind: Array, omega: Array, pitch: Array, motion: tuple[float, float] = (0.0, 0.0)
-) -> Solution:
-    """The steady BEM solution at operating points (wind [m/s], Ω [rad/s], pitch [rad]),
-    all stations and points at once; ``motion``: every section moving at (v_n, v_t) [m/s]
-    (downwind, in the direction of rotation), its momentum balance solved in the flow it
-    meets — V − v_n axially, Ωr + v_t in the rotor plane — as AeroDyn's BEMT takes a
-    blade's own velocity into its inflow (the induction in equilibrium with the motion)."""
-    wind = np.asarray(wind, float)
-    omega = np.asarray(omega, float)
-    pitch = np.asarray(pitch, float)
-    if not (
-        np.all(np.isfinite(wind)) and np.all(np.isfinite(omega)) and np.all(np.isfinite(pitch))
-    ):
-        raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
-    shape = (len(wind), len(r.radius))
-    theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
-    axial = wind[:, None] - motion[0]  # the flow each section meets
-    spin = omega[:, None] * r.radius[None, :] + motion[1]
-    lam = np.maximum(spin / axial, 1e-9)
-    lam = np.broadcast_to(lam, shape)
-
-    def res(phi: Array) -> Array:
-        return _residual(r, phi, theta, lam)
+def _root(
+    res: Callable[[Array], Array], shape: tuple[int, int]
+) -> tuple[Array, Array, Array, Array, NDArray[np.bool_]]:
+    """The inflow angle's root of the residual ``res`` at every station and point: the
+    bracket's ends and their residuals after bisection and regula falsi, and where a
+    bracket was found at all."""
 
     # brackets in Ning's order: momentum/windmill (0, π/2], propeller brake [−π/4, 0),
     # then (π/2, π); the next is tried only where no bracket is found yet
@@ -325,6 +307,35 @@ def solve(
         # the end that stays has its residual halved (Illinois), the other moves to x
         lo, r_lo = np.where(same, lo, hi), np.where(same, 0.5 * r_lo, r_hi)
         hi, r_hi = x, r_x
+    return lo, hi, r_lo, r_hi, found
+
+
+def solve(
+    r: Rotor, wind: Array, omega: Array, pitch: Array, motion: tuple[float, float] = (0.0, 0.0)
+) -> Solution:
+    """The steady BEM solution at operating points (wind [m/s], Ω [rad/s], pitch [rad]),
+    all stations and points at once; ``motion``: every section moving at (v_n, v_t) [m/s]
+    (downwind, in the direction of rotation), its momentum balance solved in the flow it
+    meets — V − v_n axially, Ωr + v_t in the rotor plane — as AeroDyn's BEMT takes a
+    blade's own velocity into its inflow (the induction in equilibrium with the motion)."""
+    wind = np.asarray(wind, float)
+    omega = np.asarray(omega, float)
+    pitch = np.asarray(pitch, float)
+    if not (
+        np.all(np.isfinite(wind)) and np.all(np.isfinite(omega)) and np.all(np.isfinite(pitch))
+    ):
+        raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
+    shape = (len(wind), len(r.radius))
+    theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
+    axial = wind[:, None] - motion[0]  # the flow each section meets
+    spin = omega[:, None] * r.radius[None, :] + motion[1]
+    lam = np.maximum(spin / axial, 1e-9)
+    lam = np.broadcast_to(lam, shape)
+
+    def res(phi: Array) -> Array:
+        return _residual(r, phi, theta, lam)
+
+    lo, hi, r_lo, r_hi, found = _root(res, shape)
     phi = np.where(
         found,
         np.where(np.abs(r_hi) <= np.abs(r_lo), hi, lo),

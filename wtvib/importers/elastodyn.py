@@ -268,12 +268,7 @@ def to_spec_data(
     head, breakdown = tower_head(
         main, bl.span, bl.mass, hub_r, n_blades, hub["inertia_kgm2"]["value"]
     )
-    operating = operation(main, servo, fst)
-    if operating.speed is None and not speed_given:
-        raise SpecError(
-            f"{operating.note.removesuffix('.')}; give the operating range with --rpm MIN:MAX",
-            source=str(path),
-        )
+    operating = _operating(main, servo, fst, speed_given)
     from .aerodyn import aerodynamics
 
     aero = aerodynamics(fst, hub_r, operating.control)
@@ -303,14 +298,42 @@ def to_spec_data(
             _files_read(main, [d.path for d in (fst, main, servo) if d is not None], aero),
         ],
     }
+    warnings = list(operating.warnings) + (aero[3] if aero else []) + bl.warnings + tw.warnings
     if beamdyn:
         _beamdyn_coupling(data)
-    control = stc.read(servo if fst is not None else None)
+    _finish(data, servo if fst is not None else None, switches, warnings, below, tw)
+    if aero is not None:
+        _add_aerodynamics(data, aero, operating)
+    return data
+
+
+def _operating(main: Deck, servo: Deck | None, fst: Deck | None, given: bool) -> Operation:
+    """The deck set's operating range and control; a parked deck needs the range ``given``
+    (the command line's --rpm)."""
+    operating = operation(main, servo, fst)
+    if operating.speed is None and not given:
+        raise SpecError(
+            f"{operating.note.removesuffix('.')}; give the operating range with --rpm MIN:MAX",
+            source=str(main.path),
+        )
+    return operating
+
+
+def _finish(
+    data: dict[str, Any],
+    servo: Deck | None,
+    switches: _Switches,
+    warnings: list[str],
+    below: tuple[str, bool] | None,
+    tw: "_TowerOnSupport",
+) -> None:
+    """The deck's structural control (ServoDyn's StC dampers), its degree-of-freedom
+    switches applied, and the warnings and notes of the tower's support put in ``data``."""
+    control = stc.read(servo)
     if control.dampers:
         data["tower"]["dampers"] = control.dampers
     data["assumptions"] += control.notes
-    warnings = list(operating.warnings) + (aero[3] if aero else [])
-    warnings += bl.warnings + tw.warnings + control.warnings
+    warnings = warnings + control.warnings
     _apply(switches, data)
     warnings += data.pop("warnings", [])
     if below is not None and not tw.block:
@@ -319,9 +342,6 @@ def to_spec_data(
         data["warnings"] = warnings
     if tw.torsion is not None:
         data["assumptions"].append(tw.torsion[2])
-    if aero is not None:
-        _add_aerodynamics(data, aero, operating)
-    return data
 
 
 def _turbine_block(main: Deck, path: Path, tip: float, head: dict[str, Any]) -> dict[str, Any]:

@@ -275,6 +275,22 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
     )
 
 
+def _named(kind: str, coord: str, j: int, count: dict[str, int]) -> tuple[str, str]:
+    """The id and words of column ``j`` (0-based) named ``kind`` in ``coord`` by the .amp
+    file: the ``count``-th of its kind (``count`` counts them as they come)."""
+    key = kind if coord in ("fixed", "rotating") else f"{kind}.{coord}"
+    count[key] += 1
+    k = count[key]
+    if kind == "mode":
+        return f"mode{j + 1}", f"HAWCStab2 mode {j + 1}"
+    if coord in ("fixed", "rotating"):
+        # a rotating-frame mode becomes blade.<name>: its kind without the prefix
+        stem = kind.removeprefix("blade.") if coord == "rotating" else kind
+        return f"{stem}{k}", f"{ordinal(k)} {_WORDS[kind]}"
+    how = "symmetric" if coord == "collective" else f"{coord} whirl"
+    return f"{kind}{k}.{coord}", f"{ordinal(k)} {_WORDS[kind]}, {how}"
+
+
 def to_spec_data(
     path: Path, text: str, blades: int | None, given: tuple[float, float] | None = None
 ) -> dict[str, Any]:
@@ -317,19 +333,7 @@ def to_spec_data(
         if ok.size < len(sort):
             partial.append(f"mode {j + 1} ({len(sort) - ok.size} of {len(sort)} points)")
         kind, coord = kinds[j]
-        key = kind if coord in ("fixed", "rotating") else f"{kind}.{coord}"
-        count[key] += 1
-        k = count[key]
-        if kind == "mode":
-            name, words = f"mode{j + 1}", f"HAWCStab2 mode {j + 1}"
-        elif coord in ("fixed", "rotating"):
-            # a rotating-frame mode becomes blade.<name>: its kind without the prefix
-            stem = kind.removeprefix("blade.") if coord == "rotating" else kind
-            name, words = f"{stem}{k}", f"{ordinal(k)} {_WORDS[kind]}"
-        else:
-            name = f"{kind}{k}.{coord}"
-            how = "symmetric" if coord == "collective" else f"{coord} whirl"
-            words = f"{ordinal(k)} {_WORDS[kind]}, {how}"
+        name, words = _named(kind, coord, j, count)
         m: dict[str, Any] = {
             "description": f"{words} (mode {j + 1})",
             "frame": frame,

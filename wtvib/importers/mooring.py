@@ -20,6 +20,7 @@ import functools
 import io
 import math
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -100,6 +101,44 @@ def _section(lines: list[str], title: str) -> tuple[list[str], list[tuple[list[s
     return header, rows
 
 
+def _row(cells: list[str], n: int, width: int, what: str, path: Path) -> list[str]:
+    """A MAP++ table row of at least ``width`` cells (line ``n``)."""
+    if len(cells) < width:
+        raise SpecError(
+            f"a {what} row needs {width} columns, this has {len(cells)}", line=n, source=str(path)
+        )
+    return cells
+
+
+def _line_type(
+    cells: list[str],
+    n: int,
+    number: Callable[[str, int], float],
+    rho: float,
+    g: float,
+    path: Path,
+) -> dict[str, Any]:
+    """A LINE DICTIONARY row as MoorPy's line type (its submerged weight per metre in water
+    of density ``rho`` [kg/m³] under gravity ``g`` [m/s²])."""
+    d, m, ea = (number(c, n) for c in cells[1:4])
+    if not (d > 0 and m > 0 and ea > 0):
+        raise SpecError(
+            "a line type needs a positive Diam, MassDenInAir and EA", line=n, source=str(path)
+        )
+    weight = (m - rho * math.pi / 4 * d**2) * g  # per metre, submerged
+    return {
+        "name": cells[0],
+        "d_vol": d,
+        "m": m,
+        "EA": ea,
+        "w": weight,
+        "MBL": 0.0,
+        "cost": 0.0,
+        "input_d": d,
+        "material": cells[0],
+    }
+
+
 def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
     import moorpy as mp
 
@@ -109,13 +148,7 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
         return -depth if text.lower() == "depth" else finite(text, line, path)
 
     def row(cells: list[str], n: int, width: int, what: str) -> list[str]:
-        if len(cells) < width:
-            raise SpecError(
-                f"a {what} row needs {width} columns, this has {len(cells)}",
-                line=n,
-                source=str(path),
-            )
-        return cells
+        return _row(cells, n, width, what, path)
 
     _, types = _section(lines, "LINE DICTIONARY")
     _, nodes = _section(lines, "NODE PROPERTIES")
@@ -128,23 +161,7 @@ def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
         )
     kinds = {}
     for cells, n in types:
-        d, m, ea = (number(c, n) for c in row(cells, n, 4, "LINE DICTIONARY")[1:4])
-        if not (d > 0 and m > 0 and ea > 0):
-            raise SpecError(
-                "a line type needs a positive Diam, MassDenInAir and EA", line=n, source=str(path)
-            )
-        weight = (m - rho * math.pi / 4 * d**2) * g  # per metre, submerged
-        kinds[cells[0]] = {
-            "name": cells[0],
-            "d_vol": d,
-            "m": m,
-            "EA": ea,
-            "w": weight,
-            "MBL": 0.0,
-            "cost": 0.0,
-            "input_d": d,
-            "material": cells[0],
-        }
+        kinds[cells[0]] = _line_type(row(cells, n, 4, "LINE DICTIONARY"), n, number, rho, g, path)
     angles = [0.0]
     for cells, n in options:
         if cells[0].lower() == "repeat":

@@ -173,15 +173,9 @@ def lin_max_bytes() -> int:
     return max_file_bytes() if os.environ.get("WTVIB_MAX_BYTES") else LIN_MAX_BYTES
 
 
-def read(path: Path) -> LinFile:
-    """One ``.lin`` file: the operating point, the continuous states and A."""
-    if _MODULE_FILE.match(path.name):
-        root = _MODULE_FILE.sub("", path.name)
-        whole = re.sub(r"\.[A-Za-z]+\d*\.lin$", ".lin", path.name, flags=re.IGNORECASE)
-        raise SpecError(
-            f"one module's own linearisation, not the whole system's{root}: give {whole}",
-            source=str(path),
-        )
+def _raw(path: Path) -> tuple[bytes, "re.Match[bytes] | None"]:
+    """The file's bytes up to the end of its state matrix A (read no further), and the
+    match of A's ``A: n x n`` line (None: no such line)."""
     raw = read_bytes(path, max_bytes=lin_max_bytes(), head=True)
     if b"\x00" in raw:
         raise SpecError("binary file, not an OpenFAST linearisation", source=str(path))
@@ -202,6 +196,19 @@ def read(path: Path) -> LinFile:
             "(WTVIB_MAX_BYTES)",
             source=str(path),
         )
+    return raw, marker
+
+
+def read(path: Path) -> LinFile:
+    """One ``.lin`` file: the operating point, the continuous states and A."""
+    if _MODULE_FILE.match(path.name):
+        root = _MODULE_FILE.sub("", path.name)
+        whole = re.sub(r"\.[A-Za-z]+\d*\.lin$", ".lin", path.name, flags=re.IGNORECASE)
+        raise SpecError(
+            f"one module's own linearisation, not the whole system's{root}: give {whole}",
+            source=str(path),
+        )
+    raw, marker = _raw(path)
     head = raw[: marker.start() if marker else len(raw)].decode("utf-8", errors="replace")
     lines = head.splitlines()
 
@@ -1134,6 +1141,21 @@ def to_spec_data(
             "radiation, mooring lines, rigid-body motion): " + "; ".join(left) + "."
         )
     data["warnings"] += growing
+    _notes(data, modes, weakest, uneven)
+    outside = [f for f in read_files if Path(f).parent != (path if path.is_dir() else path.parent)]
+    if outside:
+        data["warnings"].append(f"files read outside the named folder: {', '.join(outside)}")
+    return data
+
+
+def _notes(
+    data: dict[str, Any],
+    modes: dict[str, Any],
+    weakest: tuple[float, str, float] | None,
+    uneven: list[str],
+) -> None:
+    """What the spec says of its modes: the mixed ones, the curve followed with the weakest
+    MAC, azimuths too few for MBC3."""
     mixed = sorted({n for n, m in modes.items() if m["description"].startswith("mixed")})
     if mixed:
         data["assumptions"].append(
@@ -1151,10 +1173,6 @@ def to_spec_data(
             f"terms out (OpenFAST's NLinTimes, at least 3, evenly spaced): {', '.join(uneven)}"
             " — the modes there keep some of them"
         )
-    outside = [f for f in read_files if Path(f).parent != (path if path.is_dir() else path.parent)]
-    if outside:
-        data["warnings"].append(f"files read outside the named folder: {', '.join(outside)}")
-    return data
 
 
 def _name(path: Path, groups: dict[str, list[Path]], titles: list[str]) -> str:

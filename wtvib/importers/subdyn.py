@@ -393,6 +393,32 @@ def _member_mass(
     return np.asarray(inside * (added + grown + filled))
 
 
+def _joints_and_properties(
+    joints: Table, props: Table
+) -> tuple[dict[int, tuple[float, float, float]], dict[int, tuple[float, float]]]:
+    """HydroDyn's joint positions (x, y, z) [m] and member property sets (D, t) [m], by id."""
+    xyz = dict(
+        zip(
+            joints.ids("JointID"),
+            zip(
+                joints.numbers("Jointxi"),
+                joints.numbers("Jointyi"),
+                joints.numbers("Jointzi"),
+                strict=True,
+            ),
+            strict=True,
+        )
+    )
+    prop = dict(
+        zip(
+            props.ids("PropSetID"),
+            zip(props.numbers("PropD"), props.numbers("PropThck"), strict=True),
+            strict=True,
+        )
+    )
+    return xyz, prop
+
+
 def water(fst: Deck, pile: Monopile) -> Water | str:
     """HydroDyn's added mass, filled-member water and marine growth along the pile, or
     why there is none (a sentence for the assumptions)."""
@@ -415,25 +441,7 @@ def water(fst: Deck, pile: Monopile) -> Water | str:
     props = counted(hd, text, ("NPropSets", "NPropSetsCyl"), "PropD")
     if joints is None or members is None or props is None or not members.rows:
         return f"HydroDyn ({hd.path.name}) has no Morison members: no added mass"
-    xyz = dict(
-        zip(
-            joints.ids("JointID"),
-            zip(
-                joints.numbers("Jointxi"),
-                joints.numbers("Jointyi"),
-                joints.numbers("Jointzi"),
-                strict=True,
-            ),
-            strict=True,
-        )
-    )
-    prop = dict(
-        zip(
-            props.ids("PropSetID"),
-            zip(props.numbers("PropD"), props.numbers("PropThck"), strict=True),
-            strict=True,
-        )
-    )
+    xyz, prop = _joints_and_properties(joints, props)
     ca = _coefficients(hd, text)
     kinds = members.numbers("MCoefMod") if members.has("MCoefMod") else None
     fills = _fills(hd, text, rho)

@@ -599,18 +599,7 @@ class _Reader:
                 if mudline - mz[0] > 1e-6
                 else None
             )
-            keep = mz >= mudline - 1e-9
-            if mudline not in mz:
-                cut = np.interp(mudline, mz, np.arange(len(mz)))
-                i = int(cut)
-                frac = cut - i
-                mdia_m = mdia[i] + frac * (mdia[i + 1] - mdia[i])
-                mt_m = mt[i] + frac * (mt[i + 1] - mt[i])
-                mz = np.concatenate([[mudline], mz[keep]])
-                mdia = np.concatenate([[mdia_m], mdia[keep]])
-                mt = np.concatenate([[mt_m], mt[keep]])
-            else:
-                mz, mdia, mt = mz[keep], mdia[keep], mt[keep]
+            mz, mdia, mt = _above(mudline, mz, mdia, mt)
             upper = z > mz[-1] + 1e-9
             z = np.concatenate([mz, z[upper]])
             dia = np.concatenate([mdia, dia[upper]])
@@ -939,3 +928,23 @@ def _first(value: Any) -> Any:
 
 def _list(a: np.ndarray) -> list[float]:
     return [float(f"{v:.10g}") for v in np.asarray(a, float)]
+
+
+def _above(
+    mudline: float, z: np.ndarray, dia: np.ndarray, t: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A pile's stations (heights, diameters, walls) from the mudline up: a station added
+    at the mudline where it falls between two, its diameter and wall interpolated."""
+    keep = z >= mudline - 1e-9
+    if mudline in z:
+        return z[keep], dia[keep], t[keep]
+    cut = np.interp(mudline, z, np.arange(len(z)))
+    i = int(cut)
+    frac = cut - i
+    dia_m = dia[i] + frac * (dia[i + 1] - dia[i])
+    t_m = t[i] + frac * (t[i + 1] - t[i])
+    return (
+        np.concatenate([[mudline], z[keep]]),
+        np.concatenate([[dia_m], dia[keep]]),
+        np.concatenate([[t_m], t[keep]]),
+    )

@@ -181,18 +181,9 @@ def _judge(
             k: (v if k == "start-up" or STATUS_ORDER[v] >= STATUS_ORDER["warn"] else "warn")
             for k, v in regime_status.items()
         }
-    hit = [name for name in regime_status if violations[name]]
-    status = worst([regime_status[name] for name in hit])
-    # The governing regime: the first (most steady) one whose status is the worst.
-    regime = next((n for n in hit if regime_status[n] == status), None)
-    if status == "pass":
-        regime = None
+    status, regime = _governing(regime_status, violations)
 
-    w = np.array([speed])
-    f_e = float(exc.frequency_hz(w)[0])
-    f_n = float(mode.frequency_at(w)[0])
-    zeta = mode.damping_at(speed, default_damping)
-    daf = float(dynamic_amplification(f_e / f_n, max(zeta, 0.0))) if f_n > 0 else float("inf")
+    f_e, f_n, zeta, daf = _amplification(mode, exc, speed, default_damping)
     return Finding(
         mode,
         exc,
@@ -219,6 +210,30 @@ def _judge(
             for c in crossings
         ),
     )
+
+
+def _amplification(
+    mode: Mode, exc: Excitation, speed: float, default_damping: float
+) -> tuple[float, float, float, float]:
+    """At rotor speed ``speed`` [rad/s]: the line's and the mode's frequencies [Hz], the
+    mode's damping ratio there and the dynamic amplification factor."""
+    w = np.array([speed])
+    f_e = float(exc.frequency_hz(w)[0])
+    f_n = float(mode.frequency_at(w)[0])
+    zeta = mode.damping_at(speed, default_damping)
+    daf = float(dynamic_amplification(f_e / f_n, max(zeta, 0.0))) if f_n > 0 else float("inf")
+    return f_e, f_n, zeta, daf
+
+
+def _governing(
+    regime_status: Mapping[str, Status], violations: Mapping[str, tuple[Interval, ...]]
+) -> tuple[Status, str | None]:
+    """The worst status of the regimes the line violates the margin in, and the governing
+    regime: the first (most steady) one with that status (None where it passes)."""
+    hit = [name for name in regime_status if violations[name]]
+    status = worst([regime_status[name] for name in hit])
+    regime = next((n for n in hit if regime_status[n] == status), None)
+    return status, (None if status == "pass" else regime)
 
 
 def _regime_statuses(
@@ -763,47 +778,7 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
             f"(ζ = {f.damping_met:.2f}{where}): no resonant peak, info"
         )
     if f.regime == "steady":
-        text = f"{name} within the margin of {exc} in steady operation at {spans}: "
-        text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
-        if f.damping_in_operation:
-            text += f" (ζ = {f.damping:.3f} {_damped_by(f)})"
-        if f.damping_met < -NEGATIVE:
-            text += (
-                "; negatively damped where the line meets it — an unstable mode amplifies "
-                "any excitation, whatever its energy"
-            )
-        blades = f.excitation.blades
-        dominant = f"the dominant 1P and {blades}P" if blades else "the dominant lines"
-        told = f" ({f.status})" if f.status in ("info", "pass") else ""
-        if f.driven_by and blades and round(f.excitation.order) % blades:
-            text += (
-                "; reaches the rotor modes only through rotor asymmetry (not a multiple of "
-                f"{blades}P): a low-energy excitation beside {dominant}{told}"
-            )
-        elif f.energy == "minor":
-            text += (
-                f"; a low-energy harmonic, little excitation energy beside {dominant} (Hau "
-                f"7.2.2){told}"
-                if f.excitation.blades is not None
-                else f"; a low-energy line ({f.excitation.description}){told}"
-            )
-        elif f.energy == "secondary":
-            dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
-            text += (
-                "; a secondary harmonic at the rated speed: resonant in practice (WKA-60, "
-                "Hau 7.5.2)"
-                if dwelt
-                else "; a secondary harmonic swept in partial load, not at rated speed: milder"
-            )
-        if f.mode.status_cap is not None and f.status == f.mode.status_cap:
-            text += (
-                f"; at most a {f.mode.status_cap}: this mode's damping (a floating platform's "
-                "radiation and viscous damping) is beyond wtvib's model, which takes the "
-                "structure's alone"
-            )
-        if op.variable and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:  # (info: no need)
-            text += f"; exclude {spans} to clear it"
-        return text
+        return _steady_message(f, op, name, exc, spans, need)
     if f.regime == "quick-pass":
         return (
             f"{name} within the margin of {exc} only inside the quick-pass band at {spans}: "
@@ -818,6 +793,52 @@ def _message(f: Finding, op: OperatingRange, rule: MarginRule) -> str:
         f"{name} is crossed by {exc} during start-up/shut-down at {spans} "
         f"(below {_rpm(op.lowest)}): passed quickly, not a steady resonance"
     )
+
+
+def _steady_message(
+    f: Finding, op: OperatingRange, name: str, exc: str, spans: str, need: str
+) -> str:
+    """A resonance in steady operation in words: separation, DAF and damping there, and
+    why its status is what it is (the line's energy, the mode's cap), what clears it."""
+    text = f"{name} within the margin of {exc} in steady operation at {spans}: "
+    text += f"separation {f.margin:.1%} ({need}), DAF {f.daf:.3g}"
+    if f.damping_in_operation:
+        text += f" (ζ = {f.damping:.3f} {_damped_by(f)})"
+    if f.damping_met < -NEGATIVE:
+        text += (
+            "; negatively damped where the line meets it — an unstable mode amplifies "
+            "any excitation, whatever its energy"
+        )
+    blades = f.excitation.blades
+    dominant = f"the dominant 1P and {blades}P" if blades else "the dominant lines"
+    told = f" ({f.status})" if f.status in ("info", "pass") else ""
+    if f.driven_by and blades and round(f.excitation.order) % blades:
+        text += (
+            "; reaches the rotor modes only through rotor asymmetry (not a multiple of "
+            f"{blades}P): a low-energy excitation beside {dominant}{told}"
+        )
+    elif f.energy == "minor":
+        text += (
+            f"; a low-energy harmonic, little excitation energy beside {dominant} (Hau 7.2.2){told}"
+            if f.excitation.blades is not None
+            else f"; a low-energy line ({f.excitation.description}){told}"
+        )
+    elif f.energy == "secondary":
+        dwelt = any(a <= w <= b for w in op.dwell for a, b in f.violations["steady"])
+        text += (
+            "; a secondary harmonic at the rated speed: resonant in practice (WKA-60, Hau 7.5.2)"
+            if dwelt
+            else "; a secondary harmonic swept in partial load, not at rated speed: milder"
+        )
+    if f.mode.status_cap is not None and f.status == f.mode.status_cap:
+        text += (
+            f"; at most a {f.mode.status_cap}: this mode's damping (a floating platform's "
+            "radiation and viscous damping) is beyond wtvib's model, which takes the "
+            "structure's alone"
+        )
+    if op.variable and STATUS_ORDER[f.status] >= STATUS_ORDER["warn"]:  # (info: no need)
+        text += f"; exclude {spans} to clear it"
+    return text
 
 
 def _damped_by(f: Finding) -> str:

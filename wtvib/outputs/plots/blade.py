@@ -4,6 +4,7 @@
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ...aero import aeroelastic, stall
 from ...audit import Report
@@ -11,6 +12,7 @@ from . import headline
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, plain_decades, title_height
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
 
@@ -79,6 +81,44 @@ def flutter_plot(report: Report) -> "Figure | None":
     return fig
 
 
+def _limits(
+    ax: "Axes",
+    x: NDArray[np.float64],
+    flutter_k: NDArray[np.float64],
+    divergence_k: float,
+    bottom: float,
+) -> None:
+    """The flutter region below its limit (k_θ [kN·m/rad per m] at each offset ``x`` [%
+    chord]) and the divergence region below its limit."""
+    ax.fill_between(
+        x,
+        bottom,
+        np.where(np.isfinite(flutter_k), flutter_k, bottom),
+        where=np.isfinite(flutter_k).tolist(),
+        color="#e53935",
+        alpha=0.18,
+        lw=0,
+        label="flutter",
+    )
+    ax.plot(x, flutter_k, color="#c62828", lw=2, label="flutter limit")
+    if divergence_k > 0:
+        ax.axhspan(
+            bottom,
+            divergence_k,
+            color="#fb8c00",
+            alpha=0.15,
+            lw=0,
+            label="divergence",
+        )
+        ax.axhline(
+            divergence_k,
+            color="#ef6c00",
+            lw=2,
+            ls="--",
+            label="divergence limit",
+        )
+
+
 def stability_chart_plot(report: Report) -> "Figure | None":
     """Hau Fig. 7.6 for the blade section nearest to flutter: torsional stiffness against the
     centre-of-mass offset, divergence and flutter limits at the required speed, the blade."""
@@ -110,33 +150,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
         chart.blade_k_theta * kilo,
     )
     bottom = 0.1 * min(chart.blade_k_theta * kilo, chart.divergence_k_theta * kilo or top)
-    ax.fill_between(
-        x,
-        bottom,
-        np.where(np.isfinite(flutter_k), flutter_k, bottom),
-        where=np.isfinite(flutter_k).tolist(),
-        color="#e53935",
-        alpha=0.18,
-        lw=0,
-        label="flutter",
-    )
-    ax.plot(x, flutter_k, color="#c62828", lw=2, label="flutter limit")
-    if chart.divergence_k_theta > 0:
-        ax.axhspan(
-            bottom,
-            chart.divergence_k_theta * kilo,
-            color="#fb8c00",
-            alpha=0.15,
-            lw=0,
-            label="divergence",
-        )
-        ax.axhline(
-            chart.divergence_k_theta * kilo,
-            color="#ef6c00",
-            lw=2,
-            ls="--",
-            label="divergence limit",
-        )
+    _limits(ax, x, flutter_k, chart.divergence_k_theta * kilo, bottom)
     ax.plot(
         100 * chart.blade_offset_chord,
         chart.blade_k_theta * kilo,

@@ -38,6 +38,7 @@ FIGURE_IN = (MAX_FIGURE_IN, 5.6)
 TITLE_PT = 12
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
     from ...studies.design import Band
@@ -531,6 +532,37 @@ def windows_plot(report: Report, tower_windows: "Sequence[Band]") -> "Figure":
     return fig
 
 
+def _damping_axes(ax: "Axes", rated_wind: float | None) -> None:
+    """A damping chart's scale and marks: ζ on a symmetric log scale, the rated wind, the
+    unstable region below zero and the 1 % line."""
+    ax.set_yscale("symlog", linthresh=0.1)
+    plain_decades(ax.yaxis)
+    if rated_wind is not None:
+        ax.axvline(rated_wind, color="#616161", lw=0.8, ls="--")
+        ax.annotate(
+            f"rated {rated_wind:.3g} m/s",
+            (rated_wind, 0.99),
+            xycoords=("data", "axes fraction"),
+            xytext=(3, -3),
+            textcoords="offset points",
+            va="top",
+            fontsize=8,
+            color="#616161",
+        )
+    ax.axhspan(-100, 0, color="#ffcdd2", alpha=0.6, lw=0)
+    ax.axhline(0, color="#c62828", lw=1.0)
+    ax.axhline(1, color="#ef6c00", lw=0.8, ls=":")
+    ax.annotate(
+        "1 %",
+        (0.995, 1),
+        xycoords=("axes fraction", "data"),
+        ha="right",
+        va="bottom",
+        fontsize=8,
+        color="#ef6c00",
+    )
+
+
 def damping_plot(report: Report) -> "Figure | None":
     """The damping of every judged mode in operation (aerodynamic + structural) over the
     wind, as the aeroelastic solution gave it; None without aerodynamics."""
@@ -564,34 +596,8 @@ def damping_plot(report: Report) -> "Figure | None":
             marker="o" if tool else None,
             ms=4,
         )
-    ax.set_yscale("symlog", linthresh=0.1)
-    plain_decades(ax.yaxis)
     aero = report.result(aerodamping.NAME, aerodamping.AerodynamicsResults)
-    schedule = aero.schedule if aero is not None else None
-    if schedule is not None and schedule.rated_wind is not None:
-        ax.axvline(schedule.rated_wind, color="#616161", lw=0.8, ls="--")
-        ax.annotate(
-            f"rated {schedule.rated_wind:.3g} m/s",
-            (schedule.rated_wind, 0.99),
-            xycoords=("data", "axes fraction"),
-            xytext=(3, -3),
-            textcoords="offset points",
-            va="top",
-            fontsize=8,
-            color="#616161",
-        )
-    ax.axhspan(-100, 0, color="#ffcdd2", alpha=0.6, lw=0)
-    ax.axhline(0, color="#c62828", lw=1.0)
-    ax.axhline(1, color="#ef6c00", lw=0.8, ls=":")
-    ax.annotate(
-        "1 %",
-        (0.995, 1),
-        xycoords=("axes fraction", "data"),
-        ha="right",
-        va="bottom",
-        fontsize=8,
-        color="#ef6c00",
-    )
+    _damping_axes(ax, aero.schedule.rated_wind if aero is not None else None)
     low = min(100 * min(m.operating.total) for m in modes)  # type: ignore[union-attr]
     ax.set_ylim(min(-0.2, low * 1.3), 150)
     ax.set_xlabel("rotor speed [rpm]" if tool else "wind speed [m/s]")
