@@ -58,3 +58,48 @@ def test_the_schema_command_prints_the_report_schema():
     result = CliRunner().invoke(app, ["schema", "--report"])
     assert result.exit_code == 0
     assert json.loads(result.stdout)["properties"]["schema"]["const"] == "wtvib-report/1"
+
+
+def test_the_typed_document_declares_what_the_contract_describes():
+    """The typed report (wtvib.document) and the JSON contract (wtvib.workflows.contract)
+    name the same keys: the report's, a mode's, a check's required keys and every number a
+    check may carry — a key added to one and not the other fails here."""
+    from typing import get_type_hints
+
+    from wtvib import document
+    from wtvib.workflows import contract
+
+    schema = contract.report_schema()
+    report = get_type_hints(document.ReportDoc)
+    assert set(report) == set(schema["properties"])
+    assert document.ReportDoc.__required_keys__ == set(schema["required"])
+    assert set(get_type_hints(document.ModeDoc)) == set(contract._MODE["properties"])
+    assert document.ModeDoc.__required_keys__ == set(contract._MODE["required"])
+    check = document.CheckDoc
+    assert check.__required_keys__ == set(contract._CHECK["required"])
+    assert check.__optional_keys__ == set(contract.CHECK_NUMBERS)
+
+
+def test_a_report_is_its_typed_document():
+    """Every key the catalogue's reports write is one the typed document declares, at
+    every level a consumer reads (report, turbine, operation, rule, modes, checks,
+    Campbell curves)."""
+    from typing import get_type_hints
+
+    from wtvib import document
+
+    declared = {name: set(get_type_hints(kind)) for name, kind in (
+        ("report", document.ReportDoc), ("turbine", document.TurbineDoc),
+        ("operation", document.OperationDoc), ("rule", document.RuleSettingsDoc),
+        ("mode", document.ModeDoc), ("check", document.CheckDoc),
+        ("campbell", document.CampbellDoc), ("curve", document.CampbellModeDoc),
+    )}  # fmt: skip
+    for path in sorted(TURBINES.glob("*.yaml")):
+        doc = audit.run(spec.load(path)).to_dict()
+        assert set(doc) <= declared["report"], path.name
+        for key in ("turbine", "operation", "rule", "campbell"):
+            assert set(doc[key]) <= declared[key], (path.name, key)
+        assert all(set(m) <= declared["mode"] for m in doc["modes"]), path.name
+        assert all(set(c) <= declared["check"] for c in doc["checks"]), path.name
+        curves = doc["campbell"]["modes"].values()
+        assert all(set(c) <= declared["curve"] for c in curves), path.name

@@ -4,11 +4,19 @@ import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 import numpy as np
 
 from .aero import aerodamping, aeroelastic, stall, tuned_damper
+from .document import (
+    InputDoc,
+    OperationDoc,
+    ReportDoc,
+    RuleSettingsDoc,
+    TurbineDoc,
+    UncertaintyDoc,
+)
 from .errors import SpecError
 from .judge import campbell
 from .judge.analysis import Analysis, Context, Damping, Modifier, Subsystem
@@ -18,7 +26,7 @@ from .judge.resonance import marks as resonance_marks
 from .numerics.modal import ModalError
 from .results import Check, Mode, Sampled, Southwell
 from .rules import MarginRule, Status, worst
-from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, Spec
+from .spec import DEFAULT_OVERSPEED_FACTOR, AuditSettings, RotorSpeed, Spec
 from .studies import scaling
 from .subsystems import blade, coupled, drivetrain, polynomials, rotor, tower, yaw
 from .subsystems.tower import is_platform_mode
@@ -60,7 +68,7 @@ class Report:
     findings: tuple[Finding, ...] = field(default_factory=tuple)
     assumptions: tuple[str, ...] = field(default_factory=tuple)
     warnings: tuple[str, ...] = field(default_factory=tuple)
-    uncertainty: dict[str, Any] | None = None
+    uncertainty: UncertaintyDoc | None = None
     results: Mapping[str, object] = field(default_factory=dict)  # by subsystem (typed)
 
     def result(self, subsystem: str, kind: type[R]) -> R | None:
@@ -122,12 +130,11 @@ class Report:
             return "imported"
         return "aeroelastic" if damped else "structural"
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> ReportDoc:
         """The JSON contract: every number finite — one that is not is written as null and
         named in ``warnings`` (strict JSON has no NaN or Infinity)."""
-        doc = self._document()
         nonfinite: list[str] = []
-        doc = _finite(doc, "", nonfinite)
+        doc: ReportDoc = _finite(self._document(), "", nonfinite)
         if nonfinite:
             doc["warnings"] = [
                 *doc["warnings"],
@@ -135,71 +142,84 @@ class Report:
                 + ", ".join(nonfinite[:20])
                 + (f" and {len(nonfinite) - 20} more" if len(nonfinite) > 20 else ""),
             ]
-        out: dict[str, Any] = doc
-        return out
+        return doc
 
-    def _document(self) -> dict[str, Any]:
+    def _document(self) -> ReportDoc:
         spec = self.spec
-        speed = spec.rotor.speed
         rule = self.rule
         from . import __version__
 
-        return {
+        rules: RuleSettingsDoc = {
+            "kind": rule.kind,
+            "margin": rule.margin,
+            "preset": rule.preset,
+            "source": rule.source,
+            "harmonics": self.settings.harmonics,
+            "severity": self.settings.severities(),
+        }
+        doc: dict[str, Any] = {  # in the contract's order, optional keys in their place
             "schema": REPORT_SCHEMA,
             "produced_by": {
                 "tool": "wtvib",
                 "version": __version__,
                 "input": {"file": spec.source_file, "sha256": spec.source_sha256},
             },
-            "turbine": {
-                "name": spec.turbine.name,
-                "source_file": spec.source_file,
-                **spec.turbine.model_dump(exclude={"name"}, exclude_none=True),
-                "blades": spec.rotor.blades,
-                "orientation": spec.rotor.orientation,
-                "hub": spec.rotor.hub,
-            },
+            "turbine": _turbine(spec),
             "verdict": self.verdict,
             "tower_class": self.tower_class,
-            "operation": {
-                **({"parked": True} if speed.parked else {}),
-                "steady_rpm": [list(p) for p in speed.steady_rpm],
-                "variable_speed": speed.fixed_rpm is None,
-                "overspeed_rpm": round(speed.overspeed, 6),
-                "quick_pass_rpm": [list(p) for p in speed.quick_pass_rpm],
-                **({"source": speed.source} if speed.source else {}),
-            },
-            "rule": {
-                "kind": rule.kind,
-                "margin": rule.margin,
-                "preset": rule.preset,
-                "source": rule.source,
-                "harmonics": self.settings.harmonics,
-                "severity": self.settings.severities(),
-            },
+            "operation": _operation(spec.rotor.speed),
+            "rule": rules,
             "damping": self.damping_model,
             "aerodynamics": spec.aerodynamics is not None,
-            **(
-                {"results": {"tool": spec.results.tool, "files": list(spec.results.files)}}
-                if spec.results is not None
-                else {}
-            ),
-            "modes": [m.to_dict() for m in self.modes],
-            "campbell": self.campbell.to_dict(),
-            "checks": [c.to_dict() for c in self.checks],
-            "assumptions": list(self.assumptions),
-            "warnings": list(self.warnings),
-            **({"uncertainty": self.uncertainty} if self.uncertainty is not None else {}),
-            "inputs": {
-                path: {
-                    "value": q.value,
-                    "provenance": q.provenance,
-                    "source": spec.sources.get(q.source, q.source) if q.source else None,
-                    **({"note": q.note} if q.note else {}),
-                }
-                for path, q in sorted(spec.provenance.items())
-            },
         }
+        if spec.results is not None:
+            doc["results"] = {"tool": spec.results.tool, "files": list(spec.results.files)}
+        doc["modes"] = [m.to_dict() for m in self.modes]
+        doc["campbell"] = self.campbell.to_dict()
+        doc["checks"] = [c.to_dict() for c in self.checks]
+        doc["assumptions"] = list(self.assumptions)
+        doc["warnings"] = list(self.warnings)
+        if self.uncertainty is not None:
+            doc["uncertainty"] = self.uncertainty
+        doc["inputs"] = _inputs(spec)
+        return cast(ReportDoc, doc)
+
+
+def _turbine(spec: Spec) -> TurbineDoc:
+    """The report's turbine: its name, the spec's identification, the rotor's layout."""
+    given = spec.turbine.model_dump(exclude={"name"}, exclude_none=True)
+    rotor = {"blades": spec.rotor.blades, "orientation": spec.rotor.orientation}
+    doc = {"name": spec.turbine.name, "source_file": spec.source_file, **given, **rotor}
+    return cast(TurbineDoc, {**doc, "hub": spec.rotor.hub})
+
+
+def _operation(speed: RotorSpeed) -> OperationDoc:
+    """The report's operating range (rpm)."""
+    doc: OperationDoc = {
+        "steady_rpm": [list(p) for p in speed.steady_rpm],
+        "variable_speed": speed.fixed_rpm is None,
+        "overspeed_rpm": round(speed.overspeed, 6),
+        "quick_pass_rpm": [list(p) for p in speed.quick_pass_rpm],
+    }
+    if speed.parked:  # first, as the contract has it
+        doc = {"parked": True, **doc}
+    if speed.source:
+        doc["source"] = speed.source
+    return doc
+
+
+def _inputs(spec: Spec) -> dict[str, InputDoc]:
+    """Every input of the spec with its value, provenance and source, by field path."""
+    out: dict[str, InputDoc] = {}
+    for path, q in sorted(spec.provenance.items()):
+        out[path] = {
+            "value": q.value,
+            "provenance": q.provenance,
+            "source": spec.sources.get(q.source, q.source) if q.source else None,
+        }
+        if q.note:
+            out[path]["note"] = q.note
+    return out
 
 
 def _finite(value: Any, path: str, bad: list[str]) -> Any:
@@ -383,7 +403,7 @@ def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
     return [uncertainty.NO_TOLERANCE] if samples and not uncertainty.uncertain(spec) else []
 
 
-def _uncertainty_warnings(spread: dict[str, Any] | None) -> list[str]:
+def _uncertainty_warnings(spread: UncertaintyDoc | None) -> list[str]:
     from .studies import uncertainty
 
     return uncertainty.warnings_of(spread) if spread else []
@@ -391,7 +411,7 @@ def _uncertainty_warnings(spread: dict[str, Any] | None) -> list[str]:
 
 def _uncertainty(
     spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule, client: Any = None
-) -> dict[str, Any] | None:
+) -> UncertaintyDoc | None:
     from .studies import uncertainty
 
     if not uncertainty.uncertain(spec):
@@ -405,7 +425,7 @@ def _uncertainty(
     out = uncertainty.summary(spec, drawn, modes, rule)
     out["seed"] = seed
     out["sensitivities"] = uncertainty.sensitivities(spec, nominal)
-    return out
+    return cast(UncertaintyDoc, out)
 
 
 def _assert_finite(modes: list[Mode]) -> None:

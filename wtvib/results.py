@@ -4,11 +4,12 @@ import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .document import CheckDoc, ModeDoc, OperatingDoc, RuleDoc
 from .rules import Status
 
 
@@ -197,37 +198,33 @@ class Mode:
             return np.full_like(w, self.frequency_hz)
         return np.asarray(self.curve(w), dtype=float)
 
-    def to_dict(self) -> dict[str, Any]:
-        return {
+    def to_dict(self) -> ModeDoc:
+        doc: ModeDoc = {
             "id": self.id,
             "subsystem": self.subsystem,
             "description": self.description,
             "frequency_hz": round(self.frequency_hz, 6),
             "damping_ratio": self.damping_ratio,
             "speed_dependent": self.curve is not None,
-            **({"regimes": sorted(self.regimes)} if self.regimes is not None else {}),
-            **({"condition": self.condition} if self.condition is not None else {}),
-            **({"superseded_by": self.superseded_by} if self.superseded_by else {}),
-            **({"damping_source": self.damping_source} if self.damping_source else {}),
-            **({"damping_in_operation": self._operating()} if self.operating else {}),
-            **(
-                {"band_hz": [round(self.band_hz[0], 6), round(self.band_hz[1], 6)]}
-                if self.band_hz is not None
-                else {}
-            ),
-            **(
-                {
-                    "whirl": {
-                        "rpm": [round(w * 30 / np.pi, 4) for w in self.whirl.omega],
-                        "labels": list(self.whirl.labels),
-                    }
-                }
-                if self.whirl is not None
-                else {}
-            ),
         }
+        if self.regimes is not None:
+            doc["regimes"] = sorted(self.regimes)
+        if self.condition is not None:
+            doc["condition"] = self.condition
+        if self.superseded_by:
+            doc["superseded_by"] = self.superseded_by
+        if self.damping_source:
+            doc["damping_source"] = self.damping_source
+        if self.operating:
+            doc["damping_in_operation"] = self._operating()
+        if self.band_hz is not None:
+            doc["band_hz"] = [round(self.band_hz[0], 6), round(self.band_hz[1], 6)]
+        if self.whirl is not None:
+            rpm = [round(w * 30 / np.pi, 4) for w in self.whirl.omega]
+            doc["whirl"] = {"rpm": rpm, "labels": list(self.whirl.labels)}
+        return doc
 
-    def _operating(self) -> dict[str, Any]:
+    def _operating(self) -> OperatingDoc:
         op = self.operating
         assert op is not None
         i = op.lowest
@@ -255,7 +252,7 @@ class Rule:
     name: str
     source: str
 
-    def to_dict(self) -> dict[str, str]:
+    def to_dict(self) -> RuleDoc:
         return {"name": self.name, "source": self.source}
 
 
@@ -270,8 +267,8 @@ class Check:
     rule: Rule
     numbers: dict[str, Any] = field(default_factory=dict)
 
-    def to_dict(self) -> dict[str, Any]:
-        return {
+    def to_dict(self) -> CheckDoc:
+        doc = {
             "id": self.id,
             "subsystem": self.subsystem,
             "status": self.status,
@@ -279,6 +276,7 @@ class Check:
             "rule": self.rule.to_dict(),
             **self.numbers,
         }
+        return cast(CheckDoc, doc)  # the numbers' keys: CheckDoc's optional fields
 
 
 def ordinal(k: int) -> str:

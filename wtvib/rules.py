@@ -22,7 +22,7 @@ References
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -154,13 +154,17 @@ def dynamic_amplification(eta: ArrayLike, zeta: float) -> NDArray[np.float64]:
         return np.asarray(1.0 / np.sqrt((1.0 - e**2) ** 2 + (2.0 * zeta * e) ** 2))
 
 
-def worst_check(checks: Sequence[Mapping[str, Any]]) -> Mapping[str, Any] | None:
+#: A check as a document (:class:`wtvib.document.CheckDoc`, a batch row's dictionary).
+C = TypeVar("C", bound=Mapping[str, object])
+
+
+def worst_check(checks: Sequence[C]) -> C | None:
     """The check that decided the verdict: the most severe warn or fail, among equals the one
     with the least margin; None when every check passed (an info row decides nothing)."""
 
-    def severity(c: Mapping[str, Any]) -> tuple[int, float]:
-        margin = c.get("margin")
-        return STATUS_ORDER[c["status"]], -margin if margin is not None else -math.inf
+    def severity(c: C) -> tuple[int, float]:
+        margin: Any = c.get("margin")
+        return STATUS_ORDER[str(c["status"])], -margin if margin is not None else -math.inf
 
     deciding = [c for c in checks if c["status"] in ("warn", "fail")]
     return max(deciding, key=severity, default=None)

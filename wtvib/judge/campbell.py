@@ -8,10 +8,11 @@ ones (the mode's curve), so each id has one frequency everywhere in the report.
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
+from ..document import CampbellDoc
 from ..results import Mode
 from .excitation import OperatingRange
 
@@ -37,7 +38,7 @@ class Campbell:
     #: lift), for comparison; modes in operation
     quasi_steady: dict[str, tuple[float, ...]] = field(default_factory=dict)
 
-    def to_dict(self) -> dict[str, Any]:
+    def to_dict(self) -> CampbellDoc:
         out: dict[str, Any] = {
             "damping": "in operation (aerodynamic + structural)" if self.wind else "structural",
             "rpm": [round(v, 4) for v in self.rpm],
@@ -63,7 +64,7 @@ class Campbell:
             }
             for mid, (f, z) in self.modes.items()
         }
-        return out
+        return cast(CampbellDoc, out)  # the optional keys where they apply
 
     def _roots(self, mid: str) -> dict[str, Any]:
         if mid not in self.roots:

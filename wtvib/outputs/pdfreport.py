@@ -15,6 +15,14 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from .. import __version__
+from ..document import (
+    CheckDoc,
+    ModeDoc,
+    ReportDoc,
+    RuleDoc,
+    RuleSettingsDoc,
+    UncertaintyDoc,
+)
 from . import png, words
 
 STATUS_HEX = {
@@ -179,7 +187,7 @@ MAX_TEXT = 2000
 
 
 def build(
-    entries: Sequence[tuple[dict[str, Any], dict[str, bytes]]],
+    entries: Sequence[tuple[ReportDoc, dict[str, bytes]]],
     *,
     errors: Sequence[tuple[str, str, str]] = (),
     title: str = "wtvib vibration audit",
@@ -293,7 +301,7 @@ def _outlined(template: type) -> type:
     return Outlined
 
 
-def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
+def _turbine(k: _Kit, r: ReportDoc, pngs: dict[str, bytes]) -> list[Any]:
     """One turbine's pages: who it is and the verdict, its warnings, the summary of checks,
     a section a subsystem (modes, figures, checks), the uncertainty study, the inputs and
     the assumptions."""
@@ -312,7 +320,7 @@ def _turbine(k: _Kit, r: dict[str, Any], pngs: dict[str, bytes]) -> list[Any]:
     return out
 
 
-def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
+def _identity(k: _Kit, r: ReportDoc) -> list[Any]:
     """The turbine's name, verdict and identity table (source, rotor, operation, rule)."""
     t, op, rule = r["turbine"], r["operation"], r["rule"]
     out: list[Any] = [
@@ -327,9 +335,9 @@ def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
             ]
         )
     ]
-    ident = [
+    ident: list[list[Any]] = [
         ["source file", t["source_file"]],
-        ["input SHA-256", (r.get("produced_by", {}).get("input", {}).get("sha256") or "—")],
+        ["input SHA-256", r["produced_by"]["input"]["sha256"] or "—"],
         ["rotor", f"{words.counted(t['blades'], 'blade')}, {t['orientation']}, {t['hub']} hub"],
         [
             "operation",
@@ -349,7 +357,8 @@ def _identity(k: _Kit, r: dict[str, Any]) -> list[Any]:
     ]
     if r.get("damping") == "aeroelastic":  # a structural audit says so in its checks
         ident.append(["damping", "aeroelastic (aerodynamic + structural, at the operating points)"])
-    ident += [[label, how(t[key])] for key, label, how in _IDENTITY if key in t]
+    given: Mapping[str, Any] = t  # read by the table's keys
+    ident += [[label, how(given[key])] for key, label, how in _IDENTITY if key in given]
     out += [k.table([[k.p(a), k.p(b)] for a, b in ident], [0.2, 0.8]), k.Spacer(1, 3 * k.mm)]
     return out
 
@@ -364,7 +373,7 @@ _IDENTITY: tuple[tuple[str, str, Any], ...] = (
 )
 
 
-def _warnings(k: _Kit, r: dict[str, Any]) -> list[Any]:
+def _warnings(k: _Kit, r: ReportDoc) -> list[Any]:
     """What an importer assumed, suspicious values: before any verdict."""
     if not r["warnings"]:
         return []
@@ -377,7 +386,7 @@ def _warnings(k: _Kit, r: dict[str, Any]) -> list[Any]:
     return out
 
 
-def _summary(k: _Kit, r: dict[str, Any]) -> list[Any]:
+def _summary(k: _Kit, r: ReportDoc) -> list[Any]:
     """Every check in one table: status, margin, DAF, finding."""
     out = k.heading("Summary of checks")
     rows = [k.header("status", "check", "margin", "DAF", "finding")]
@@ -396,7 +405,7 @@ def _summary(k: _Kit, r: dict[str, Any]) -> list[Any]:
 
 
 def _subsystem(
-    k: _Kit, r: dict[str, Any], sub: str, title: str, pngs: dict[str, bytes], drawn: set[str]
+    k: _Kit, r: ReportDoc, sub: str, title: str, pngs: dict[str, bytes], drawn: set[str]
 ) -> list[Any]:
     """A subsystem's section: its modes, its figures (each once in the report: ``drawn``)
     and its checks with their numbers, rules and sources — or where its modes are judged."""
@@ -446,7 +455,7 @@ def _subsystem(
     return out
 
 
-def _inputs(k: _Kit, r: dict[str, Any]) -> list[Any]:
+def _inputs(k: _Kit, r: ReportDoc) -> list[Any]:
     """Every input value with its provenance, source and note."""
     out = k.heading("Inputs and their provenance")
     if not r["inputs"]:
@@ -468,7 +477,7 @@ def _inputs(k: _Kit, r: dict[str, Any]) -> list[Any]:
     return out
 
 
-def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
+def _uncertainty(k: _Kit, u: UncertaintyDoc) -> list[Any]:
     """The sampled spread of each uncertain mode, its chance of a resonance, and the
     sensitivities of the frequencies to the inputs."""
     out = k.heading(f"Uncertainty ({u['samples']:,} samples, seed {u['seed']})")
@@ -481,7 +490,7 @@ def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
         ]
         if "unstable" in s:
             risks.insert(0, f"buckles {s['unstable']['probability']:.1%}")
-        spread = [_num(s.get(q)) for q in ("p5_hz", "p50_hz", "p95_hz")]
+        spread = [_num(s.get("p5_hz")), _num(s.get("p50_hz")), _num(s.get("p95_hz"))]
         rows.append([k.ident(mode, 0.25), *map(k.num, spread), k.p(", ".join(risks) or "none")])
     out.append(k.table(rows, [0.25, 0.11, 0.11, 0.11, 0.42]))
     if u.get("sensitivities"):
@@ -494,8 +503,8 @@ def _uncertainty(k: _Kit, u: dict[str, Any]) -> list[Any]:
         )
         rows = [k.header("input", "mode", "(∂f/∂p)·(p/f)")]
         for path, per_mode in u["sensitivities"].items():
-            for mode, s in sorted(per_mode.items(), key=lambda kv: -abs(kv[1])):
-                rows.append([k.ident(path, 0.45), k.ident(mode, 0.35), k.num(f"{s:+.3f}")])
+            for mode, value in sorted(per_mode.items(), key=lambda kv: -abs(kv[1])):
+                rows.append([k.ident(path, 0.45), k.ident(mode, 0.35), k.num(f"{value:+.3f}")])
         out.append(k.table(rows, [0.45, 0.35, 0.2]))
     return out
 
@@ -508,7 +517,7 @@ def _footer(canvas, doc) -> None:  # type: ignore[no-untyped-def]
     canvas.restoreState()
 
 
-def _in_operation(m: dict[str, Any]) -> str:
+def _in_operation(m: ModeDoc) -> str:
     op = m.get("damping_in_operation")
     if not op:
         return ""
@@ -533,14 +542,14 @@ def _aspect(data: bytes) -> float:
     return found[1] / found[0] if found is not None and found[0] else 0.7
 
 
-def _rule_text(check_rule: dict[str, str], margin_rule: dict[str, Any]) -> str:
+def _rule_text(check_rule: RuleDoc, margin_rule: RuleSettingsDoc) -> str:
     """The check's rule; its source only where it is not the margin rule stated above."""
     if check_rule["source"] == margin_rule["source"]:
         return f"{check_rule['name']} (margin rule above)"
     return f"{check_rule['name']} — {check_rule['source']}"
 
 
-def _coupling(k: _Kit, checks: list[dict[str, Any]]) -> list[Any]:
+def _coupling(k: _Kit, checks: list[CheckDoc]) -> list[Any]:
     """Parked coupled frequencies beside the isolated subsystems' (check system.coupling)."""
     c = next((c for c in checks if c["id"] == "system.coupling"), None)
     if c is None:
@@ -588,7 +597,7 @@ def _judged_note(m: Mapping[str, Any]) -> str:
     return ""
 
 
-def _worst(checks: list[dict[str, Any]]) -> Mapping[str, Any] | None:
+def _worst(checks: list[CheckDoc]) -> CheckDoc | None:
     from ..rules import worst_check
 
     return worst_check(checks)
@@ -620,12 +629,13 @@ _READABLE: tuple[tuple[str, str, str], ...] = (
 )
 
 
-def _numbers(c: dict[str, Any]) -> str:
+def _numbers(c: CheckDoc) -> str:
     """One readable line of a check's numbers, with units (the JSON keeps full precision)."""
+    numbers: Mapping[str, Any] = c  # read by the table's keys
     parts = [
-        f"{label} {_readable(c[key], how)}"
+        f"{label} {_readable(numbers[key], how)}"
         for key, label, how in _READABLE
-        if c.get(key) not in (None, [], "")
+        if numbers.get(key) not in (None, [], "")
     ]
     low = c.get("lowest")
     if isinstance(low, dict) and "mode" in low:  # the stability checks' lowest damping

@@ -16,6 +16,7 @@ from rich.table import Table
 from rich.text import Text
 
 from ..audit import Report
+from ..document import CheckDoc, ModeDoc, ReportDoc, ShareDoc, UncertaintyDoc
 from . import words
 from .streams import shown
 
@@ -82,7 +83,7 @@ def wrote(console: Console, written: Sequence[Path]) -> None:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 
 
-def _summary(data: dict, shed_wake: bool = True) -> Panel:  # type: ignore[type-arg]
+def _summary(data: ReportDoc, shed_wake: bool = True) -> Panel:
     t = data["turbine"]
     op = data["operation"]
     verdict = data["verdict"]
@@ -127,7 +128,7 @@ def _summary(data: dict, shed_wake: bool = True) -> Panel:  # type: ignore[type-
     return Panel(grid, title="wtvib audit", border_style=STYLE[verdict])
 
 
-def _without_aerodynamics(modes: list[dict]) -> str:  # type: ignore[type-arg]
+def _without_aerodynamics(modes: list[ModeDoc]) -> str:
     """What an audit without an aerodynamics block says of the modes aerodynamic damping
     acts on (the blades' and the tower's first fore-aft bending, which the rotor's thrust
     damps): judged on a ratio the spec gives them (which may hold it, as a measured one
@@ -150,7 +151,7 @@ def _listed(ids: list[str]) -> str:
     return ", ".join(ids[:4]) + (f" and {len(ids) - 4} more" if len(ids) > 4 else "")
 
 
-def _modes(modes: list[dict]) -> Table:  # type: ignore[type-arg]
+def _modes(modes: list[ModeDoc]) -> Table:
     table = Table(title="Natural frequencies (standstill)", title_justify="left")
     table.add_column("mode", no_wrap=True, min_width=max((len(m["id"]) for m in modes), default=4))
     table.add_column("description")
@@ -185,7 +186,7 @@ def _hanging(label: Text | str, text: Text | str, width: int = 6) -> Table:
     return grid
 
 
-def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
+def _findings(checks: list[CheckDoc]) -> Group:
     """Every failing and warning check, worst first, one entry each: status, id (whole), its
     margin and DAF where it has them, the finding; then the info checks by id, and how many
     pass."""
@@ -219,11 +220,11 @@ def _findings(checks: list[dict]) -> Group:  # type: ignore[type-arg]
     return Group(*lines)
 
 
-def _shown(check: dict, show_all: bool) -> bool:  # type: ignore[type-arg]
+def _shown(check: CheckDoc, show_all: bool) -> bool:
     return show_all or check["status"] != "pass" or check.get("energy") != "minor"
 
 
-def _checks(checks: list[dict], show_all: bool) -> Group:  # type: ignore[type-arg]
+def _checks(checks: list[CheckDoc], show_all: bool) -> Group:
     table = Table(title="Checks", title_justify="left", show_lines=False)
     table.add_column("status")
     table.add_column(
@@ -428,7 +429,7 @@ def shapes_table(console: Console, doc: dict[str, Any]) -> None:
         console.print(_t(f"wrote {path}", "dim"), soft_wrap=True)
 
 
-def _blade_stability(checks: list[dict[str, Any]]) -> Table | None:
+def _blade_stability(checks: list[CheckDoc]) -> Table | None:
     """Per-section divergence and flutter speeds, and the stall damping minima."""
     by_id = {c["id"]: c for c in checks}
     div, flut = by_id.get("blade.divergence"), by_id.get("blade.flutter")
@@ -465,7 +466,7 @@ def _blade_stability(checks: list[dict[str, Any]]) -> Table | None:
     return table
 
 
-def _coupling(checks: list[dict[str, Any]]) -> Table | None:
+def _coupling(checks: list[CheckDoc]) -> Table | None:
     """Coupled whole-turbine modes beside the isolated subsystems' (Hau §7.6)."""
     c = next((c for c in checks if c["id"] == "system.coupling"), None)
     if c is None:
@@ -505,14 +506,14 @@ def _sensitivities(found: dict[str, dict[str, float]]) -> Table:
     return table
 
 
-def _uncertainty(u: dict[str, Any]) -> Table:
+def _uncertainty(u: UncertaintyDoc) -> Table:
     table = Table(
         title=f"Uncertainty ({u['samples']} samples, seed {u['seed']})", title_justify="left"
     )
     for col in ("mode", "p5 [Hz]", "p50 [Hz]", "p95 [Hz]", "P(in a margin band)"):
         table.add_column(col, justify="left" if col in ("mode", "P(in a margin band)") else "right")
 
-    def share(k: str, v: dict[str, Any]) -> str:
+    def share(k: str, v: ShareDoc) -> str:
         return f"{k} {v['probability']:.1%} [{v['ci95'][0]:.1%}–{v['ci95'][1]:.1%}]"
 
     for mode, s in u["modes"].items():

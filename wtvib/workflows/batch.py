@@ -26,6 +26,7 @@ from .options import Options
 
 if TYPE_CHECKING:
     from ..audit import Report
+    from ..document import ReportDoc
 
 #: Two documents, two shapes, two ids (wtvib.workflows.contract): the summary and the full results.
 SUMMARY_SCHEMA = "wtvib-batch-summary/1"
@@ -48,7 +49,7 @@ class Item:
 
     path: str
     key: str
-    report: dict[str, Any] | None = None
+    report: "ReportDoc | None" = None
     error: str | None = None
     pngs: dict[str, bytes] = field(default_factory=dict)
     timings: dict[str, float] = field(default_factory=dict)

@@ -236,7 +236,7 @@ def _draw_modes(ax, modes, report: Report, rpm, omega, shown: set[str]) -> None:
         pts = np.asarray(mode.curve.omega)
         ax.plot(pts * 30 / np.pi, mode.curve.hz, "o", color=colour, ms=5, mec="white")
         shown.add("held")
-    spread = (report.uncertainty or {}).get("modes", {})
+    spread = report.uncertainty["modes"] if report.uncertainty is not None else {}
     for mode in modes:
         if "p5_hz" in spread.get(mode.id, {}):  # the 5–95 % band of the sampled frequency
             band = spread[mode.id]
