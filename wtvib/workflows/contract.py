@@ -5,9 +5,10 @@ vary with its kind (resonance, class, stability …) and are described, not requ
 report keeps full precision; people-facing outputs round at the edge.
 """
 
-from typing import Any
+from typing import Any, get_args, get_type_hints
 
 from ..audit import REPORT_SCHEMA
+from ..document import CheckDoc
 from .batch import RESULTS_SCHEMA, SUMMARY_SCHEMA  # noqa: F401  (the batch documents' ids)
 
 _NUM = {"type": "number"}
@@ -65,99 +66,17 @@ _MODE: dict[str, Any] = {
     "additionalProperties": False,
 }
 
+
+def _check_numbers() -> dict[str, str]:
+    """The numbers a check may carry and their descriptions, as
+    :class:`wtvib.document.CheckDoc` declares them (which appear depends on the check)."""
+    hints = get_type_hints(CheckDoc, include_extras=True)
+    optional = CheckDoc.__optional_keys__
+    return {k: get_args(get_args(t)[0])[1] for k, t in hints.items() if k in optional}
+
+
 #: The numbers a check may carry, by key (documented; which appear depends on the check).
-CHECK_NUMBERS: dict[str, str] = {
-    "mode": "The governing mode's id.",
-    "frequency_hz": "The governing mode's frequency where judged [Hz].",
-    "margin": "Separation from the excitation, |f_n − f_exc|/f_exc (band) or the ratio rule's [-].",
-    "required_margin": "The rule's margin [-].",
-    "speed_rpm": "Rotor speed of the least margin [rpm].",
-    "excitation": "The excitation line (1P, 3P, stage2 …).",
-    "excitation_hz": "The line's frequency there [Hz].",
-    "daf": "Dynamic amplification factor at that point (null: undefined) [-].",
-    "damping_ratio": "The damping the DAF used [-].",
-    "damping": "'in operation' where that damping came from the operating points.",
-    "regime": "steady, start-up, overspeed or quick-pass: where the governing finding lies.",
-    "energy": "The line's energy class (dominant, secondary, minor).",
-    "energy_on_mode": "The energy class on the governing mode's whirl.",
-    "heavily_damped": (
-        "True where the governing resonance is told as info because the mode is heavily "
-        "damped there (no resonant peak)."
-    ),
-    "crossings_rpm": "Speeds where the line crosses the mode's curve [rpm].",
-    "exclude_rpm": (
-        "Speed bands to exclude to clear the check: those of its modes that warn or fail "
-        "(none where it passes or only informs) [rpm]."
-    ),
-    "modes": "Each mode's status against this line.",
-    "torque_amplification": "Shaft torque amplification of a drive-train resonance [-].",
-    "tower_class": "stiff, soft, soft-soft or resonant.",
-    "startup_crossings": "Dominant lines the tower's first bending is crossed by at start-up.",
-    "unstable": "Modes and where they are negatively damped.",
-    "lowest": "The lowest damping found: mode, ratio, where.",
-    "unstable_rpm": "Speed bands of Floquet instability [rpm].",
-    "not_analysed_rpm": "Speed bands the Floquet check could not analyse [rpm].",
-    "max_multiplier_in_operation": "Largest Floquet multiplier modulus in operation [-].",
-    "points": "The steady operating points (wind, rpm, pitch, region, power, thrust, C_p, C_t).",
-    "rated_wind_m_s": "Rated wind speed [m/s].",
-    "tip_speed_ratio": "Region-2 tip-speed ratio [-].",
-    "sections": "Blade stability per section (divergence, flutter).",
-    "min_total_damping_ratio": "Lowest total damping of a stall check [-].",
-    "at_wind_m_s": "Wind speed of that lowest damping [m/s].",
-    "at_rpm": "Rotor speed of that lowest damping [rpm].",
-    "curve": "A stall check's damping over the operating points.",
-    "p1_hz_at_max": "1P at the highest steady speed (tower class) [Hz].",
-    "hub": (
-        "The hub type the Floquet check modelled (rigid or hingeless, teetered; a hinged hub "
-        "is modelled hingeless)."
-    ),
-    "polar_inertia_kgm2": "Rotor polar inertia the Floquet check used [kg·m²].",
-    "speed_ratio": "Divergence or flutter speed over the highest section speed [-].",
-    "cantilever_load_factor": "Strip-theory cantilever factor on the divergence speed [-].",
-    "vg_section_radius_m": "Radius of the section the V–g diagram shows [m].",
-    "vg_section_speed_m_s": "That section's highest air speed [m/s].",
-    "aerodynamic_cyclic_nm": "Cyclic aerodynamic yaw moment given [N·m].",
-    "gyroscopic_nm": "Gyroscopic yaw-tilt moment J_p·Ω·Ω_yaw [N·m].",
-    "friction_nm": "Yaw friction while yawing [N·m].",
-    "brakes_nm": "Yaw brake moment when parked [N·m].",
-    "inertia_mean_kgm2": "Mean yaw inertia of a two-bladed rotor over azimuth [kg·m²].",
-    "inertia_variation_kgm2": "Its variation with azimuth [kg·m²].",
-    "frequency_range_hz": "The yaw frequency's range over azimuth [Hz].",
-    "half_gap_deg": "Half the yaw gear's play [deg].",
-    "frequency_no_play_hz": "Yaw frequency without play [Hz].",
-    "critical_amplitude_deg": "Amplitude below which the play dominates [deg].",
-    "amplitude_deg": "The yaw amplitude judged [deg].",
-    "frequency_with_play_hz": "Effective yaw frequency with the play at that amplitude [Hz].",
-    "power_fraction": "Power fractions of the drive train's grid mode over the power range [-].",
-    "damping_nms_rad": "An induction generator's slip damping on its shaft [N·m·s/rad].",
-    "time_constant_s": (
-        "The time constant of the drive train's whole rotation against that damping [s]."
-    ),
-    "wave_periods_s": "The site's wave band (shortest, longest period) [s].",
-    "inside": "The platform modes inside the wave band.",
-    "driven_by": (
-        "The rotating-frame harmonic behind a fixed-frame rotor mode's resonance (a cyclic "
-        "mode met by 6P is the blades' 7P or 5P) [-]."
-    ),
-    "condition": "system.coupling: the generator condition the coupled modes hold in.",
-    "model": "system.coupling: what the coupled model holds and neglects, in words.",
-    "parked": (
-        "system.coupling: the coupled modes in the other generator condition (condition, "
-        "modes: name, frequency [Hz])."
-    ),
-    "sets": (
-        "An ElastoDyn deck's mode-shape polynomials (polynomials.tower, .blade): each set's "
-        "name (TwFAM1Sh …), mode, file and line, the finite-element frequency [Hz], the "
-        "frequency the deck's and the computed polynomial imply [Hz], the deck's MAC against "
-        "the computed shape and against the other mode of its plane, and both coefficient "
-        "lists (c₂ … c₆)."
-    ),
-    "pairs": (
-        "Subsystems' modes the chapter names as coupled, at their closest: the two ids and "
-        "frequencies [Hz], the rotor speed [rpm], the separation |f₁ − f₂|/min [-] and the "
-        "coupled modes judged in their place (system.closeness)."
-    ),
-}
+CHECK_NUMBERS: dict[str, str] = _check_numbers()
 
 _CHECK: dict[str, Any] = {
     "type": "object",
