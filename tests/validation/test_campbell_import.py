@@ -167,3 +167,41 @@ def test_hawcstab2_damping_in_operation_is_the_aeroelastic_runs(tmp_path):
     assert 100 * ae.modes["tower.fa1"].damping_ratio[0] == pytest.approx(
         table[low, 62].min(), abs=1e-9
     )
+
+
+def test_hawcstab2_columns_are_followed_by_what_they_move(tmp_path):
+    """HAWCStab2 numbers a point's modes by frequency, so where two cross a column changes
+    mode: the IEA-15 example's column 6 moves the first flap forward whirl at 5 rpm (its
+    .amp: forward flap tip 1, backward edge 0.13) and the first edge backward whirl from
+    6.4 rpm on, column 7 the other way round. Followed by what they move, blade.flap1.forward
+    is column 6 at 5 rpm (0.5715 Hz, the .cmb's) and column 7 at 7.56 rpm, rising with the
+    rotor speed as a forward whirl does; blade.edge1.backward the reverse, falling."""
+    folder = _iea15_hawcstab2(tmp_path)
+    cmb = folder / "structural_entire_turbine.cmb"
+    modes = importers.load(cmb, importers.ReadOptions(blades=3)).results.modes
+    table = np.loadtxt(cmb, skiprows=1)
+    opt = np.loadtxt(folder / "operation_1_25_windspeed.opt", skiprows=1)
+    rpm = np.interp(table[:, 0], opt[:, 0], opt[:, 2])
+    # the points at one rotor speed merge to their mean (5 rpm: 1-7 m/s; 7.56: 11-25 m/s)
+    first, last = table[rpm == rpm.min()].mean(axis=0), table[rpm == rpm.max()].mean(axis=0)
+    forward, backward = modes["blade.flap1.forward"], modes["blade.edge1.backward"]
+    assert forward.frequency_hz[0] == pytest.approx(first[6], rel=1e-9)
+    assert backward.frequency_hz[0] == pytest.approx(first[7], rel=1e-9)
+    assert forward.frequency_hz[-1] == pytest.approx(last[7], rel=1e-9)
+    assert backward.frequency_hz[-1] == pytest.approx(last[6], rel=1e-9)
+    assert forward.frequency_hz[-1] > forward.frequency_hz[0]
+    assert backward.frequency_hz[-1] < backward.frequency_hz[0]
+
+
+def test_following_swaps_columns_that_swap_modes_and_never_jumps_family():
+    """Three columns at two points: the first two trade what they move (their frequencies
+    cross), the third moves what the first does at four times its frequency — followed,
+    the first two swap and the third keeps its own."""
+    from wtvib.importers.hawcstab2 import followed
+
+    flap, edge = [1.0, 0.1], [0.1, 1.0]
+    amplitudes = np.array([[flap, edge, flap], [edge, flap, flap]])
+    freq = np.array([[0.57, 0.61, 2.4], [0.59, 0.60, 2.4]])
+    assert followed(amplitudes, freq).tolist() == [[0, 1, 2], [1, 0, 2]]
+    alike = np.array([[flap, edge, flap], [flap, edge, flap]])
+    assert followed(alike, freq).tolist() == [[0, 1, 2], [0, 1, 2]]

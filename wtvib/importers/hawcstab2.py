@@ -77,6 +77,13 @@ _WEIGHTS = {
     13: CHORD_ARM_M,
     14: CHORD_ARM_M,
 }
+#: The weight of a frequency change against a change of what a mode moves in
+#: :func:`followed`: a cosine of 1 is worth a factor e in frequency.
+FOLLOW_FREQUENCY = 1.0
+#: What a column's own mode gains over the others in :func:`followed`: enough that two
+#: columns alike to rounding keep their modes, far below what a swap changes (a cosine
+#: from ≈1 to ≈0.2 for the IEA-15's crossing whirls).
+FOLLOW_BIAS = 1e-6
 _WORDS = {
     "tower.ss": "tower side-side",
     "tower.fa": "tower fore-aft",
@@ -235,8 +242,13 @@ def _beside(cmb: Path, suffix: str) -> Path | None:
     return found[0] if len(found) == 1 else None
 
 
-def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
-    """(kind, coordinate) of each mode and the frame (``fixed`` turbine, ``rotating`` blade)."""
+def names_from_amp(
+    amp: Path, modes: int, points: np.ndarray | None = None, freqs: np.ndarray | None = None
+) -> tuple[list[tuple[str, str]], str, np.ndarray | None]:
+    """(kind, coordinate) of each mode, the frame (``fixed`` turbine, ``rotating`` blade)
+    and, for a turbine file whose rows are the .cmb's ``points``, the followed order of its
+    columns (:func:`followed`: HAWCStab2 numbers its modes by frequency at each point, so
+    a column changes mode where two cross) — None where there is nothing to follow."""
     header, data, _ = _table(amp)
     text = " ".join(header)
     if "TWR" in text:
@@ -246,12 +258,14 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
                 f"{data.shape[1] - 1} columns do not hold {modes} modes × 15 sensors",
                 source=str(amp),
             )
-        out = []
-        for j in range(modes):
-            amps = data[:, 1 + j * per : 1 + (j + 1) * per : 2].mean(axis=0)
-            amps = np.array([a * _WEIGHTS.get(i, 1.0) for i, a in enumerate(amps)])
-            out.append(TURBINE_SENSORS[int(np.argmax(amps))])
-        return out, "fixed"
+        weights = np.array([_WEIGHTS.get(i, 1.0) for i in range(len(TURBINE_SENSORS))])
+        mags = data[:, 1 : 1 + modes * per].reshape(len(data), modes, -1)[:, :, ::2] * weights
+        order = None
+        if points is not None and freqs is not None and _same_points(data[:, 0], points):
+            order = followed(_unique_rows(data[:, 0], mags), freqs)
+            mags = np.take_along_axis(_unique_rows(data[:, 0], mags), order[:, :, None], axis=1)
+        out = [TURBINE_SENSORS[int(np.argmax(mags[:, j].mean(axis=0)))] for j in range(modes)]
+        return out, "fixed", order
     if "u_x" in text or "u_y" in text:
         per = 6
         if (data.shape[1] - 2) // per < modes:
@@ -269,10 +283,51 @@ def names_from_amp(amp: Path, modes: int) -> tuple[list[tuple[str, str]], str]:
                 "blade.tor": np.sum((arm * th) ** 2),
             }
             out.append((max(energy, key=lambda k: energy[k]), "rotating"))
-        return out, "rotating"
+        return out, "rotating", None
     raise SpecError(
         "neither a turbine (TWR …) nor a blade (u_x, u_y …) amplitude file", source=str(amp)
     )
+
+
+def _unique_rows(keys: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """``values``' rows, each operating point once (as :func:`read_cmb` reads the .cmb)."""
+    _, first = np.unique(keys, return_index=True)
+    return values[np.sort(first)]
+
+
+def _same_points(amp_points: np.ndarray, cmb_points: np.ndarray) -> bool:
+    """Whether the .amp's rows are the .cmb's operating points, in the same order."""
+    _, first = np.unique(amp_points, return_index=True)
+    rows = amp_points[np.sort(first)]
+    return rows.shape == cmb_points.shape and bool(np.allclose(rows, cmb_points))
+
+
+def followed(amplitudes: np.ndarray, freq: np.ndarray) -> np.ndarray:
+    """Which column holds each mode at each point: ``amplitudes`` (points × modes ×
+    sensors, magnitudes) and frequencies ``freq`` [Hz] (points × modes, NaN: no mode)
+    followed from the first point — at each next point the columns assigned one to one to
+    the modes (:func:`scipy.optimize.linear_sum_assignment`) by what each moves, the cosine
+    of their normalised amplitudes, less FOLLOW_FREQUENCY times how far their frequencies
+    lie apart, |ln(f/f_before)|. So a curve stays one physical mode where HAWCStab2's
+    frequency-ordered columns swap two (the IEA-15's first flap forward and first edge
+    backward whirls between 5.7 and 6.4 rpm), and never jumps to another mode that moves
+    the same sensors (a flap collective's higher namesake, four times its frequency)."""
+    from scipy.optimize import linear_sum_assignment
+
+    norm = np.linalg.norm(amplitudes, axis=2, keepdims=True)
+    unit = np.divide(amplitudes, norm, out=np.zeros_like(amplitudes), where=norm > 0)
+    points, modes = unit.shape[:2]
+    order = np.tile(np.arange(modes), (points, 1))
+    for i in range(1, points):
+        before = np.take_along_axis(freq[i - 1], order[i - 1], axis=0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            apart = np.abs(np.log(freq[i][None, :] / before[:, None]))
+        apart = np.where(np.isfinite(apart), apart, 1.0)  # a mode not found: far from all
+        score = unit[i - 1][order[i - 1]] @ unit[i].T - FOLLOW_FREQUENCY * apart
+        score[np.diag_indices(modes)] += FOLLOW_BIAS  # a column keeps its mode on a tie
+        rows, cols = linear_sum_assignment(-score)
+        order[i, rows] = cols
+    return order
 
 
 def _named(kind: str, coord: str, j: int, count: dict[str, int]) -> tuple[str, str]:
@@ -307,8 +362,11 @@ def to_spec_data(
     amp = path.with_suffix(".amp")
     warnings = []
     if amp.exists():
-        kinds, frame = names_from_amp(amp, n)
+        kinds, frame, order = names_from_amp(amp, n, points, freq)
         files.append(str(amp))
+        if order is not None:  # each column one physical mode from end to end
+            freq = np.take_along_axis(freq, order, axis=1)
+            damp = np.take_along_axis(damp, order, axis=1)
     else:
         kinds, frame = [("mode", "fixed")] * n, "fixed"
         warnings.append(
