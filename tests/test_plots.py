@@ -6,7 +6,7 @@ import pytest
 from tests.conftest import TURBINES
 from wtvib import audit, spec
 from wtvib.outputs.files import SOFTWARE_TAG
-from wtvib.outputs.plots import blade, campbell, diagrams, drivetrain, png_bytes, rotor, system
+from wtvib.outputs.plots import FIGURES, campbell, diagrams, drivetrain, png_bytes, rotor
 from wtvib.outputs.plots.layout import FIGURE_DPI
 
 
@@ -20,13 +20,36 @@ def reports():
 
 def test_each_figure_draws_only_what_its_report_has(reports):
     mod0, stall_rotor, wka = reports["mod-0"], reports["stall-rotor-1mw"], reports["wka-60"]
-    assert drivetrain.power_curve_plot(mod0) is not None  # synchronous on the grid
-    assert drivetrain.power_curve_plot(wka) is None
-    assert rotor.floquet_plot(mod0) is not None and rotor.floquet_plot(wka) is None
-    for fig in (blade.flutter_plot, blade.stability_chart_plot, blade.stall_damping_plot):
-        assert fig(stall_rotor) is not None and fig(wka) is None
-    assert system.coupled_energy_plot(wka) is None  # no coupled block
+    assert FIGURES["drivetrain-power"](mod0) is not None  # synchronous on the grid
+    assert FIGURES["drivetrain-power"](wka) is None
+    assert FIGURES["floquet"](mod0) is not None and FIGURES["floquet"](wka) is None
+    for name in ("blade-flutter", "blade-stability", "blade-stall"):
+        assert FIGURES[name](stall_rotor) is not None and FIGURES[name](wka) is None
+    assert FIGURES["system-energy"](wka) is None  # no coupled block
     assert campbell.campbell_plot(wka).axes  # the tower-and-blade diagram
+
+
+def test_a_figure_draws_its_result_into_the_axes_it_is_given(reports):
+    """python-control's ``x_plot(result, ax=None)``: a subsystem's figure takes its typed
+    result and draws into the axes given (a reviewer's own figure), nothing computed."""
+    from matplotlib.figure import Figure
+
+    from wtvib.subsystems import drivetrain as model
+    from wtvib.subsystems import rotor as rotor_model
+
+    mod0 = reports["mod-0"]
+    fig = Figure()
+    left, right = fig.subplots(1, 2)
+    found = mod0.result(model.NAME, model.DrivetrainResults)
+    assert found is not None and found.power is not None
+    band = mod0.rule.natural_band(1.0)
+    drawn = drivetrain.power_curve_plot(found.power, mod0.checks, "MOD-0", band, ax=left)
+    assert drawn is fig and left.lines and not right.lines
+    floquet = mod0.result(rotor_model.NAME, rotor_model.RotorResults)
+    assert floquet is not None
+    speed = mod0.spec.rotor.speed
+    assert rotor.floquet_plot(floquet, mod0.checks, "MOD-0", speed, ax=right) is fig
+    assert right.lines and "stability map" in right.get_title()
 
 
 def test_the_registry_names_every_figure_and_tags_the_png(reports):
@@ -498,7 +521,7 @@ def test_the_drive_train_figure_draws_the_chain_it_was_computed_on(reports):
     chain = wka.result(model.NAME, model.DrivetrainResults).chain
     again = model.reduce(wka.spec, model.edge_frequency(wka.spec, list(wka.modes)))
     assert chain.names == again.names and list(chain.stiffness) == list(again.stiffness)
-    fig = drivetrain.drivetrain_shapes_plot(wka)
+    fig = FIGURES["drivetrain-modes"](wka)
     assert fig is not None
     bars = fig.axes[0].patches
     assert [b.get_height() for b in bars] == pytest.approx(list(chain.inertia))

@@ -389,10 +389,6 @@ class RotorResults:
 _BLADED = {1: "one", 2: "two"}
 
 
-#: the rotor's blade count in words, where a message names it
-_BLADED = {1: "one", 2: "two"}
-
-
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``rotor.floquet`` and the stability map it draws (two-bladed rotors)."""
     found, smap = check(spec, ctx.modes)

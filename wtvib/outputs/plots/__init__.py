@@ -78,12 +78,8 @@ MAIN = ("campbell", "damping")
 def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Figure | None"]]:
     """What :func:`diagrams` draws, not yet drawn: each figure's maker by file stem suffix
     (a maker may find nothing to draw and return None)."""
-    from .blade import flutter_plot, stability_chart_plot, stall_damping_plot
-    from .campbell import DIAGRAMS, campbell_plot, damping_plot
-    from .drivetrain import drivetrain_shapes_plot, power_curve_plot
+    from .campbell import DIAGRAMS, campbell_plot
     from .polynomials import shapes_plot
-    from .rotor import floquet_plot
-    from .system import coupled_energy_plot
 
     shapes = {"shapes": functools.partial(shapes_plot, report)} if detail else {}
     if report.spec.rotor.speed.parked:  # a standstill audit: no speed to draw over
@@ -98,20 +94,106 @@ def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Fi
         for name, subs in DIAGRAMS.items()
         if present.intersection(subs)
     }
-    makers = {
-        "damping": damping_plot,
-        "drivetrain-modes": drivetrain_shapes_plot,
-        "drivetrain-power": power_curve_plot,
-        "floquet": floquet_plot,
-        "blade-flutter": flutter_plot,
-        "blade-stability": stability_chart_plot,
-        "blade-stall": stall_damping_plot,
-        "system-energy": coupled_energy_plot,
-    }
-    for name, make in makers.items():
+    for name, make in FIGURES.items():
         if detail or name in MAIN:
             out[name] = functools.partial(make, report)
     return out | shapes
+
+
+def _damping(report: "Report") -> "Figure | None":
+    from .campbell import damping_plot
+
+    return damping_plot(report)
+
+
+def _drivetrain_modes(report: "Report") -> "Figure | None":
+    from ...subsystems import drivetrain
+    from .drivetrain import drivetrain_shapes_plot
+
+    found = report.result(drivetrain.NAME, drivetrain.DrivetrainResults)
+    name, shaft = report.spec.turbine.name, report.spec.drivetrain.reference_shaft
+    return drivetrain_shapes_plot(found, report.modes, name, shaft)
+
+
+def _drivetrain_power(report: "Report") -> "Figure | None":
+    from ...subsystems import drivetrain
+    from .drivetrain import power_curve_plot
+
+    found = report.result(drivetrain.NAME, drivetrain.DrivetrainResults)
+    if found is None or found.power is None or not _has(report, "drivetrain.grid.power"):
+        return None
+    band = report.rule.natural_band(1.0)
+    return power_curve_plot(found.power, report.checks, report.spec.turbine.name, band)
+
+
+def _floquet(report: "Report") -> "Figure | None":
+    from ...subsystems import rotor
+    from .rotor import floquet_plot
+
+    found = report.result(rotor.NAME, rotor.RotorResults)
+    if found is None or not _has(report, "rotor.floquet"):
+        return None
+    speed = report.spec.rotor.speed
+    return floquet_plot(found, report.checks, report.spec.turbine.name, speed)
+
+
+def _flutter(report: "Report") -> "Figure | None":
+    from ...aero import aeroelastic
+    from .blade import flutter_plot
+
+    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
+    if found is None or not _has(report, "blade.flutter"):
+        return None
+    return flutter_plot(found, report.checks, report.spec.turbine.name)
+
+
+def _blade_stability(report: "Report") -> "Figure | None":
+    from ...aero import aeroelastic
+    from .blade import stability_chart_plot
+
+    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
+    given = report.spec.blade.aeroelastic
+    if found is None or given is None or not _has(report, "blade.flutter"):
+        return None
+    name = report.spec.turbine.name
+    return stability_chart_plot(found, report.checks, name, given.speed_margin)
+
+
+def _blade_stall(report: "Report") -> "Figure | None":
+    from ...aero import stall
+    from .blade import stall_damping_plot
+
+    found = report.result(stall.NAME, stall.StallResults)
+    if found is None:
+        return None
+    return stall_damping_plot(found, report.checks, report.spec.turbine.name)
+
+
+def _system_energy(report: "Report") -> "Figure | None":
+    from .system import coupled_energy_plot
+
+    check = next((c for c in report.checks if c.id == "system.coupling"), None)
+    return coupled_energy_plot(check, report.spec.turbine.name) if check is not None else None
+
+
+def _has(report: "Report", check: str) -> bool:
+    return any(c.id == check for c in report.checks)
+
+
+#: The figures besides the Campbell diagrams, by file stem suffix: each takes what it draws
+#: from the report — a subsystem's typed result (``Report.result``), its checks, the
+#: turbine's name — and hands it to the plot function, which draws that and nothing else
+#: (python-control's ``x_plot(result)``); None where the report has nothing to draw.
+FIGURES: dict[str, Callable[["Report"], "Figure | None"]] = {
+    "damping": _damping,
+    "drivetrain-modes": _drivetrain_modes,
+    "drivetrain-power": _drivetrain_power,
+    "floquet": _floquet,
+    "blade-flutter": _flutter,
+    "blade-stability": _blade_stability,
+    "blade-stall": _blade_stall,
+    "system-energy": _system_energy,
+}
 
 
 def diagrams(report: "Report", detail: bool = True) -> dict[str, "Figure"]:

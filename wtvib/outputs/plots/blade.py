@@ -1,13 +1,14 @@
 """Blade stability figures: V-g / V-f of flutter, the stability-limits chart (Hau Fig.
 7.6) and the stall-induced damping over wind speed (Hau ch. 7.2.3)."""
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ...aero import aeroelastic, stall
-from ...audit import Report
+from ...results import Check
 from . import headline
 from .layout import FIGURE_DPI, SMALL_PT, fit, fixed_layout, plain_decades, title_height
 
@@ -16,21 +17,19 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
-def flutter_plot(report: Report) -> "Figure | None":
-    """V-g and V-f curves (p-k method) of the blade section nearest to flutter."""
+def flutter_plot(
+    result: aeroelastic.AeroelasticResults, checks: Sequence[Check], turbine: str
+) -> "Figure":
+    """V-g and V-f curves (p-k method) of the blade section nearest to flutter, headed by
+    the status of ``checks``' ``blade.flutter``."""
     from matplotlib.figure import Figure
 
-    check = next((c for c in report.checks if c.id == "blade.flutter"), None)
-    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
-    if check is None or found is None:
-        return None
-    worst, required = found.worst, found.required_speed_m_s
+    worst, required = result.worst, result.required_speed_m_s
     fig = Figure(figsize=(7.2, 5.1), dpi=FIGURE_DPI)
     ax_g, ax_f = fig.subplots(2, 1, sharex=True)
-    judged = headline.of_checks(report, ("blade.flutter",), headline.STATUS_ONLY)
+    judged = headline.of_checks(checks, ("blade.flutter",), headline.STATUS_ONLY)
     title = (
-        f"{report.spec.turbine.name}\nblade flutter at r = {worst.radius_m:.3g} m, "
-        f"Theodorsen p-k ({judged.words})"
+        f"{turbine}\nblade flutter at r = {worst.radius_m:.3g} m, Theodorsen p-k ({judged.words})"
     )
     heading = fit(title, 6.0, 10)
     headline.stamp(fig, title.replace("\n", " — "), judged)
@@ -119,30 +118,34 @@ def _limits(
         )
 
 
-def stability_chart_plot(report: Report) -> "Figure | None":
+def stability_chart_plot(
+    result: aeroelastic.AeroelasticResults,
+    checks: Sequence[Check],
+    turbine: str,
+    speed_margin: float,
+    ax: "Axes | None" = None,
+) -> "Figure":
     """Hau Fig. 7.6 for the blade section nearest to flutter: torsional stiffness against the
-    centre-of-mass offset, divergence and flutter limits at the required speed, the blade."""
+    centre-of-mass offset, divergence and flutter limits at the required speed (the highest
+    section speed with ``speed_margin``), the blade — on ``ax`` where given, else on a
+    figure of its own headed by ``checks``' divergence and flutter status."""
     from matplotlib.figure import Figure
 
-    check = next((c for c in report.checks if c.id == "blade.flutter"), None)
-    found = report.result(aeroelastic.NAME, aeroelastic.AeroelasticResults)
-    ae = report.spec.blade.aeroelastic
-    if check is None or found is None or ae is None:
-        return None
-    n = check.numbers
-    chart, speed, worst = found.chart, found.required_speed_m_s, found.worst
+    flutter = next((c for c in checks if c.id == "blade.flutter"), None)
+    chart, speed, worst = result.chart, result.required_speed_m_s, result.worst
     x = 100 * chart.offset_chord
     kilo = 1e-3
-    fig = Figure(figsize=(7.2, 4.5), dpi=FIGURE_DPI)
-    ax = fig.add_subplot()
-    judged = headline.of_checks(report, ("blade.divergence", "blade.flutter"), {})
+    judged = headline.of_checks(checks, ("blade.divergence", "blade.flutter"), {})
     title = (
-        f"{report.spec.turbine.name}\nblade stability limits at {speed:.3g} m/s "
-        f"({1 + ae.speed_margin:g}× the highest section speed; Hau Fig. 7.6): {judged.words}"
+        f"{turbine}\nblade stability limits at {speed:.3g} m/s "
+        f"({1 + speed_margin:g}× the highest section speed; Hau Fig. 7.6): {judged.words}"
     )
     heading = fit(title, 6.2, 10)
-    headline.stamp(fig, title.replace("\n", " — "), judged)
-    fixed_layout(fig, left=0.85, top=0.2 + title_height(heading, 10))  # log tick labels
+    if ax is None:
+        fig = Figure(figsize=(7.2, 4.5), dpi=FIGURE_DPI)
+        ax = fig.add_subplot()
+        headline.stamp(fig, title.replace("\n", " — "), judged)
+        fixed_layout(fig, left=0.85, top=0.2 + title_height(heading, 10))  # log tick labels
     flutter_k = chart.flutter_k_theta * kilo
     top = 3 * max(
         np.nanmax(flutter_k, initial=0.0),
@@ -159,7 +162,7 @@ def stability_chart_plot(report: Report) -> "Figure | None":
         color="#1565c0",
         label=f"blade section at r = {worst.radius_m:.3g} m",
     )
-    ratio = n.get("speed_ratio")
+    ratio = flutter.numbers.get("speed_ratio") if flutter is not None else None
     ax.annotate(
         f"flutter at {ratio:.2f}× the highest section speed" if ratio else "no flutter found",
         (100 * chart.blade_offset_chord, chart.blade_k_theta * kilo),
@@ -177,25 +180,26 @@ def stability_chart_plot(report: Report) -> "Figure | None":
     ax.set_title(heading, fontweight="bold", fontsize=10, y=1.0)
     ax.grid(True, which="both", alpha=0.25)
     ax.legend(fontsize=8, loc="lower right")
-    return fig
+    return ax.get_figure()  # type: ignore[return-value]  # a Figure's axes, not a SubFigure's
 
 
-def stall_damping_plot(report: Report) -> "Figure | None":
-    """Total and aerodynamic damping of the first flap and edge modes over the wind speed."""
+def stall_damping_plot(
+    result: stall.StallResults, checks: Sequence[Check], turbine: str
+) -> "Figure | None":
+    """Total and aerodynamic damping of the first flap and edge modes over the wind speed,
+    each panel headed by its ``blade.stall.*`` check among ``checks`` (None: no curve)."""
     from matplotlib.figure import Figure
 
-    stall_found = report.result(stall.NAME, stall.StallResults)
-    found = stall_found.curves if stall_found is not None else {}
-    by_id = {c.id: c for c in report.checks}
+    found = result.curves
+    by_id = {c.id: c for c in checks}
     curves = {name: by_id[f"blade.stall.{name}"] for name in found}
     if not curves:
         return None
     fig = Figure(figsize=(7.2, 4.2), dpi=FIGURE_DPI)
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
-    judged = headline.of_checks(report, tuple(c.id for c in curves.values()), {})
+    judged = headline.of_checks(checks, tuple(c.id for c in curves.values()), {})
     title = (
-        f"{report.spec.turbine.name}\nstall-induced vibration: quasi-steady damping "
-        f"(Hau ch. 7.2.3): {judged.words}"
+        f"{turbine}\nstall-induced vibration: quasi-steady damping (Hau ch. 7.2.3): {judged.words}"
     )
     heading = fit(title, 7.0, 10)
     headline.stamp(fig, title.replace("\n", " — "), judged)

@@ -609,7 +609,7 @@ def damping_plot(report: Report) -> "Figure | None":
         else "aerodynamic + structural; lift lagged by the shed wake, frozen induction"
     )
     judged = headline.of_checks(
-        report,
+        report.checks,
         ("aerodynamics.stability", "system.stability"),
         {
             "pass": "PASS: no mode negatively damped",
@@ -667,7 +667,7 @@ def standstill_plot(report: Report) -> "Figure | None":
     ax.grid(True, which="both", alpha=0.3)
     tool = report.spec.results.tool if report.spec.results is not None else "the tool"
     judged = headline.of_checks(
-        report,
+        report.checks,
         ("system.stability",),
         {"pass": "PASS: no mode negatively damped", "fail": "FAIL: negatively damped modes"},
     )

@@ -2,11 +2,12 @@
 Fig. 7.10) above the mode shapes per generator condition (which masses swing against
 which, Hau Fig. 7.12), and the grid mode over power (Hau Fig. 7.14)."""
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...audit import Report
+from ...results import Check, Mode
 from ...subsystems import drivetrain as drivetrain_model
 from . import headline
 from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, title_height
@@ -18,23 +19,26 @@ if TYPE_CHECKING:
     from ...subsystems.drivetrain import Chain
 
 
-def drivetrain_shapes_plot(report: Report) -> "Figure | None":
-    """One panel per condition: each computed drive-train mode's twist amplitude per mass."""
+def drivetrain_shapes_plot(
+    result: drivetrain_model.DrivetrainResults | None,
+    modes: Sequence[Mode],
+    turbine: str,
+    reference_shaft: str,
+) -> "Figure | None":
+    """One panel per condition: each computed drive-train mode's twist amplitude per mass
+    (the ``modes`` with a shape), under the train's inertia and stiffness (``result``'s
+    chain, where the model gave one); None: no mode with a shape."""
     from matplotlib.figure import Figure
 
-    modes = [m for m in report.modes if m.subsystem == "drivetrain" and m.shape is not None]
+    modes = [m for m in modes if m.subsystem == "drivetrain" and m.shape is not None]
     if not modes:
         return None
     conditions = list(dict.fromkeys(m.id.split(".")[1] for m in modes))
-    found = report.result(drivetrain_model.NAME, drivetrain_model.DrivetrainResults)
-    chain = found.chain if found is not None else None
+    chain = result.chain if result is not None else None
     panels = len(conditions) + (chain is not None)
     fig = Figure(figsize=(MAX_FIGURE_IN, 1.95 * panels + 0.6), dpi=FIGURE_DPI)
     axes = fig.subplots(panels, 1, squeeze=False)[:, 0]
-    title = (
-        f"{report.spec.turbine.name} — drive-train mode shapes (reduced to the "
-        f"{report.spec.drivetrain.reference_shaft} shaft)"
-    )
+    title = f"{turbine} — drive-train mode shapes (reduced to the {reference_shaft} shaft)"
     heading = fit(title, 7.3)
     headline.stamp(fig, title, headline.NOTHING)  # shapes: no judgement drawn
     # the suptitle and each panel's title above it; the mass names under each panel
@@ -42,7 +46,7 @@ def drivetrain_shapes_plot(report: Report) -> "Figure | None":
     right = 0.85 if chain is not None else 0.3
     fixed_layout(fig, top=0.4 + title_height(heading), bottom=0.4, gap=0.6, right=right)
     if chain is not None:
-        _distribution(axes[0], chain, report.spec.drivetrain.reference_shaft)
+        _distribution(axes[0], chain, reference_shaft)
         axes = axes[1:]
     for ax, condition in zip(axes, conditions, strict=True):
         for m in (m for m in modes if m.id.split(".")[1] == condition):
@@ -89,20 +93,29 @@ def _distribution(ax: "Axes", chain: "Chain", shaft: str) -> None:
     ax.grid(True, axis="y", alpha=0.3)
 
 
-def power_curve_plot(report: Report) -> "Figure | None":
-    """The grid-coupled synchronous drive train's first mode over power (Hau Fig. 7.14)."""
+def power_curve_plot(
+    curve: drivetrain_model.PowerCurve,
+    checks: Sequence[Check],
+    turbine: str,
+    band: tuple[float, float],
+    ax: "Axes | None" = None,
+) -> "Figure":
+    """The grid-coupled synchronous drive train's first mode over power (Hau Fig. 7.14),
+    each excitation with the rule's band (``band``: factors on its frequency) — on ``ax``
+    where given, else on a figure of its own headed by ``drivetrain.grid.power``'s status."""
     from matplotlib.figure import Figure
 
-    check = next((c for c in report.checks if c.id == "drivetrain.grid.power"), None)
-    found = report.result(drivetrain_model.NAME, drivetrain_model.DrivetrainResults)
-    curve = found.power if found is not None else None
-    if check is None or curve is None:
-        return None
     power = 100 * np.asarray(curve.power_fraction)
-    fig = Figure(figsize=(7.0, 3.95), dpi=FIGURE_DPI)
-    ax = fig.add_subplot()
+    judged = headline.of_checks(checks, ("drivetrain.grid.power",), headline.STATUS_ONLY)
+    title = f"{turbine} — drive train on the grid: frequency vs power ({judged.words})"
+    heading = fit(title, 6.6)
+    if ax is None:
+        fig = Figure(figsize=(7.0, 3.95), dpi=FIGURE_DPI)
+        ax = fig.add_subplot()
+        headline.stamp(fig, title, judged)
+        fixed_layout(fig, top=0.2 + title_height(heading))
     ax.plot(power, curve.frequency_hz, lw=2.2, color="#1f77b4", label="1st grid mode")
-    lo, hi = report.rule.natural_band(1.0)
+    lo, hi = band
     for label, f_e in curve.lines:
         ax.axhline(f_e, color="#212121", lw=1.4)
         ax.axhspan(f_e * lo, f_e * hi, color="#e53935", alpha=0.12, lw=0)
@@ -116,14 +129,7 @@ def power_curve_plot(report: Report) -> "Figure | None":
         )
     ax.set_xlabel("electrical power [% of rated]")
     ax.set_ylabel("frequency [Hz]")
-    judged = headline.of_checks(report, ("drivetrain.grid.power",), headline.STATUS_ONLY)
-    title = (
-        f"{report.spec.turbine.name} — drive train on the grid: frequency vs power ({judged.words})"
-    )
-    heading = fit(title, 6.6)
-    headline.stamp(fig, title, judged)
-    fixed_layout(fig, top=0.2 + title_height(heading))
     ax.set_title(heading, fontweight="bold", y=1.0)
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
-    return fig
+    return ax.get_figure()  # type: ignore[return-value]  # a Figure's axes

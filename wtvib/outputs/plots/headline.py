@@ -54,10 +54,10 @@ def stamp_of(fig: "Figure") -> tuple[str, Headline] | None:
     return found if isinstance(found, tuple) else None
 
 
-def of_checks(report: "Report", ids: Sequence[str], words: dict[Status, str]) -> Headline:
-    """A figure that draws whole checks (``ids``, those the report has): the worst status
+def of_checks(checks: Sequence[Check], ids: Sequence[str], words: dict[Status, str]) -> Headline:
+    """A figure that draws whole checks (``ids``, those among ``checks``): the worst status
     and, by status, what to say (``{status}`` and ``{check}`` filled in)."""
-    drawn = [c for c in report.checks if c.id in ids]
+    drawn = [c for c in checks if c.id in ids]
     if not drawn:
         return Headline("info", "nothing judged here", ())
     worst = max(drawn, key=lambda c: STATUS_ORDER[c.status])

@@ -1,39 +1,45 @@
 """The two-bladed rotor on the tower head: its Floquet stability map (Hau ch. 7.6)."""
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...audit import Report
+from ...results import Check
+from ...spec import RotorSpeed
 from ...subsystems import rotor
 from . import headline
 from .layout import FIGURE_DPI, fit, fixed_layout, title_height
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
 
-def floquet_plot(report: Report) -> "Figure | None":
-    """The two-bladed rotor's stability map: largest Floquet multiplier over rotor speed."""
+def floquet_plot(
+    result: rotor.RotorResults,
+    checks: Sequence[Check],
+    turbine: str,
+    speed: RotorSpeed,
+    ax: "Axes | None" = None,
+) -> "Figure":
+    """The two-bladed rotor's stability map: largest Floquet multiplier over rotor speed,
+    over the operating ranges of ``speed`` — on ``ax`` where given, else on a figure of
+    its own headed by ``rotor.floquet``'s status among ``checks``."""
     from matplotlib.figure import Figure
 
-    check = next((c for c in report.checks if c.id == "rotor.floquet"), None)
-    found = report.result(rotor.NAME, rotor.RotorResults)
-    if check is None or found is None:
-        return None
-    smap = found.map
+    check = next((c for c in checks if c.id == "rotor.floquet"), None)
+    smap = result.map
     rpm, rho = smap.speeds_rpm, smap.largest
-    speed = report.spec.rotor.speed
-    fig = Figure(figsize=(7.2, 3.85), dpi=FIGURE_DPI)
-    ax = fig.add_subplot()
-    judged = headline.of_checks(report, ("rotor.floquet",), headline.STATUS_ONLY)
-    title = (
-        f"{report.spec.turbine.name} — {check.numbers['hub']} two-bladed rotor on the "
-        f"tower head: stability map ({judged.words})"
-    )
+    judged = headline.of_checks(checks, ("rotor.floquet",), headline.STATUS_ONLY)
+    hub = f"{check.numbers['hub']} " if check is not None else ""  # rigid, teetered
+    title = f"{turbine} — {hub}two-bladed rotor on the tower head: stability map ({judged.words})"
     heading = fit(title, 6.8, 10)
-    headline.stamp(fig, title, judged)
-    fixed_layout(fig, top=0.2 + title_height(heading, 10))
+    if ax is None:
+        fig = Figure(figsize=(7.2, 3.85), dpi=FIGURE_DPI)
+        ax = fig.add_subplot()
+        headline.stamp(fig, title, judged)
+        fixed_layout(fig, top=0.2 + title_height(heading, 10))
     for a, b in speed.steady_rpm:
         if b > a:
             ax.axvspan(a, b, color="#c8e6c9", alpha=0.6, lw=0, label="steady operation")
@@ -58,4 +64,4 @@ def floquet_plot(report: Report) -> "Figure | None":
     handles, labels = ax.get_legend_handles_labels()
     unique = dict(zip(labels, handles, strict=True))
     ax.legend(unique.values(), unique.keys(), fontsize=8, loc="best")
-    return fig
+    return ax.get_figure()  # type: ignore[return-value]  # a Figure's axes

@@ -4,7 +4,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...audit import Report
+from ...results import Check
 from . import headline
 from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, legend_below, text_width, title_height
 
@@ -23,15 +23,13 @@ _GROUP_COLOUR = {
 _BLADE_COLOURS = ["#d62728", "#ff9896", "#2ca02c", "#98df8a", "#9467bd", "#c5b0d5"]
 
 
-def coupled_energy_plot(report: Report) -> "Figure | None":
-    """Where each parked coupled mode's kinetic energy sits (check ``system.coupling``):
-    one bar per mode, split by tower, yaw, drive train and blade groups — a mode of one
-    colour is a subsystem mode, a mixed bar is a coupling mode (Hau §7.6)."""
+def coupled_energy_plot(check: Check, turbine: str) -> "Figure":
+    """Where each parked coupled mode's kinetic energy sits (the numbers of the check
+    ``system.coupling``): one bar per mode, split by tower, yaw, drive train and blade
+    groups — a mode of one colour is a subsystem mode, a mixed bar is a coupling mode (Hau
+    §7.6)."""
     from matplotlib.figure import Figure
 
-    check = next((c for c in report.checks if c.id == "system.coupling"), None)
-    if check is None:
-        return None
     rows = check.numbers["modes"]
     groups = list(dict.fromkeys(g for r in rows for g in r["energy"]))
     blade_groups = [g for g in groups if g.startswith("blade.")]
@@ -50,10 +48,7 @@ def coupled_energy_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("share of the mode's kinetic energy")
     handles, labels = ax.get_legend_handles_labels()
     margin = 0.3 + max(text_width(t, SMALL_PT) for t in names)  # the tick labels' width
-    title = (
-        f"{report.spec.turbine.name} — coupled modes, {check.numbers['condition']}: "
-        "where the energy is"
-    )
+    title = f"{turbine} — coupled modes, {check.numbers['condition']}: where the energy is"
     heading = fit(title, MAX_FIGURE_IN - margin + 0.3, 10)
     headline.stamp(fig, title, headline.NOTHING)  # energy shares: no judgement drawn
     legend_below(
