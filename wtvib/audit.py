@@ -20,7 +20,7 @@ from .document import (
 from .errors import SpecError
 from .judge import campbell
 from .judge.analysis import Analysis, Context, Damping, Modifier, Subsystem
-from .judge.excitation import OperatingRange, excitations, operating_range
+from .judge.excitation import Excitation, OperatingRange, excitations, operating_range
 from .judge.resonance import Finding, Mark, assess_all, resonance_checks
 from .judge.resonance import marks as resonance_marks
 from .numerics.modal import ModalError
@@ -35,19 +35,23 @@ REPORT_SCHEMA = "wtvib-report/1"
 
 R = TypeVar("R")
 
-#: The analysed parts of a turbine, in report order: each a module with the subsystem
-#: protocol of :mod:`wtvib.judge.analysis` (modes, default damping, its own checks and results).
-SUBSYSTEMS: tuple[Subsystem, ...] = (
-    tower,
-    blade,
-    drivetrain,
-    yaw,
-    coupled,
-    aerodamping,
-    rotor,
-    aeroelastic,
-    stall,
-    polynomials,
+#: The analysed parts of a turbine, in report order: each module's declaration
+#: (:class:`wtvib.judge.analysis.Subsystem`: modes, default damping, its own checks and
+#: results, the lines that act on it alone, its spec section, diagram and figures).
+SUBSYSTEMS: tuple[Subsystem, ...] = tuple(
+    module.SUBSYSTEM
+    for module in (
+        tower,
+        blade,
+        drivetrain,
+        yaw,
+        coupled,
+        aerodamping,
+        rotor,
+        aeroelastic,
+        stall,
+        polynomials,
+    )
 )
 
 #: What changes every judged mode once the models are built
@@ -70,6 +74,7 @@ class Report:
     warnings: tuple[str, ...] = field(default_factory=tuple)
     uncertainty: UncertaintyDoc | None = None
     results: Mapping[str, object] = field(default_factory=dict)  # by subsystem (typed)
+    lines: tuple[Excitation, ...] = ()  # the excitation lines judged (all_lines)
 
     def result(self, subsystem: str, kind: type[R]) -> R | None:
         """A subsystem's typed result object (``Analysis.results``), None where it gave none
@@ -287,19 +292,25 @@ def run(
         ) from None
 
 
+def all_lines(spec: Spec) -> list[Excitation]:
+    """Every excitation line the audit judges: the rotor's harmonics and each subsystem's
+    own (its declaration's ``excitations``)."""
+    return excitations(spec, [e for sub in SUBSYSTEMS for e in sub.excitations(spec)])
+
+
 def _run(
     spec: Spec, settings: AuditSettings, samples: int | None, seed: int, client: Any
 ) -> Report:
     rule = settings.margin_rule()
     op = operating_range(spec.rotor.speed)
-    lines = excitations(spec)
+    lines = all_lines(spec)
     built: dict[str, list[Mode]] = {}
     for sub in SUBSYSTEMS:
         try:
-            built[sub.NAME] = sub.build_modes(spec, built)
+            built[sub.name] = sub.build_modes(spec, built)
         except ModalError as exc:  # say which model could not be solved
-            raise ModalError(f"{sub.NAME} model: {exc}") from None
-    damping = {sub.NAME: sub.default_damping(spec) for sub in SUBSYSTEMS}
+            raise ModalError(f"{sub.name} model: {exc}") from None
+    damping = {sub.name: sub.default_damping(spec) for sub in SUBSYSTEMS}
     built = _one_truth_per_mode(built, damping)
     assumptions: list[str] = []
     for modifier in MODIFIERS:  # the aerodynamics damp every judged mode in operation
@@ -311,12 +322,12 @@ def _run(
     results: dict[str, object] = {}
     for sub in SUBSYSTEMS:
         found = assess_all(
-            built[sub.NAME],
+            built[sub.name],
             lines,
             op,
             rule,
             settings.severities(),
-            damping[sub.NAME].ratio,
+            damping[sub.name].ratio,
             settings.heavy_damping_ratio,
         )
         resonance = resonance_checks(found, op, rule)
@@ -327,7 +338,7 @@ def _run(
         findings += found
         checks += [*analysis.lead, *resonance, *analysis.checks]
         if analysis.results is not None:
-            results[sub.NAME] = analysis.results
+            results[sub.name] = analysis.results
         assumptions += analysis.assumptions
     _assert_finite(all_modes)
     if not any(f.mode.judged for f in findings) and not spec.rotor.speed.parked:
@@ -338,7 +349,7 @@ def _run(
             "from) that a verdict could rest on",
             source=spec.source_file,
         )
-    spread = _uncertainty(spec, samples, seed, all_modes, rule, client) if samples else None
+    spread = _uncertainty(spec, samples, seed, all_modes, rule, lines, client) if samples else None
     return Report(
         spec=spec,
         settings=settings,
@@ -356,6 +367,7 @@ def _run(
         ),
         uncertainty=spread,
         results=results,
+        lines=tuple(lines),
     )
 
 
@@ -374,8 +386,8 @@ def _one_truth_per_mode(
     stands_for = {v: present[k] for k, v in replaced.items()}
     out = {}
     for sub in SUBSYSTEMS:
-        own = damping[sub.NAME]
-        out[sub.NAME] = [
+        own = damping[sub.name]
+        out[sub.name] = [
             replace(
                 m,
                 superseded_by=replaced.get(m.id),
@@ -383,7 +395,7 @@ def _one_truth_per_mode(
                 damping_source=own.source if m.damping_ratio is None else m.damping_source,
                 band_hz=m.band_hz or _band_of(m, stands_for.get(m.id)),
             )
-            for m in built[sub.NAME]
+            for m in built[sub.name]
         ]
     return out
 
@@ -410,7 +422,13 @@ def _uncertainty_warnings(spread: UncertaintyDoc | None) -> list[str]:
 
 
 def _uncertainty(
-    spec: Spec, samples: int, seed: int, modes: list[Mode], rule: MarginRule, client: Any = None
+    spec: Spec,
+    samples: int,
+    seed: int,
+    modes: list[Mode],
+    rule: MarginRule,
+    lines: list[Excitation],
+    client: Any = None,
 ) -> UncertaintyDoc | None:
     from .studies import uncertainty
 
@@ -422,7 +440,7 @@ def _uncertainty(
         if client is None
         else uncertainty.sample_distributed(spec, samples, seed, client, nominal=nominal)
     )
-    out = uncertainty.summary(spec, drawn, modes, rule)
+    out = uncertainty.summary(spec, drawn, modes, rule, lines)
     out["seed"] = seed
     out["sensitivities"] = uncertainty.sensitivities(spec, nominal)
     return cast(UncertaintyDoc, out)
@@ -504,9 +522,8 @@ def suspicious(spec: Spec, modes: list[Mode]) -> list[str]:
         )
     own: list[str] = []  # each subsystem's own warnings about its part
     for sub in SUBSYSTEMS:
-        hook = getattr(sub, "warnings", None)
-        if hook is not None:
-            own += hook(spec, modes)
+        if sub.warnings is not None:
+            own += sub.warnings(spec, modes)
     out += own
     for m in modes:
         slowest = SLOWEST_PLATFORM_HZ if is_platform_mode(m.id) else SLOWEST_MODE_HZ
@@ -604,8 +621,8 @@ def _assumptions(
             f"the highest steady speed ({speed.overspeed:.4g} rpm) is checked."
         )
     for sub in SUBSYSTEMS:
-        own = damping[sub.NAME]
-        mine = [m for m in modes if m.subsystem == sub.NAME and m.damping_source]
+        own = damping[sub.name]
+        mine = [m for m in modes if m.subsystem == sub.name and m.damping_source]
         alone = [m.id for m in mine if m.damping_ratio == own.ratio]
         added = [m.id for m in mine if m.damping_ratio != own.ratio]
         if mine and own.assumed:  # an assumption is stated only when it was made
@@ -613,7 +630,7 @@ def _assumptions(
             if added:
                 parts.append(f"added to what the dampers give for {', '.join(added)}")
             out.append(
-                f"{sub.NAME}: damping ratio {own.ratio:.3g} {own.source} {'; '.join(parts)}."
+                f"{sub.name}: damping ratio {own.ratio:.3g} {own.source} {'; '.join(parts)}."
             )
     stiffened = [m.id for m in modes if isinstance(m.curve, Southwell)]
     if stiffened:

@@ -58,7 +58,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..judge.analysis import Analysis, Context, Damping, no_modes
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, no_modes
 from ..numerics import modal, unsteady
 from ..results import Check, Mode, OperatingDamping, Rule
 from ..rules import HEAVY_DAMPING, NEGATIVE
@@ -1026,3 +1026,13 @@ def _negative_where_not_judged(modes: Sequence[Mode]) -> tuple[list[str], dict[s
         )
         hidden[m.id] = round(op.total[j], 6)
     return shown, hidden
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="aerodynamics",
+    figures=("damping",),
+)

@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
-from ..judge.analysis import Analysis, Context, no_modes
+from ..judge.analysis import Analysis, Context, Subsystem, no_modes
 from ..numerics import beam
 from ..numerics.modal import solve, state_roots
 from ..spec import check_section_inertia
@@ -691,3 +691,12 @@ def analyse(spec: "Spec", ctx: Context) -> Analysis:
             tuple(stations_), worst, required, stability_chart(worst.section, required)
         ),
     )
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    figures=("blade-flutter", "blade-stability"),
+)

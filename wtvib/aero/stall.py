@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..judge.analysis import Analysis, Context, no_modes
+from ..judge.analysis import Analysis, Context, Subsystem, no_modes
 from ..rules import NEGATIVE
 from ..subsystems.blade import default_damping as blade_damping
 from ..units import rad_s_to_rpm, rpm_to_rad_s
@@ -415,3 +415,12 @@ def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``blade.stall.flap1`` and ``blade.stall.edge1``, with the damping curves they judge."""
     found, curves = judge(spec, list(ctx.modes))
     return Analysis(checks=tuple(found), results=StallResults(curves) if curves else None)
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    figures=("blade-stall",),
+)

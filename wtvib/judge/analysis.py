@@ -1,9 +1,14 @@
-"""The subsystem protocol: what every analysed part of a turbine gives the audit (DESIGN.md).
+"""The subsystem declaration: what every analysed part of a turbine gives the audit
+(DESIGN.md).
 
-A subsystem is a module with four names — :data:`NAME`, ``default_damping(spec)``,
-``build_modes(spec, built)`` and ``analyse(spec, context)`` — so that the audit is a loop
-over them plus the one resonance judgement and the verdict, and a new subsystem is one
-module added to :data:`wtvib.audit.SUBSYSTEMS`:
+A subsystem is a module that declares itself once, as its :data:`SUBSYSTEM`
+(:class:`Subsystem`): its name, ``build_modes(spec, built)``, ``default_damping(spec)``,
+``analyse(spec, context)``, and where it is optional the excitations that act on it alone,
+its warnings, the spec section it reads, the Campbell diagram it is drawn on and the
+figures that draw its results — so that the audit is a loop over the declarations plus the
+one resonance judgement and the verdict, and a new subsystem is one module whose
+declaration is added to :data:`wtvib.audit.SUBSYSTEMS` (``tests/test_analysis.py`` holds
+every declared section, diagram and figure to exist):
 
 1. ``build_modes`` computes (or takes as given) the natural modes, seeing the modes of the
    subsystems before it (``built``; the drive train takes the blades' edgewise frequency);
@@ -12,7 +17,7 @@ module added to :data:`wtvib.audit.SUBSYSTEMS`:
    every mode, and judges every mode against every excitation (:mod:`wtvib.judge.resonance`);
 3. ``analyse`` returns the subsystem's own checks and results, seeing every mode and the
    judgement of its own (:class:`Context`);
-4. ``warnings(spec, modes)``, where a subsystem has it, names the legal but suspicious
+4. ``warnings(spec, modes)``, where a subsystem declares it, names the legal but suspicious
    values of its part (a tower's first bending at 0.01 Hz, a yaw model without the head's
    yaw inertia) for the report's warnings.
 """
@@ -88,22 +93,40 @@ class Damping:
         return self.ratio + zeta, f"{self.source}, plus {zeta:.3g} from {dampers}"
 
 
-class Subsystem(Protocol):
-    """The protocol a subsystem module satisfies (modules are protocol implementations)."""
+def no_lines(spec: "Spec") -> "list[Excitation]":
+    """``excitations`` of a subsystem that only the rotor's harmonics excite."""
+    return []
 
-    NAME: str
 
-    def default_damping(self, spec: "Spec") -> Damping:
-        """Damping ratio of the modes that carry none of their own, and its source."""
-        ...
+@dataclass(frozen=True)
+class Subsystem:
+    """One subsystem, declared once (its module's ``SUBSYSTEM``).
 
-    def build_modes(self, spec: "Spec", built: "Mapping[str, list[Mode]]") -> "list[Mode]":
-        """The subsystem's natural modes (``built``: the modes of the subsystems before)."""
-        ...
+    ``name`` is the subsystem of its modes and checks; ``build_modes`` gives its natural
+    modes (``built``: the modes of the subsystems before it), ``default_damping`` the
+    damping of the modes that carry none, ``analyse`` its own checks and results;
+    ``excitations`` the lines that act on it alone (the drive train's gear mesh; the rotor's
+    harmonics act on every subsystem); ``warnings`` names legal but suspicious values of its
+    part; ``part`` is the spec section it reads (a :class:`wtvib.spec.Spec` field; None:
+    it reads others'); ``diagram`` the Campbell diagram its modes are drawn on
+    (:data:`DIAGRAMS`) and ``title`` its words there; ``figures`` the entries of
+    :data:`wtvib.outputs.plots.FIGURES` that draw its results.
+    """
 
-    def analyse(self, spec: "Spec", ctx: Context) -> Analysis:
-        """The subsystem's own checks and results."""
-        ...
+    name: str
+    build_modes: "Callable[[Spec, Mapping[str, list[Mode]]], list[Mode]]"
+    default_damping: "Callable[[Spec], Damping]"
+    analyse: "Callable[[Spec, Context], Analysis]"
+    part: str | None = None
+    excitations: "Callable[[Spec], list[Excitation]]" = no_lines
+    warnings: "Callable[[Spec, Sequence[Mode]], list[str]] | None" = None
+    diagram: str | None = None
+    title: str = ""
+    figures: tuple[str, ...] = ()
+
+
+#: The Campbell diagrams by file stem suffix, in drawing order (a subsystem's ``diagram``).
+DIAGRAMS = ("campbell", "campbell-drivetrain", "campbell-yaw", "campbell-system")
 
 
 class Modifier(Protocol):

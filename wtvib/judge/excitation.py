@@ -183,74 +183,12 @@ def _harmonic_text(k: int, blades: int) -> str:
     return "higher rotor harmonic"
 
 
-def gear_mesh(spec: Spec) -> list[Excitation]:
-    """Tooth-mesh excitations of the gearbox stages: teeth × shaft rotational frequency.
-
-    References
-    ----------
-    Hau ch. 7.3.4 (Aeroman: mesh frequency of the second gear stage, Fig. 7.15).
-    """
-    return [
-        Excitation(
-            f"mesh.{stage.name}",
-            stage.teeth * stage.shaft_speed_ratio,
-            "dominant",
-            f"gear mesh {stage.name}: {stage.teeth} teeth × {stage.shaft_speed_ratio:g}·P",
-            frozenset({"drivetrain"}),
-        )
-        for stage in spec.drivetrain.gear_stages
-    ]
-
-
-def shaft_imbalance(spec: Spec) -> list[Excitation]:
-    """The high-speed shaft's mass imbalance: a line at the generator's speed (gear ratio ×
-    1P) acting on the drive train, where the spec gives a gear ratio above 1.
-
-    Hau ch. 7.3.4 names "mass imbalances of the rotating parts" beside the gear mesh as the
-    drive train's internal excitations (the Aeroman's centrifugal switch on its high-speed
-    shaft, Fig. 7.15). An imbalance's force is lateral: it twists the train only through
-    the eccentric mass's gravity torque m·g·e, once a turn of the shaft — a minor line,
-    which a crossing marks without failing the audit (the shaft's own bending, which the
-    force drives directly, is not modelled).
-    """
-    ratio = spec.drivetrain.gear_ratio
-    if ratio is None or ratio <= 1.0:
-        return []
-    return [
-        Excitation(
-            "1G",
-            ratio,
-            "minor",
-            f"high-speed shaft imbalance: once a turn of the generator, {ratio:g}·P",
-            frozenset({"drivetrain"}),
-        )
-    ]
-
-
-def electrical(spec: Spec) -> list[Excitation]:
-    """Generator-side excitations at fixed frequencies (Hau ch. 7.3.4: grid oscillations,
-    inverters, control), acting on the drive train."""
-    return [
-        Excitation(
-            f"electrical.{e.name}",
-            0.0,
-            e.energy,
-            f"generator side: {e.name}",
-            frozenset({"drivetrain"}),
-            e.frequency_hz,
-        )
-        for e in spec.drivetrain.electrical_excitations
-    ]
-
-
-def excitations(spec: Spec) -> list[Excitation]:
-    """Every excitation the audit checks for this turbine (none for a parked rotor: every
-    line is at 0 Hz at standstill)."""
+def excitations(spec: Spec, own: Sequence[Excitation] = ()) -> list[Excitation]:
+    """Every excitation the audit checks for this turbine: the rotor's harmonics, which act
+    on every subsystem, and the lines each subsystem declares as its ``own`` (the drive
+    train's gear mesh, shaft imbalance and generator side:
+    :func:`wtvib.subsystems.drivetrain.excitations`) — none for a parked rotor: every line
+    is at 0 Hz at standstill."""
     if spec.rotor.speed.parked:
         return []
-    return (
-        rotor_harmonics(spec.rotor.blades, spec.audit.harmonics)
-        + gear_mesh(spec)
-        + shaft_imbalance(spec)
-        + electrical(spec)
-    )
+    return rotor_harmonics(spec.rotor.blades, spec.audit.harmonics) + list(own)

@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
-from ..judge.excitation import excitations, operating_range
+from ..judge.excitation import Excitation, excitations, operating_range
 from ..numerics import modal
 from ..results import Mode, Southwell
 from ..rules import MarginRule
@@ -367,6 +367,7 @@ def summary(
     samples: Samples,
     modes: Sequence[Mode] | None = None,
     rule: MarginRule | None = None,
+    lines: Sequence[Excitation] | None = None,
 ) -> dict[str, Any]:
     """Percentiles per mode and, per rotor line that is not minor, the probability that the
     sampled mode violates the margin somewhere in steady operation (with its 95 % interval).
@@ -379,7 +380,8 @@ def summary(
     """
     rule = rule or spec.audit.margin_rule()
     op = operating_range(spec.rotor.speed)
-    lines = [e for e in excitations(spec) if e.energy != "minor"]
+    judged = excitations(spec) if lines is None else lines  # the audit's: every subsystem's
+    lines = [e for e in judged if e.energy != "minor"]
     by_id = {m.id: m for m in modes or ()}
     omega = np.concatenate([np.linspace(a, b, SPEEDS_PER_RANGE) for a, b in op.steady])
     out: dict[str, dict[str, Any]] = {}

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..judge.analysis import Analysis, Context, Damping, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..numerics import beam, modal
 from ..results import Mode, Sampled, Shape, Southwell, SpeedCurve, ordinal
 from ..spec import BladeStructure, ModeSpec, Spec
@@ -496,3 +496,14 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             + ".",
         )
     )
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="blade",
+    diagram="campbell",
+    title="blades",
+)

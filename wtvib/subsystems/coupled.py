@@ -69,7 +69,7 @@ from numpy.typing import NDArray
 
 from ..errors import SpecError
 from ..judge import closeness
-from ..judge.analysis import Analysis, Context, Damping, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..judge.resonance import standstill_stability
 from ..numerics import beam, modal
 from ..numerics.kinematics import (
@@ -1270,3 +1270,15 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
         else ()
     )
     return Analysis(checks=tuple(c for c in found if c is not None), assumptions=statements)
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="coupled",
+    diagram="campbell-system",
+    title="coupled whole turbine",
+    figures=("system-energy",),
+)

@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 from numpy.typing import NDArray
 
-from ..judge.analysis import Analysis, Context, Damping, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..judge.excitation import Excitation, OperatingRange
 from ..judge.resonance import lines_met
 from ..numerics import modal
@@ -556,7 +556,76 @@ def modal_damping(m: Array, k: Array, zeta: float) -> Array:
 
 
 # ---------------------------------------------------------------------------------------
-# The subsystem protocol (wtvib.judge.analysis)
+# The lines that act on the drive train alone (the rotor's harmonics act on it too)
+
+
+def gear_mesh(spec: Spec) -> list[Excitation]:
+    """Tooth-mesh excitations of the gearbox stages: teeth × shaft rotational frequency.
+
+    References
+    ----------
+    Hau ch. 7.3.4 (Aeroman: mesh frequency of the second gear stage, Fig. 7.15).
+    """
+    return [
+        Excitation(
+            f"mesh.{stage.name}",
+            stage.teeth * stage.shaft_speed_ratio,
+            "dominant",
+            f"gear mesh {stage.name}: {stage.teeth} teeth × {stage.shaft_speed_ratio:g}·P",
+            frozenset({"drivetrain"}),
+        )
+        for stage in spec.drivetrain.gear_stages
+    ]
+
+
+def shaft_imbalance(spec: Spec) -> list[Excitation]:
+    """The high-speed shaft's mass imbalance: a line at the generator's speed (gear ratio ×
+    1P) acting on the drive train, where the spec gives a gear ratio above 1.
+
+    Hau ch. 7.3.4 names "mass imbalances of the rotating parts" beside the gear mesh as the
+    drive train's internal excitations (the Aeroman's centrifugal switch on its high-speed
+    shaft, Fig. 7.15). An imbalance's force is lateral: it twists the train only through
+    the eccentric mass's gravity torque m·g·e, once a turn of the shaft — a minor line,
+    which a crossing marks without failing the audit (the shaft's own bending, which the
+    force drives directly, is not modelled).
+    """
+    ratio = spec.drivetrain.gear_ratio
+    if ratio is None or ratio <= 1.0:
+        return []
+    return [
+        Excitation(
+            "1G",
+            ratio,
+            "minor",
+            f"high-speed shaft imbalance: once a turn of the generator, {ratio:g}·P",
+            frozenset({"drivetrain"}),
+        )
+    ]
+
+
+def electrical(spec: Spec) -> list[Excitation]:
+    """Generator-side excitations at fixed frequencies (Hau ch. 7.3.4: grid oscillations,
+    inverters, control), acting on the drive train."""
+    return [
+        Excitation(
+            f"electrical.{e.name}",
+            0.0,
+            e.energy,
+            f"generator side: {e.name}",
+            frozenset({"drivetrain"}),
+            e.frequency_hz,
+        )
+        for e in spec.drivetrain.electrical_excitations
+    ]
+
+
+def excitations(spec: Spec) -> list[Excitation]:
+    """The drive train's own lines: gear mesh, shaft imbalance, generator side."""
+    return gear_mesh(spec) + shaft_imbalance(spec) + electrical(spec)
+
+
+# ---------------------------------------------------------------------------------------
+# The subsystem (wtvib.judge.analysis)
 
 NAME = "drivetrain"
 
@@ -694,3 +763,16 @@ def shares_statement(shares: dict[str, float], tuned: bool = False) -> str:
             else ""
         )
     )
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="drivetrain",
+    excitations=excitations,
+    diagram="campbell-drivetrain",
+    title="drive train",
+    figures=("drivetrain-modes", "drivetrain-power"),
+)

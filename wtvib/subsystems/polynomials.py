@@ -53,7 +53,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SpecError
-from ..judge.analysis import Analysis, Context, Damping, no_modes
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, no_modes
 from ..numerics import beam, modal
 from ..results import Check, Rule
 from ..spec import Spec
@@ -791,3 +791,12 @@ def corrected(result: Shapes) -> dict[str, str]:
             ) from None
         out[file] = patched(text, rows)
     return out
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    figures=("shapes",),
+)

@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
-from ..judge.analysis import Analysis, Context, Damping, no_modes, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, no_modes, section_damping
 from ..judge.excitation import operating_range
 from ..judge.resonance import split_by_regime
 from ..numerics import modal
@@ -393,3 +393,13 @@ def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``rotor.floquet`` and the stability map it draws (two-bladed rotors)."""
     found, smap = check(spec, ctx.modes)
     return Analysis(checks=(found,), results=RotorResults(smap) if smap is not None else None)
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="rotor",
+    figures=("floquet",),
+)

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .. import spec as spec_mod
-from ..judge.analysis import Analysis, Context, Damping, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..judge.excitation import Excitation, OperatingRange
 from ..judge.resonance import Finding, assess, speed_span, standstill
 from ..numerics import beam, modal, rigid
@@ -1194,3 +1194,15 @@ def warnings(spec: Spec, modes: Sequence[Mode]) -> list[str]:
                 f"{low:g} Hz is implausible"
             )
     return out
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="tower",
+    warnings=warnings,
+    diagram="campbell",
+    title="tower",
+)

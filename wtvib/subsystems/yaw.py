@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import SpecError
-from ..judge.analysis import Analysis, Context, Damping, section_damping
+from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..judge.excitation import Excitation, OperatingRange
 from ..judge.resonance import lines_met, steady_samples
 from ..numerics import modal
@@ -475,3 +475,15 @@ def warnings(spec: Spec, modes: Sequence[Mode]) -> list[str]:
             f"{estimate:.3g} Hz"
         )
     return [text + " — give the head's yaw inertia"]
+
+
+SUBSYSTEM = Subsystem(
+    NAME,
+    build_modes,
+    default_damping,
+    analyse,
+    part="yaw",
+    warnings=warnings,
+    diagram="campbell-yaw",
+    title="yaw system",
+)

@@ -79,25 +79,27 @@ def drawers(report: "Report", detail: bool = True) -> dict[str, Callable[[], "Fi
     """What :func:`diagrams` draws, not yet drawn: each figure's maker by file stem suffix
     (a maker may find nothing to draw and return None)."""
     from .campbell import DIAGRAMS, campbell_plot
-    from .polynomials import shapes_plot
 
-    shapes = {"shapes": functools.partial(shapes_plot, report)} if detail else {}
+    out: dict[str, Callable[[], Figure | None]]
     if report.spec.rotor.speed.parked:  # a standstill audit: no speed to draw over
         from .campbell import standstill_plot
 
-        return {"standstill": functools.partial(standstill_plot, report), **shapes}
-    # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked) gets no
-    # diagram of its own: the system diagram shows them where they are judged
-    present = {m.subsystem for m in report.modes if m.judged}
-    out: dict[str, Callable[[], Figure | None]] = {
-        name: functools.partial(campbell_plot, report, subs)
-        for name, subs in DIAGRAMS.items()
-        if present.intersection(subs)
-    }
-    for name, make in FIGURES.items():
+        out = {"standstill": functools.partial(standstill_plot, report)}
+        figures = {"shapes": FIGURES["shapes"]}
+    else:
+        # a subsystem whose modes are all judged elsewhere (coupled) or nowhere (locked)
+        # gets no diagram of its own: the system diagram shows them where they are judged
+        present = {m.subsystem for m in report.modes if m.judged}
+        out = {
+            name: functools.partial(campbell_plot, report, subs)
+            for name, subs in DIAGRAMS.items()
+            if present.intersection(subs)
+        }
+        figures = FIGURES
+    for name, make in figures.items():
         if detail or name in MAIN:
             out[name] = functools.partial(make, report)
-    return out | shapes
+    return out
 
 
 def _damping(report: "Report") -> "Figure | None":
@@ -176,13 +178,22 @@ def _system_energy(report: "Report") -> "Figure | None":
     return coupled_energy_plot(check, report.spec.turbine.name) if check is not None else None
 
 
+def _shapes(report: "Report") -> "Figure | None":
+    from ...subsystems import polynomials
+    from .polynomials import polynomials_plot
+
+    found = report.result(polynomials.NAME, polynomials.Shapes)
+    return polynomials_plot(found, report.spec) if found is not None else None
+
+
 def _has(report: "Report", check: str) -> bool:
     return any(c.id == check for c in report.checks)
 
 
-#: The figures besides the Campbell diagrams, by file stem suffix: each takes what it draws
-#: from the report — a subsystem's typed result (``Report.result``), its checks, the
-#: turbine's name — and hands it to the plot function, which draws that and nothing else
+#: The figures besides the Campbell diagrams, by file stem suffix, each named by the
+#: declaration of the subsystem whose results it draws (``Subsystem.figures``): each takes
+#: what it draws from the report — a subsystem's typed result (``Report.result``), its
+#: checks, the turbine's name — and hands it to the plot function, which draws that alone
 #: (python-control's ``x_plot(result)``); None where the report has nothing to draw.
 FIGURES: dict[str, Callable[["Report"], "Figure | None"]] = {
     "damping": _damping,
@@ -193,6 +204,7 @@ FIGURES: dict[str, Callable[["Report"], "Figure | None"]] = {
     "blade-stability": _blade_stability,
     "blade-stall": _blade_stall,
     "system-energy": _system_energy,
+    "shapes": _shapes,
 }
 
 

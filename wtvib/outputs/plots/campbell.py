@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ...aero import aerodamping
-from ...audit import Report
+from ...audit import SUBSYSTEMS, Report
+from ...judge.analysis import DIAGRAMS as DIAGRAM_NAMES
 from ...results import Mode, Sampled
 from ...rules import NEGATIVE, STATUS_ORDER
 from ...subsystems import tower as tower_model
@@ -44,19 +45,12 @@ if TYPE_CHECKING:
     from ...studies.design import Band
 
 STATUS_COLOUR = {"pass": "#2e7d32", "info": "#1565c0", "warn": "#ef6c00", "fail": "#c62828"}
-SUBSYSTEM_TITLE = {
-    "tower": "tower",
-    "blade": "blades",
-    "drivetrain": "drive train",
-    "yaw": "yaw system",
-    "system": "coupled whole turbine",
-}
-#: Subsystems drawn together on one diagram.
+#: Each drawn subsystem's words in a diagram's title (its declaration's ``title``).
+SUBSYSTEM_TITLE = {sub.name: sub.title for sub in SUBSYSTEMS if sub.title}
+#: Subsystems drawn together on one diagram (their declarations' ``diagram``), by file stem
+#: suffix.
 DIAGRAMS: dict[str, tuple[str, ...]] = {
-    "campbell": ("tower", "blade"),
-    "campbell-drivetrain": ("drivetrain",),
-    "campbell-yaw": ("yaw",),
-    "campbell-system": ("system",),
+    name: tuple(sub.name for sub in SUBSYSTEMS if sub.diagram == name) for name in DIAGRAM_NAMES
 }
 
 

@@ -7,7 +7,7 @@ import numpy as np
 
 from ...rules import Status
 from ...spec import Spec
-from ...subsystems.polynomials import NAME, Row, Shapes
+from ...subsystems.polynomials import Row, Shapes
 from .. import words
 from . import headline
 from .campbell import STATUS_COLOUR
@@ -16,15 +16,6 @@ from .layout import FIGURE_DPI, MAX_FIGURE_IN, SMALL_PT, fit, fixed_layout, titl
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
     from numpy.typing import ArrayLike, NDArray
-
-    from ...audit import Report
-
-
-def shapes_plot(report: "Report") -> "Figure | None":
-    """``check``'s figure of an ElastoDyn deck's polynomials (:func:`polynomials_plot`),
-    where the audit judged any."""
-    found = report.result(NAME, Shapes)
-    return polynomials_plot(found, report.spec) if found is not None else None
 
 
 def polynomials_plot(result: Shapes, spec: Spec) -> "Figure":
