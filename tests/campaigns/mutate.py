@@ -63,6 +63,10 @@ TESTS: dict[str, tuple[str, ...]] = {
     "numerics.unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
     "aero.tuned_damper": ("tests/validation/test_tuned_damper.py",),
     "subsystems.polynomials": ("tests/test_polynomials.py", "tests/validation/test_polynomials.py"),
+    "importers.hawcstab2": (
+        "tests/test_campbell_import.py",
+        "tests/validation/test_campbell_import.py",
+    ),
 }
 
 

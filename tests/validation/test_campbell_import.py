@@ -205,3 +205,20 @@ def test_following_swaps_columns_that_swap_modes_and_never_jumps_family():
     assert followed(amplitudes, freq).tolist() == [[0, 1, 2], [1, 0, 2]]
     alike = np.array([[flap, edge, flap], [flap, edge, flap]])
     assert followed(alike, freq).tolist() == [[0, 1, 2], [0, 1, 2]]
+
+
+def test_hawcstab2_modes_without_an_amp_file_keep_their_column_numbers(tmp_path):
+    """Without the .amp beside it, the .cmb's modes are named by their column — mode1 is
+    HAWCStab2's mode 1 with its frequencies — and the audit says that they are unnamed."""
+    for name in ("steady.cmb", "steady.pwr"):
+        (tmp_path / name).write_bytes((DATA / "hawcstab2" / name).read_bytes())
+    s = importers.load(tmp_path / "steady.cmb", importers.ReadOptions(blades=3))
+    table = np.loadtxt(tmp_path / "steady.cmb", skiprows=1)
+    pwr = np.loadtxt(tmp_path / "steady.pwr")
+    rpm = np.interp(table[:, 0], pwr[:, 0], pwr[:, 9])
+    first = table[rpm == rpm.min()].mean(axis=0)  # the points at the lowest speed, merged
+    modes = s.results.modes
+    assert modes["mode1"].frequency_hz[0] == pytest.approx(first[1], rel=1e-9)
+    assert modes["mode3"].frequency_hz[0] == pytest.approx(first[3], rel=1e-9)
+    assert "(mode 3)" in modes["mode3"].description
+    assert any("the modes are not named" in w for w in s.warnings)
