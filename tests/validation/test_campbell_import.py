@@ -220,5 +220,5 @@ def test_hawcstab2_modes_without_an_amp_file_keep_their_column_numbers(tmp_path)
     modes = s.results.modes
     assert modes["mode1"].frequency_hz[0] == pytest.approx(first[1], rel=1e-9)
     assert modes["mode3"].frequency_hz[0] == pytest.approx(first[3], rel=1e-9)
-    assert "(mode 3)" in modes["mode3"].description
+    assert modes["mode3"].description == "HAWCStab2 mode 3 (mode 3)"
     assert any("the modes are not named" in w for w in s.warnings)
