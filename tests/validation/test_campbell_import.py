@@ -196,7 +196,8 @@ def test_hawcstab2_columns_are_followed_by_what_they_move(tmp_path):
 def test_following_swaps_columns_that_swap_modes_and_never_jumps_family():
     """Three columns at two points: the first two trade what they move (their frequencies
     cross), the third moves what the first does at four times its frequency — followed,
-    the first two swap and the third keeps its own."""
+    the first two swap and the third keeps its own; two columns that move the same sensors
+    and trade places are followed by frequency."""
     from wtvib.importers.hawcstab2 import followed
 
     flap, edge = [1.0, 0.1], [0.1, 1.0]
@@ -205,6 +206,9 @@ def test_following_swaps_columns_that_swap_modes_and_never_jumps_family():
     assert followed(amplitudes, freq).tolist() == [[0, 1, 2], [1, 0, 2]]
     alike = np.array([[flap, edge, flap], [flap, edge, flap]])
     assert followed(alike, freq).tolist() == [[0, 1, 2], [0, 1, 2]]
+    # two that move the same sensors and trade columns: told apart by their frequencies
+    moved = np.array([[0.9, 0.6, 3.6], [3.7, 0.6, 0.95]])
+    assert followed(alike, moved).tolist() == [[0, 1, 2], [2, 1, 0]]
 
 
 def test_hawcstab2_modes_without_an_amp_file_keep_their_column_numbers(tmp_path):
