@@ -343,4 +343,4 @@ def test_shapes_writes_beside_never_over_the_deck(shared, tmp_path):
 
 def test_shapes_refuses_what_is_not_an_elastodyn_deck(tmp_path, write_spec):
     result = _run("shapes", str(write_spec()))
-    assert result.exit_code == 2 and "is not an ElastoDyn deck" in result.output
+    assert result.exit_code == 2 and "not an ElastoDyn deck" in result.output

@@ -261,9 +261,10 @@ def names_from_amp(
         weights = np.array([_WEIGHTS.get(i, 1.0) for i in range(len(TURBINE_SENSORS))])
         mags = data[:, 1 : 1 + modes * per].reshape(len(data), modes, -1)[:, :, ::2] * weights
         order = None
-        if points is not None and freqs is not None and _same_points(data[:, 0], points):
-            order = followed(_unique_rows(data[:, 0], mags), freqs)
-            mags = np.take_along_axis(_unique_rows(data[:, 0], mags), order[:, :, None], axis=1)
+        once = _first_rows(data[:, 0])  # each point once, as read_cmb reads the .cmb
+        if points is not None and freqs is not None and _same(data[once, 0], points):
+            order = followed(mags[once], freqs)
+            mags = np.take_along_axis(mags[once], order[:, :, None], axis=1)
         out = [TURBINE_SENSORS[int(np.argmax(mags[:, j].mean(axis=0)))] for j in range(modes)]
         return out, "fixed", order
     if "u_x" in text or "u_y" in text:
@@ -289,17 +290,15 @@ def names_from_amp(
     )
 
 
-def _unique_rows(keys: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """``values``' rows, each operating point once (as :func:`read_cmb` reads the .cmb)."""
+def _first_rows(keys: np.ndarray) -> np.ndarray:
+    """The index of each key's first row, in the file's order."""
     _, first = np.unique(keys, return_index=True)
-    return values[np.sort(first)]
+    return np.sort(first)
 
 
-def _same_points(amp_points: np.ndarray, cmb_points: np.ndarray) -> bool:
-    """Whether the .amp's rows are the .cmb's operating points, in the same order."""
-    _, first = np.unique(amp_points, return_index=True)
-    rows = amp_points[np.sort(first)]
-    return rows.shape == cmb_points.shape and bool(np.allclose(rows, cmb_points))
+def _same(amp_points: np.ndarray, cmb_points: np.ndarray) -> bool:
+    """Whether the .amp's points are the .cmb's, in the same order."""
+    return amp_points.shape == cmb_points.shape and bool(np.allclose(amp_points, cmb_points))
 
 
 def followed(amplitudes: np.ndarray, freq: np.ndarray) -> np.ndarray:

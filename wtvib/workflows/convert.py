@@ -51,14 +51,13 @@ def shapes(
     """The deck's polynomials against the computed shapes (a table or JSON), the corrected
     tower and blade files written into ``output``, the figure beside them."""
     from .. import importers
-    from ..errors import OptionError
+    from ..errors import SpecError
     from ..subsystems import polynomials
 
     if importers.kind(deck) != "elastodyn":
-        raise OptionError(
-            str(deck),
-            "is not an ElastoDyn deck: shapes takes an ElastoDyn main file or the .fst that "
-            "names it",
+        raise SpecError(
+            "not an ElastoDyn deck: shapes takes an ElastoDyn main file or the .fst that names it",
+            source=str(deck),
         )
     speed = (rpm, rpm) if rpm is not None and rpm > 0 else None
     spec = importers.load(deck, importers.ReadOptions(rpm=speed))
