@@ -621,8 +621,8 @@ def _tower_section(
             "derived",
         ),
         "damping_ratio": main_damping(tower_file, "TwrFADmp(1)"),
-        # ElastoDyn's (and FAST's) ratios: per mode, stiffness-proportional at the tower's
-        # own frequency without its head (CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)))
+        # ElastoDyn's (and FAST's) ratios: per mode, stiffness-proportional at the frequency
+        # its polynomial implies on the tower alone (CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)))
         "damping_by_mode": {
             name: main_damping(tower_file, key)
             for name, key in (

@@ -425,8 +425,9 @@ class Tower(_Strict):
         "mode",
         description="What the damping ratios are the ratios of: 'mode', each computed "
         "mode's own; 'tower-alone', ElastoDyn's — a stiffness-proportional damping whose "
-        "ratio is given at the frequency of the tower's own mode without its head, point "
-        "masses or gravity, so that a mode at f carries ζ·f/f_alone (ElastoDyn.f90: CTFA = "
+        "ratio is given at the frequency the mode's polynomial implies on the tower alone "
+        "(without head, point masses or gravity; the tower's own mode where no polynomial is "
+        "given), so that a mode at f carries ζ·f/f_alone (ElastoDyn.f90: CTFA = "
         "0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1))).",
     )
     stiffness_damping_s: StiffnessDamping | None = Field(

@@ -827,11 +827,12 @@ def _spec_bending(spec: Spec, b: Beam, soil_factor: float = 1.0) -> Pair:
 
 
 def alone_frequencies(spec: Spec) -> dict[str, float]:
-    """The frequencies of the tower's own first and second bending modes in each plane
-    without its head, point masses, added mass or gravity, clamped where its polynomials
-    start (``polynomial_base_m``: ElastoDyn's tower above a SubDyn pile or a platform) —
-    ElastoDyn's FreqTFA(:,1) and FreqTSS(:,1), the frequencies its damping is given at
-    (``tower.damping_at: tower-alone``). [Hz]"""
+    """ElastoDyn's FreqTFA(:,1) and FreqTSS(:,1), the frequencies its damping is given at
+    (``tower.damping_at: tower-alone``): of the first and second bending modes in each
+    plane without the head, point masses, added mass or gravity, clamped where the
+    polynomials start (``polynomial_base_m``: ElastoDyn's tower above a SubDyn pile or a
+    platform) — what a mode's polynomial implies on the tower alone where the spec gives
+    it (:func:`_polynomial_alone`), else the tower's own mode. [Hz]"""
     t = spec.tower
     alone = t.model_copy(
         update={
@@ -906,7 +907,7 @@ def _above(
 def mode_damping(spec: Spec, name: str, f: float) -> float:
     """The damping ratio of the tower mode ``name`` at its frequency ``f``: the ratio given
     (``damping_by_mode``, else ``damping_ratio``) and, where the ratios are ElastoDyn's
-    (``damping_at: tower-alone``), that ratio times f/f_alone of the tower's own mode
+    (``damping_at: tower-alone``), that ratio times f/f_alone of the tower alone
     (:func:`alone_frequencies`; ElastoDyn's CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)), a
     stiffness-proportional damping: the NREL 5-MW's 1 % is 0.37 % on its first fore-aft
     mode under the head). A mode without such a reference (torsion) takes the ratio."""
@@ -1190,8 +1191,8 @@ def _damping_statement(spec: Spec) -> tuple[str, ...]:
     )
     return (
         "Tower damping as ElastoDyn applies it: each mode's ratio is that of a "
-        "stiffness-proportional damping at the frequency of the tower's own mode without its "
-        f"head or gravity ({given}; ElastoDyn.f90: CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA)), so "
+        "stiffness-proportional damping at the frequency its deck's polynomial implies on "
+        f"the tower alone ({given}; ElastoDyn.f90: CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA)), so "
         "a mode at f carries ζ·f/f_alone — the first modes under the head far less than the "
         "ratio given.",
     )
