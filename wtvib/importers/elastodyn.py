@@ -678,6 +678,7 @@ def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -
         "mass_kg": _value(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
         **({"damping_ratio": bl.damping} if bl.damping is not None else {}),
         **(_mu(bl) if bl.mu is not None else {}),
+        **({"damping_by_mode": bl.by_mode, "damping_at": "blade-alone"} if bl.by_mode else {}),
         "structure": structure,
     }
 
@@ -995,6 +996,8 @@ class _BladeTable:
     warnings: list[str]
     polynomials: dict[str, Any] = field(default_factory=dict)
     mu: tuple[float, float] | None = None  # BeamDyn's stiffness-proportional μ (flap, edge)
+    #: ElastoDyn's ratio of each blade degree of freedom (BldFlDmp(1), (2), BldEdDmp(1))
+    by_mode: dict[str, float] = field(default_factory=dict)
 
 
 #: ElastoDyn's mode-shape polynomials: the spec's name of each set, by the deck's key.
@@ -1066,9 +1069,18 @@ def _blade(main: Deck, fst: Deck | None, length: float, n_blades: int) -> _Blade
         if twist is not None:
             structure["twist_deg"] = _list(twist)
         structure |= _rows(ed, "BlFract", BLADE_COLUMNS, len(span))
+        # ElastoDyn's ratios, each at the frequency its polynomial implies on the blade
+        # alone (CBF = 0.01·BldFDamp·KBF/(π·FreqBF(:,1)))
+        by_mode = {
+            name: main_damping(ed, key)
+            for name, key in (
+                ("flap1", "BldFlDmp(1)"), ("flap2", "BldFlDmp(2)"), ("edge1", "BldEdDmp(1)"),
+            )
+        }  # fmt: skip
         return _BladeTable(
             span, mass, structure, main_damping(ed, "BldFlDmp(1)"), "∫ BMassDen·AdjBlMs", [],
             _blades_differ(main, ed, n_blades), polynomials(ed, BLADE_POLYNOMIALS),
+            by_mode=by_mode,
         )  # fmt: skip
     assert fst is not None
     bd = beamdyn.blade(fst)

@@ -11,6 +11,8 @@ J. S. Przemieniecki, *Theory of Matrix Structural Analysis*, McGraw-Hill 1968, c
 al., *Concepts and Applications of Finite Element Analysis*, 4th ed., §16.
 """
 
+import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -250,3 +252,31 @@ def assemble_torsion(nodes: Array, gj: Array, ip: Array) -> tuple[Array, Array]:
     k, mass = torsion_elements(nodes, gj, ip)
     dofs = chain_dofs(len(nodes) - 1, 1, (0,))
     return assemble(k, dofs, len(nodes)), assemble(mass, dofs, len(nodes))
+
+
+def polynomial_frequency(
+    stations: Array,
+    ei: Array,
+    mass: Array,
+    coefficients: Sequence[float],
+    base: float,
+    length: float,
+) -> float | None:
+    """The frequency a mode-shape polynomial φ(x) = Σ c_k·x^k (k = 2 … 6, x = 0 at ``base``,
+    1 at ``base + length``) implies on a cantilever with bending stiffness ``ei`` [N·m²]
+    and mass ``mass`` [kg/m] at ``stations`` [m]: √(∫EI·φ″² / ∫m·φ²)/2π, ElastoDyn's
+    FreqTFA(i,1), FreqBF(i,1) (its KTFA(i,i) over MTFA(i,i) without the tip mass;
+    OpenFAST's ElastoDyn, SetTowerParameters and Coeff). [Hz] (None: no length, stiffness
+    or mass.)"""
+    if not length > 0:
+        return None
+    z = base + np.linspace(0.0, length, 801)
+    x = (z - base) / length
+    c = list(coefficients)
+    shape = sum(ck * x**k for k, ck in zip(range(2, 7), c, strict=True))
+    curvature = sum(k * (k - 1) * ck * x ** (k - 2) for k, ck in zip(range(2, 7), c, strict=True))
+    k_ii = float(
+        np.trapezoid(np.interp(z, stations, ei) * (np.asarray(curvature) / length**2) ** 2, z)
+    )
+    m_ii = float(np.trapezoid(np.interp(z, stations, mass) * np.asarray(shape) ** 2, z))
+    return math.sqrt(k_ii / m_ii) / (2 * math.pi) if k_ii > 0 and m_ii > 0 else None

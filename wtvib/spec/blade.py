@@ -252,6 +252,20 @@ class Blade(_Strict):
         description="An ElastoDyn deck's blade mode-shape polynomials (BldFl1Sh, BldFl2Sh, "
         "BldEdgSh), audited against the modes the structure computes.",
     )
+    damping_by_mode: dict[Literal["flap1", "flap2", "edge1"], Ratio] = Field(
+        default_factory=dict,
+        description="Damping ratios of single computed blade modes, in place of "
+        "damping_ratio (ElastoDyn's BldFlDmp(1), BldFlDmp(2), BldEdDmp(1)). [-]",
+    )
+    damping_at: Literal["mode", "blade-alone"] = Field(
+        "mode",
+        description="What the damping ratios are the ratios of: 'mode', each computed "
+        "mode's own; 'blade-alone', ElastoDyn's — a stiffness-proportional damping whose "
+        "ratio is given at the frequency the mode's polynomial implies on the blade alone "
+        "(not turning, without tip mass; the blade's own mode where no polynomial is "
+        "given), so that a mode at f carries ζ·f/f_alone (ElastoDyn.f90: CBF = "
+        "0.01·BldFDamp·KBF/(π·FreqBF(:,1))).",
+    )
     stiffness_damping_s: StiffnessDamping | None = Field(
         None,
         description="The blade's damping as stiffness-proportional (β flapwise, edgewise, "

@@ -397,6 +397,8 @@ def _computed(
     zeta = given.damping_ratio if isinstance(given, ModeSpec) else None
     if spec.blade.stiffness_damping_s is not None:  # ζ = π·β·f of its direction
         zeta = spec.blade.stiffness_damping_s.ratio(kind, f0)
+    elif spec.blade.damping_at == "blade-alone" and kind in ("flap", "edge"):
+        zeta = mode_damping(spec, name, f0)
     return Mode(
         id=f"blade.{name}",
         subsystem="blade",
@@ -407,6 +409,60 @@ def _computed(
         shape=shape,
         origin="computed",
     )
+
+
+# ---------------------------------------------------------------------------------------
+# ElastoDyn's damping: stiffness-proportional, each mode's ratio at its own reference
+
+
+def reference(name: str) -> str:
+    """The ElastoDyn degree of freedom whose damping a blade mode takes: flap1, flap2
+    (every higher flapwise mode) or edge1 (every edgewise one)."""
+    if name.startswith("edge"):
+        return "edge1"
+    return "flap1" if name in ("flap1", "flap") else "flap2"
+
+
+def alone_frequencies(spec: Spec) -> dict[str, float]:
+    """ElastoDyn's FreqBF(:,1) and FreqBE(1,1), the frequencies its blade damping ratios are
+    given at (``blade.damping_at: blade-alone``): what each of the deck's polynomials implies
+    on the blade alone — not turning, without tip mass, flapwise on the flapwise stiffness,
+    edgewise on the edgewise (OpenFAST's ElastoDyn, Coeff) — else the blade's own mode at
+    standstill. [Hz]"""
+    b = spec.blade
+    s = b.structure
+    if s is None:
+        return {}
+    span = np.asarray(s.span_m, dtype=float)
+    names, freqs, _, _ = rotating_modes(s, np.array([0.0]), count=4)
+    out = {n: float(f) for n, f in zip(names, freqs[0], strict=True) if n in REFERENCES}
+    for name, poly in b.polynomials.items():
+        ei = s.ei_edge_nm2 if name.startswith("edge") else s.ei_flap_nm2
+        f = beam.polynomial_frequency(
+            span, np.asarray(ei, dtype=float), np.asarray(s.mass_per_length_kg_m, dtype=float),
+            poly.coefficients, float(span[0]), float(span[-1] - span[0]),
+        )  # fmt: skip
+        if f is not None:
+            out[name] = f
+    return out
+
+
+#: ElastoDyn's blade degrees of freedom, whose damping ratios the deck gives.
+REFERENCES = ("flap1", "flap2", "edge1")
+
+
+def mode_damping(
+    spec: Spec, name: str, f: float, alone: Mapping[str, float] | None = None
+) -> float:
+    """The damping ratio of the blade mode ``name`` at its frequency ``f`` where the ratios
+    are ElastoDyn's (``damping_at: blade-alone``): its degree of freedom's ratio
+    (:func:`reference`) times f/f_alone (:func:`alone_frequencies`; ``alone``: those
+    frequencies, computed once by a caller with many modes)."""
+    b = spec.blade
+    ref = reference(name)
+    zeta = float(b.damping_by_mode.get(ref, b.damping_ratio))  # type: ignore[call-overload]
+    at = (alone if alone is not None else alone_frequencies(spec)).get(ref)
+    return zeta * f / at if at else zeta
 
 
 # ---------------------------------------------------------------------------------------

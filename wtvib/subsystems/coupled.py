@@ -1099,6 +1099,8 @@ def strain_weighted(
     blade_z: Array | None = None
     if spec.blade.stiffness_damping_s is not None:
         blade_z = _stiffness_ratios(spec.blade.stiffness_damping_s, by_group, "blade", frequency_hz)
+    elif spec.blade.damping_at == "blade-alone":
+        blade_z = _blade_alone_ratios(spec, by_group, frequency_hz)
     total = energy.sum(axis=0)
     lower = default_damping(spec)
     same = tower_d.ratio == blade_d.ratio and alone is None and blade_z is None
@@ -1117,8 +1119,14 @@ def strain_weighted(
         zeta = (z_t * e_t + z_b * e_b) / strained
         share = e_t / max(e_t + e_b, 1e-300)
         how = ""
-        if spec.tower.stiffness_damping_s is not None or blade_z is not None:
+        if spec.tower.stiffness_damping_s is not None or spec.blade.stiffness_damping_s:
             how = f", tower {z_t:.3%}, blades {z_b:.3%}: stiffness-proportional, π·β·f"
+        elif blade_z is not None:
+            how = (
+                f", tower {z_t:.3%}, blades {z_b:.3%}: ElastoDyn's ratios at the "
+                "frequencies the deck's polynomials imply on the tower and blade alone, "
+                "× f/f_alone"
+            )
         elif alone is not None:
             how = (
                 f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own frequencies without "
@@ -1156,6 +1164,26 @@ def _stiffness_ratios(
         weighted += e * beta.ratio(direction, 1.0) * frequency_hz
         energy += e
     return np.where(energy > 0, weighted / np.where(energy > 0, energy, 1.0), 0.0)
+
+
+def _blade_alone_ratios(spec: Spec, by_group: Mapping[str, Array], frequency_hz: Array) -> Array:
+    """The blades' damping ratio in each coupled mode where their ratios are ElastoDyn's
+    (``blade.damping_at: blade-alone``): each blade mode's strain energy in the coupled
+    mode (its multi-blade coordinates, ``blade.flap1.collective`` …) takes the ratio
+    ElastoDyn gives its degree of freedom at the coupled frequency
+    (:func:`blade.mode_damping`: ζ_k·f/f_alone,k)."""
+    alone = blade.alone_frequencies(spec)
+    weighted = np.zeros(len(frequency_hz))
+    energy = np.zeros(len(frequency_hz))
+    for group, e in by_group.items():
+        parts = group.split(".")
+        if parts[0] != "blade" or len(parts) < 2:
+            continue
+        zeta = np.array([blade.mode_damping(spec, parts[1], float(f), alone) for f in frequency_hz])
+        weighted += e * zeta
+        energy += e
+    fallback = float(spec.blade.damping_ratio)
+    return np.where(energy > 0, weighted / np.where(energy > 0, energy, 1.0), fallback)
 
 
 def _tower_alone_ratios(

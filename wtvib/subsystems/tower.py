@@ -6,7 +6,6 @@ Hau, *Wind Turbines*, ch. 7.5.1 (tower stiffness, Figs. 7.19 and 7.20) and 7.5.2
 """
 
 import functools
-import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Literal
@@ -860,21 +859,17 @@ def _polynomial_alone(t: "spec_mod.Tower", name: str) -> float | None:
     given at that frequency — for a second mode, whose shape the head pins near the top,
     far below the bare tower's own second mode. [Hz] (None: no distributed table)."""
     d = t.distributed
-    poly = t.polynomials[name]  # type: ignore[index]
-    if d is None or t.height_m is None or t.height_m <= t.polynomial_base_m:
+    if d is None or t.height_m is None:
         return None
-    length = t.height_m - t.polynomial_base_m
-    h = np.asarray(d.height_m, dtype=float)
-    ei = np.asarray(d.ei_fa_nm2 if name.startswith("fa") else d.ei_ss_nm2, dtype=float)
-    z = t.polynomial_base_m + np.linspace(0.0, length, 801)
-    x = (z - t.polynomial_base_m) / length
-    c = poly.coefficients
-    shape = sum(ck * x**k for k, ck in zip(range(2, 7), c, strict=True))
-    curvature = sum(k * (k - 1) * ck * x ** (k - 2) for k, ck in zip(range(2, 7), c, strict=True))
-    curvature = np.asarray(curvature) / length**2
-    stiffness = float(np.trapezoid(np.interp(z, h, ei) * curvature**2, z))
-    mass = float(np.trapezoid(np.interp(z, h, np.asarray(d.mass_per_length_kg_m)) * shape**2, z))
-    return math.sqrt(stiffness / mass) / (2 * math.pi) if stiffness > 0 and mass > 0 else None
+    ei = d.ei_fa_nm2 if name.startswith("fa") else d.ei_ss_nm2
+    return beam.polynomial_frequency(
+        np.asarray(d.height_m, dtype=float),
+        np.asarray(ei, dtype=float),
+        np.asarray(d.mass_per_length_kg_m, dtype=float),
+        t.polynomials[name].coefficients,  # type: ignore[index]
+        t.polynomial_base_m,
+        t.height_m - t.polynomial_base_m,
+    )
 
 
 def _above(
