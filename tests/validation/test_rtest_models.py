@@ -467,14 +467,15 @@ def test_the_blade_s_reference_frequencies_are_elastodyn_s(decks):
 
 
 def test_the_blade_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_path):
-    """The parked WindPACT 1.5-MW (no aerodynamics, its ElastoDyn blades damped 3.88 %):
-    OpenFAST damps each blade mode at ζ·f/FreqB(i,1) (CBF = 0.01·BldFDamp·KBF/
-    (π·FreqBF(:,1))), so its edgewise modes, far above their reference, carry 5.8 % and
-    (the collective, turning the drive train) 10.9 %. wtvib, its ratios as ElastoDyn applies
-    them (blade.mode_damping): the flapwise collectives within 5 % (measured −0.5 %,
-    +2.7 %), the edgewise cyclic pair within 5 % (+0.2 %, −0.2 %) and its collective within
-    20 % (−15 %: part of its strain is the shaft's, which takes the blades' ratio unscaled).
-    Before, every blade mode carried the 3.88 % given: the edgewise ones −33 % and −64 %."""
+    """The parked WindPACT 1.5-MW (no aerodynamics; its ElastoDyn blades damped 3.88 %
+    flapwise, BldFlDmp, and 5.9 % edgewise, BldEdDmp): OpenFAST damps each blade mode at
+    ζ·f/FreqB(i,1) (CBF = 0.01·BldFDamp·KBF/(π·FreqBF(:,1))), so the edgewise cyclic
+    pair, near its reference, carries 5.8 % and the collective, turning the drive train at
+    twice the frequency, 10.9 %. wtvib, its ratios as ElastoDyn applies them
+    (blade.mode_damping): the flapwise collectives within 5 % (measured −0.5 %, +2.7 %),
+    the edgewise cyclic pair within 5 % (+0.2 %, −0.2 %) and its collective within 20 %
+    (−15 %: part of its strain is the shaft's, which takes the blades' ratio unscaled).
+    Before, every blade mode carried BldFlDmp's 3.88 %: the edgewise ones −33 % and −64 %."""
     case = "WP_Stationary_Linear"
     ref = _openfast(case, tmp_path)
     theirs = dict(zip(ref.names, ref.damping_ratio, strict=True))

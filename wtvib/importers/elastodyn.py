@@ -1283,8 +1283,9 @@ def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:
 
 
 def main_damping(deck: Deck, key: str) -> float:
-    """A damping ratio from a percent-of-critical input (default 1 %)."""
-    return deck.num(key, key.replace("(", "").replace(")", ""), default=1.0) / 100.0
+    """A damping ratio from a percent-of-critical input (default 1 %), to the deck's own
+    digits (5.9 % is 0.059, not 0.059000000000000004 in a converted spec)."""
+    return round(deck.num(key, key.replace("(", "").replace(")", ""), default=1.0) / 100.0, 12)
 
 
 def _list(a: np.ndarray) -> list[float]:
