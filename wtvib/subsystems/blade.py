@@ -428,7 +428,14 @@ def alone_frequencies(spec: Spec) -> dict[str, float]:
     given at (``blade.damping_at: blade-alone``): what each of the deck's polynomials implies
     on the blade alone — not turning, without tip mass, flapwise on the flapwise stiffness,
     edgewise on the edgewise (OpenFAST's ElastoDyn, Coeff) — else the blade's own mode at
-    standstill. [Hz]"""
+    standstill (computed once per spec). [Hz]"""
+    found: dict[str, float] = spec.derived(
+        ("blade.alone_frequencies",), spec.blade, lambda: _alone_frequencies(spec)
+    )
+    return found
+
+
+def _alone_frequencies(spec: Spec) -> dict[str, float]:
     b = spec.blade
     s = b.structure
     if s is None:
