@@ -1080,7 +1080,8 @@ def strain_weighted(
     that hardly bends the blades takes the tower's ratio, not the lower of the two. A mode
     that strains neither (drive train, yaw) takes the lower (:func:`default_damping`).
     Where the tower's ratios are ElastoDyn's (``tower.damping_at: tower-alone``), the
-    tower's part is :func:`_tower_alone_ratios`."""
+    tower's part is :func:`_tower_alone_ratios`; the blades' likewise
+    (``blade.damping_at: blade-alone``, :func:`_blade_alone_ratios`)."""
     tower_d = section_damping(spec.tower, "tower")
     blade_d = blade.default_damping(spec)
     k = model.multiblade[3]
@@ -1129,8 +1130,8 @@ def strain_weighted(
             )
         elif alone is not None:
             how = (
-                f", the tower's {z_t:.3%}: ElastoDyn's ratios at its own frequencies without "
-                "the head, × f/f_alone"
+                f", the tower's {z_t:.3%}: ElastoDyn's ratios at the frequencies the deck's "
+                "polynomials imply on the tower alone, × f/f_alone"
             )
         if e_d > 0.5 * strained:
             out.append(Damping(zeta, "the tuned mass damper's dashpot (no material damping)",
