@@ -512,6 +512,23 @@ def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
     return modes(spec) + imported.modes(spec, "rotating")
 
 
+def _damping_statement(spec: Spec) -> tuple[str, ...]:
+    """How the blades' damping ratios are applied, where they are ElastoDyn's."""
+    b = spec.blade
+    if b.damping_at != "blade-alone" or b.stiffness_damping_s is not None:
+        return ()
+    ref = alone_frequencies(spec)
+    ratios = {name: mode_damping(spec, name, ref[name], ref) for name in REFERENCES if name in ref}
+    given = ", ".join(f"{n} {100 * z:.3g} % at {ref[n]:.3g} Hz" for n, z in ratios.items())
+    return (
+        "Blade damping as ElastoDyn applies it: each degree of freedom's ratio is that of a "
+        "stiffness-proportional damping at the frequency its deck's polynomial implies on "
+        f"the blade alone, not turning ({given}; ElastoDyn.f90: CBF = "
+        "0.01·BldFDamp·KBF/(π·FreqBF)), so a mode at f carries ζ·f/f_alone — every higher "
+        "flapwise mode the second's ratio, every edgewise mode the first's.",
+    )
+
+
 def analyse(spec: Spec, ctx: Context) -> Analysis:
     """The blade's resonances are judged by the audit; this says how its modes came about."""
     s = spec.blade.structure
@@ -557,6 +574,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
                 else ""
             )
             + ".",
+            *_damping_statement(spec),
         )
     )
 
