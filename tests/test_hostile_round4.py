@@ -514,6 +514,25 @@ def test_a_signal_ends_the_batch_without_tracebacks(tmp_path, sig):
     assert _gone(children, within=15.0)
 
 
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="fork")
+def test_a_worker_forked_as_the_signal_comes_ends_quietly():
+    """A worker forked just as Ctrl-C or SIGTERM reaches the whole group still carries the
+    batch's handler: there it ends at once with the signal's code, without raising inside
+    the fork's bookkeeping ("Exception ignored in _after_fork", once seen in CI, and a
+    worker left alive holding the caller's pipe open for the test's whole minute)."""
+    from wtvib.workflows.batch import terminate_as_interrupt
+
+    with terminate_as_interrupt():
+        pid = os.fork()
+        if pid == 0:  # the child, before it could set handlers of its own
+            time.sleep(10)
+            os._exit(0)
+        time.sleep(0.2)
+        os.kill(pid, signal.SIGTERM)
+        _, status = os.waitpid(pid, 0)
+    assert os.WIFEXITED(status) and os.WEXITSTATUS(status) == 128 + signal.SIGTERM
+
+
 # --- Refusals and warnings name the user's file, not the converted field ------------
 
 DECK_TABLE_CASES = [

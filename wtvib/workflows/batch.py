@@ -516,24 +516,33 @@ class FolderLock:
 @contextlib.contextmanager
 def terminate_as_interrupt() -> Iterator[Callable[[], bool]]:
     """SIGTERM handled like Ctrl-C (pending work cancelled, workers stopped, what is complete
-    written); yields a function telling whether SIGTERM was the cause."""
+    written); yields a function telling whether SIGTERM was the cause. A worker forked just
+    as a signal reaches the whole group runs this handler before it sets its own
+    (:func:`worker_start`): there it ends at once, without a word — raising inside the fork's
+    own bookkeeping printed "Exception ignored" and could leave the worker alive, holding the
+    caller's pipe open."""
     import signal
 
     seen = {"term": False}
+    owner = os.getpid()
 
     def handler(signum: int, frame: object) -> None:
-        seen["term"] = True
+        if os.getpid() != owner:  # a worker that has not set its own handlers yet
+            os._exit(128 + signum)
+        if signum == signal.SIGTERM:
+            seen["term"] = True
         raise KeyboardInterrupt
 
     try:
-        previous = signal.signal(signal.SIGTERM, handler)
+        previous = {s: signal.signal(s, handler) for s in (signal.SIGTERM, signal.SIGINT)}
     except ValueError:  # not the main thread (tests): leave signals alone
         yield lambda: False
         return
     try:
         yield lambda: seen["term"]
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for s, before in previous.items():
+            signal.signal(s, before)
 
 
 def summary(items: Sequence[Item]) -> dict[str, Any]:
