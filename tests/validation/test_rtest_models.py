@@ -25,6 +25,7 @@ import pytest
 
 from wtvib import audit, importers
 from wtvib.importers import openfast_lin as ol
+from wtvib.importers.deck import Deck
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 GLUE = "glue-codes/openfast"
@@ -390,6 +391,20 @@ def test_every_exception_and_omission_is_still_needed(decks, tmp_path):
             assert key[1] in names, key
 
 
+def _elastodyn_frequency(
+    deck: Deck, key: str, x: np.ndarray, length: float, ei: np.ndarray, mass: np.ndarray
+) -> float:
+    """√(K(i,i)/M(i,i))/2π as ElastoDyn integrates them: the midpoint rule over its
+    elements (``x``: their midpoints over the flexible ``length``, ``ei`` and ``mass``
+    there) with the deck's polynomial ``key`` — the test's own, independent of wtvib's."""
+    c = [float(deck.values[f"{key}({k})"][0]) for k in range(2, 7)]
+    shape = sum(ck * x**k for k, ck in zip(range(2, 7), c, strict=True))
+    curve = sum(k * (k - 1) * ck * x ** (k - 2) for k, ck in zip(range(2, 7), c, strict=True))
+    k_ii = np.sum(ei * (curve / length**2) ** 2) * length / len(x)
+    m_ii = np.sum(mass * shape**2) * length / len(x)
+    return math.sqrt(k_ii / m_ii) / (2 * math.pi)
+
+
 def test_the_tower_s_reference_frequencies_are_elastodyn_s(decks):
     """FreqTFA(i,1), FreqTSS(i,1), at which ElastoDyn takes the tower's damping ratios: here
     computed as ElastoDyn computes them (OpenFAST's SetTowerParameters: TwrNodes elements,
@@ -415,13 +430,8 @@ def test_the_tower_s_reference_frequencies_are_elastodyn_s(decks):
         ("fa1", "TwFAM1Sh", 2, "AdjFASt"), ("fa2", "TwFAM2Sh", 2, "AdjFASt"),
         ("ss1", "TwSSM1Sh", 3, "AdjSSSt"), ("ss2", "TwSSM2Sh", 3, "AdjSSSt"),
     ):  # fmt: skip
-        c = [float(tw.values[f"{key}({k})"][0]) for k in range(2, 7)]
-        shape = sum(ck * x**k for k, ck in zip(range(2, 7), c, strict=True))
-        curve = sum(k * (k - 1) * ck * x ** (k - 2) for k, ck in zip(range(2, 7), c, strict=True))
         ei = np.interp(x, table[:, 0], table[:, column]) * float(tw.values[adjust][0])
-        k_ii = np.sum(ei * (curve / length**2) ** 2) * length / n
-        m_ii = np.sum(mass * shape**2) * length / n
-        theirs = math.sqrt(k_ii / m_ii) / (2 * math.pi)
+        theirs = _elastodyn_frequency(tw, key, x, length, ei, mass)
         assert ours[name] == pytest.approx(theirs, rel=0.005), (name, ours[name], theirs)
 
 
@@ -459,13 +469,8 @@ def test_the_blade_s_reference_frequencies_are_elastodyn_s(decks):
         ("flap1", "BldFl1Sh", 4, "AdjFlSt"), ("flap2", "BldFl2Sh", 4, "AdjFlSt"),
         ("edge1", "BldEdgSh", 5, "AdjEdSt"),
     ):  # fmt: skip
-        c = [float(bl.values[f"{key}({k})"][0]) for k in range(2, 7)]
-        shape = sum(ck * x**k for k, ck in zip(range(2, 7), c, strict=True))
-        curve = sum(k * (k - 1) * ck * x ** (k - 2) for k, ck in zip(range(2, 7), c, strict=True))
         ei = np.interp(x, table[:, 0], table[:, column]) * float(bl.values[adjust][0])
-        k_ii = np.sum(ei * (curve / length**2) ** 2) * length / n
-        m_ii = np.sum(mass * shape**2) * length / n
-        theirs = math.sqrt(k_ii / m_ii) / (2 * math.pi)
+        theirs = _elastodyn_frequency(bl, key, x, length, ei, mass)
         assert ours[name] == pytest.approx(theirs, rel=0.015), (name, ours[name], theirs)
 
 
