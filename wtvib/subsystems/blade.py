@@ -441,8 +441,10 @@ def _alone_frequencies(spec: Spec) -> dict[str, float]:
     if s is None:
         return {}
     span = np.asarray(s.span_m, dtype=float)
-    names, freqs, _, _ = rotating_modes(s, np.array([0.0]), count=4)
-    out = {n: float(f) for n, f in zip(names, freqs[0], strict=True) if n in REFERENCES}
+    out: dict[str, float] = {}
+    if not set(REFERENCES) <= set(b.polynomials):  # the blade's own modes where none given
+        names, freqs, _, _ = rotating_modes(s, np.array([0.0]), count=4)
+        out = {n: float(f) for n, f in zip(names, freqs[0], strict=True) if n in REFERENCES}
     for name, poly in b.polynomials.items():
         ei = s.ei_edge_nm2 if name.startswith("edge") else s.ei_flap_nm2
         f = beam.polynomial_frequency(

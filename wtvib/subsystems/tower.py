@@ -833,6 +833,10 @@ def alone_frequencies(spec: Spec) -> dict[str, float]:
     platform) — what a mode's polynomial implies on the tower alone where the spec gives
     it (:func:`_polynomial_alone`), else the tower's own mode. [Hz]"""
     t = spec.tower
+    given = {name: _polynomial_alone(t, name) for name in t.polynomials}
+    found: dict[str, float] = {name: f for name, f in given.items() if f is not None}
+    if set(found) >= {"fa1", "fa2", "ss1", "ss2"}:  # an ElastoDyn deck gives all four
+        return found
     alone = t.model_copy(
         update={
             "point_masses": [],
@@ -847,8 +851,7 @@ def alone_frequencies(spec: Spec) -> dict[str, float]:
         for plane, modes in (("fa", fa), ("ss", ss))
         for i in range(min(2, len(modes.frequency_hz)))
     }
-    given = {name: _polynomial_alone(t, name) for name in t.polynomials}
-    return own | {name: f for name, f in given.items() if f is not None}
+    return own | found
 
 
 def _polynomial_alone(t: "spec_mod.Tower", name: str) -> float | None:
