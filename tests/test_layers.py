@@ -165,3 +165,31 @@ def test_a_dozen_modules_at_most_at_the_top():
     everything else lives in its layer's package."""
     top = sorted(p.name for p in ROOT.glob("*.py"))
     assert len(top) <= 12, top
+
+
+def _function_lengths(path: Path) -> dict[str, int]:
+    """Every function's lines in ``path`` (decorators and docstring included)."""
+    tree = ast.parse(path.read_text())
+    return {
+        f"{path.relative_to(ROOT.parent)}:{node.name}": node.end_lineno - node.lineno + 1
+        for node in ast.walk(tree)
+        if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef) and node.end_lineno
+    }
+
+
+def test_the_command_line_is_thin():
+    """The CLI declares options and makes one library call per command: at most 450 lines,
+    no function over 40 (the work is in ``workflows/``)."""
+    cli = ROOT / "cli.py"
+    assert len(cli.read_text().splitlines()) <= 450
+    long = {k: n for k, n in _function_lengths(cli).items() if n > 40}
+    assert not long, long
+
+
+def test_no_function_is_longer_than_80_lines():
+    lengths: dict[str, int] = {}
+    for path in ROOT.rglob("*.py"):
+        lengths.update(_function_lengths(path))
+    long = {k: n for k, n in lengths.items() if n > 80}
+    assert not long, long
+    assert max(lengths.values()) > 20  # the walk found the functions

@@ -345,6 +345,22 @@ def _named(kind: str, coord: str, j: int, count: dict[str, int]) -> tuple[str, s
     return f"{kind}{k}.{coord}", f"{ordinal(k)} {_WORDS[kind]}, {how}"
 
 
+def _mode(
+    description: str, frame: str, rpm: np.ndarray, freq: np.ndarray, damp: np.ndarray
+) -> dict[str, Any]:
+    """One mode's entry: its points' speeds and frequencies, its damping where every point
+    has one (clipped to ±1: HAWCStab2 writes ζ past critical as it found it)."""
+    m: dict[str, Any] = {
+        "description": description,
+        "frame": frame,
+        "rpm": [round(float(v), 6) for v in rpm],
+        "frequency_hz": [float(v) for v in freq],
+    }
+    if np.all(np.isfinite(damp)):
+        m["damping_ratio"] = [max(-1.0, min(1.0, float(v))) for v in damp]
+    return m
+
+
 def to_spec_data(
     path: Path, text: str, blades: int | None, given: tuple[float, float] | None = None
 ) -> dict[str, Any]:
@@ -391,14 +407,7 @@ def to_spec_data(
             partial.append(f"mode {j + 1} ({len(sort) - ok.size} of {len(sort)} points)")
         kind, coord = kinds[j]
         name, words = _named(kind, coord, j, count)
-        m: dict[str, Any] = {
-            "description": f"{words} (mode {j + 1})",
-            "frame": frame,
-            "rpm": [round(float(v), 6) for v in rpm[ok]],
-            "frequency_hz": [float(v) for v in freq[ok, j]],
-        }
-        if np.all(np.isfinite(damp[ok, j])):
-            m["damping_ratio"] = [max(-1.0, min(1.0, float(v))) for v in damp[ok, j]]
+        m = _mode(f"{words} (mode {j + 1})", frame, rpm[ok], freq[ok, j], damp[ok, j])
         if frame == "fixed" and coord not in ("fixed", "rotating"):
             m["whirl"] = [coord] * int(ok.size)
         if wind is not None:
