@@ -410,15 +410,19 @@ def _band_of(mode: Mode, isolated: Mode | None) -> tuple[float, float] | None:
 
 
 def _no_tolerance(spec: Spec, samples: int | None) -> list[str]:
+    if not samples:  # no study asked: its module stays unimported
+        return []
     from .studies import uncertainty
 
-    return [uncertainty.NO_TOLERANCE] if samples and not uncertainty.uncertain(spec) else []
+    return [] if uncertainty.uncertain(spec) else [uncertainty.NO_TOLERANCE]
 
 
 def _uncertainty_warnings(spread: UncertaintyDoc | None) -> list[str]:
+    if not spread:  # no study: its module (and numpy.random) stays unimported
+        return []
     from .studies import uncertainty
 
-    return uncertainty.warnings_of(spread) if spread else []
+    return uncertainty.warnings_of(spread)
 
 
 def _uncertainty(

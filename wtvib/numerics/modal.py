@@ -53,7 +53,57 @@ def solve(k: Array, m: Array, count: int | None = None) -> Modes:
         M is not positive definite, or K has a clearly negative eigenvalue (a structure that
         buckles under its loads, e.g. gravity on an over-soft tower).
     """
+    n = k.shape[-1]
+    if count is not None and n >= PARTIAL_STATES and count <= PARTIAL_SHARE * n:
+        return _lowest_only(k, m, count)
     return solve_stacked(k[None], m[None], count)[0]
+
+
+#: From this many coordinates on, a solve that asks for at most PARTIAL_SHARE of the modes
+#: computes those alone (LAPACK's ``sygvx``: bisection and inverse iteration): the coupled
+#: IEA-15 monopile, 815 coordinates, its lowest 96 modes in a third of the time of all of
+#: them, beside which scipy.linalg's import (0.1 s) is small. Below it, numpy's whole solve
+#: (no scipy import on a small check).
+PARTIAL_STATES = 300
+PARTIAL_SHARE = 0.25
+
+
+def _lowest_only(k: Array, m: Array, count: int) -> Modes:
+    """:func:`solve` of the lowest ``count`` modes alone (LAPACK ``dsygvx``), with its
+    checks: finite matrices, M positive definite, no clearly negative eigenvalue."""
+    from scipy.linalg import LinAlgError, eigh
+
+    if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m))):
+        raise ModalError("the structural matrices hold NaN or infinite values")
+    k = 0.5 * (k + k.T)
+    try:  # mass-normalised: φᵀ M φ = I
+        w2, phi = eigh(k, 0.5 * (m + m.T), subset_by_index=(0, count - 1), driver="gvx")
+    except LinAlgError:
+        raise ModalError(
+            "the mass matrix is not positive definite (a zero or negative mass or inertia?)"
+        ) from None
+    if not (np.all(np.isfinite(w2)) and np.all(np.isfinite(phi))):
+        raise ModalError(OUT_OF_RANGE)
+    # rounding is relative to the largest eigenvalue, which a partial solve does not find
+    _check_stable(np.append(w2, _largest(k, m))[None])
+    return Modes(np.sqrt(np.clip(w2, 0.0, None)) / (2.0 * np.pi), np.asarray(phi))
+
+
+#: Power iterations that estimate the largest eigenvalue: within a few per cent of it (from
+#: below) — it only sets the scale of rounding, not a result.
+POWER_STEPS = 8
+
+
+def _largest(k: Array, m: Array) -> float:
+    """The largest eigenvalue of K φ = λ M φ from below, by power iteration on M⁻¹K."""
+    from scipy.linalg import cho_factor, cho_solve
+
+    factor = cho_factor(m)
+    x = np.linspace(1.0, 2.0, k.shape[0])  # not orthogonal to the highest mode
+    for _ in range(POWER_STEPS):
+        y = cho_solve(factor, k @ x)
+        x = y / max(float(np.linalg.norm(y)), 1e-300)
+    return float(x @ k @ x / (x @ m @ x))
 
 
 def lowest(modes: Modes, count: int) -> Modes:

@@ -110,6 +110,12 @@ SPEED_SAMPLES = 30
 # The parts
 
 
+#: The undamped standstill modes solved at first (:meth:`Model.standstill_modes`): more than
+#: the parked modes (3 × the kept ones + 2: 65 on a floating base) and a path's first point
+#: (3 × MODES_KEPT: 48) ask; a model of hundreds of coordinates solves these alone.
+STANDSTILL_SOLVED = 96
+
+
 @dataclass(frozen=True)
 class BladeModes:
     """One blade's lowest cantilever modes evaluated at its Gauss points (point masses)."""
@@ -236,12 +242,17 @@ class Model:
             index.flags.writeable = False
         return out
 
-    @functools.cached_property
-    def standstill_modes(self) -> modal.Modes:
-        """Every undamped mode at standstill, blade 1 up (K₀ and M of :attr:`standstill`):
-        solved once for the Ritz bases and the parked modes."""
-        m, _, k0 = self.standstill
-        return modal.solve(k0, m)
+    def standstill_modes(self, count: int) -> modal.Modes:
+        """The lowest ``count`` undamped modes at standstill, blade 1 up (K₀ and M of
+        :attr:`standstill`): solved once for the Ritz bases and the parked modes — at least
+        STANDSTILL_SOLVED of them (every one of a small model), again where more are asked."""
+        solved: modal.Modes | None = self.__dict__.get("_standstill_modes")
+        size = self.layout.size
+        if solved is None or min(count, size) > len(solved.frequency_hz):
+            m, _, k0 = self.standstill
+            solved = modal.solve(k0, m, min(max(count, STANDSTILL_SOLVED), size))
+            self.__dict__["_standstill_modes"] = solved  # frozen: the cache lives in __dict__
+        return modal.lowest(solved, count)
 
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]:
         """A reduced basis Φ — the lowest ``count`` undamped standstill modes in
@@ -255,7 +266,9 @@ class Model:
         cache = self.__dict__.setdefault("_ritz", {})  # frozen: the cache lives in __dict__
         if count not in cache:
             m, d0, d1, k0, k2 = self.multiblade
-            basis = modal.ritz_basis(k0, m, count, [k2, d1, d0], RITZ_IMAGES, self.standstill_modes)
+            basis = modal.ritz_basis(
+                k0, m, count, [k2, d1, d0], RITZ_IMAGES, self.standstill_modes(count)
+            )
             cache[count] = (basis, tuple(basis.T @ x @ basis for x in (m, d0, d1, k0, k2)))
         out: tuple[Array, tuple[Array, Array, Array, Array, Array]] = cache[count]
         return out

@@ -547,11 +547,9 @@ def torque_amplification(
 def modal_damping(m: Array, k: Array, zeta: float) -> Array:
     """The damping matrix that gives every elastic mode of (K, M) the ratio ζ:
     D = (MΦ)·diag(2ζωᵢ)·(MΦ)ᵀ with Φ mass-normalised (a rigid-body mode, ω = 0, gets none)."""
-    from scipy.linalg import eigh
-
-    w2, phi = eigh(k, m)
-    omega = np.sqrt(np.clip(w2, 0.0, None))
-    mp = m @ phi
+    modes = modal.solve(k, m)
+    omega = 2.0 * np.pi * modes.frequency_hz
+    mp = m @ modes.shapes
     return np.asarray((mp * (2 * zeta * omega)) @ mp.T)
 
 

@@ -86,8 +86,7 @@ class Model(Protocol):
     def standstill(self) -> tuple[Array, Array, Array]: ...
     @property
     def groups(self) -> dict[str, Index]: ...
-    @property
-    def standstill_modes(self) -> modal.Modes: ...
+    def standstill_modes(self, count: int) -> modal.Modes: ...
     @property
     def active(self) -> Index: ...
     def ritz(self, count: int) -> tuple[Array, tuple[Array, Array, Array, Array, Array]]: ...
@@ -308,7 +307,7 @@ def parked(
     wanted = min(count + 2 + (_spare(count) if by_content else 0), model.layout.size)
     if psi == 0.0:  # blade 1 up: the model's standstill modes, solved once
         m, _, _ = model.standstill
-        res = modal.lowest(model.standstill_modes, wanted)
+        res = model.standstill_modes(wanted)
     else:
         m, _, k = fixed_frame(model, 0.0, psi)
         res = modal.solve(k, m, wanted)
@@ -511,28 +510,31 @@ def _summed(keys: list[str], table: Array) -> tuple[tuple[str, ...], Array]:
     return unique, out
 
 
-def whirls(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str | None, ...]:
-    """Each mode's whirl (backward, forward, cyclic, collective, alternating; None: not a
-    rotor mode), as :func:`_name` gives it, without the names: what a sweep records at
-    every speed."""
-    groups = model.groups
-    _, _, merged_names, merged = shares(m, shapes, groups)
-    return tuple(
-        _whirl(merged_names[int(t)], shapes[:, j], groups)
-        for j, t in enumerate(np.argmax(merged, axis=0))
-    )
-
-
 def parts(model: "Model", m: Array, shapes: NDArray[np.complex128]) -> tuple[str, ...]:
     """The part each mode's kinetic energy mostly sits in: a blade mode over all its
     multi-blade coordinates (``blade.flap1``, ``blade.edge1`` …), else ``tower.fa``,
     ``tower.ss``, ``tower.tor``, ``drivetrain`` or ``yaw``. A mode followed through a
     veering keeps its name and changes its part."""
-    names, table, _, _ = shares(m, shapes, model.groups)
+    return whirls_and_parts(model, m, shapes)[1]
+
+
+def whirls_and_parts(
+    model: "Model", m: Array, shapes: NDArray[np.complex128]
+) -> tuple[tuple[str | None, ...], tuple[str, ...]]:
+    """Each mode's whirl (backward, forward, cyclic, collective, alternating; None: not a
+    rotor mode), as :func:`_name` gives it without the names — what a sweep records at
+    every speed — and its :func:`parts`, from one reckoning of the energy shares (M times
+    the shapes: on the IEA-15 monopile's 815 coordinates, most of a sweep step's cost)."""
+    groups = model.groups
+    names, table, merged_names, merged = shares(m, shapes, groups)
+    whirl = tuple(
+        _whirl(merged_names[int(t)], shapes[:, j], groups)
+        for j, t in enumerate(np.argmax(merged, axis=0))
+    )
     kinds, summed = _summed(
         [".".join(g.split(".")[:2]) if g.startswith("blade.") else g for g in names], table
     )
-    return tuple(kinds[int(k)] for k in np.argmax(summed, axis=0))
+    return whirl, tuple(kinds[int(k)] for k in np.argmax(summed, axis=0))
 
 
 def _name(
@@ -826,8 +828,7 @@ def track(
     kind: list[str | None] = list(first.whirl)
     found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
     for i, cur in enumerate(found, start=1):
-        kinds = whirls(model, m, cur.shapes)
-        where = parts(model, m, cur.shapes)
+        kinds, where = whirls_and_parts(model, m, cur.shapes)
         score = (
             modal.mac(weight * shapes, weight * cur.shapes)
             + KIND_WEIGHT * _same_kind(kind, kinds)
