@@ -276,3 +276,48 @@ def test_the_greedy_assignment_serves_the_most_certain_row_first():
         score[i, i] = 0.95  # the others unambiguous (and above both)
     order = modal.assign(score)
     assert list(order[:2]) == [0, 1] and list(order[2:]) == list(range(2, 8))
+
+
+def _chain(n: int, stiffness: float = 1e6, free: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """A spring–mass chain of ``n`` unit masses, fixed at one end (free at both: a rigid
+    mode at 0 Hz)."""
+    k = np.zeros((n, n))
+    for i in range(n - 1):
+        k[i : i + 2, i : i + 2] += stiffness * np.array([[1.0, -1.0], [-1.0, 1.0]])
+    if not free:
+        k[0, 0] += stiffness
+    return k, np.diag(np.linspace(1.0, 2.0, n))
+
+
+def test_a_large_models_lowest_modes_solved_alone_equal_the_whole_solution():
+    """From PARTIAL_STATES coordinates on, a solve asking for few modes computes those
+    alone (LAPACK sygvx); frequencies and mass-normalised shapes equal those of the whole
+    solution to rounding (well-separated modes: the eigenvectors' condition is the gap)."""
+    n = modal.PARTIAL_STATES + 20
+    k, m = _chain(n)
+    count = 12
+    part = modal.solve(k, m, count)
+    whole = modal.solve_stacked(k[None], m[None], count)[0]
+    assert count <= modal.PARTIAL_SHARE * n  # the partial path is the one taken
+    np.testing.assert_allclose(part.frequency_hz, whole.frequency_hz, rtol=1e-9)
+    signs = np.sign(np.einsum("ij,ij->j", part.shapes, whole.shapes))
+    np.testing.assert_allclose(part.shapes * signs, whole.shapes, atol=1e-7)
+    np.testing.assert_allclose(part.shapes.T @ m @ part.shapes, np.eye(count), atol=1e-10)
+
+
+def test_a_large_free_chain_keeps_its_rigid_mode_and_a_buckling_one_is_refused():
+    """The partial solve's stability check measures rounding against the largest
+    eigenvalue (estimated by power iteration), as the whole solve does: a free chain's
+    rigid mode (0 Hz to rounding) passes; a negative stiffness is refused; so is a mass
+    matrix that is not positive definite."""
+    n = modal.PARTIAL_STATES + 5
+    k, m = _chain(n, free=True)
+    found = modal.solve(k, m, 4)
+    assert found.frequency_hz[0] < 1e-3 * found.frequency_hz[1]
+    k[0, 0] -= 5e4  # a spring to the ground of negative stiffness
+    with pytest.raises(modal.ModalError, match="unstable"):
+        modal.solve(k, m, 4)
+    k, m = _chain(n)
+    m[3, 3] = -1.0
+    with pytest.raises(modal.ModalError, match="positive definite"):
+        modal.solve(k, m, 4)
