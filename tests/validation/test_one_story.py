@@ -129,6 +129,27 @@ def test_the_coupling_table_names_the_modes_as_the_report_does(shared):
     )
 
 
+def test_a_floating_turbines_coupling_table_names_and_values_its_modes_as_the_report_does():
+    """On a floating base the coupled model's lowest modes are the platform's rigid-body
+    motion and the tower's bending is numbered after them. The coupling table took the
+    judged names from the sweep's names before that renumbering: the IEA-22 semi's first
+    tower bending (0.31 Hz) stood there as system.platform.surge, a mode the report does
+    not have, and each tower mode under the next one's name. Every row's id is one of the
+    report's modes, at the frequency the report gives it (the windio package's example,
+    the head mass of the IEA-22 report, Zalkind et al. 2024: 1,217,711 kg)."""
+    windio = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    path = Path(windio.__file__).parent / "examples" / "turbine" / "IEA-22-280-RWT_Floater.yaml"
+    report = audit.run(load(path, ReadOptions(head_mass=1217711.0)))
+    modes = {m.id: m.frequency_hz for m in report.modes}
+    rows = next(c for c in report.checks if c.id == "system.coupling").numbers["modes"]
+    assert [r["id"] for r in rows if r["id"] not in modes] == []
+    for r in rows:  # the table rounds to six digits
+        assert r["coupled_hz"] == pytest.approx(modes[r["id"]], abs=1e-6), r["id"]
+    by_id = {r["id"]: r for r in rows}
+    assert by_id["system.tower.fa1"]["isolated_id"] == "tower.fa1"
+    assert by_id["system.tower.ss2"]["isolated_id"] == "tower.ss2"
+
+
 def test_minor_harmonics_in_steady_operation_are_said_in_the_headline(shared):
     """NREL-5MW.fst: 4P–6P meet the tower within the margin in steady operation, info by
     Hau's energy argument (DAF 48–49); the headline says no resonance *of a dominant line*

@@ -973,8 +973,14 @@ def _judged_names(spec: Spec) -> dict[str, str]:
     (the axis a cyclic pair turns the rotor about); two blades: the same names."""
     if spec.rotor.blades < 3:
         return {}
+    assert spec.coupled is not None
     sw = rotating_sweep(spec)
-    return dict(zip(sw.path.first.names, sw.names, strict=True))
+    first = sw.path.first
+    # the standstill names as the parked modes have them: a floating platform's named
+    # (its rigid-body modes come first, the tower's bending numbered after them)
+    model = build(spec, spec.coupled.rotating_condition)
+    standing, _ = platform_named(model, first.names, first.descriptions, first.shapes)
+    return dict(zip(standing, sw.names, strict=True))
 
 
 def check(spec: Spec, isolated: list[Mode]) -> Check | None:
