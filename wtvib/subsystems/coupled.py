@@ -764,6 +764,7 @@ def platform_named(
     lay = model.layout
     heights = tower.discretise(model.spec.tower).nodes + p.tower_base_m
     counters: dict[str, int] = {}
+    platform: dict[str, int] = {}  # the platform's modes among each kind's, by kind
     out_names: list[str] = []
     out_texts: list[str] = []
     for j, (name, text) in enumerate(zip(names, descriptions, strict=True)):
@@ -787,12 +788,32 @@ def platform_named(
         if share >= tower.PLATFORM_SHARE:
             out_names.append(f"platform.{motion}")
             out_texts.append(f"platform {motion} (coupled model, added mass A∞)")
+            platform[kind] = platform.get(kind, 0) + 1
             continue
         counters[kind] = counters.get(kind, 0) + 1
         suffix = name[len(kind) :].lstrip("0123456789")
         out_names.append(f"{kind}{counters[kind]}{suffix}")
-        out_texts.append(re.sub(r"^\d+(st|nd|rd|th) ", f"{ordinal(counters[kind])} ", text))
-    return tuple(out_names), tuple(out_texts)
+        out_texts.append(text)
+    # every tower ordinal of a description — the mode's own, and what it is at standstill
+    # or at the top speed — counted without the platform's modes below the tower's own
+    return tuple(out_names), tuple(_platform_counted(t, platform) for t in out_texts)
+
+
+_TOWER_ORDINAL = re.compile(r"\b(\d+)(?:st|nd|rd|th) tower (fore-aft|side-side|torsion)\b")
+_TOWER_KIND = {"fore-aft": "tower.fa", "side-side": "tower.ss", "torsion": "tower.tor"}
+
+
+def _platform_counted(text: str, platform: Mapping[str, int]) -> str:
+    """``text`` with each "Nth tower fore-aft/side-side/torsion" renumbered without the
+    ``platform`` modes of that kind (a floating turbine's rigid-body modes, the lowest)."""
+
+    def shifted(match: re.Match[str]) -> str:
+        n = int(match.group(1)) - platform.get(_TOWER_KIND[match.group(2)], 0)
+        if n < 1:  # one of the platform's own modes
+            return f"the platform's rigid-body motion ({match.group(2)})"
+        return f"{ordinal(n)} tower {match.group(2)}"
+
+    return _TOWER_ORDINAL.sub(shifted, text)
 
 
 #: A coupled mode kept for its content (beyond the lowest MODES_KEPT) stands for its isolated

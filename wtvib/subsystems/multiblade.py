@@ -707,11 +707,7 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     by_mode = tuple(tuple(row[j] for row in path.whirl) for j in range(path.kept))
     names = _in_operation(path.first.names, by_mode)
     texts = tuple(
-        f"{a} (coupled)"
-        if _ORDINAL.sub("", a) == _ORDINAL.sub("", b)
-        else f"{b} (coupled; at standstill: {a})"
-        if n != n0
-        else f"{a}; at {rpm}: {b} (coupled)"
+        _described(a, b, n, n0, rpm)
         for a, b, n, n0 in zip(
             path.first.descriptions, path.last, names, path.first.names, strict=True
         )
@@ -731,6 +727,25 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
 #: among every candidate root (a floating platform's rigid modes among them), so the same
 #: mode may be numbered otherwise there — no change of what it is.
 _ORDINAL = re.compile(r"\b\d+(st|nd|rd|th) ")
+#: A description's note of a second share ("…, 42% blade.flap1.collective (named by its
+#: second share)"): the same mode with or without it.
+_SHARE = re.compile(r", \d+% .*$")
+
+
+def _described(standstill: str, top: str, name: str, first: str, rpm: str) -> str:
+    """A swept mode's description from what it is at standstill and at the top speed
+    ``rpm``: one of them where they are the same mode; a cyclic mode named by its whirl in
+    operation (``name`` ≠ its standstill name ``first``) says that whirl first, and what
+    it has become at the top speed where a veering gave it another's character."""
+    if _ORDINAL.sub("", standstill) == _ORDINAL.sub("", top):
+        return f"{standstill} (coupled)"
+    if name == first:
+        return f"{standstill}; at {rpm}: {top} (coupled)"
+    whirl = name.rpartition(".")[2].rstrip("0123456789")
+    lead = re.sub(r"cyclic(\d*) \((tilt|yaw)\)", rf"cyclic\1, {whirl} whirl", standstill, count=1)
+    if _SHARE.sub("", _ORDINAL.sub("", lead)) == _SHARE.sub("", _ORDINAL.sub("", top)):
+        return f"{top} (coupled; at standstill: {standstill})"
+    return f"{lead}; at {rpm}: {top} (coupled; at standstill: {standstill})"
 
 
 def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -> tuple[str, ...]:
@@ -738,13 +753,15 @@ def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -
     at standstill by the axis it turns the rotor about (``blade.flap1.cyclic_yaw``), is in
     the fixed frame a backward or a forward whirl once the rotor turns — named so
     (``blade.flap1.backward``; ``backward2`` for the second cyclic harmonic) where that is
-    its whirl at most of the rotating speeds. A pair both of one whirl keeps its names."""
+    its whirl at most of the rotating speeds where it whirls at all (a speed where the
+    tower holds more of its energy than its cyclic pattern — a flap whirl coupled with the
+    tower's bending — does not vote). A pair both of one whirl keeps its names."""
     out = list(names)
     for j, name in enumerate(names):
         base, _, coord = name.rpartition(".")
         if not coord.startswith("cyclic"):
             continue
-        turning = list(whirl[j][1:])
+        turning = [w for w in whirl[j][1:] if w is not None]
         for kind in ("backward", "forward"):
             if turning and turning.count(kind) > len(turning) / 2:
                 harmonic = coord.split("_")[0].removeprefix("cyclic")
@@ -829,11 +846,10 @@ def track(
     found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
     for i, cur in enumerate(found, start=1):
         kinds, where = whirls_and_parts(model, m, cur.shapes)
-        score = (
-            modal.mac(weight * shapes, weight * cur.shapes)
-            + KIND_WEIGHT * _same_kind(kind, kinds)
-            + KIND_WEIGHT * np.equal.outer(part, np.array(where, dtype=object))
-        )
+        mac = modal.mac(weight * shapes, weight * cur.shapes)
+        same = _same_kind(kind, kinds) + np.equal.outer(part, np.array(where, dtype=object))
+        step = points[i][0] - points[i - 1][0]
+        score = _identity_score(mac, same, freqs[i - 1], cur.frequency_hz, step)
         order = modal.assign(score, optimal=True)
         # a standing cyclic pair becomes a backward and a forward whirl once the rotor
         # turns: the whirl it first takes is its identity from then on
@@ -856,6 +872,34 @@ def track(
 #: optimal assignment must not swap them where the crossing blurs their MAC (the NREL
 #: 5-MW's flap forward whirl crosses its collective near 2 rpm).
 KIND_WEIGHT = 1.0
+
+
+#: A mode's identity — its whirl and the part its energy sits in (:data:`KIND_WEIGHT`) — passes
+#: only to a candidate near its frequency at the point before: at a crossing the two modes
+#: lie close, their shapes mix and their MACs blur, and identity decides; a candidate
+#: farther off is another mode, however alike its kind and part. Near is within what one
+#: step of the sweep can move two crossing modes apart: each whirl moves with the rotor
+#: speed (a cyclic mode of the first harmonic by ΔΩ/2π, of the second by 2ΔΩ/2π), so
+#: IDENTITY_SPEEDS × ΔΩ/2π, and IDENTITY_BAND of the frequency for the stiffening and the
+#: veering gap. (The IEA-22 semi's first tower fore-aft mode couples with the flap backward
+#: whirl from 3.5 rpm on, with more energy in the blades than in the tower there: its part
+#: alone handed the curve to a tower mode at 6.9 Hz with a MAC of 0.04; its second edge
+#: forward whirl, half tower side-side near 1.7 Hz, to the next tower mode 9 % up. The NREL
+#: 5-MW's flap forward whirl and collective cross 2 % apart, 0.014 Hz, where the band is
+#: 0.038 Hz.)
+IDENTITY_BAND = 0.02
+IDENTITY_SPEEDS = 3.0
+
+
+def _identity_score(
+    mac: Array, same: Array, before: Array, candidates: Array, step: float
+) -> Array:
+    """The score a path step assigns by: MAC plus KIND_WEIGHT for each identity held
+    (``same``: 0 … 2), counted only for candidates near the mode's frequency ``before``
+    [Hz] (``candidates``: theirs; ``step``: the rotor speed's change [rad/s])."""
+    band = IDENTITY_BAND * before + IDENTITY_SPEEDS * abs(step) / (2 * np.pi)
+    near = np.abs(candidates[None, :] - before[:, None]) <= band[:, None]
+    return np.asarray(mac + KIND_WEIGHT * np.where(near, same, 0.0))
 
 
 def _same_kind(before: Sequence[str | None], now: Sequence[str | None]) -> Array:
