@@ -339,7 +339,8 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     qs_points: list[tuple[float, Extra]] = [
         (float(om), (d, k)) for om, d, k in zip(sol.omega, qs_d, qs_k, strict=True)
     ]
-    steady = matched(model, qs_points, refs, reduced=path.basis)
+    structural = [path.frequency_hz[i] for i in where]
+    steady = matched(model, qs_points, refs, reduced=path.basis, frequencies=structural)
     if _shed_wake(spec):  # the lift's part lagged by the shed wake, through lag states
         d_lift = model.section_damping(lift)
         lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
@@ -349,7 +350,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
             (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
         ]
         points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
-        damped = matched(model, points, refs, reduced=path.basis)
+        damped = matched(model, points, refs, reduced=path.basis, frequencies=structural)
     else:  # quasi-steady: the judged damping is the quasi-steady one
         extras, damped = [extra for _, extra in qs_points], steady
     freq, zeta, unresolved, quasi = _matched_roots(

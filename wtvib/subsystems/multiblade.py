@@ -14,6 +14,7 @@ analysis", AIAA 2008-1300; M. H. Hansen, "Improved modal dynamics of wind turbin
 stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 """
 
+import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
@@ -959,6 +960,7 @@ def matched(
     references: Sequence[NDArray[np.complex128]],
     spare: int = 24,
     reduced: int = 0,
+    frequencies: Sequence[Array] | None = None,
 ) -> list[tuple[Array, Array, Array]]:
     """At each (Ω, extra matrices) point, |λ|/2π and ζ of the modes with the extra matrices,
     each matched to a column of that point's reference (the structural modes at the same
@@ -969,21 +971,32 @@ def matched(
     alike (a lightly damped edgewise mode beside a flap mode damped tens of per cent, both
     near 0.6 Hz) the curve keeps the mode it had. The third array is each match's score:
     MAC + overlap with the reference (0 … 2), or — where the damped mode continues the one
-    before it with a MAC of at least :data:`CONTINUED` — that continuity's 2·MAC. All
-    points solved as one stack."""
+    before it with a MAC of at least :data:`CONTINUED` — that continuity's 2·MAC.
+    ``frequencies``: the structural modes' at each point [Hz]; a lightly damped root
+    (ζ < :data:`LIGHT`) farther than :data:`RETUNED` from its mode's frequency is not that
+    mode, whatever its shape: its score is lowered by 2, and it is neither continued nor
+    continues a match. All points solved as one stack."""
     kept = references[0].shape[1]
     weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
     out = []
     found = _candidates(model, points, kept + spare, reduced, kept)
     before: NDArray[np.complex128] | None = None
-    for reference, cur in zip(references, found, strict=True):
+    held = np.zeros(kept, dtype=bool)  # the matches at the point before that may continue
+    for k, (reference, cur) in enumerate(zip(references, found, strict=True)):
         # shape (MAC: tells a forward from a backward whirl) plus where the energy sits
         # (blind to phase: keeps an overdamped, standing form with its whirling origin)
         score = modal.mac(weight * reference, weight * cur.shapes) + _overlap(
             model, reference, cur.shapes
         )
+        assert cur.damping_ratio is not None
+        retuned = (
+            _retuned(frequencies[k], cur.frequency_hz, cur.damping_ratio)
+            if frequencies is not None
+            else np.zeros_like(score)
+        )
+        score = score - 2.0 * retuned
         kin = (
-            modal.mac(weight * before, weight * cur.shapes)
+            modal.mac(weight * before, weight * cur.shapes) * held[:, None] * (1.0 - retuned)
             if before is not None and before.shape[0] == cur.shapes.shape[0]
             else np.zeros_like(score)
         )
@@ -993,7 +1006,7 @@ def matched(
         best = np.maximum(
             score[rows, order], np.where(kin[rows, order] >= CONTINUED, 2 * kin[rows, order], 0.0)
         )
-        before = cur.shapes[:, order]
+        before, held = cur.shapes[:, order], retuned[rows, order] == 0.0
         out.append((cur.frequency_hz[order], cur.damping_ratio[order], best))
     return out
 
@@ -1001,6 +1014,29 @@ def matched(
 #: A damped mode whose shape continues the one matched at the wind before with at least
 #: this MAC is the same mode, however little it resembles the structural one there.
 CONTINUED = 0.9
+
+#: A root damped less than LIGHT keeps its mode's frequency within a factor RETUNED: the
+#: aerodynamic stiffness moves a lightly damped mode by tens of per cent at most (the flap
+#: modes' aeroelastic frequencies lie 16–24 % above the structural ones in wtvib's
+#: quasi-steady model of the NREL 5-MW, OpenFAST's own within a few per cent), never
+#: threefold with its damping unchanged — a root that does is another mode whose energy
+#: sits in the same coordinates (the IEA-22's first edgewise collective, 1.10 Hz, was
+#: matched to an undamped root at 3.25 Hz, and its damping reported as −0.000). A heavily
+#: damped root may lie farther off (its |λ| is no longer an oscillation's frequency), but
+#: not by RETUNED_DAMPED: the IEA-22 monopile's stiff drive-train torsion (94 Hz) was
+#: matched to the free generator's creeping root (6 mHz, ζ = 1).
+LIGHT = 0.3
+RETUNED = 1.5
+RETUNED_DAMPED = 10.0
+
+
+def _retuned(structural: Array, candidates: Array, zeta: Array) -> Array:
+    """1 where a candidate root (frequency, ζ) cannot be the structural mode of a row: it
+    lies more than RETUNED off that mode's frequency lightly damped, RETUNED_DAMPED
+    otherwise; else 0."""
+    ratio = np.abs(np.log(np.maximum(candidates[None, :], 1e-12) / structural[:, None]))
+    limit = np.where(zeta < LIGHT, math.log(RETUNED), math.log(RETUNED_DAMPED))[None, :]
+    return np.asarray(ratio > limit, dtype=float)
 
 
 def perturbed(
