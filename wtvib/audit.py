@@ -596,7 +596,7 @@ def _spikes(spec: Spec) -> list[str]:
             rows = getattr(table, "rows", None)
             for i in np.flatnonzero(step >= SPIKE)[:3] + 1:
                 way = "above" if v[i] > v[i - 1] else "below"
-                # an imported table's station by its file, line and column (issue 56)
+                # an imported table's station by its file, line and column
                 said = (
                     f"{rows.file}:{rows.lines[i]}: {rows.columns.get(name, name)}"
                     if rows is not None and i < len(rows.lines)
