@@ -254,4 +254,4 @@ def test_a_mode_that_bends_the_tower_as_its_first_bending_is_not_its_second(tmp_
     assert 0.55 < f["blade.flap1.cyclic_tilt"] < 0.65  # the third of the family, 45 % tower
     assert f["tower.fa1"] < 0.5
     text = dict(zip(parked.names, parked.descriptions, strict=True))["blade.flap1.cyclic_tilt"]
-    assert "tower.fa (named by its second share)" in text
+    assert "45% tower fore-aft (named by its second share)" in text

@@ -564,7 +564,8 @@ def _name(
             whirl = _whirl(top, shapes[:, j], groups)
         name, text = _mode_name(top, share, j, counters, whirl)
         if top != first:
-            text = f"{text}, {merged[first]:.0%} {first} (named by its second share)"
+            said = _PARTS.get(first, first)
+            text = f"{text}, {merged[first]:.0%} {said} (named by its second share)"
         free = _free_name(name, names)
         if free is not None and free != name:  # the other axis of its cyclic pair
             was, now = name.rsplit("_", 1)[1], free.rsplit("_", 1)[1]
