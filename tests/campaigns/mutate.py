@@ -67,6 +67,11 @@ TESTS: dict[str, tuple[str, ...]] = {
         "tests/test_campbell_import.py",
         "tests/validation/test_campbell_import.py",
     ),
+    "subsystems.multiblade": (
+        "tests/validation/test_one_story.py",
+        "tests/validation/test_floating.py",
+        "tests/validation/test_coupled.py",
+    ),
 }
 
 
