@@ -75,15 +75,12 @@ def _lowest_only(k: Array, m: Array, count: int) -> Modes:
     checks: finite matrices, M positive definite, no clearly negative eigenvalue."""
     from scipy.linalg import LinAlgError, eigh
 
-    if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m))):
-        raise ModalError("the structural matrices hold NaN or infinite values")
+    _require_finite(k, m)
     k = 0.5 * (k + k.T)
     try:  # mass-normalised: φᵀ M φ = I
         w2, phi = eigh(k, 0.5 * (m + m.T), subset_by_index=(0, count - 1), driver="gvx")
     except LinAlgError:
-        raise ModalError(
-            "the mass matrix is not positive definite (a zero or negative mass or inertia?)"
-        ) from None
+        raise ModalError(NOT_POSITIVE) from None
     if not (np.all(np.isfinite(w2)) and np.all(np.isfinite(phi))):
         raise ModalError(OUT_OF_RANGE)
     # rounding is relative to the largest eigenvalue, which a partial solve does not find
@@ -146,16 +143,23 @@ def frequencies_stacked(k: Array, m: Array, count: int, *, unstable_as_nan: bool
     return np.asarray(hz)
 
 
-def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
-    """L⁻¹ K L⁻ᵀ (symmetrised) and L⁻ᵀ for a stack, M = L Lᵀ."""
+#: the message where a mass matrix has no Cholesky factor
+NOT_POSITIVE = "the mass matrix is not positive definite (a zero or negative mass or inertia?)"
+
+
+def _require_finite(k: Array, m: Array) -> None:
+    """A ModalError where K or M holds NaN or an infinity."""
     if not (np.all(np.isfinite(k)) and np.all(np.isfinite(m))):
         raise ModalError("the structural matrices hold NaN or infinite values")
+
+
+def _standard_form(k: Array, m: Array) -> tuple[Array, Array]:
+    """L⁻¹ K L⁻ᵀ (symmetrised) and L⁻ᵀ for a stack, M = L Lᵀ."""
+    _require_finite(k, m)
     try:
         lower = np.linalg.cholesky(m)
     except np.linalg.LinAlgError:
-        raise ModalError(
-            "the mass matrix is not positive definite (a zero or negative mass or inertia?)"
-        ) from None
+        raise ModalError(NOT_POSITIVE) from None
     inv = _inverse_lower(np.asarray(lower, dtype=float))
     inv_t = np.swapaxes(inv, -1, -2)
     with np.errstate(over="ignore", invalid="ignore"):
