@@ -106,6 +106,54 @@ def test_the_shed_wake_follows_the_decks_unsteady_aerofoil_model(shared, tmp_pat
         assert quasi.aerodynamics is not None and not quasi.aerodynamics.shed_wake, mod
 
 
+def test_dynamic_stall_follows_the_decks_unsteady_aerofoil_model(shared, tmp_path):
+    """The separation point lags (dynamic stall) where the deck's model has one — the
+    Beddoes–Leishman family (UA_Mod 2–5) behind its pressure lag: T_f0 + T_p of each
+    aerofoil's first table (the NREL 5-MW's: 3 + 1.7, one file saying "Default" for both,
+    AeroDyn's defaults), Øye's (6): T_f0 alone — and not at all where the lift is
+    quasi-steady (0)."""
+    from tests.conftest import edited_reference
+    from wtvib import importers
+
+    s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
+    assert s.aerodynamics is not None and s.aerodynamics.dynamic_stall
+    assert {a.separation_time for a in s.aerodynamics.airfoils.values()} == {3 + 1.7}
+    for mod, stall, time in (("0", False, 3.0), ("6", True, 3.0)):
+        folder = edited_reference(
+            shared,
+            tmp_path / mod,
+            "NREL5MW",
+            "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
+            "3                      UA_Mod",
+            f"{mod}                      UA_Mod",
+        )
+        aero = importers.load(folder / "NREL-5MW.fst").aerodynamics
+        assert aero is not None and aero.dynamic_stall is stall, mod
+        assert {a.separation_time for a in aero.airfoils.values()} == {time}, mod
+
+
+@pytest.mark.parametrize("value", ["-3", "0", "1e6", "soon"])
+def test_a_separation_time_a_model_cannot_have_names_file_and_line(
+    shared: Path, tmp_path: Path, value: str
+):
+    """T_f0 is a positive number of half-chord transits, at most 100 (AeroDyn's default 3):
+    anything else is one line naming the aerofoil file, its line and the field."""
+    from tests.conftest import edited_reference
+
+    folder = edited_reference(
+        shared,
+        tmp_path,
+        "NREL5MW",
+        "Airfoils/DU40_A17.dat",
+        "          3   T_f0",
+        f"          {value}   T_f0",
+    )
+    with pytest.raises(SpecError) as err:
+        load(folder / "NREL-5MW.fst")
+    assert "DU40_A17.dat" in str(err.value) and "T_f0" in str(err.value)
+    assert err.value.line == 23
+
+
 @pytest.mark.parametrize(
     ("old", "new", "induction"),
     [

@@ -157,3 +157,22 @@ def test_convert_writes_an_editable_spec_of_the_model(model, tmp_path):
     assert result.exit_code == 0, result.output
     result = CliRunner().invoke(app, ["check", str(out), "--no-plots", "-f", "json"])
     assert result.exit_code in (0, 1), result.output
+
+
+@pytest.mark.parametrize(
+    ("method", "shed", "stall", "time"),
+    [(2, True, True, 7.5), (1, False, True, 6.0), (0, False, False, 3.0)],
+)
+def test_the_unsteady_aerofoil_follows_dynstall_method(model, method, shed, stall, time):
+    """HAWC2's ``dynstall_method``: MHH (2, the IEA-15 model's) lags the lift by the shed
+    wake and the separation point by T_f0 + T_p0 = 6 + 1.5 half-chord transits; Øye's (1)
+    the separation point only (6); none (0): the lift follows the static polar."""
+    from wtvib.importers import load
+
+    aero_htc = model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_aero.htc"
+    if method != 2:
+        _edit(aero_htc, "dynstall_method    2 ;", f"dynstall_method    {method} ;")
+    aero = load(model).aerodynamics
+    assert aero is not None
+    assert (aero.shed_wake, aero.dynamic_stall) == (shed, stall)
+    assert {a.separation_time for a in aero.airfoils.values()} == {time}

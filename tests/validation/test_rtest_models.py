@@ -52,13 +52,15 @@ CASES = {
 #: blade at 13 m/s, 0° pitch and 12.1 rpm, its outer stations at 6.7–9° (the fixture's
 #: aerofoil stalls at 9°).
 _FAKE = (
-    "OPEN, untraced: r-test's AeroDyn linearisation fixture (four stations, three blades, "
-    "the flap DOF only, Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model') "
-    "unsteady aerofoil, no dynamic wake) — OpenFAST damps the flap modes at ζ 0.17–0.33 "
-    "where wtvib's quasi-steady sections give 0.50–0.77 with the induction in equilibrium "
-    "as the deck asks (frozen: 0.51–0.78), and these modes' natural frequencies move with "
-    "their damping. The dynamic-stall states near the aerofoil's stall, which wtvib does "
-    "not model (stated in every aeroelastic audit), are the candidate"
+    "OPEN: r-test's AeroDyn linearisation fixture (four stations, three blades, the flap DOF "
+    "only, Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model') unsteady "
+    "aerofoil, no dynamic wake). Its outer stations sit at or past the aerofoil's stall, "
+    "where the separation point's lag decides the damping: modelled (dynamic stall, "
+    "test_the_fixtures_damping_is_openfasts_once_the_separation_lags), wtvib damps the flap "
+    "modes at ζ 0.37 / 0.27 / 0.21 against OpenFAST's 0.33 / 0.23 / 0.17 (quasi-steady "
+    "0.77 / 0.61 / 0.50) and the natural frequencies came down with it (+34 / +16 / +8 % "
+    "before). Left: the frequencies, which move with so heavy a damping; the file's own "
+    "α₀ and C_lα instead of the polar's put them further off (+24 / +16 / +12 %)"
 )
 
 #: (case, mode) → (lowest, highest wtvib/OpenFAST − 1 accepted, why — with the third
@@ -212,19 +214,21 @@ EXCEPTIONS.update(
         **{
             ("Fake5MW_AeroLin_B3_UA6", mode): (lo, hi, _FAKE + f". Measured {said}")
             for mode, lo, hi, said in (
-                ("blade.flap1.backward", 0.30, 0.38, "+34 %"),
-                ("blade.flap1.collective", 0.13, 0.19, "+16 %"),
-                ("blade.flap1.forward", 0.06, 0.11, "+8.4 %"),
+                ("blade.flap1.backward", 0.16, 0.23, "+19.6 %"),
+                ("blade.flap1.collective", 0.10, 0.16, "+13.0 %"),
+                ("blade.flap1.forward", 0.06, 0.12, "+9.5 %"),
             )
         },
         ("Fake5MW_AeroLin_B1_UA4_DBEMT3", "blade.flap1"): (
             0.07,
             0.12,
-            _FAKE.replace("three", "one").replace(
-                "Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model')",
-                "the 4-state HGM (UA_Mod 4)",
-            )
-            + ". Measured +9.6 % (natural frequency; ζ 0.079 in OpenFAST)",
+            "OPEN, untraced: r-test's AeroDyn linearisation fixture with one blade (four "
+            "stations, the flap DOF only, the 4-state HGM unsteady aerofoil, UA_Mod 4, and a "
+            "dynamic wake of τ = 100 s): OpenFAST's flap mode at 0.6185 Hz, ζ 0.079, wtvib's "
+            "one-blade rotor has no coupled damped model (periodic coefficients) and its "
+            "isolated estimate damps it at ζ 0.60 (the separation lag modelled; quasi-steady "
+            "the same: its damping comes from the attached outer half). Measured +9.6 % "
+            "(the structural frequency)",
         ),
     }
 )
@@ -637,3 +641,41 @@ def test_openfasts_semi_tower_is_its_assumed_shapes(decks):
     assert most(full, ss, None) == pytest.approx(4.1, rel=0.03)  # wtvib's own, measured 4.11
     assert most(shapes, ss, t) == pytest.approx(5.08, rel=0.03)  # OpenFAST's ss2 (its .lin)
     assert 3.70 < most(shapes, fa, t) < 3.95  # OpenFAST's fa2 3.90; wtvib's own 3.62
+
+
+def _damping_at(report: audit.Report, wind: float) -> dict[str, float]:
+    """Each judged mode's total damping in operation at ``wind`` (``system.`` dropped)."""
+    return {
+        m.id.removeprefix("system."): float(
+            np.interp(wind, np.asarray(m.operating.wind), np.asarray(m.operating.total))
+        )
+        for m in report.modes
+        if m.judged and m.operating is not None
+    }
+
+
+def test_the_fixtures_damping_is_openfasts_once_the_separation_lags(decks, tmp_path):
+    """Fake5MW_AeroLin_B3_UA6 (13 m/s, 0° pitch, 12.1 rpm: the outer stations at or past
+    the aerofoil's stall; Øye's model with T_f0 = 30, no shed wake, the induction in
+    equilibrium): OpenFAST's linearisation damps the flap modes at ζ 0.330 / 0.228 / 0.174
+    (backward, collective, forward). With the separation point lagging (dynamic stall, as
+    the deck asks: UA_Mod 6 read with its T_f0) wtvib's coupled model is within +5 … +30 %
+    (measured +11 / +18 / +22 %); with the lift following the static polar at once it
+    damps them 2.3–2.9 times as much (measured 0.77 / 0.61 / 0.50) — the lag, not the
+    wake or the structure, makes the difference."""
+    case = "Fake5MW_AeroLin_B3_UA6"
+    ref = _openfast(case, tmp_path)
+    spec = importers.load(
+        decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
+    )
+    assert spec.aerodynamics is not None and spec.aerodynamics.dynamic_stall
+    assert spec.aerodynamics.airfoils["NACA64_A17_2Prop"].separation_time == 30
+    quasi = spec.model_copy(
+        update={"aerodynamics": spec.aerodynamics.model_copy(update={"dynamic_stall": False})}
+    )
+    assert ref.wind is not None
+    lagged, static = (_damping_at(audit.run(s), ref.wind) for s in (spec, quasi))
+    theirs = dict(zip(ref.names, ref.damping_ratio, strict=True))
+    for name in ("blade.flap1.backward", "blade.flap1.collective", "blade.flap1.forward"):
+        assert 1.05 <= lagged[name] / theirs[name] <= 1.30, (name, lagged[name], theirs[name])
+        assert 2.0 <= static[name] / theirs[name] <= 3.2, (name, static[name], theirs[name])

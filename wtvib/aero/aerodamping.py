@@ -43,15 +43,21 @@ Models:
   motion, agrees within 10 % on the NREL 5-MW, and adds the rotor's tilt with the tower
   top's slope and the blades' flap share (+40–90 % there) — the isolated value is low.
 
+Dynamic stall (``aerodynamics.dynamic_stall``): the part of the lift slope that the
+separation point lags (:func:`wtvib.numerics.unsteady.separated_slope`, from Kirchhoff's
+separation function of each polar) goes through one lag state per coordinate at the
+sections' weighted 1/T_f, the rest as above; in attached flow that part is zero.
+
 Neglected and stated: aerodynamic stiffness (the rotor plane's tilt and yaw, blade
-torsion), the apparent mass, dynamic inflow and dynamic stall, the tower's own drag.
+torsion), the apparent mass, dynamic inflow, dynamic stall where the spec does not ask for
+it, the tower's own drag.
 Structural damping is the mode's given or assumed ratio, added to the aerodynamic one and
 stated separately.
 """
 
 import functools
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
@@ -67,7 +73,8 @@ from ..subsystems import blade
 from . import bem
 
 if TYPE_CHECKING:
-    from ..subsystems.multiblade import Extra, Model, Path
+    from ..subsystems.coupled import Model as CoupledModel
+    from ..subsystems.multiblade import Extra, LiftLag, Model, Path
 
 Array = NDArray[np.float64]
 
@@ -120,12 +127,23 @@ class Sections:
     c: Array  # per unit length and blade [N·s/m²], (K, S, 2, 2)
     lift: Array  # the lift slope's part of c (section_lift), (K, S, 2, 2)
     rate: Array  # each section's reduced rate 2W/c [1/s], (K, S)
+    #: the part of ``lift`` that the separation point lags (dynamic stall), and each
+    #: section's separation rate 1/T_f = 2W/(c·T_f0) [1/s]; None: no separation lag
+    separated: Array | None = None
+    separated_rate: Array | None = None
 
     @functools.cached_property
     def lift_rate(self) -> Array:
         """The lift part weighted by each section's 2W/c: summed over sections and divided
         by the lift part's sum, the lift-weighted reduced rate of a lag filter."""
         return np.asarray(self.lift * self.rate[..., None, None])
+
+    @functools.cached_property
+    def separated_weighted(self) -> Array | None:
+        """The separated part weighted by each section's 1/T_f (as :attr:`lift_rate`)."""
+        if self.separated is None or self.separated_rate is None:
+            return None
+        return np.asarray(self.separated * self.separated_rate[..., None, None])
 
     def at(self, radius: Array, table: Array | None = None) -> Array:
         """The matrices (``table``, else ``c``) at other radii (K, P, 2, 2): linear
@@ -164,11 +182,17 @@ def _sections(spec: Spec) -> Sections:
     dcl, dcd = (cl_p - cl_m) / (2 * h), (cd_p - cd_m) / (2 * h)
     c = section_matrix(r.rho, r.chord, sol.w, sol.phi, sol.cl, sol.cd, dcl, dcd)
     lift = section_lift(r.rho, r.chord, sol.w, sol.phi, dcl)
+    separated = separated_rate = None
+    if r.separation_time is not None:  # dynamic stall: the separation point's lagged part
+        separated = section_lift(r.rho, r.chord, sol.w, sol.phi, r.separated_slope(sol.alpha, h))
+        separated_rate = unsteady.lag_rates(sol.w, r.chord) / r.separation_time
     assert spec.aerodynamics is not None
     if spec.aerodynamics.induction == "equilibrium":
         g = inflow_response(r, sol)
         c, lift = c @ g, lift @ g
-    return Sections(sch, r.radius, c, lift, unsteady.lag_rates(sol.w, r.chord))
+        separated = None if separated is None else separated @ g
+    rate = unsteady.lag_rates(sol.w, r.chord)
+    return Sections(sch, r.radius, c, lift, rate, separated, separated_rate)
 
 
 #: The section speed [m/s] of the central differences of :func:`inflow_response`: far
@@ -309,7 +333,6 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         Extra,
         at_speeds,
         fixed_frame_damping,
-        lift_lag,
         matched,
         parts,
     )
@@ -333,7 +356,6 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
     d_qs = model.section_damping(c_points)
     lift = sec.at(model.rotor.radius, sec.lift) * per_length
-    rated = sec.at(model.rotor.radius, sec.lift_rate) * per_length
     refs = [path.shapes[i] for i in where]
     qs_d, qs_k = fixed_frame_damping(model, d_qs, sol.omega)
     qs_points: list[tuple[float, Extra]] = [
@@ -341,10 +363,9 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     ]
     structural = [path.frequency_hz[i] for i in where]
     steady = matched(model, qs_points, refs, reduced=path.basis, frequencies=structural)
-    if _shed_wake(spec):  # the lift's part lagged by the shed wake, through lag states
+    if _shed_wake(spec) or sec.separated is not None:  # the lift's lagged parts: lag states
         d_lift = model.section_damping(lift)
-        lag = lift_lag(model, d_lift, model.section_damping(rated), sol.omega)
-        d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * d_lift
+        lag, d_now = _lagged(model, sec, d_qs, d_lift, _shed_wake(spec))
         d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
         extras: list[Extra] = [
             (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
@@ -366,6 +387,46 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         tuple(part[i] for i in where),
         np.minimum(quasi, 1.0),
     )
+
+
+def _lagged(
+    model: "CoupledModel", sec: Sections, d_qs: Array, d_lift: Array, shed_wake: bool
+) -> tuple["LiftLag", Array]:
+    """The coupled model's lag states at every operating point and the damping that acts at
+    once: Jones's shed-wake filters on the attached part of the lift (``shed_wake``), the
+    separation point's pole on its separated part (dynamic stall)."""
+    from ..subsystems.multiblade import lift_lag
+
+    omega = sec.schedule.solution.omega
+    per_length = model.rotor.length[None, :, None, None]
+
+    def on_model(table: Array) -> Array:
+        return np.asarray(model.section_damping(sec.at(model.rotor.radius, table) * per_length))
+
+    d_sep = None
+    attached = d_lift
+    if sec.separated is not None and sec.separated_weighted is not None:
+        d_sep = on_model(sec.separated)
+        attached = d_lift - d_sep
+    lag = None
+    d_now = d_qs - attached
+    if shed_wake:
+        rated = on_model(sec.lift_rate) if d_sep is None else on_model(_attached_rate(sec))
+        lag = lift_lag(model, attached, rated, omega)
+        d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * attached
+    if d_sep is not None:
+        assert sec.separated_weighted is not None
+        sep = lift_lag(model, d_sep, on_model(sec.separated_weighted), omega, ((1.0, 1.0),))
+        lag = sep if lag is None else lag.joined(sep)
+        d_now = d_now - d_sep
+    assert lag is not None
+    return lag, d_now
+
+
+def _attached_rate(sec: Sections) -> Array:
+    """The attached part of the lift (the lift less its separated part) weighted by 2W/c."""
+    assert sec.separated is not None
+    return np.asarray((sec.lift - sec.separated) * sec.rate[..., None, None])
 
 
 def _matched_roots(
@@ -480,10 +541,9 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     return _single_mode(
         gen_mass,
         omega,
-        on_shape(sec.c),
-        on_shape(sec.lift),
-        on_shape(sec.lift_rate),
+        (on_shape(sec.c), on_shape(sec.lift), on_shape(sec.lift_rate)),
         _shed_wake(spec),
+        _separated(sec, on_shape),
     )
 
 
@@ -521,8 +581,21 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
 
     omega = 2 * np.pi * mode.frequency_at(sec.schedule.solution.omega)
     return _single_mode(
-        gen_mass, omega, rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate), _shed_wake(spec)
+        gen_mass,
+        omega,
+        (rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate)),
+        _shed_wake(spec),
+        _separated(sec, rotor),
     )
+
+
+def _separated(sec: Sections, reduce: Callable[[Array], Array]) -> tuple[Array, Array] | None:
+    """The separation point's lagged part of a mode's damping coefficient and that part
+    weighted by each section's 1/T_f (``reduce``: a section table to the mode's coefficient);
+    None without dynamic stall."""
+    if sec.separated is None or sec.separated_weighted is None:
+        return None
+    return reduce(sec.separated), reduce(sec.separated_weighted)
 
 
 def _lift(spec: Spec) -> str:
@@ -552,25 +625,34 @@ def _shed_wake(spec: Spec) -> bool:
 def _single_mode(
     gen_mass: float,
     omega: Array,
-    c: Array,
-    lift: Array,
-    lift_rate: Array,
+    forces: tuple[Array, Array, Array],
     shed_wake: bool = True,
+    separated: tuple[Array, Array] | None = None,
 ) -> tuple[Array, Array]:
     """ζ_a of one mode (generalised mass, circular frequency ω at each operating point) with
-    the modal damping coefficient c of the blade-element forces, ``lift`` its lift-slope
-    part and ``lift_rate`` that part weighted by each section's 2W/c: the root with the
-    lift lagged by the shed wake (:func:`wtvib.numerics.unsteady.single_mode_roots`; 1 where it
-    does not oscillate) — or, without ``shed_wake``, the quasi-steady ratio, at most 1 —
-    and the quasi-steady c/(2ωm), which may exceed 1."""
+    ``forces`` = (c, lift, lift_rate): the modal damping coefficient c of the blade-element
+    forces, its lift-slope part and that part weighted by each section's 2W/c; ``separated``:
+    the lift's part the separation point lags and that part weighted by 1/T_f (dynamic
+    stall). The root with the lift lagged (:func:`wtvib.numerics.unsteady.single_mode_roots`;
+    1 where it does not oscillate) — or, with neither lag, the quasi-steady ratio, at most
+    1 — and the quasi-steady c/(2ωm), which may exceed 1."""
+    c, lift, lift_rate = forces
     quasi = np.asarray(c / (2 * omega * gen_mass))
-    if not shed_wake:
+    if not shed_wake and separated is None:
         return np.minimum(quasi, 1.0), quasi
     # the lift-weighted mean of the sections' rates (one filter stands for them all)
-    rate = np.abs(lift_rate / np.where(lift != 0, lift, 1.0))
-    root = unsteady.single_mode_roots(gen_mass, gen_mass * omega**2, c - lift, lift, rate)
+    _, rate = _weighted_rate(lift, lift_rate)
+    sep, sep_rate = (0.0, 1.0) if separated is None else _weighted_rate(*separated)
+    root = unsteady.single_mode_roots(
+        gen_mass, gen_mass * omega**2, c - lift, lift, rate, sep, sep_rate, shed_wake
+    )
     lagged = np.where(np.isnan(root), 1.0, modal.damping_ratio(root))
     return np.asarray(lagged), quasi
+
+
+def _weighted_rate(part: Array, weighted: Array) -> tuple[Array, Array]:
+    """A lagged part and its weighted mean rate (the weighted sum over the part's)."""
+    return part, np.abs(weighted / np.where(part != 0, part, 1.0))
 
 
 # ---------------------------------------------------------------------------------------
@@ -651,9 +733,21 @@ def _notes(
         else "the lift quasi-steady, following the angle of attack at once (no shed-wake "
         "lag: aerodynamics.shed_wake false — an OpenFAST deck's UA_Mod 0, 6 or 7)"
     )
+    assert spec.aerodynamics is not None
+    stall = (
+        "the separation point lagging the angle of attack past the lift's linear range "
+        "(dynamic stall: Kirchhoff's separation from the polar, one pole of T_f0·c/(2W) per "
+        "section, T_f0 "
+        + ", ".join(
+            sorted({f"{a.separation_time:g}" for a in spec.aerodynamics.airfoils.values()})
+        )
+        + ")"
+        if spec.aerodynamics.dynamic_stall
+        else "no dynamic stall: past stall the lift follows the static polar at once"
+    )
     notes.append(
         "Aerodynamic damping: blade-element forces linearised at each operating point with "
-        f"{induction_words(spec)} (no dynamic stall), lift and drag slopes over "
+        f"{induction_words(spec)} ({stall}), lift and drag slopes over "
         f"±{bem.SLOPE_STEP_DEG:g}°, {lift}; aerodynamic stiffness (tilt, yaw, torsion) and "
         "apparent mass neglected; total damping = aerodynamic + the mode's structural ratio."
     )

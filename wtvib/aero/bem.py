@@ -63,21 +63,53 @@ class Rotor:
     rho: float  # [kg/m³]
     tip_loss: bool
     hub_loss: bool
+    #: each station's separation time constant T_f0 [half-chord transits] where the lift's
+    #: separation point lags (dynamic stall, :mod:`wtvib.numerics.unsteady`); None: it does not
+    separation_time: Array | None = None
 
     def polar(self, alpha: Array) -> tuple[Array, Array]:
         """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
         reads the table at 0°: the solution's finiteness check names the failure)."""
+        cl, cd = self._lookup(alpha, self._flat)
+        return cl, cd
+
+    def _lookup(self, alpha: Array, flat: tuple[Array, ...]) -> tuple[Array, ...]:
+        """Tables on the α grid (each flattened, S·A) read at ``alpha`` [rad], linear."""
         x = (np.degrees(np.where(np.isfinite(alpha), alpha, 0.0)) + 180.0) % 360.0
         x = x / POLAR_STEP_DEG
         i = np.minimum(x.astype(np.intp), self.cl.shape[1] - 2)
         t = x - i
         k = i + self._row_start  # into the flattened tables: station s's row starts at s·A
-        cl_flat, cd_flat = self._flat
         u = 1 - t
         k1 = k + 1
-        cl = cl_flat.take(k) * u + cl_flat.take(k1) * t
-        cd = cd_flat.take(k) * u + cd_flat.take(k1) * t
-        return cl, cd
+        return tuple(table.take(k) * u + table.take(k1) * t for table in flat)
+
+    @functools.cached_property
+    def separation(self) -> tuple[Array, Array, Array]:
+        """Kirchhoff's separation function on the α grid (S, A), each station's zero-lift
+        angle [deg] and inviscid slope [1/deg]
+        (:func:`wtvib.numerics.unsteady.separation_table`)."""
+        from ..numerics.unsteady import separation_table
+
+        grid = np.arange(self.cl.shape[1], dtype=float) * POLAR_STEP_DEG - 180.0
+        return separation_table(np.asarray(grid, float), self.cl)
+
+    def separated_slope(self, alpha: Array, step: float) -> Array:
+        """The part of each section's lift slope [1/rad] at ``alpha`` [rad] that the
+        separation point lags (:func:`wtvib.numerics.unsteady.separated_slope`), its f_st′
+        by central differences over ±``step`` [rad] like the polar's slopes; 0 where the
+        separation does not lag (``separation_time`` None)."""
+        from ..numerics.unsteady import separated_slope
+
+        if self.separation_time is None:
+            return np.zeros_like(alpha)
+        f, alpha0, slope = self.separation
+        flat = (f.ravel(),)
+        (f_now,) = self._lookup(alpha, flat)
+        (f_up,) = self._lookup(alpha + step, flat)
+        (f_down,) = self._lookup(alpha - step, flat)
+        inviscid = slope * (np.degrees(alpha) - alpha0)
+        return separated_slope(inviscid, f_now, (f_up - f_down) / (2 * step))
 
     @functools.cached_property
     def solidity(self) -> Array:
@@ -146,6 +178,9 @@ def _rotor(spec: Spec) -> Rotor:
         aero.air_density_kg_m3,
         aero.tip_loss,
         aero.hub_loss,
+        np.array([aero.airfoils[n].separation_time for n in st.airfoil], float)
+        if aero.dynamic_stall
+        else None,
     )
 
 

@@ -186,16 +186,56 @@ def _airfoil_files(deck: Deck) -> list[Path]:
 #: its rate, no shed wake either.
 SHED_WAKE_UA = frozenset({2, 3, 4, 5})
 
+#: The models whose separation point lags the angle of attack past stall (dynamic stall):
+#: the Beddoes–Leishman family's f″ state behind its pressure lag (2–5) and Øye's (6).
+SEPARATION_UA = frozenset({2, 3, 4, 5, 6})
+
+#: AeroDyn's defaults of the separation's and the pressure's time constants, T_f0 and T_p
+#: [half-chord transits] (AeroDyn theory manual, "Unsteady Aerodynamics": 3 and 1.7).
+DEFAULT_TF0, DEFAULT_TP = 3.0, 1.7
+
+
+def unsteady_model(ad: Deck) -> int:
+    """The AeroDyn file's unsteady aerofoil model (UA_Mod; older files AFAeroMod 2 with
+    UAMod, Beddoes–Leishman 1 counted with 2–3); 0: quasi-steady."""
+    if "UA_Mod" in ad.values:
+        return ad.whole("UA_Mod", low=0)
+    if "AFAeroMod" in ad.values:  # older AeroDyn 15: 1 steady, 2 Beddoes–Leishman (UAMod)
+        model = ad.whole("UAMod", low=1) if "UAMod" in ad.values else 3
+        return (2 if model == 1 else model) if ad.whole("AFAeroMod", low=1) == 2 else 0
+    return 0
+
 
 def shed_wake(ad: Deck) -> bool:
     """Whether the AeroDyn file asks for an unsteady aerofoil model with a shed-wake lag
     (:data:`SHED_WAKE_UA`); quasi-steady where it says UA_Mod 0 (AFAeroMod 1)."""
-    if "UA_Mod" in ad.values:
-        return ad.whole("UA_Mod", low=0) in SHED_WAKE_UA
-    if "AFAeroMod" in ad.values:  # older AeroDyn 15: 1 steady, 2 Beddoes–Leishman (UAMod)
-        model = ad.whole("UAMod", low=1) if "UAMod" in ad.values else 3
-        return ad.whole("AFAeroMod", low=1) == 2 and model in SHED_WAKE_UA | {1}
-    return False
+    return unsteady_model(ad) in SHED_WAKE_UA
+
+
+def separation_time(path: Path, model: int) -> float:
+    """The first table's separation time constant of an AirfoilInfo file [half-chord
+    transits]: T_f0, and for the Beddoes–Leishman models T_f0 + T_p (their f″ follows the
+    pressure lag: one pole stands for the two, :mod:`wtvib.numerics.unsteady`); AeroDyn's
+    defaults where the file has no unsteady data or says "default"."""
+    lines = read_text(path).splitlines()
+    end = next((i for i, ln in enumerate(lines) if ln.split()[1:2] == ["NumAlf"]), len(lines))
+
+    def value(key: str, default: float) -> float:
+        for i, ln in enumerate(lines[:end]):
+            cells = ln.split()
+            if cells[1:2] == [key] and cells[0].lower().strip('"') != "default":
+                got = _number(cells[0], key, i + 1, path)
+                if not 0 < got <= 100:
+                    raise SpecError(
+                        f"{key} must lie within 0 … 100 half-chord transits (got {got:g})",
+                        line=i + 1,
+                        source=str(path),
+                    )
+                return got
+        return default
+
+    tf0 = value("T_f0", DEFAULT_TF0)
+    return tf0 if model == 6 else min(tf0 + value("T_p", DEFAULT_TP), 100.0)
 
 
 def induction(ad: Deck) -> tuple[str, str]:
@@ -237,7 +277,11 @@ def aerodynamics(
     if max(ids) > len(files):
         raise SpecError(f"BlAFID {max(ids)} exceeds NumAFfiles {len(files)}", source=str(blade))
     used = sorted(set(ids))
-    airfoils = {files[i - 1].stem: polar(files[i - 1]) for i in used}
+    airfoils: dict[str, dict[str, Any]] = {files[i - 1].stem: polar(files[i - 1]) for i in used}
+    model = unsteady_model(ad)
+    if model in SEPARATION_UA:
+        for i in used:
+            airfoils[files[i - 1].stem]["separation_time"] = separation_time(files[i - 1], model)
     warnings = [w for name, table in airfoils.items() if (w := negative_drag(name, table))]
     stations["airfoil"] = [files[i - 1].stem for i in ids]
     rho = ad.num("AirDens", "AirDens(1)", default=1.225)
@@ -254,6 +298,7 @@ def aerodynamics(
         "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
         "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
         "shed_wake": shed_wake(ad),
+        "dynamic_stall": model in SEPARATION_UA,
         "induction": induction(ad)[0],
         "stations": stations,
         "airfoils": airfoils,

@@ -679,12 +679,17 @@ def _aerodynamics(
     wind = top.block("wind")
     density = wind.get("density") if wind is not None else None
     stall = aero.get("dynstall_method")
+    method = int(stall.number(0)) if stall is not None else 0
+    if method in SEPARATION_TIME:
+        for polar in airfoils.values():
+            polar["separation_time"] = SEPARATION_TIME[method]
     tip = aero.get("tiploss_method")
     return {
         "air_density_kg_m3": density.number(0) if density is not None else 1.225,
         # the shed wake lags the lift in HAWC2's Beddoes–Leishman-type MHH model (2), not in
-        # Øye's (1) or without dynamic stall (0)
-        "shed_wake": stall is not None and stall.number(0) >= 2,
+        # Øye's (1) or without dynamic stall (0); both lag the separation point
+        "shed_wake": method >= 2,
+        "dynamic_stall": method in SEPARATION_TIME,
         "tip_loss": tip is None or tip.number(0) > 0,
         "stations": {
             "radius_m": [float(v) for v in radius],
@@ -695,6 +700,13 @@ def _aerodynamics(
         "airfoils": airfoils,
         "control": control,
     }
+
+
+#: The separation point's time constant [half-chord transits] of HAWC2's dynamic stall
+#: models (``dynstall_method``): MHH (2) T_f0 + T_p0 = 6 + 1.5 (Hansen, Gaunaa & Madsen
+#: 2004, the constants HAWC2 uses — welib's MHH implementation, "HAWC2" constants), Øye (1)
+#: 6 (the value Øye's model is usually run with: AeroDyn theory manual, "Oye model").
+SEPARATION_TIME = {1: 6.0, 2: 7.5}
 
 
 def _blended(

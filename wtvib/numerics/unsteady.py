@@ -20,10 +20,33 @@ solved as it is (the p-k method's real k is exact only where the damping vanishe
 
 Two first-order states per lagged input make the blade-element forces a state-space model
 whose roots are the aeroelastic modes; the same form OpenFAST's unsteady-aerodynamics
-linearisation and HAWCStab2 use (Beddoes–Leishman attached flow, Hansen 2004). Left out:
-the non-circulatory (apparent-mass) lift, small beside a blade's mass, dynamic stall and
-the dynamic inflow of the wake as a whole (its time constant, R/V ≈ 10 s, is far slower
-than the blade and tower modes).
+linearisation and HAWCStab2 use (Beddoes–Leishman attached flow, Hansen 2004).
+
+**Dynamic stall: the separation point's lag.** Past the lift's linear range the flow
+separates from the trailing edge; the separation point does not move at once with the angle
+of attack but follows it with the time constant T_f = T_f0·c/(2W) (Øye 1991; the
+Beddoes–Leishman family's f″ state, Hansen, Gaunaa & Madsen, Risø-R-1354, 2004; AeroDyn's
+theory manual, "Unsteady Aerodynamics"). With the inviscid lift C_inv = C_Lα(α − α₀) and
+Kirchhoff's flat-plate separation
+
+    C_L = C_inv·((1 + √f)/2)²,   so   f_st(α) = (2·√(C_L/C_inv) − 1)²   clipped to [0, 1]
+
+(0 beyond the first full separation on either side of α₀), the lift of a section whose
+separation point f lags is C_L = f·C_inv + (1 − f)·C_fs(α) with the fully separated lift
+C_fs. Linearised about a steady point, the lift slope splits into a part that acts at once
+and one that the separation point lags:
+
+    δC_L = (C_L′ − L)·δα + L·δf/f_st′,   δf = f_st′·δα/(1 + s·T_f),
+    L = (C_inv − C_fs)·f_st′ = C_inv·(3 + √f)/(4(1 + √f))·f_st′
+
+(the second form from Kirchhoff's relation). In attached flow f_st = 1 and L = 0: nothing
+changes; past stall C_L′ < 0 but C_L′ − L > 0, and a vibration faster than 1/T_f meets the
+positive slope — the quasi-steady stall damping is the slow limit, the conservative one.
+One pole per section stands for the model's chain (Beddoes–Leishman's pressure lag T_p
+before f″ adds its time: T_p0 + T_f0, the first-order sum of the two). Left out: the
+non-circulatory (apparent-mass) lift, small beside a blade's mass, the leading-edge vortex
+of deep dynamic stall (not a small-signal effect), and the dynamic inflow of the wake as a
+whole (its time constant, R/V ≈ 10 s, is far slower than the blade and tower modes).
 """
 
 import numpy as np
@@ -54,35 +77,103 @@ def lag_rates(w: Array, chord: Array) -> Array:
     return np.asarray(2.0 * np.asarray(w, float) / np.asarray(chord, float))
 
 
+#: A separation function this close to 1 is attached flow; within this angle [deg] of α₀
+#: the inviscid lift is too small to divide by and the flow is taken as attached.
+ATTACHED_NEAR_DEG = 0.5
+
+#: The inviscid lift slope C_Lα: the steepest secant C_L/(α − α₀) within this angle [deg] of
+#: the zero-lift angle, which is sought within ±ZERO_LIFT_WITHIN_DEG (AeroDyn takes its
+#: defaults within ±20°: theory manual, "Calculating Default Airfoil Coefficients").
+LINEAR_WITHIN_DEG, ZERO_LIFT_WITHIN_DEG = 10.0, 20.0
+
+
+def separation_table(alpha_deg: Array, cl: Array) -> tuple[Array, Array, Array]:
+    """Kirchhoff's steady separation function f_st on each row of lift tables ``cl`` (S, A)
+    over the angles ``alpha_deg`` (A,), with each row's zero-lift angle α₀ [deg] and inviscid
+    slope C_Lα [1/deg] (see the module notes). A row without a zero-lift angle of rising lift
+    near 0° (a cylinder's C_L ≡ 0) has C_Lα = 0 and f_st ≡ 1: no separation dynamics."""
+    a = np.asarray(alpha_deg, float)
+    cl = np.atleast_2d(np.asarray(cl, float))
+    f = np.ones_like(cl)
+    alpha0 = np.zeros(len(cl))
+    slope = np.zeros(len(cl))
+    near = np.abs(a) <= ZERO_LIFT_WITHIN_DEG
+    for s, row in enumerate(cl):
+        up = np.flatnonzero(near[:-1] & near[1:] & (row[:-1] <= 0) & (row[1:] > 0))
+        if len(up) == 0:
+            continue
+        i = up[np.argmin(np.abs(a[up]))]
+        a0 = a[i] - row[i] * (a[i + 1] - a[i]) / (row[i + 1] - row[i])
+        d = a - a0
+        linear = (np.abs(d) >= ATTACHED_NEAR_DEG) & (np.abs(d) <= LINEAR_WITHIN_DEG)
+        secant = np.where(linear, row / np.where(linear, d, 1.0), 0.0)
+        if secant.max() <= 0:
+            continue
+        alpha0[s], slope[s] = a0, secant.max()
+        far = np.abs(d) >= ATTACHED_NEAR_DEG
+        ratio = np.where(far, row / np.where(far, slope[s] * d, 1.0), 1.0)
+        root = 2 * np.sqrt(np.clip(ratio, 0.25, 1.0)) - 1
+        fs = root * root
+        # fully separated beyond the first full separation on either side of α₀
+        above, below = np.flatnonzero((d > 0) & (fs <= 0)), np.flatnonzero((d < 0) & (fs <= 0))
+        if len(above):
+            fs[above[0] :] = 0.0
+        if len(below):
+            fs[: below[-1] + 1] = 0.0
+        f[s] = fs
+    return f, alpha0, slope
+
+
+def separated_slope(inviscid: Array, f: Array, df: Array) -> Array:
+    """L = (C_inv − C_fs)·f_st′ = C_inv·(3 + √f)/(4(1 + √f))·f_st′: the part of the steady
+    lift slope that the separation point lags (per the unit of ``df``; module notes)."""
+    root = np.sqrt(np.clip(f, 0.0, 1.0))
+    return np.asarray(inviscid * (3 + root) / (4 * (1 + root)) * df)
+
+
 def single_mode_roots(
     mass: float | Array,
     stiffness: Array,
     damping: Array,
     lift: Array,
     rate: Array,
+    separated: Array | float = 0.0,
+    separated_rate: Array | float = 1.0,
+    shed_wake: bool = True,
 ) -> NDArray[np.complex128]:
     """The oscillating root of m·ẍ + (d + C·l)·ẋ + k·x = 0 with the lift part l of the
-    damping lagged by Jones's filter at the reduced rate 2W/c (``rate``), one problem per
-    entry of the (broadcast) arrays; NaN where the mode does not oscillate (its roots real:
+    damping lagged by Jones's filter at the reduced rate 2W/c (``rate``; not where
+    ``shed_wake`` is false) and its ``separated`` part (included in ``lift``) by the
+    separation point's one pole at ``separated_rate`` 1/T_f instead, one problem per entry
+    of the (broadcast) arrays; NaN where the mode does not oscillate (its roots real:
     overdamped). ``damping``: the part that acts at once (drag, the lift's change with the
     relative speed, structural), without the lift slope's share."""
-    m, k, d, lift_d, kappa = np.broadcast_arrays(
-        *(np.asarray(x, float) for x in (mass, stiffness, damping, lift, rate))
+    m, k, d, lift_d, kappa, sep, sep_rate = np.broadcast_arrays(
+        *(
+            np.asarray(x, float)
+            for x in (mass, stiffness, damping, lift, rate, separated, separated_rate)
+        )
     )
-    # one degree of freedom and Jones's two states (modal.state_matrix's lag form): the
-    # force −l·(z₁ + z₂), żᵢ = Aᵢβᵢ·ẋ − βᵢ·zᵢ; the immediate share of the lift in the damping
-    beta = np.stack([b * kappa for _, b in JONES], axis=-1)
-    amp = np.array([a for a, _ in JONES])
+    # one degree of freedom and its lag states (modal.state_matrix's lag form): the force
+    # −Σ lᵢ·zᵢ, żᵢ = Aᵢβᵢ·ẋ − βᵢ·zᵢ — Jones's two on the attached part of the lift, the
+    # separation point's one (A = 1) on the separated part; what acts at once in the damping
+    attached = lift_d - sep
+    terms = [(attached, a, b * kappa) for a, b in JONES] if shed_wake else []
+    if np.any(sep != 0):
+        terms.append((sep, 1.0, sep_rate))
+    now = d + (IMMEDIATE if shed_wake else 1.0) * attached
     one = (*m.shape, 1, 1)
-    lag = (
-        np.repeat(lift_d[..., None, None], len(JONES), axis=-1),
-        np.zeros((*m.shape, len(JONES), 1)),
-        (amp * beta)[..., None],
-        -beta[..., None] * np.eye(len(JONES)),
-    )
-    a = modal.state_matrix(
-        k.reshape(one), m.reshape(one), (d + IMMEDIATE * lift_d).reshape(one), lag
-    )
+    lag = None
+    if terms:
+        beta = np.stack([rate_i for _, _, rate_i in terms], axis=-1)
+        amp = np.array([a for _, a, _ in terms])
+        lag = (
+            np.stack([force for force, _, _ in terms], axis=-1)[..., None, :],
+            np.zeros((*m.shape, len(terms), 1)),
+            (amp * beta)[..., None],
+            -beta[..., None] * np.eye(len(terms)),
+        )
+    a = modal.state_matrix(k.reshape(one), m.reshape(one), now.reshape(one), lag)
     shape, n = m.shape, a.shape[-1]
     lam = np.linalg.eigvals(a.reshape(-1, n, n)).reshape(*shape, n)
     # the structural root: the pair with a positive imaginary part nearest the undamped

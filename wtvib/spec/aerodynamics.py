@@ -32,6 +32,15 @@ class AirfoilPolar(_Strict):
     )
     cl: list[float] = Field(description="Lift coefficient C_L. [-]")
     cd: list[float] = Field(description="Drag coefficient C_D. [-]")
+    separation_time: float = Field(
+        3.0,
+        gt=0,
+        le=100,
+        description="T_f0: the time the separation point takes to follow the angle of "
+        "attack past the lift's linear range, in half-chord transits c/(2W) (used where "
+        "aerodynamics.dynamic_stall; AeroDyn's T_f0, default 3, plus T_p for its "
+        "Beddoes–Leishman models; Øye's model is usually run with 6). [-]",
+    )
 
     @model_validator(mode="after")
     def _consistent(self) -> "AirfoilPolar":
@@ -159,6 +168,16 @@ class Aerodynamics(_Strict):
         "flow; false: quasi-steady, the lift follows at once (AeroDyn with UA_Mod = 0). The "
         "lag stiffens heavily damped flap modes (Theodorsen's G < 0) and lowers their "
         "damping.",
+    )
+
+    dynamic_stall: bool = Field(
+        False,
+        description="Lag the separation point past the lift's linear range (Øye; the "
+        "Beddoes–Leishman f″ state) by each aerofoil's separation_time: a vibration faster "
+        "than the lag meets the attached-flow lift slope, and stall damps it more than the "
+        "static polar says. false: the lift follows the static polar at once past stall "
+        "(quasi-steady: the conservative stall damping, Hau ch. 7.2.3; AeroDyn with UA_Mod 0 "
+        "or 7).",
     )
 
     induction: Literal["frozen", "equilibrium"] = Field(

@@ -223,14 +223,35 @@ class LiftLag:
             basis.T @ self.force, self.on_position @ basis, self.on_rate @ basis, self.rates
         )
 
+    def joined(self, other: "LiftLag") -> "LiftLag":
+        """Both sets of states side by side (independent filters on the same coordinates)."""
+        a, b = self.rates.shape[-1], other.rates.shape[-1]
+        rates = np.zeros((*self.rates.shape[:-2], a + b, a + b))
+        rates[..., :a, :a] = self.rates
+        rates[..., a:, a:] = other.rates
+        return LiftLag(
+            np.concatenate([self.force, other.force], axis=-1),
+            np.concatenate([self.on_position, other.on_position], axis=-2),
+            np.concatenate([self.on_rate, other.on_rate], axis=-2),
+            rates,
+        )
+
 
 #: What a point adds to the multi-blade equations: damping and stiffness, and the lift's lag
 #: states where the aerodynamics is unsteady.
 Extra = tuple[Array, Array] | tuple[Array, Array, LiftLag]
 
 
-def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> LiftLag:
-    """Jones's lag of the blades' lift (:mod:`wtvib.numerics.unsteady`) on the coupled model.
+def lift_lag(
+    model: "Model",
+    d_lift: Array,
+    d_rate: Array,
+    omega: Array,
+    terms: Sequence[tuple[float, float]] | None = None,
+) -> LiftLag:
+    """Jones's lag of the blades' lift (:mod:`wtvib.numerics.unsteady`) on the coupled model
+    — or another filter's ``terms`` (Aᵢ, bᵢ): the separation point's one pole (1, 1) with
+    ``d_rate`` weighted by each section's 1/T_f.
 
     ``d_lift`` (p, n, n): the lift slope's part of the section damping (on the model's
     coordinates or on :attr:`Model.active`, ψ = 0, one matrix per operating point; the
@@ -245,6 +266,7 @@ def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> Lift
     lift stays in the damping matrix (:func:`fixed_frame_damping` of the rest)."""
     from ..numerics.unsteady import JONES
 
+    filters = JONES if terms is None else tuple(terms)
     n = d_lift.shape[-1]
     blk = np.arange(n)[_blade_block(model, n)]
     diag = np.abs(np.diagonal(d_lift, axis1=-2, axis2=-1))
@@ -266,13 +288,13 @@ def lift_lag(model: "Model", d_lift: Array, d_rate: Array, omega: Array) -> Lift
     om = np.asarray(omega, float)[:, None, None]
     mbc, _ = fixed_frame_damping(model, d_lift, omega)
     f = mbc[..., :, cols]
-    count = len(JONES)
+    count = len(filters)
     points = len(om)
     force = np.concatenate([f] * count, axis=-1)
     on_rate = np.zeros((points, count * width, n))
     on_position = np.zeros_like(on_rate)
     rates = np.zeros((points, count * width, count * width))
-    for i, (amp, b_i) in enumerate(JONES):
+    for i, (amp, b_i) in enumerate(filters):
         beta = b_i * kappa  # (p, width)
         rows = slice(i * width, (i + 1) * width)
         on_rate[:, rows] = amp * beta[:, :, None] * pick

@@ -1,0 +1,95 @@
+"""Dynamic stall: the separation point's lag of the lift (wtvib/numerics/unsteady.py), against
+its definitions and a closed form, then a deck set against OpenFAST's linearisation of it.
+
+Definitions (AeroDyn theory manual, "Unsteady Aerodynamics", notations and Øye's model;
+Hansen, Gaunaa & Madsen, Risø-R-1354, 2004): Kirchhoff's flat-plate separation
+C_L = C_Lα(α − α₀)·((1 + √f)/2)², the fully separated lift C_fs = (C_L − C_inv·f)/(1 − f),
+the dynamic lift f·C_inv + (1 − f)·C_fs with f lagging f_st by T_f = T_f0·c/(2W).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from wtvib.numerics import unsteady
+
+#: The test polar: C_Lα = 2π/rad, α₀ = −2°, attached to 7° above α₀ (and below), then the
+#: separation function falls as a cosine to nothing 20° further.
+SLOPE, ALPHA0, ATTACHED, FALL = 2 * math.pi, -2.0, 7.0, 20.0
+
+
+def _kirchhoff(alpha_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The test polar's separation function and its Kirchhoff lift, both analytic."""
+    d = np.abs(alpha_deg - ALPHA0)
+    t = np.clip((d - ATTACHED) / FALL, 0.0, 1.0)
+    f = np.cos(0.5 * math.pi * t) ** 2
+    lift = SLOPE * np.radians(alpha_deg - ALPHA0) * ((1 + np.sqrt(f)) / 2) ** 2
+    return f, lift
+
+
+def test_kirchhoffs_separation_is_read_back_from_its_polar():
+    """From a polar built on a known separation function: the zero-lift angle, the inviscid
+    slope (the steepest secant within 10° of α₀, which is the attached flow's slope) and
+    f_st at every angle to rounding, 0 from the first full separation on."""
+    grid = np.arange(-180.0, 180.0 + 1e-9, 0.25)
+    f, lift = _kirchhoff(grid)
+    table, alpha0, slope = unsteady.separation_table(grid, lift[None, :])
+    assert alpha0[0] == pytest.approx(ALPHA0, abs=1e-9)
+    assert math.degrees(1) * slope[0] == pytest.approx(SLOPE, rel=1e-9)
+    assert np.abs(table[0] - f).max() < 1e-6
+    # a cylinder (no lift) has no separation dynamics
+    none, _, flat = unsteady.separation_table(grid, np.zeros((1, len(grid))))
+    assert flat[0] == 0 and np.all(none == 1)
+
+
+@pytest.mark.parametrize("alpha", [8.0, 12.0, 16.0, 20.0, -14.0])
+def test_the_lagged_slope_is_the_separation_points_share(alpha):
+    """L = C_inv·(3 + √f)/(4(1 + √f))·f′ is (C_inv − C_fs)·f′ with C_fs from its definition,
+    and the steady slope less L is the slope at a frozen separation point,
+    f·C_Lα + (1 − f)·C_fs′ — each side by central differences of the analytic polar."""
+    h = 1e-4  # [deg]
+
+    def parts(a: float) -> tuple[float, float, float]:
+        f, cl = _kirchhoff(np.array([a]))
+        inviscid = SLOPE * math.radians(a - ALPHA0)
+        fs = (cl[0] - inviscid * f[0]) / (1 - f[0])
+        return float(f[0]), float(cl[0]), float(fs)
+
+    f, _, fs = parts(alpha)
+    (f_up, cl_up, fs_up), (f_dn, cl_dn, fs_dn) = parts(alpha + h), parts(alpha - h)
+    per_rad = math.degrees(1) / (2 * h)
+    df, dcl, dfs = (f_up - f_dn) * per_rad, (cl_up - cl_dn) * per_rad, (fs_up - fs_dn) * per_rad
+    inviscid = SLOPE * math.radians(alpha - ALPHA0)
+    lagged = float(unsteady.separated_slope(np.array(inviscid), np.array(f), np.array(df)))
+    assert lagged == pytest.approx((inviscid - fs) * df, rel=1e-6)
+    assert dcl - lagged == pytest.approx(f * SLOPE + (1 - f) * dfs, rel=1e-5)
+    assert lagged < 0 < dcl - lagged  # past stall: the lagged part the negative one
+
+
+def test_the_separation_lag_is_a_first_order_filter():
+    """One mode, no shed wake (Øye), the lift's separated part through one pole at 1/T_f:
+    the root is the cubic's (m s² + c₀ s + k)(s + β) + l_sep·β·s = 0 (c₀ the immediate
+    damping; np.roots, independent of wtvib's state matrix). Past stall (quasi-steady ζ
+    −1 %, the lift slope negative) the lag damps the mode: ζ rises from the quasi-steady
+    value towards the frozen separation point's (+5 %) as ωT_f grows."""
+    m, omega = 1.0, 2 * math.pi
+    quasi, frozen = -0.01, 0.05
+    lift = 2 * quasi * omega * m  # the whole lift slope's damping coefficient
+    fast = 2 * frozen * omega * m  # its part at a frozen separation point
+    separated = lift - fast
+    zetas = []
+    for w_t in (0.01, 0.3, 1.0, 3.0, 100.0):
+        beta = omega / w_t
+        root = unsteady.single_mode_roots(
+            m, m * omega**2, 0.0, lift, 1.0, separated, beta, shed_wake=False
+        )
+        cubic = np.roots(
+            np.polymul([m, fast, m * omega**2], [1.0, beta]) + np.array([0, 0, separated * beta, 0])
+        )
+        near = cubic[np.argmin(np.abs(cubic - root))]
+        assert root == pytest.approx(near, rel=1e-9)
+        zetas.append(-root.real / abs(root))
+    assert zetas[0] == pytest.approx(quasi, abs=2e-4)
+    assert zetas[-1] == pytest.approx(frozen, abs=2e-4)
+    assert np.all(np.diff(zetas) > 0)
