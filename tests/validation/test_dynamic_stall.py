@@ -14,9 +14,10 @@ import pytest
 
 from wtvib.numerics import unsteady
 
-#: The test polar: C_Lα = 2π/rad, α₀ = −2°, attached to 7° above α₀ (and below), then the
-#: separation function falls as a cosine to nothing 20° further.
-SLOPE, ALPHA0, ATTACHED, FALL = 2 * math.pi, -2.0, 7.0, 20.0
+#: The test polar: C_Lα = 2π/rad, α₀ = −2.1° (between the table's points), attached to 7°
+#: above α₀ (and below), then the separation function falls as a cosine to nothing 20°
+#: further.
+SLOPE, ALPHA0, ATTACHED, FALL = 2 * math.pi, -2.1, 7.0, 20.0
 
 
 def _kirchhoff(alpha_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -38,6 +39,16 @@ def test_kirchhoffs_separation_is_read_back_from_its_polar():
     assert alpha0[0] == pytest.approx(ALPHA0, abs=1e-9)
     assert math.degrees(1) * slope[0] == pytest.approx(SLOPE, rel=1e-9)
     assert np.abs(table[0] - f).max() < 1e-6
+    # past the first full separation the flow stays separated, though a deep-stall lift
+    # (a flat plate's, here half the inviscid line) would read as partly attached; a lift
+    # above the inviscid line beyond the linear range is attached flow, f = 1, not more
+    d = grid - ALPHA0
+    deep = np.where(np.abs(d) > 35, 0.5 * SLOPE * np.radians(d), lift)
+    table, _, _ = unsteady.separation_table(grid, deep[None, :])
+    assert np.all(table[0][np.abs(d) > 27] == 0)
+    above = np.where(np.abs(d) > 12, 1.2 * SLOPE * np.radians(d), lift)
+    table, _, _ = unsteady.separation_table(grid, above[None, :])
+    assert table[0].max() == 1 and np.all(table[0][np.abs(d) > 12] == 1)
     # a cylinder (no lift) has no separation dynamics
     none, _, flat = unsteady.separation_table(grid, np.zeros((1, len(grid))))
     assert flat[0] == 0 and np.all(none == 1)
@@ -73,7 +84,7 @@ def test_the_separation_lag_is_a_first_order_filter():
     damping; np.roots, independent of wtvib's state matrix). Past stall (quasi-steady ζ
     −1 %, the lift slope negative) the lag damps the mode: ζ rises from the quasi-steady
     value towards the frozen separation point's (+5 %) as ωT_f grows."""
-    m, omega = 1.0, 2 * math.pi
+    m, omega = 2.5, 2 * math.pi
     quasi, frozen = -0.01, 0.05
     lift = 2 * quasi * omega * m  # the whole lift slope's damping coefficient
     fast = 2 * frozen * omega * m  # its part at a frozen separation point
