@@ -12,12 +12,14 @@ turbines.
   (CASEToolBox's DTU10MW example, tests/data/campbell/hawcstab2/blade.cmb; Bak et al. 2013,
   the DTU 10 MW report: first flap 0.61 Hz, first edge 0.93 Hz).
 
-What agrees and what does not (OPEN): the tower pair and the first flap and edge modes
-within 3 %; the blades' higher modes come out high by a share that grows with the mode
-(DTU 10 MW: +2.0 % first flap, +3.6 % second, +5.5 % third, +9.7 % fifth) — the signature
-of an Euler–Bernoulli blade against HAWC2's Timoshenko one (shear deformation and rotary
-inertia, which lower a beam's higher modes most), and of the sections' mass and elastic
-centre offsets HAWC2 carries and wtvib's blade model does not.
+What agrees and what does not (OPEN): the tower pair, the first flap and edge whirls and
+the second flap family within 3 % of HAWCStab2 (the blades Timoshenko beams as HAWC2's,
+their shear stiffness k·G·A from the st file; the DTU 10 MW's first five blade modes within
++1.0 … +1.7 %); open: the IEA-15's first edge collective (+3.8 %), its second edge family
+(HAWCStab2 five mixed roots at 1.8–2.3 Hz, wtvib four) and the aeroelastic damping of its
+flap and first edge modes, 2–4 times HAWCStab2's near rated (wtvib's steady state is a rigid
+rotor's, test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code; HAWCStab2
+linearises about the deformed one).
 """
 
 import gzip
@@ -230,3 +232,46 @@ def test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code(iea15):
     hs2 = rows[:, 4] * 1e3 / thrust_cc - 1  # HawcStab2's thrust [kN]
     assert -0.10 < hs2[0] < -0.04 and -0.18 < hs2[3] < -0.12 and hs2[4] < -0.25
     assert np.all(np.diff(hs2) < 0)  # the more load, the more the blade gives
+
+
+@pytest.fixture(scope="module")
+def hs2_aeroelastic(tmp_path_factory: pytest.TempPathFactory):  # type: ignore[no-untyped-def]
+    folder = tmp_path_factory.mktemp("hs2ae")
+    for gz in (DATA / "campbell" / "hawcstab2" / "iea15").glob("*.gz"):
+        (folder / gz.name.removesuffix(".gz")).write_bytes(gzip.decompress(gz.read_bytes()))
+    spec = importers.load(
+        folder / "aeroelastic_entire_turbine.cmb", importers.ReadOptions(blades=3)
+    )
+    assert spec.results is not None
+    return spec.results
+
+
+def test_the_iea15_aeroelastic_damping_against_hawcstab2(iea15, hs2_aeroelastic):
+    """HAWCStab2's aeroelastic modes of the IEA-15 (its .cmb: ζ in % with the real parts,
+    −Re λ/|λ| to five digits) against wtvib's damping in operation of the HAWC2 model, at
+    7, 10 and 11 m/s: the first tower fore-aft, which the rotor's thrust damps, +5 … +20 %
+    (measured +14, +11, +17 %: wtvib's rigid rotor's thrust slope above the deformed one's,
+    test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code). OPEN, held to what it
+    measures: at 10 m/s the first flap collective 2.5 times HAWCStab2's 0.32 and the first
+    edge backward whirl 4.2 times its 0.016 — HAWCStab2 linearises the deformed, twisting
+    blade; wtvib's blade bends without torsion about a rigid rotor's steady state. A third
+    reference puts this example's flap damping in doubt: HAWCStab2 and OpenFAST (unsteady
+    aerodynamics) on the IEA-22, a rotor of the same kind, damp its first flap triple at
+    ζ 0.58–0.88 from 7 m/s on (test_unsteady.py, the IEA-22 repository's published
+    files), wtvib's level here, not this example's 0.32."""
+    report = audit.run(importers.load(iea15))
+    byid = {m.id: m for m in report.modes if m.judged and m.operating is not None}
+
+    def ratio(name: str, wind: float) -> float:
+        ref = hs2_aeroelastic.modes[name]
+        assert ref.wind_m_s is not None
+        i = int(np.argmin(np.abs(np.asarray(ref.wind_m_s) - wind)))
+        op = byid[f"system.{name}"].operating
+        assert op is not None and ref.wind_m_s[i] == wind
+        ours = float(np.interp(wind, np.asarray(op.wind), np.asarray(op.total)))
+        return ours / float(ref.damping_ratio[i])
+
+    for wind in (7.0, 10.0, 11.0):
+        assert 1.05 <= ratio("tower.fa1", wind) <= 1.20, wind
+    assert 2.0 <= ratio("blade.flap1.collective", 10.0) <= 3.0
+    assert 3.0 <= ratio("blade.edge1.backward", 10.0) <= 5.5

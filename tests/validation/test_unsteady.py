@@ -102,6 +102,24 @@ def test_a_wake_that_follows_at_once_gives_the_quasi_steady_modes(nrel):
     np.testing.assert_allclose(cpl.damping_ratio, cpl.quasi_steady, atol=2e-3)
 
 
+def test_a_separation_that_follows_at_once_leaves_the_shed_wakes_lag(nrel):
+    """The NREL 5-MW deck's Beddoes–Leishman aerofoils (UA_Mod 3: shed wake and dynamic
+    stall): with the separation point's pole a thousand times faster, the coupled model's
+    damping is that of the shed wake lagging the whole lift slope — the separation states
+    sit behind Jones's (multiblade.separation_lag) and add nothing when instantaneous; with
+    the pole as the deck asks they move the damping (the separated part is not zero)."""
+    from dataclasses import replace
+
+    sec = aerodamping.sections(nrel)
+    assert sec.separated is not None and sec.separated_rate is not None
+    fast = replace(sec, separated_rate=sec.separated_rate * 1e4)
+    whole = replace(sec, separated=None, separated_rate=None)
+    lagged, instant, none = (aerodamping.coupled(nrel, s) for s in (sec, fast, whole))
+    assert lagged is not None and instant is not None and none is not None
+    np.testing.assert_allclose(instant.damping_ratio, none.damping_ratio, atol=2e-3)
+    assert np.abs(lagged.damping_ratio - none.damping_ratio).max() > 5e-3
+
+
 # ---------------------------------------------------------------------------------------
 # Against the reference codes: the IEA-22's published aeroelastic Campbell data
 

@@ -139,6 +139,16 @@ class Sections:
         return np.asarray(self.lift * self.rate[..., None, None])
 
     @functools.cached_property
+    def attached_rate(self) -> Array:
+        """The lift part that the shed wake lags — the whole lift slope's, less its
+        separated part where the separation point lags — weighted by each section's 2W/c
+        (as :attr:`lift_rate`; a stalled section's whole slope can sum to nothing over the
+        span, its attached part does not)."""
+        if self.separated is None:
+            return self.lift_rate
+        return np.asarray((self.lift - self.separated) * self.rate[..., None, None])
+
+    @functools.cached_property
     def separated_weighted(self) -> Array | None:
         """The separated part weighted by each section's 1/T_f (as :attr:`lift_rate`)."""
         if self.separated is None or self.separated_rate is None:
@@ -395,7 +405,7 @@ def _lagged(
     """The coupled model's lag states at every operating point and the damping that acts at
     once: Jones's shed-wake filters on the attached part of the lift (``shed_wake``), the
     separation point's pole on its separated part (dynamic stall)."""
-    from ..subsystems.multiblade import lift_lag
+    from ..subsystems.multiblade import lag_columns, lift_lag, separation_lag
 
     omega = sec.schedule.solution.omega
     per_length = model.rotor.length[None, :, None, None]
@@ -410,23 +420,17 @@ def _lagged(
         attached = d_lift - d_sep
     lag = None
     d_now = d_qs - attached
+    columns = lag_columns(model, np.abs(attached) + (0.0 if d_sep is None else np.abs(d_sep)))
     if shed_wake:
-        rated = on_model(sec.lift_rate) if d_sep is None else on_model(_attached_rate(sec))
-        lag = lift_lag(model, attached, rated, omega)
+        lag = lift_lag(model, attached, on_model(sec.attached_rate), omega, columns=columns)
         d_now = d_qs - (1.0 - unsteady.IMMEDIATE) * attached
     if d_sep is not None:
         assert sec.separated_weighted is not None
-        sep = lift_lag(model, d_sep, on_model(sec.separated_weighted), omega, ((1.0, 1.0),))
-        lag = sep if lag is None else lag.joined(sep)
+        weighted = on_model(sec.separated_weighted)
+        lag = separation_lag(model, d_sep, weighted, omega, lag, columns)
         d_now = d_now - d_sep
     assert lag is not None
     return lag, d_now
-
-
-def _attached_rate(sec: Sections) -> Array:
-    """The attached part of the lift (the lift less its separated part) weighted by 2W/c."""
-    assert sec.separated is not None
-    return np.asarray((sec.lift - sec.separated) * sec.rate[..., None, None])
 
 
 def _matched_roots(
@@ -541,7 +545,7 @@ def isolated_blade(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     return _single_mode(
         gen_mass,
         omega,
-        (on_shape(sec.c), on_shape(sec.lift), on_shape(sec.lift_rate)),
+        (on_shape(sec.c), on_shape(sec.lift), on_shape(sec.attached_rate)),
         _shed_wake(spec),
         _separated(sec, on_shape),
     )
@@ -583,7 +587,7 @@ def isolated_tower(spec: Spec, mode: Mode, sec: Sections) -> Estimate | None:
     return _single_mode(
         gen_mass,
         omega,
-        (rotor(sec.c), rotor(sec.lift), rotor(sec.lift_rate)),
+        (rotor(sec.c), rotor(sec.lift), rotor(sec.attached_rate)),
         _shed_wake(spec),
         _separated(sec, rotor),
     )
@@ -630,19 +634,20 @@ def _single_mode(
     separated: tuple[Array, Array] | None = None,
 ) -> tuple[Array, Array]:
     """ζ_a of one mode (generalised mass, circular frequency ω at each operating point) with
-    ``forces`` = (c, lift, lift_rate): the modal damping coefficient c of the blade-element
-    forces, its lift-slope part and that part weighted by each section's 2W/c; ``separated``:
+    ``forces`` = (c, lift, attached_rate): the modal damping coefficient c of the
+    blade-element forces, its lift-slope part and that part less the separated one weighted
+    by each section's 2W/c (:attr:`Sections.attached_rate`); ``separated``:
     the lift's part the separation point lags and that part weighted by 1/T_f (dynamic
     stall). The root with the lift lagged (:func:`wtvib.numerics.unsteady.single_mode_roots`;
     1 where it does not oscillate) — or, with neither lag, the quasi-steady ratio, at most
     1 — and the quasi-steady c/(2ωm), which may exceed 1."""
-    c, lift, lift_rate = forces
+    c, lift, attached_rate = forces
     quasi = np.asarray(c / (2 * omega * gen_mass))
     if not shed_wake and separated is None:
         return np.minimum(quasi, 1.0), quasi
-    # the lift-weighted mean of the sections' rates (one filter stands for them all)
-    _, rate = _weighted_rate(lift, lift_rate)
     sep, sep_rate = (0.0, 1.0) if separated is None else _weighted_rate(*separated)
+    # the weighted mean of the sections' rates (one filter stands for them all)
+    _, rate = _weighted_rate(lift - sep, attached_rate)
     root = unsteady.single_mode_roots(
         gen_mass, gen_mass * omega**2, c - lift, lift, rate, sep, sep_rate, shed_wake
     )
@@ -738,9 +743,7 @@ def _notes(
         "the separation point lagging the angle of attack past the lift's linear range "
         "(dynamic stall: Kirchhoff's separation from the polar, one pole of T_f0·c/(2W) per "
         "section, T_f0 "
-        + ", ".join(
-            sorted({f"{a.separation_time:g}" for a in spec.aerodynamics.airfoils.values()})
-        )
+        + ", ".join(sorted({f"{a.separation_time:g}" for a in spec.aerodynamics.airfoils.values()}))
         + ")"
         if spec.aerodynamics.dynamic_stall
         else "no dynamic stall: past stall the lift follows the static polar at once"

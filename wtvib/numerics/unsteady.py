@@ -144,34 +144,44 @@ def single_mode_roots(
     """The oscillating root of m·ẍ + (d + C·l)·ẋ + k·x = 0 with the lift part l of the
     damping lagged by Jones's filter at the reduced rate 2W/c (``rate``; not where
     ``shed_wake`` is false) and its ``separated`` part (included in ``lift``) by the
-    separation point's one pole at ``separated_rate`` 1/T_f instead, one problem per entry
-    of the (broadcast) arrays; NaN where the mode does not oscillate (its roots real:
-    overdamped). ``damping``: the part that acts at once (drag, the lift's change with the
-    relative speed, structural), without the lift slope's share."""
+    separation point's pole at ``separated_rate`` 1/T_f behind it (in series: the
+    Beddoes–Leishman separation follows the shed wake's effective angle of attack; Øye's,
+    without a shed wake, the angle itself), one problem per entry of the (broadcast)
+    arrays; NaN where the mode does not oscillate (its roots real: overdamped).
+    ``damping``: the part that acts at once (drag, the lift's change with the relative
+    speed, structural), without the lift slope's share."""
     m, k, d, lift_d, kappa, sep, sep_rate = np.broadcast_arrays(
         *(
             np.asarray(x, float)
             for x in (mass, stiffness, damping, lift, rate, separated, separated_rate)
         )
     )
-    # one degree of freedom and its lag states (modal.state_matrix's lag form): the force
-    # −Σ lᵢ·zᵢ, żᵢ = Aᵢβᵢ·ẋ − βᵢ·zᵢ — Jones's two on the attached part of the lift, the
-    # separation point's one (A = 1) on the separated part; what acts at once in the damping
+    # one degree of freedom and its lag states (modal.state_matrix's lag form), the force
+    # −Σ fᵢ·zᵢ: Jones's two on the attached part of the lift, żᵢ = Aᵢβᵢ·ẋ − βᵢ·zᵢ (the
+    # effective velocity v_E = (1 − A₁ − A₂)·ẋ + z₁ + z₂), and the separation point's one on
+    # its separated part, ẏ = β_s·(v_E − y) (v_E = ẋ without a shed wake)
     attached = lift_d - sep
-    terms = [(attached, a, b * kappa) for a, b in JONES] if shed_wake else []
+    amp = [a for a, _ in JONES] if shed_wake else []
+    beta = [b * kappa for _, b in JONES] if shed_wake else []
+    force = [attached] * len(amp)
     if np.any(sep != 0):
-        terms.append((sep, 1.0, sep_rate))
+        amp.append(IMMEDIATE if shed_wake else 1.0)
+        beta.append(sep_rate)
+        force.append(sep)
     now = d + (IMMEDIATE if shed_wake else 1.0) * attached
     one = (*m.shape, 1, 1)
     lag = None
-    if terms:
-        beta = np.stack([rate_i for _, _, rate_i in terms], axis=-1)
-        amp = np.array([a for _, a, _ in terms])
+    if force:
+        count = len(force)
+        rates = np.stack(beta, axis=-1)
+        s_matrix = -rates[..., None] * np.eye(count)
+        if shed_wake and count > len(JONES):  # the separation's input: the shed wake's states
+            s_matrix[..., -1, : len(JONES)] = sep_rate[..., None]
         lag = (
-            np.stack([force for force, _, _ in terms], axis=-1)[..., None, :],
-            np.zeros((*m.shape, len(terms), 1)),
-            (amp * beta)[..., None],
-            -beta[..., None] * np.eye(len(terms)),
+            np.stack(force, axis=-1)[..., None, :],
+            np.zeros((*m.shape, count, 1)),
+            (np.array(amp) * rates)[..., None],
+            s_matrix,
         )
     a = modal.state_matrix(k.reshape(one), m.reshape(one), now.reshape(one), lag)
     shape, n = m.shape, a.shape[-1]

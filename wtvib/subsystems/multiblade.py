@@ -248,6 +248,7 @@ def lift_lag(
     d_rate: Array,
     omega: Array,
     terms: Sequence[tuple[float, float]] | None = None,
+    columns: NDArray[np.intp] | None = None,
 ) -> LiftLag:
     """Jones's lag of the blades' lift (:mod:`wtvib.numerics.unsteady`) on the coupled model
     — or another filter's ``terms`` (Aᵢ, bᵢ): the separation point's one pole (1, 1) with
@@ -268,10 +269,9 @@ def lift_lag(
 
     filters = JONES if terms is None else tuple(terms)
     n = d_lift.shape[-1]
-    blk = np.arange(n)[_blade_block(model, n)]
     diag = np.abs(np.diagonal(d_lift, axis1=-2, axis2=-1))
-    used = np.flatnonzero(diag.max(axis=0) > 1e-12 * max(float(diag.max(initial=0.0)), 1e-300))
-    cols = np.union1d(blk, used)
+    blk = np.arange(n)[_blade_block(model, n)]
+    cols = lag_columns(model, d_lift) if columns is None else columns
     width = len(cols)
     weight = diag[:, cols]
     rate = np.abs(np.diagonal(d_rate, axis1=-2, axis2=-1))[:, cols]
@@ -301,6 +301,46 @@ def lift_lag(
         on_position[:, rows] = amp * beta[:, :, None] * (om * (turn @ pick))
         rates[:, rows, rows] = -(beta[:, :, None] * np.eye(width) + om * turn)
     return LiftLag(force, on_position, on_rate, rates)
+
+
+def lag_columns(model: "Model", d_lift: Array) -> NDArray[np.intp]:
+    """The coordinates whose velocity a lift's lag states filter: each blade's modes and
+    whatever else ``d_lift`` (…, n, n) damps (the hub's motion)."""
+    n = d_lift.shape[-1]
+    blk = np.arange(n)[_blade_block(model, n)]
+    diag = np.abs(np.diagonal(d_lift, axis1=-2, axis2=-1)).reshape(-1, n)
+    used = np.flatnonzero(diag.max(axis=0) > 1e-12 * max(float(diag.max(initial=0.0)), 1e-300))
+    return np.union1d(blk, used)
+
+
+def separation_lag(
+    model: "Model",
+    d_sep: Array,
+    d_rate: Array,
+    omega: Array,
+    jones: LiftLag | None,
+    columns: NDArray[np.intp],
+) -> LiftLag:
+    """The separation point's lag (dynamic stall, :mod:`wtvib.numerics.unsteady`) of the
+    separated part ``d_sep`` of the lift, ``d_rate`` that part weighted by each section's
+    1/T_f: one state per coordinate of ``columns``, behind Jones's ``jones`` states where
+    the shed wake lags the lift (its input the effective velocity (1 − A₁ − A₂)·ż + Σ zᵢ,
+    in multi-blade form as :func:`lift_lag`'s), else on the velocity itself; returned
+    joined after ``jones``'s states."""
+    from ..numerics.unsteady import IMMEDIATE
+
+    amp = 1.0 if jones is None else IMMEDIATE
+    sep = lift_lag(model, d_sep, d_rate, omega, ((amp, 1.0),), columns)
+    if jones is None:
+        return sep
+    out = jones.joined(sep)
+    width = len(columns)
+    beta = -np.diagonal(sep.rates, axis1=-2, axis2=-1)  # the rotation's terms: no diagonal
+    feed = beta[..., :, None] * np.eye(width)
+    base = jones.rates.shape[-1]
+    for start in range(0, base, width):  # every Jones term's states feed the separation
+        out.rates[..., base:, start : start + width] = feed
+    return out
 
 
 # ---------------------------------------------------------------------------------------
