@@ -84,52 +84,34 @@ def test_no_aerodyn_no_aerodynamics(deck: Path):
     assert load(deck / "NREL-5MW.fst").aerodynamics is None
 
 
-def test_the_shed_wake_follows_the_decks_unsteady_aerofoil_model(shared, tmp_path):
-    """AeroDyn's UA_Mod decides whether wtvib lags the lift by the shed wake: the ROSCO
-    NREL-5MW deck's Minnema/Pierce Beddoes–Leishman model (3) does; quasi-steady (0) and
-    Øye's model (6), which lags only the separation point, do not."""
+@pytest.mark.parametrize(
+    ("mod", "shed", "stall", "time"),
+    [("3", True, True, 3 + 1.7), ("0", False, False, 3.0), ("6", False, True, 3.0)],
+)
+def test_the_unsteady_aerofoil_follows_the_decks_model(shared, tmp_path, mod, shed, stall, time):
+    """AeroDyn's UA_Mod decides how wtvib lags the lift. The shed wake: the ROSCO NREL-5MW
+    deck's Minnema/Pierce Beddoes–Leishman model (3) lags it, quasi-steady (0) and Øye's
+    model (6), which lags only the separation point, do not. The separation point (dynamic
+    stall): the Beddoes–Leishman family (2–5) lags it behind its pressure lag, T_f0 + T_p of
+    each aerofoil's first table (the NREL 5-MW's 3 + 1.7, one file saying "Default" for
+    both: AeroDyn's defaults), Øye's by T_f0 alone; quasi-steady, not at all."""
     from tests.conftest import edited_reference
     from wtvib import importers
 
-    s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
-    assert s.aerodynamics is not None and s.aerodynamics.shed_wake
-    for mod in ("0", "6"):
+    folder = shared / "reference/NREL5MW"
+    if mod != "3":
         folder = edited_reference(
             shared,
-            tmp_path / mod,
+            tmp_path,
             "NREL5MW",
             "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
             "3                      UA_Mod",
             f"{mod}                      UA_Mod",
         )
-        quasi = importers.load(folder / "NREL-5MW.fst")
-        assert quasi.aerodynamics is not None and not quasi.aerodynamics.shed_wake, mod
-
-
-def test_dynamic_stall_follows_the_decks_unsteady_aerofoil_model(shared, tmp_path):
-    """The separation point lags (dynamic stall) where the deck's model has one — the
-    Beddoes–Leishman family (UA_Mod 2–5) behind its pressure lag: T_f0 + T_p of each
-    aerofoil's first table (the NREL 5-MW's: 3 + 1.7, one file saying "Default" for both,
-    AeroDyn's defaults), Øye's (6): T_f0 alone — and not at all where the lift is
-    quasi-steady (0)."""
-    from tests.conftest import edited_reference
-    from wtvib import importers
-
-    s = importers.load(shared / "reference/NREL5MW/NREL-5MW.fst")
-    assert s.aerodynamics is not None and s.aerodynamics.dynamic_stall
-    assert {a.separation_time for a in s.aerodynamics.airfoils.values()} == {3 + 1.7}
-    for mod, stall, time in (("0", False, 3.0), ("6", True, 3.0)):
-        folder = edited_reference(
-            shared,
-            tmp_path / mod,
-            "NREL5MW",
-            "NRELOffshrBsline5MW_Onshore_AeroDyn15.dat",
-            "3                      UA_Mod",
-            f"{mod}                      UA_Mod",
-        )
-        aero = importers.load(folder / "NREL-5MW.fst").aerodynamics
-        assert aero is not None and aero.dynamic_stall is stall, mod
-        assert {a.separation_time for a in aero.airfoils.values()} == {time}, mod
+    aero = importers.load(folder / "NREL-5MW.fst").aerodynamics
+    assert aero is not None
+    assert (aero.shed_wake, aero.dynamic_stall) == (shed, stall)
+    assert {a.separation_time for a in aero.airfoils.values()} == {time}
 
 
 @pytest.mark.parametrize("value", ["-3", "0", "1e6", "soon"])
