@@ -365,7 +365,6 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # every operating point's aerodynamic damping and stiffness at once (stacks): the
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
     d_qs = model.section_damping(c_points)
-    lift = sec.at(model.rotor.radius, sec.lift) * per_length
     refs = [path.shapes[i] for i in where]
     qs_d, qs_k = fixed_frame_damping(model, d_qs, sol.omega)
     qs_points: list[tuple[float, Extra]] = [
@@ -374,8 +373,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     structural = [path.frequency_hz[i] for i in where]
     steady = matched(model, qs_points, refs, reduced=path.basis, frequencies=structural)
     if _shed_wake(spec) or sec.separated is not None:  # the lift's lagged parts: lag states
-        d_lift = model.section_damping(lift)
-        lag, d_now = _lagged(model, sec, d_qs, d_lift, _shed_wake(spec))
+        lag, d_now = _lagged(model, sec, d_qs, _shed_wake(spec))
         d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
         extras: list[Extra] = [
             (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
@@ -400,7 +398,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
 
 
 def _lagged(
-    model: "CoupledModel", sec: Sections, d_qs: Array, d_lift: Array, shed_wake: bool
+    model: "CoupledModel", sec: Sections, d_qs: Array, shed_wake: bool
 ) -> tuple["LiftLag", Array]:
     """The coupled model's lag states at every operating point and the damping that acts at
     once: Jones's shed-wake filters on the attached part of the lift (``shed_wake``), the
@@ -413,9 +411,10 @@ def _lagged(
     def on_model(table: Array) -> Array:
         return np.asarray(model.section_damping(sec.at(model.rotor.radius, table) * per_length))
 
+    d_lift = on_model(sec.lift)
     d_sep = None
     attached = d_lift
-    if sec.separated is not None and sec.separated_weighted is not None:
+    if sec.separated is not None:
         d_sep = on_model(sec.separated)
         attached = d_lift - d_sep
     lag = None
@@ -645,9 +644,9 @@ def _single_mode(
     quasi = np.asarray(c / (2 * omega * gen_mass))
     if not shed_wake and separated is None:
         return np.minimum(quasi, 1.0), quasi
-    sep, sep_rate = (0.0, 1.0) if separated is None else _weighted_rate(*separated)
+    sep, sep_rate = (0.0, 1.0) if separated is None else (separated[0], _mean_rate(*separated))
     # the weighted mean of the sections' rates (one filter stands for them all)
-    _, rate = _weighted_rate(lift - sep, attached_rate)
+    rate = _mean_rate(lift - sep, attached_rate)
     root = unsteady.single_mode_roots(
         gen_mass, gen_mass * omega**2, c - lift, lift, rate, sep, sep_rate, shed_wake
     )
@@ -655,9 +654,10 @@ def _single_mode(
     return np.asarray(lagged), quasi
 
 
-def _weighted_rate(part: Array, weighted: Array) -> tuple[Array, Array]:
-    """A lagged part and its weighted mean rate (the weighted sum over the part's)."""
-    return part, np.abs(weighted / np.where(part != 0, part, 1.0))
+def _mean_rate(part: Array, weighted: Array) -> Array:
+    """A lagged part's mean rate: its sections' rates weighted by the part (the weighted
+    sum over the part's)."""
+    return np.asarray(np.abs(weighted / np.where(part != 0, part, 1.0)))
 
 
 # ---------------------------------------------------------------------------------------

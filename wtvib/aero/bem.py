@@ -92,7 +92,7 @@ class Rotor:
         from ..numerics.unsteady import separation_table
 
         grid = np.arange(self.cl.shape[1], dtype=float) * POLAR_STEP_DEG - 180.0
-        return separation_table(np.asarray(grid, float), self.cl)
+        return separation_table(grid, self.cl)
 
     def separated_slope(self, alpha: Array, step: float) -> Array:
         """The part of each section's lift slope [1/rad] at ``alpha`` [rad] that the

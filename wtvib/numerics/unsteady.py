@@ -42,8 +42,11 @@ and one that the separation point lags:
 (the second form from Kirchhoff's relation). In attached flow f_st = 1 and L = 0: nothing
 changes; past stall C_L′ < 0 but C_L′ − L > 0, and a vibration faster than 1/T_f meets the
 positive slope — the quasi-steady stall damping is the slow limit, the conservative one.
-One pole per section stands for the model's chain (Beddoes–Leishman's pressure lag T_p
-before f″ adds its time: T_p0 + T_f0, the first-order sum of the two). Left out: the
+One pole per section stands for the separation's chain (Beddoes–Leishman's pressure lag
+T_p before f″ adds its time: T_p0 + T_f0, the first-order sum of the two), and in the
+Beddoes–Leishman models it sits behind the shed wake — their separation follows the
+effective angle of attack, so the separated part goes through Jones's filter and then the
+pole; in Øye's, which has no shed wake, it follows the angle itself. Left out: the
 non-circulatory (apparent-mass) lift, small beside a blade's mass, the leading-edge vortex
 of deep dynamic stall (not a small-signal effect), and the dynamic inflow of the wake as a
 whole (its time constant, R/V ≈ 10 s, is far slower than the blade and tower modes).
@@ -77,8 +80,8 @@ def lag_rates(w: Array, chord: Array) -> Array:
     return np.asarray(2.0 * np.asarray(w, float) / np.asarray(chord, float))
 
 
-#: A separation function this close to 1 is attached flow; within this angle [deg] of α₀
-#: the inviscid lift is too small to divide by and the flow is taken as attached.
+#: Within this angle [deg] of α₀ the inviscid lift is too small to divide by: the flow is
+#: taken as attached there (f_st = 1), and the inviscid slope is sought outside it.
 ATTACHED_NEAR_DEG = 0.5
 
 #: The inviscid lift slope C_Lα: the steepest secant C_L/(α − α₀) within this angle [deg] of
