@@ -161,7 +161,7 @@ def test_convert_writes_an_editable_spec_of_the_model(model, tmp_path):
 
 @pytest.mark.parametrize(
     ("method", "shed", "stall", "time"),
-    [(2, True, True, 7.5), (1, False, True, 6.0), (0, False, False, 3.0)],
+    [(2, True, True, 7.5), (3, True, True, 7.5), (1, False, True, 6.0), (0, False, False, 3.0)],
 )
 def test_the_unsteady_aerofoil_follows_dynstall_method(model, method, shed, stall, time):
     """HAWC2's ``dynstall_method``: MHH (2, the IEA-15 model's) lags the lift by the shed

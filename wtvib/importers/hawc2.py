@@ -704,9 +704,10 @@ def _aerodynamics(
 
 #: The separation point's time constant [half-chord transits] of HAWC2's dynamic stall
 #: models (``dynstall_method``): MHH (2) T_f0 + T_p0 = 6 + 1.5 (Hansen, Gaunaa & Madsen
-#: 2004, the constants HAWC2 uses — welib's MHH implementation, "HAWC2" constants), Øye (1)
-#: 6 (the value Øye's model is usually run with: AeroDyn theory manual, "Oye model").
-SEPARATION_TIME = {1: 6.0, 2: 7.5}
+#: 2004, the constants HAWC2 uses — welib's MHH implementation, "HAWC2" constants), and
+#: ATEFlap (3), MHH's model with trailing-edge flaps, alike; Øye (1) 6 (the value Øye's
+#: model is usually run with: AeroDyn theory manual, "Oye model").
+SEPARATION_TIME = {1: 6.0, 2: 7.5, 3: 7.5}
 
 
 def _blended(
