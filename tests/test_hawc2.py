@@ -176,3 +176,29 @@ def test_the_unsteady_aerofoil_follows_dynstall_method(model, method, shed, stal
     assert aero is not None
     assert (aero.shed_wake, aero.dynamic_stall) == (shed, stall)
     assert {a.separation_time for a in aero.airfoils.values()} == {time}
+
+
+@pytest.mark.parametrize(
+    ("text", "rows", "words", "line"),
+    [
+        ("3 wind pitch rpm\n4 0 5\n5 0 6\n6 1 7\n", 3, None, None),  # HAWCStab2's count line
+        ("4 0 5\n5 0 6\n6 1 7\n", 3, None, None),  # the rows alone (the IEA-22's)
+        ("4 0 5\n5 x 6\n", 0, "a number was expected", 2),
+        ("4 0 5\n5 6\n", 0, "3 columns were expected", 2),
+    ],
+)
+def test_an_operational_data_file_with_or_without_its_count_line(tmp_path, text, rows, words, line):
+    """HAWCStab2 writes a .opt with the number of operating points first; the IEA-22's HAWC2
+    model has the rows alone. Both read; a broken row is one line naming it."""
+    from wtvib.errors import SpecError
+    from wtvib.importers import htc
+
+    path = tmp_path / "ops.opt"
+    path.write_text(text)
+    if words is None:
+        table = htc.read_opt(path)
+        assert table.shape == (rows, 3) and table[-1, 2] == 7
+        return
+    with pytest.raises(SpecError) as err:
+        htc.read_opt(path)
+    assert words in str(err.value) and err.value.line == line

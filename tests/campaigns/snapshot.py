@@ -52,11 +52,15 @@ def unpack() -> Path:
             with tarfile.open(archive) as tar:
                 tar.extractall(folder, filter="data")
             (folder / ".unpacked").touch()
+    for archive in sorted((DATA / "hawc2").glob("*.tar.gz")):  # every HAWC2 model, each once
+        marker = INPUTS / "hawc2" / f".{archive.name}"
+        if not marker.exists():
+            with tarfile.open(archive) as tar:
+                tar.extractall(INPUTS / "hawc2", filter="data")
+            marker.touch()
     done = INPUTS / ".unpacked"
     if done.exists():
         return INPUTS
-    with tarfile.open(DATA / "hawc2" / "iea15_onshore.tar.gz") as tar:
-        tar.extractall(INPUTS / "hawc2", filter="data")
     lin = INPUTS / "lin"
     lin.mkdir(exist_ok=True)
     for gz in sorted((DATA / "openfast_lin").glob("*.lin.gz")):

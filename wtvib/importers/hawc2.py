@@ -399,6 +399,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     blade_mass = float(np.trapezoid(bmass, span))
     j_blades = n_blades * float(np.trapezoid(bmass * (hub_radius + span) ** 2, span))
     parts, hub_mass, hub_inertia, gen_inertia = _head_parts(chain, top_pos)
+    drivetrain, drivetrain_note = _drivetrain(chain.shaft, j_blades, hub_inertia, gen_inertia)
     parts.append(Part("blades", n_blades * blade_mass, downwind, above, j_blades / 2, j_blades,
                       j_blades / 2))  # fmt: skip
     speed, control, statement = _operation(top, root, path)
@@ -427,14 +428,18 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             **_blade_damping(chain.blades[0]),
             "structure": {"hub_radius_m": round(hub_radius, 6), **blade_structure},
         },
-        "drivetrain": _drivetrain(chain.shaft, j_blades, hub_inertia, gen_inertia),
+        "drivetrain": drivetrain,
         "coupled": {
             "apex_downwind_m": round(downwind, 6),
             "apex_above_top_m": round(above, 6),
             "hub_mass_kg": hub_mass,
             "hub_inertia_kgm2": hub_inertia,
         },
-        "assumptions": [*_assembly_notes(path, chain, downwind, above), statement],
+        "assumptions": [
+            *_assembly_notes(path, chain, downwind, above),
+            statement,
+            *([drivetrain_note] if drivetrain_note else []),
+        ],
     }
     warnings = _support_warnings(top, embedded)
     if warnings:
@@ -464,22 +469,56 @@ def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]
     return _chain(bodies, structure, embedded), embedded
 
 
+#: A shaft whose torsion would put the generator against the hub above this frequency [Hz]
+#: is rigid: HAWC2 models write rigid bodies with moduli of 1e17 (the IEA-22's shaft), and
+#: a drive-train mode at 10⁴ Hz is a number no turbine has.
+RIGID_SHAFT_HZ = 1000.0
+
+
 def _drivetrain(
     shaft: Body, j_blades: float, hub_inertia: float, gen_inertia: float
-) -> dict[str, Any]:
-    """The drive train: the blades on a rigid hub, the shaft's torsion to the generator."""
+) -> tuple[dict[str, Any], str | None]:
+    """The drive train: the blades on a rigid hub, the shaft's torsion to the generator;
+    and what the import made of a rigid shaft or of a shaft with no generator inertia."""
     shaft_k = _shaft_stiffness(shaft)
-    return {
-        "chain": [
-            {"name": "blades", "inertia_kgm2": j_blades},
-            {"name": "hub", "inertia_kgm2": hub_inertia},
-            {"name": "generator", "inertia_kgm2": gen_inertia},
-        ],
-        "shafts": [
-            {"stiffness_nm_rad": None},
-            {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * shaft.damping[5]},
-        ],
-    }
+    note: str | None
+    if gen_inertia <= 0 or hub_inertia <= 0:
+        inertia = hub_inertia + gen_inertia
+        if not inertia > 0:
+            raise SpecError(
+                f"body {shaft.name}: no inertia about the shaft (no concentrated_mass with "
+                "one): the hub and generator a drive train turns are missing",
+                line=shaft.block.line,
+                source=str(shaft.block.file),
+            )
+        note = (
+            f"Drive train: the shaft {shaft.name} carries its inertia at one end only "
+            f"({inertia:.4g} kg·m²): the blades against that inertia, no shaft torsion."
+        )
+        chain = [{"name": "blades", "inertia_kgm2": j_blades},
+                 {"name": "hub", "inertia_kgm2": inertia}]  # fmt: skip
+        return {"chain": chain, "shafts": [{"stiffness_nm_rad": None}]}, note
+    torsion_hz = math.sqrt(shaft_k * (1 / hub_inertia + 1 / gen_inertia)) / (2 * math.pi)
+    rigid = torsion_hz > RIGID_SHAFT_HZ
+    note = (
+        f"Drive train: the shaft {shaft.name} taken as rigid (G·I_p/L = {shaft_k:.3g} N·m/rad "
+        f"would put the generator against the hub at {torsion_hz:.3g} Hz: a rigid body as "
+        "HAWC2 models write one)."
+        if rigid
+        else None
+    )
+    shafts = [
+        {"stiffness_nm_rad": None},
+        {"stiffness_nm_rad": None}
+        if rigid
+        else {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * shaft.damping[5]},
+    ]
+    chain = [
+        {"name": "blades", "inertia_kgm2": j_blades},
+        {"name": "hub", "inertia_kgm2": hub_inertia},
+        {"name": "generator", "inertia_kgm2": gen_inertia},
+    ]
+    return {"chain": chain, "shafts": shafts}, note
 
 
 def _assembly_notes(path: Path, chain: "_Chain", downwind: float, above: float) -> list[str]:
@@ -533,16 +572,20 @@ def _plain(value: Any) -> Any:
 
 def _head_parts(chain: _Chain, top: np.ndarray) -> tuple[list[Part], float, float, float]:
     """The tower head's parts (downwind x, up z from the tower top): every concentrated
-    mass on the bodies above the tower and on the shaft; the hub's mass and polar inertia,
-    the generator's inertia about the shaft (the shaft's masses without mass)."""
+    mass on the bodies above the tower and on the shaft; the hub's mass and polar inertia
+    (the shaft's masses nearer its last node, where the hubs sit), the generator's inertia
+    about the shaft (those nearer its first node: the IEA-15's massless generator inertia,
+    the IEA-22's generator rotor, bearings and brake, each placed along the shaft by its
+    offset)."""
     parts: list[Part] = []
     hub_mass = hub_inertia = gen_inertia = 0.0
+    hub_end, far_end = chain.shaft.at("last"), chain.shaft.at("1")
     for body in (*chain.head, chain.shaft):
         for node, (x, y, z, m, ixx, iyy, izz) in body.masses:
             pos = body.origin + body.frame @ (body.node(str(node)) + np.array([x, y, z]))
             inertia = body.frame @ np.diag([ixx, iyy, izz]) @ body.frame.T
             if body is chain.shaft:
-                if m > 0:  # the hub
+                if np.linalg.norm(pos - hub_end) <= np.linalg.norm(pos - far_end):
                     hub_mass += m
                     hub_inertia += izz
                 else:

@@ -330,11 +330,14 @@ def _whole(value: float, what: str, least: int, path: Path, line: int) -> int:
 
 def read_opt(path: Path) -> np.ndarray:
     """An operational data file (HAWCStab2's .opt): rows of wind [m/s], pitch [deg], rotor
-    speed [rpm] (and power, thrust)."""
+    speed [rpm] (and power, thrust), after a first line with their count (and the columns'
+    titles) — or without it, the rows alone (the IEA-22's HAWC2 model)."""
     rows = [(i, c) for i, c in _numeric_rows(path) if c]
     if not rows:
         raise SpecError("an empty operational data file", source=str(path))
     line, cells = rows[0]
+    if len(cells) >= 3 and all(_NUMBER.match(c) for c in cells[:3]):  # no count line
+        return np.array([_floats(c, path, ln, 3) for ln, c in rows])
     count = int(_floats(cells, path, line, 1)[0])
     table = np.array([_floats(c, path, ln, 3) for ln, c in rows[1 : 1 + count]])
     if len(table) < count or count < 1:

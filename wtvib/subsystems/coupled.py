@@ -611,13 +611,11 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
         rest = dt.chain[1:] if dt.chain[0].name == "blades" else dt.chain
         shafts = dt.shafts[1:] if dt.chain[0].name == "blades" else dt.shafts
         if shafts and all(s.stiffness_nm_rad is None and s.fluid_coupling is None for s in shafts):
-            # a rigid drive shaft (a deck's DrTrDOF off): no torsion between the hub and
-            # the generator; the hub's own inertia is the rotor's (the generator's turns
-            # with it, free or held with the rotor's speed)
-            if cm.hub_inertia_kgm2 is None and rest:
-                hub_polar = rest[0].inertia_kgm2
+            # a rigid drive shaft (a deck's DrTrDOF off, a HAWC2 model's rigid shaft): no
+            # torsion between the hub and the generator, which turn as one mass — free
+            # (the rotor's azimuth a degree of freedom: ElastoDyn's GenDOF on), on the
+            # grid's spring, or held with the rotor's speed (locked: GenDOF off)
             notes.append("the drive shaft rigid: no drive-train torsion")
-            rest = []
         if len(rest) >= 2:
             sub = spec.model_copy(
                 update={
@@ -626,15 +624,24 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
                     )
                 }
             )
-            reduced = drivetrain.reduce(sub)
+            reduced = drivetrain.reduce(sub, rigid_ok=True)
             chain_m, chain_k, chain_d = drivetrain.system(reduced, sub, condition)
             size = chain_m.shape[0]
             coupling, own = reduced.coupling[:size], reduced.own[:size]
-            if cm.hub_inertia_kgm2 is None:
+            if size == 0:  # one rigid mass, held: the rotor turns at its speed
+                pass
+            elif cm.hub_inertia_kgm2 is None:
                 hub_polar = float(chain_m[0, 0])
-            else:  # the given hub inertia replaces the chain's first mass
+            elif reduced.names[0] == rest[0].name:  # the given hub inertia replaces the hub's
                 chain_m = chain_m.copy()
                 chain_m[0, 0] = coupling[0] = own[0] = hub_polar
+            else:  # the hub merged with what a rigid shaft joins to it: its share replaced
+                chain_m = chain_m.copy()
+                coupling, own = coupling.copy(), own.copy()
+                delta = hub_polar - rest[0].inertia_kgm2
+                chain_m[0, 0] += delta
+                coupling[0] += delta
+                own[0] += delta
         elif rest and cm.hub_inertia_kgm2 is None:
             hub_polar = rest[0].inertia_kgm2
     if chain_m.shape[0] == 0:
