@@ -348,3 +348,45 @@ def test_the_iea22_collective_edge_against_hawcstab2(iea22, hs2_iea22):
         f_ref = float(hs2_iea22[wind][0][5])
         ours = float(np.interp(wind, mode.operating.wind, mode.operating.natural_hz))
         assert ours == pytest.approx(f_ref, rel=0.03), (wind, ours, f_ref)
+
+
+def test_the_iea22_damping_against_hawc2(iea22, hs2_iea22):
+    """The IEA-22's damping in operation from its HAWC2 model against HAWC2's own
+    aeroelastic modes of the rotor (the same repository): its first three modes are the flap
+    triple, the next two the first edgewise pair, the sixth the collective edge (at 7 m/s
+    and above HAWC2 reports one flap mode at 0 Hz, ζ = 1 — not found — left out of its
+    mean). Measured here:
+
+    * the flap triple's mean damping −0.16 … +0.05 from HAWC2's at 4–20 m/s (0.27 against
+      0.35 at 4 m/s, 0.86 against 0.82 at 12 m/s);
+    * the collective edge within ±50 % at 4, 6, 15 m/s (−3 %, +25 %, +18 %);
+    * the edgewise pair within a factor 0.6–1.6 at 4, 6, 8 and 20 m/s (−35 … +52 %);
+      OPEN near rated: 2.2–6.4 times HAWC2's at 10 and 12 m/s, where HAWC2's edge damping
+      falls to 0.7–4 % and wtvib's peaks — as against HAWCStab2's IEA-15 (4.2 times at
+      10 m/s, test_the_iea15_aeroelastic_damping_against_hawcstab2): two turbines, two
+      sources, one gap; wtvib's rigid rotor's steady state and its blade without torsion
+      are where the two models part."""
+    report = audit.run(importers.load(iea22))
+    ops = {m.id: m.operating for m in report.modes if m.judged and m.operating is not None}
+
+    def ours(name: str, wind: float) -> float:
+        op = ops[f"system.blade.{name}"]
+        assert op is not None
+        return float(np.interp(wind, np.asarray(op.wind), np.asarray(op.total)))
+
+    flap = ("flap1.backward", "flap1.collective", "flap1.forward")
+    for wind in (4.0, 6.0, 8.0, 10.0, 12.0, 15.0, 20.0):
+        freq, zeta = hs2_iea22[wind]
+        found = [float(z) for f, z in zip(freq[:3], zeta[:3], strict=True) if f > 0.1]
+        mean = float(np.mean([ours(n, wind) for n in flap]))
+        assert -0.17 <= mean - np.mean(found) <= 0.06, (wind, mean, found)
+    for wind in (4.0, 6.0, 15.0):
+        ratio = ours("edge1.collective", wind) / float(hs2_iea22[wind][1][5])
+        assert 0.5 <= ratio <= 1.5, (wind, ratio)
+    for name, j in (("edge1.backward", 3), ("edge1.forward", 4)):
+        for wind in (4.0, 6.0, 8.0, 20.0):
+            ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
+            assert 0.6 <= ratio <= 1.6, (name, wind, ratio)
+        for wind in (10.0, 12.0):  # OPEN, held to what it measures
+            ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
+            assert 2.0 <= ratio <= 7.0, (name, wind, ratio)
