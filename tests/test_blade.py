@@ -120,3 +120,23 @@ def test_a_free_beam_is_a_standstill_model(write_spec):
     modes = [m for m in report.modes if m.id.startswith("blade.")]
     assert modes and all(m.curve is None for m in modes)
     assert any("a free twisted beam" in a for a in report.assumptions)
+
+
+def test_a_principal_axis_turned_by_half_a_turn_is_the_same_axis():
+    """A twist table that writes one station's principal axes 180° on (the IEA-22's HAWC2
+    st file steps from −27° to 143°) is the same blade: its modes are those of the table
+    written the short way round, to rounding — where the angles interpolated as numbers
+    would turn the element between through half a turn and move the modes."""
+    span = [0.0, 20.0, 40.0, 60.0]
+    base = {
+        "span_m": span,
+        "mass_per_length_kg_m": [800.0, 500.0, 300.0, 150.0],
+        "ei_flap_nm2": [2e10, 8e9, 2e9, 4e8],
+        "ei_edge_nm2": [4e10, 2e10, 6e9, 1.5e9],
+    }
+    short = spec.BladeStructure.model_validate(base | {"twist_deg": [15.0, 10.0, 20.0, 5.0]})
+    wrapped = spec.BladeStructure.model_validate(base | {"twist_deg": [15.0, 10.0, -160.0, 5.0]})
+    np.testing.assert_allclose(blade.principal_twist(wrapped), [15.0, 10.0, 20.0, 5.0])
+    _, f_short, _, _ = blade.rotating_modes(short, np.array([0.0, 1.0]), count=4)
+    _, f_wrapped, _, _ = blade.rotating_modes(wrapped, np.array([0.0, 1.0]), count=4)
+    np.testing.assert_allclose(f_wrapped, f_short, rtol=1e-9)

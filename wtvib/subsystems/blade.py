@@ -217,6 +217,19 @@ def deflections(s: BladeStructure, nodes: Array) -> tuple[Array, Array]:
     return h_w, h_v
 
 
+def principal_twist(s: BladeStructure) -> Array:
+    """The principal axes' twist along the table [deg], as lines: an axis turned by 180° is
+    the same axis, so a step of more than 90° between stations is taken the short way round
+    (the IEA-22's HAWC2 st file steps from −27° to 143° — 10° as axes; interpolated as
+    numbers, the element between would turn through 58°)."""
+    if not s.twist_deg:
+        return np.zeros(len(s.span_m))
+    twist = np.asarray(s.twist_deg, dtype=float)
+    if np.any(np.abs(np.diff(twist)) > 90.0):
+        twist = np.degrees(np.unwrap(np.radians(2 * twist)) / 2)
+    return twist
+
+
 def _sections(s: BladeStructure, b: beam.Basis) -> tuple[Array, Array, Array, Array]:
     """Mass per length, flapwise and edgewise bending stiffness and the principal axes'
     twist [rad] at the Gauss points (linear between the table's stations)."""
@@ -224,8 +237,7 @@ def _sections(s: BladeStructure, b: beam.Basis) -> tuple[Array, Array, Array, Ar
     m = beam.interpolate(b.x, span, np.asarray(s.mass_per_length_kg_m))
     ef = beam.interpolate(b.x, span, np.asarray(s.ei_flap_nm2))
     ee = beam.interpolate(b.x, span, np.asarray(s.ei_edge_nm2))
-    twist = np.asarray(s.twist_deg) if s.twist_deg else np.zeros_like(span)
-    return m, ef, ee, np.radians(beam.interpolate(b.x, span, twist))
+    return m, ef, ee, np.radians(beam.interpolate(b.x, span, principal_twist(s)))
 
 
 def _centrifugal_integral(nodes: Array, m: Array, hub_radius: float) -> Array:

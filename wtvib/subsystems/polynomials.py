@@ -426,7 +426,7 @@ def _blade_sets(spec: Spec, rpm: float) -> list[_Set]:
     k = k0 + omega**2 * (geo - m_v)
     found = modal.solve(k, m, min(8, k.shape[0]))
     names = blade.plane_names(found.shapes)
-    twist = np.radians(np.interp(nodes, span, np.asarray(s.twist_deg or [0.0] * len(span))))
+    twist = np.radians(np.interp(nodes, span, blade.principal_twist(s)))
     x = (nodes - nodes[0]) / float(nodes[-1] - nodes[0])
     out = []
     for key, name, pair in (
