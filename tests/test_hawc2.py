@@ -128,6 +128,14 @@ def _edit(path: Path, old: str, new: str) -> None:
         # the campaign's rerun: a blade's mass typed 1e300 overflowed its inertia integral
         # (a numpy warning before the spec's refusal)
         ("st", "3.1265243837780e+03", "3.1265243837780e+300", "beyond any wind turbine"),
+        # a floater (the IEA-15 and IEA-22 semisubmersibles' models: no fix0, their lowest
+        # body held by external systems) is refused, not audited clamped
+        ("htc", "begin fix0;  tower fixed to ground\n      body tower;\n    end fix0;",
+         "begin dll;\n      mbdy_node tower 0;\n      dll 'ESYSWamit_64.dll';\n    end dll;",
+         "held by the external systems ESYSWamit_64.dll: a floating model"),
+        # a load-case template's tag (the IEA-22's htc/_master DLB file)
+        ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    [tz]     0    ;",
+         "is a template's tag, [tz], not a number"),
     ],
 )  # fmt: skip
 def test_a_broken_model_is_one_line_and_exit_2(model, where, old, new, words):
@@ -202,3 +210,17 @@ def test_an_operational_data_file_with_or_without_its_count_line(tmp_path, text,
     with pytest.raises(SpecError) as err:
         htc.read_opt(path)
     assert words in str(err.value) and err.value.line == line
+
+
+def test_a_model_in_a_folder_below_htc_reads_its_files_from_the_model_s_folder(model):
+    """HAWC2 runs a model from the folder that holds ``htc/``, also for an htc file in a
+    folder below it (the IEA-22's DLB templates in ``htc/_master/``): its ``./data/…``
+    names are the model folder's."""
+    from wtvib.importers import load
+
+    below = model.parent / "_master" / model.name
+    below.parent.mkdir()
+    below.write_text(model.read_text())  # its names the same: the run folder's
+    there, here = load(below), load(model)
+    assert there.rotor.speed.max_rpm == here.rotor.speed.max_rpm
+    assert there.blade.mass_kg == here.blade.mass_kg

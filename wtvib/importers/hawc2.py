@@ -228,6 +228,29 @@ class _Chain:
 HEAD_WORDS = ("top", "connector", "nacelle", "yaw", "bedplate")
 
 
+def _unheld(base: str, structure: Block) -> None:
+    """Refuse a model whose lowest body no fix0 and no soil holds: a floater (HAWC2 holds
+    one with its hydrodynamics and moorings in external systems, which wtvib does not
+    read) — clamped, its tower's modes would be another turbine's."""
+    constraint = structure.block("constraint")
+    where = constraint if constraint is not None else structure
+    systems = []
+    for dll in constraint.each("dll") if constraint is not None else []:
+        node, name = dll.get("mbdy_node"), dll.get("dll")
+        if node is not None and node.values[0].lower() == base and name is not None:
+            systems.append(name.values[0].strip("'\""))
+    names = ", ".join(dict.fromkeys(systems))
+    held_by = f", held by the external systems {names}" if systems else ""
+    raise SpecError(
+        f"the lowest body, {base}, is fixed to the ground by no fix0 and held by no soil "
+        f"block{held_by}: a floating model — wtvib does not read HAWC2's floater (its "
+        "hydrodynamics and moorings), and clamped its tower would be another turbine's; "
+        "audit the same turbine's OpenFAST deck set or windIO file",
+        line=where.line,
+        source=str(where.file),
+    )
+
+
 def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Chain:
     constraint = structure.block("constraint")
     parents: dict[str, str] = {}
@@ -252,6 +275,8 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
         raise SpecError(
             "no body stands on the ground (no fix0, no base)", source=str(structure.file)
         )
+    if base not in fixed and base not in embedded:
+        _unheld(base, structure)
     while base in embedded and len(children.get(base, [])) == 1:
         base = children[base][0]  # a pile in the soil: the tower from the mudline up
 

@@ -41,6 +41,14 @@ class Command:
             value = float(self.values[i].replace("D", "E").replace("d", "e"))
         except (IndexError, ValueError):
             got = self.values[i] if i < len(self.values) else "nothing"
+            if got.startswith("["):  # a tag of a DLB template ([Rotor azimuth], [wsp] …)
+                tag = " ".join(self.values[i:]).split("]")[0] + "]"
+                raise SpecError(
+                    f"{self.key}: value {i + 1} is a template's tag, {tag}, not a number — "
+                    "a load-case template (a DLB master file); audit an htc made from it",
+                    line=self.line,
+                    source=str(self.file),
+                ) from None
             raise SpecError(
                 f"{self.key}: value {i + 1} must be a number (got {got!r})",
                 line=self.line,
@@ -92,8 +100,12 @@ class Block:
 
 
 def root_folder(htc: Path) -> Path:
-    """The folder HAWC2 runs the model in: the one holding ``htc/``, else the htc's own."""
-    return htc.parent.parent if htc.parent.name.lower() == "htc" else htc.parent
+    """The folder HAWC2 runs the model in: the one holding the ``htc/`` the file is in (also
+    from a folder below it: the DLB templates' ``htc/_master/``), else the htc's own."""
+    for folder in htc.parents:
+        if folder.name.lower() == "htc":
+            return folder.parent
+    return htc.parent
 
 
 def resolve(name: str, root: Path, beside: Path, cmd: Command) -> Path:
@@ -106,8 +118,9 @@ def resolve(name: str, root: Path, beside: Path, cmd: Command) -> Path:
                 return candidate
         except OSError:  # a name the file system cannot hold
             break
+    looked = str(root) if root == beside else f"{root} and {beside}"
     raise SpecError(
-        f"{cmd.key} names {name!r}, which does not exist (looked in {root} and {beside})",
+        f"{cmd.key} names {name!r}, which does not exist (looked in {looked})",
         line=cmd.line,
         source=str(cmd.file),
     )
