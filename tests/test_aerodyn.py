@@ -114,12 +114,13 @@ def test_the_unsteady_aerofoil_follows_the_decks_model(shared, tmp_path, mod, sh
     assert {a.separation_time for a in aero.airfoils.values()} == {time}
 
 
-@pytest.mark.parametrize("value", ["-3", "0", "1e6", "soon"])
+@pytest.mark.parametrize("value", ["-3", "-0.1", "1e6", "soon"])
 def test_a_separation_time_a_model_cannot_have_names_file_and_line(
     shared: Path, tmp_path: Path, value: str
 ):
-    """T_f0 is a positive number of half-chord transits, at most 100 (AeroDyn's default 3):
-    anything else is one line naming the aerofoil file, its line and the field."""
+    """T_f0 is a number of half-chord transits from 0 (no lag: the UAE VI deck's cylinder
+    writes 0) to 100 (AeroDyn's default 3): anything else is one line naming the aerofoil
+    file, its line and the field."""
     from tests.conftest import edited_reference
 
     folder = edited_reference(

@@ -127,3 +127,34 @@ def test_behind_the_shed_wake_the_separation_sees_the_effective_angle(k, w_t):
     zeta = -root.real / abs(root)
     assert zeta == pytest.approx(expected, rel=0.01)
     assert abs(alone - expected) > 0.03 * abs(expected)
+
+
+def test_a_separation_time_of_nothing_is_no_lag(tmp_path):
+    """An aerofoil whose separation follows at once (T_f0 = 0: the UAE VI deck's cylinder)
+    lags nothing: the catalogue's stall rotor with dynamic stall and every separation time 0
+    damps its modes as without dynamic stall, to rounding (the lag states it keeps carry no
+    force)."""
+    import numpy as np
+
+    from tests.conftest import TURBINES
+    from wtvib import audit, importers
+
+    text = (TURBINES / "stall-rotor-1mw.yaml").read_text()
+    anchor = "  airfoils:\n    foil:"
+    assert anchor in text
+    totals = []
+    for extra in ("", "  dynamic_stall: true\n"):
+        body = text.replace(anchor, extra + anchor)
+        if extra:
+            body = body.replace("    foil:  #", "    foil:\n      separation_time: 0  #", 1)
+        path = tmp_path / f"s{len(totals)}.yaml"
+        path.write_text(body)
+        spec = importers.load(path)
+        assert spec.aerodynamics is not None
+        assert spec.aerodynamics.dynamic_stall is bool(extra)
+        assert spec.aerodynamics.airfoils["foil"].separation_time == (0 if extra else 3)
+        modes = audit.run(spec).modes
+        totals.append({m.id: np.asarray(m.operating.total) for m in modes if m.operating})
+    assert totals[0].keys() == totals[1].keys() and totals[0]
+    for key, off in totals[0].items():
+        np.testing.assert_allclose(totals[1][key], off, atol=1e-9, err_msg=key)

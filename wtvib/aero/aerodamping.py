@@ -194,8 +194,10 @@ def _sections(spec: Spec) -> Sections:
     lift = section_lift(r.rho, r.chord, sol.w, sol.phi, dcl)
     separated = separated_rate = None
     if r.separation_time is not None:  # dynamic stall: the separation point's lagged part
-        separated = section_lift(r.rho, r.chord, sol.w, sol.phi, r.separated_slope(sol.alpha, h))
-        separated_rate = unsteady.lag_rates(sol.w, r.chord) / r.separation_time
+        lags = r.separation_time > 0  # T_f0 = 0: the separation follows at once, no lag
+        slope = np.where(lags, r.separated_slope(sol.alpha, h), 0.0)
+        separated = section_lift(r.rho, r.chord, sol.w, sol.phi, slope)
+        separated_rate = unsteady.lag_rates(sol.w, r.chord) / np.where(lags, r.separation_time, 1.0)
     assert spec.aerodynamics is not None
     if spec.aerodynamics.induction == "equilibrium":
         g = inflow_response(r, sol)

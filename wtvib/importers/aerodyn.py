@@ -225,7 +225,7 @@ def separation_time(path: Path, model: int) -> float:
             cells = ln.split()
             if cells[1:2] == [key] and cells[0].lower().strip('"') != "default":
                 got = _number(cells[0], key, i + 1, path)
-                if not 0 < got <= 100:
+                if not 0 <= got <= 100:  # 0: the separation follows at once (the UAE's cylinder)
                     raise SpecError(
                         f"{key} must lie within 0 … 100 half-chord transits (got {got:g})",
                         line=i + 1,

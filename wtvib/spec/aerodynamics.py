@@ -34,12 +34,12 @@ class AirfoilPolar(_Strict):
     cd: list[float] = Field(description="Drag coefficient C_D. [-]")
     separation_time: float = Field(
         3.0,
-        gt=0,
+        ge=0,
         le=100,
         description="T_f0: the time the separation point takes to follow the angle of "
         "attack past the lift's linear range, in half-chord transits c/(2W) (used where "
         "aerodynamics.dynamic_stall; AeroDyn's T_f0, default 3, plus T_p for its "
-        "Beddoes–Leishman models; Øye's model is usually run with 6). [-]",
+        "Beddoes–Leishman models; Øye's model is usually run with 6; 0: no lag). [-]",
     )
 
     @model_validator(mode="after")

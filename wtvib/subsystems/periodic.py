@@ -26,6 +26,7 @@ from ..numerics.floquet import _GAUSS, GROWTH, MAX_STEPS, REFINE, propagate, ste
 from ..results import Check, Rule
 from ..units import rad_s_to_hz, rpm_to_rad_s
 from .multiblade import Model, parked
+from .rotor import bladed
 
 if TYPE_CHECKING:
     from ..rules import Status
@@ -125,10 +126,13 @@ def multipliers(
 ) -> NDArray[np.complex128] | None:
     """Floquet multipliers over one rotor revolution at Ω [rad/s].
 
-    None where the speed cannot be analysed: one revolution would need more than
+    None where the speed cannot be analysed: a rotor that does not turn (Ω ≤ 0: no period,
+    the parked modes are the standstill solution's), one revolution would need more than
     ``max_steps`` steps (a slow rotor with a stiff basis), or the multipliers do not come out
     finite.
     """
+    if not omega > 0:
+        return None
     period = 2 * np.pi / omega
     steps = steps or steps_for(p.highest_hz, period)
     if steps > max_steps:
@@ -156,6 +160,8 @@ def _confirmed(p: Periodic, omega: float) -> NDArray[np.complex128] | None:
     """:func:`multipliers` at Ω, integrated again on finer steps (floquet.REFINE) where
     they show growth: what stays above 1 + GROWTH is growth, not the step's error."""
     found = multipliers(p, omega)
+    if found is None:
+        return None
     steps = steps_for(p.highest_hz, 2 * np.pi / omega)
     for k in REFINE:
         if found is None or np.abs(found).max() <= 1 + GROWTH:
@@ -185,6 +191,18 @@ def stability_check(spec: "Spec", model: "Model") -> "Check":
             [np.linspace(low, speed.overspeed, 12), [a for band in speed.steady_rpm for a in band]]
         )
     )
+    turbine = f"Coupled {bladed(spec.rotor.blades)} turbine"
+    rpm = rpm[rpm > 0]  # a rotor at rest has no period: its parked modes stand for it
+    if len(rpm) == 0:
+        return Check(
+            id="system.floquet",
+            subsystem="system",
+            status="info",
+            message=f"{turbine} not analysed: its rotor does not turn (0 rpm), so its "
+            "equations have no period — the parked modes are its modes",
+            rule=_FLOQUET_RULE,
+            numbers={"not_analysed_rpm": [0.0]},
+        )
     found = [_confirmed(p, float(rpm_to_rad_s(n))) for n in rpm]
     skipped = [float(n) for n, f in zip(rpm, found, strict=True) if f is None]
     rpm = np.array([n for n, f in zip(rpm, found, strict=True) if f is not None])
@@ -194,7 +212,7 @@ def stability_check(spec: "Spec", model: "Model") -> "Check":
             id="system.floquet",
             subsystem="system",
             status="info",
-            message="Coupled two-bladed turbine not analysed: at these speeds one revolution "
+            message=f"{turbine} not analysed: at these speeds one revolution "
             f"would need more than {MAX_STEPS:,} integration steps of its fastest mode "
             f"({p.highest_hz:.3g} Hz), or the multipliers were not finite",
             rule=_FLOQUET_RULE,
@@ -214,7 +232,7 @@ def stability_check(spec: "Spec", model: "Model") -> "Check":
         id="system.floquet",
         subsystem="system",
         status=status,
-        message=f"Coupled two-bladed turbine, Floquet multipliers over {low:.3g}–"
+        message=f"{turbine}, Floquet multipliers over {low:.3g}–"
         f"{speed.overspeed:.3g} rpm (generator {model.condition}): largest |ρ| "
         f"{max(largest):.6f}; "
         + (f"growing at {where} rpm" if where else "no growth")

@@ -249,6 +249,15 @@ class StabilityMap:
         return tuple((float(rad_s_to_rpm(a)), float(rad_s_to_rpm(b))) for a, b in self.unstable)
 
 
+#: the rotor's blade count in words, where a message names it
+_BLADED = {1: "one", 2: "two"}
+
+
+def bladed(blades: int) -> str:
+    """ "one-bladed", "two-bladed" …: a rotor's blade count as a message says it."""
+    return f"{_BLADED.get(blades, str(blades))}-bladed"
+
+
 def map_for(op: "OperatingRange", model: HeadModel, points: int = 200) -> StabilityMap:
     """|ρ|max from 10 % of the lowest steady speed to 130 % of the overspeed limit."""
     w = np.linspace(0.1 * op.lowest, 1.3 * op.overspeed, points)
@@ -285,22 +294,23 @@ def check(spec: "Spec", modes: "Sequence[Mode]") -> "tuple[Check, StabilityMap |
             "the equations are time-invariant — no parametric excitation"
         )
         return Check("rotor.floquet", "rotor", "info", why, rule), None
+    rotor = f"{bladed(spec.rotor.blades)} rotor"
+    speed = spec.rotor.speed
+    if not speed.overspeed > 0:  # parked: no period, the parked modes are its modes
+        why = f"{rotor} not analysed: it does not turn (0 rpm), so its equations have no period"
+        return Check("rotor.floquet", "rotor", "info", why, rule), None
     model, missing = head_model(spec, modes)
     if model is None:
-        why = (
-            f"{_BLADED.get(spec.rotor.blades, 'two')}-bladed rotor not analysed: needs "
-            + ", ".join(missing)
-        )
+        why = f"{rotor} not analysed: needs " + ", ".join(missing)
         return Check("rotor.floquet", "rotor", "info", why, rule), None
-    speed = spec.rotor.speed
     smap = map_for(operating_range(speed), model)
-    status, text = _verdict(smap, model.hub, operating_range(speed))
+    status, text = _verdict(smap, f"{model.hub} {rotor}", operating_range(speed))
     steady_rpm = np.concatenate(
         [np.linspace(a, b, 25) if b > a else np.array([a]) for a, b in speed.steady_rpm]
     )
     in_operation = stability_map(model, rpm_to_rad_s(steady_rpm))
     skipped = [float(x) for x in smap.speeds_rpm[np.isnan(smap.largest)]]
-    status, text = _unanalysed(status, text, model.hub, in_operation, skipped)
+    status, text = _unanalysed(status, text, f"{model.hub} {rotor}", in_operation, skipped)
     if spec.rotor.hub != model.hub:
         text += (
             f" (the spec's {spec.rotor.hub} hub modelled as {model.hub}: the tower-head model "
@@ -326,20 +336,14 @@ def _verdict(smap: "StabilityMap", hub: str, op: "OperatingRange") -> tuple[str,
     transient = split["overspeed"] + split["start-up"]
     bands = ", ".join(f"{a:.3g}–{b:.3g} rpm" for a, b in smap.unstable_rpm) or "none"
     if steady:
-        text = (
-            f"{hub} two-bladed rotor: parametric instability in steady operation "
-            f"(unstable bands {bands})"
-        )
-        if hub != "teetered":
+        text = f"{hub}: parametric instability in steady operation (unstable bands {bands})"
+        if not hub.startswith("teetered"):
             text += " — the hazardous concept of a hingeless rotor on a flexible tower (Hau 7.5.1)"
         return "fail", text
     if transient:
-        return "warn", f"{hub} two-bladed rotor: unstable only at start-up or overspeed ({bands})"
-    text = (
-        f"{hub} two-bladed rotor: stable over the operating range (unstable bands "
-        f"outside it: {bands})"
-    )
-    if hub == "teetered":
+        return "warn", f"{hub}: unstable only at start-up or overspeed ({bands})"
+    text = f"{hub}: stable over the operating range (unstable bands outside it: {bands})"
+    if hub.startswith("teetered"):
         text += " — the teetered hub decouples the rotor moments"
     return "pass", text
 
@@ -354,7 +358,7 @@ def _unanalysed(
         f"revolution would need over {MAX_STEPS:,} integration steps"
     )
     if np.isnan(in_operation).all():  # nothing known in operation: say that, nothing else
-        return "warn", f"{hub} two-bladed rotor: not analysed at any operating speed ({why})"
+        return "warn", f"{hub}: not analysed at any operating speed ({why})"
     if skipped:
         text += (
             f"; not analysed at {len(skipped)} speeds between {min(skipped):.3g} and "
@@ -383,10 +387,6 @@ class RotorResults:
     """What the Floquet figure draws: the stability map over rotor speed."""
 
     map: StabilityMap
-
-
-#: the rotor's blade count in words, where a message names it
-_BLADED = {1: "one", 2: "two"}
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
