@@ -60,3 +60,28 @@ def test_the_step_error_on_a_neutral_mode_is_not_called_growth(shared):
     assert next(c for c in report.checks if c.id == "tower.class").status == "fail"
     # the coupled model clamps the blades to the teetered hub, and says so
     assert any("the model clamps the blades to it" in a for a in report.assumptions)
+
+
+def test_a_rotor_at_rest_has_no_period(tmp_path):
+    """A parked two-bladed turbine (r-test's 5MW_Land_BD_Init is a parked one-bladed one:
+    it crashed here, dividing by its 0 rpm): its equations have no period, so neither
+    Floquet check judges it — each says why, as information, not a warning."""
+    from typer.testing import CliRunner
+
+    from tests.conftest import TURBINES
+    from wtvib.cli import app
+
+    text = (TURBINES / "mod-2.yaml").read_text()
+    old = "    fixed_rpm: {value: 17.5, provenance: representative, source: domain}"
+    assert old in text
+    path = tmp_path / "parked.yaml"
+    path.write_text(text.replace(old, "    parked: true"))
+    result = CliRunner().invoke(app, ["check", str(path), "--no-plots", "-f", "json"])
+    assert result.exit_code in (0, 1), result.output
+    import json
+
+    checks = {c["id"]: c for c in json.loads(result.stdout)["checks"]}
+    for key in ("rotor.floquet", "system.floquet"):
+        if key in checks:
+            assert checks[key]["status"] == "info" and "does not turn" in checks[key]["message"]
+    assert "rotor.floquet" in checks
