@@ -212,6 +212,34 @@ def test_platform_matrices_must_be_symmetric_with_positive_added_mass() -> None:
         _platform(
             added_mass_by_frequency=[point | {"frequency_hz": 0.2}, point | {"frequency_hz": 0.1}]
         )
+    # a frequency's added mass may be negative (a moonpool's sloshing: the ITI barge's WAMIT
+    # table), not beyond the body's own inertia (the platform's 5e6 kg here)
+    sloshing = a.copy()
+    sloshing[2, 2] = -4e6
+    _platform(added_mass_by_frequency=[{"frequency_hz": 0.5, "matrix": sloshing.tolist()}])
+    sloshing[2, 2] = -6e6
+    with pytest.raises(ValueError, match="beyond the platform's own mass"):
+        _platform(added_mass_by_frequency=[{"frequency_hz": 0.5, "matrix": sloshing.tolist()}])
+
+
+def test_a_wamit_table_s_resonance_beyond_the_body_s_inertia_is_left_out() -> None:
+    """The ITI barge's WAMIT added mass in heave falls to −3.6e7 kg near 0.55 Hz (its
+    moonpool), far beyond the barge's 5.5e6 kg: no rigid body has that inertia, so those
+    periods leave the table (interpolated across), and the note says so."""
+    from wtvib.importers.hydrodyn import _Body, _positive_inertia
+
+    body = _Body(5.45e6, -0.28, 7.3e8, 7.3e8, 1.4e9)
+    ok = np.diag([1e6, 1e6, 3e7, 1e9, 1e9, 1e8])
+    bad = ok.copy()
+    bad[2, 2] = -3.6e7
+    table = [
+        {"frequency_hz": f, "matrix": (bad if 0.52 < f < 0.58 else ok).tolist()}
+        for f in (0.1, 0.3, 0.5, 0.55, 0.57, 0.7)
+    ]
+    kept, note = _positive_inertia(table, body)
+    assert [q["frequency_hz"] for q in kept] == [0.1, 0.3, 0.5, 0.7]
+    assert "2 periods (0.55–0.57 Hz)" in note and "moonpool" in note
+    assert _positive_inertia(kept, body) == (kept, "")
 
 
 MAP = """\

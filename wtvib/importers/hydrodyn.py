@@ -86,6 +86,7 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
     members = _members(hd, rho, refz)
     ballast = members.fill
     total = body.plus(ballast) if ballast is not None else body
+    by_frequency, dropped = _positive_inertia(by_frequency, total)
     block = {
         "tower_base_m": main.num("TowerBsHt", default=0.0) - refz,
         "mass_kg": total.mass,
@@ -114,9 +115,27 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
         f"AddCLin, and {mooring_note}; the platform is a rigid body with six DOFs under the "
         "tower (wtvib.subsystems.platform), its radiation damping, viscous drag and second-order "
         "loads "
-        "left out." + members.left_out
+        "left out." + members.left_out + dropped
     ]
     return block, notes
+
+
+def _positive_inertia(points: list[dict[str, Any]], body: "_Body") -> tuple[list[Any], str]:
+    """The added-mass table without the periods where a diagonal term is negative beyond the
+    body's own inertia (a moonpool's sloshing near its resonance: the ITI barge's WAMIT
+    table near 0.55 Hz) — no rigid body has a negative inertia; the table is interpolated
+    across them — and what the note says of it."""
+    z2 = body.mass * body.cm**2
+    own = [body.mass] * 3 + [body.roll + z2, body.pitch + z2, body.yaw]
+    kept = [q for q in points if all(q["matrix"][i][i] + own[i] > 0 for i in range(6))]
+    gone = [q["frequency_hz"] for q in points if q not in kept]
+    if not gone:
+        return points, ""
+    return kept, (
+        f" WAMIT's added mass at {len(gone)} periods ({min(gone):.3g}–{max(gone):.3g} Hz) is "
+        "negative beyond the platform's own inertia (a moonpool's or gap's resonance): "
+        "those periods are left out of the table, which is interpolated across them."
+    )
 
 
 class _Body:

@@ -310,9 +310,23 @@ class Platform(_Strict):
             (f"added_mass_by_frequency[{n}].matrix", point.matrix)
             for n, point in enumerate(self.added_mass_by_frequency)
         ]
+        # the platform's own inertia on the diagonal, at the PRP: a frequency's added mass
+        # may be negative (a moonpool's sloshing near its resonance: the ITI barge's WAMIT
+        # table), not the body's whole inertia
+        z2 = self.mass_kg * self.cm_m**2
+        own = [self.mass_kg] * 3 + [
+            self.inertia_roll_kgm2 + z2,
+            self.inertia_pitch_kgm2 + z2,
+            self.inertia_yaw_kgm2,
+        ]
         for name, m in matrices:
-            if any(m[i][i] < 0 for i in range(6)) and name != "stiffness":
+            if name == "added_mass" and any(m[i][i] < 0 for i in range(6)):
                 raise ValueError(f"{name}: an added mass on the diagonal is negative")
+            if name.startswith("added_mass_by") and any(m[i][i] + own[i] <= 0 for i in range(6)):
+                raise ValueError(
+                    f"{name}: an added mass on the diagonal is negative beyond the platform's "
+                    "own mass or inertia (the body's whole inertia would be negative)"
+                )
             for i in range(6):
                 for j in range(i):
                     a, b = m[i][j], m[j][i]
