@@ -29,8 +29,8 @@ HELP = {
     "no_plots": "Write no figures.",
     "strict": "Exit 1 on warn as well as fail.",
     "spec": "Turbine file: a wtvib spec, a windIO turbine YAML, an OpenFAST deck (.fst or "
-    "ElastoDyn .dat), or another tool's Campbell results (.cmb, .csv, .lin, a linearisation "
-    "folder).",
+    "ElastoDyn .dat), a HAWC2 model (.htc), or another tool's Campbell results (.cmb, .csv, "
+    ".lin, a linearisation folder).",
     "check.out": "Folder for the figures (default: the current directory).",
     "detail": "Print the tables of modes and checks too.",
     "campbell_csv": "Write the Campbell data (each judged mode's frequency and damping per "
