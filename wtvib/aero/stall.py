@@ -293,7 +293,9 @@ def _rule(spec: "Spec") -> "Rule":
             if spec.aerodynamics.induction == "equilibrium"
             else ("frozen induction")
         )
-        inflow = f"the aerodynamics' polars at the BEM operating points ({how})"
+        inflow = (
+            f"the aerodynamics' polars at the BEM operating points ({how}); {damping_words(spec)}"
+        )
     else:
         assert ae is not None
         polar = "the spec's polar" if ae.polar else "the built-in thin-aerofoil/flat-plate polar"
@@ -301,7 +303,7 @@ def _rule(spec: "Spec") -> "Rule":
     return Rule(
         "total modal damping (aerodynamic + structural) > 0; warn when the aerodynamic part "
         "is negative",
-        "Hau ch. 7.2.3 (stall-induced vibration); quasi-steady damping c(ψ), M. H. Hansen, "
+        "Hau ch. 7.2.3 (stall-induced vibration); blade-element damping c(ψ), M. H. Hansen, "
         "Wind Energy 10 (2007) 551–577; " + inflow,
     )
 
@@ -409,12 +411,29 @@ class StallResults:
     points."""
 
     curves: "dict[str, list[Point]]"
+    damping: str = "quasi-steady damping"  # how the curves' damping was computed, in words
+
+
+def damping_words(spec: "Spec") -> str:
+    """How the stall check's damping is computed, as the figure's title says it: Hau's
+    quasi-steady blade elements, or the damping in operation of the aerodynamics block with
+    the lift's lags it has (shed wake, separation)."""
+    aero = spec.aerodynamics
+    if aero is None:
+        return "quasi-steady damping"
+    lags = [
+        w for w, on in (("shed wake", aero.shed_wake), ("dynamic stall", aero.dynamic_stall)) if on
+    ]
+    return "damping in operation" + (
+        f", lift lagged ({' and '.join(lags)})" if lags else ", quasi-steady lift"
+    )
 
 
 def analyse(spec: "Spec", ctx: Context) -> Analysis:
     """``blade.stall.flap1`` and ``blade.stall.edge1``, with the damping curves they judge."""
     found, curves = judge(spec, list(ctx.modes))
-    return Analysis(checks=tuple(found), results=StallResults(curves) if curves else None)
+    results = StallResults(curves, damping_words(spec)) if curves else None
+    return Analysis(checks=tuple(found), results=results)
 
 
 SUBSYSTEM = Subsystem(

@@ -198,9 +198,7 @@ def stall_damping_plot(
     fig = Figure(figsize=(7.2, 4.2), dpi=FIGURE_DPI)
     axes = fig.subplots(len(curves), 1, sharex=True, squeeze=False)[:, 0]
     judged = headline.of_checks(checks, tuple(c.id for c in curves.values()), {})
-    title = (
-        f"{turbine}\nstall-induced vibration: quasi-steady damping (Hau ch. 7.2.3): {judged.words}"
-    )
+    title = f"{turbine}\nstall-induced vibration: {result.damping} (Hau ch. 7.2.3): {judged.words}"
     heading = fit(title, 7.0, 10)
     headline.stamp(fig, title.replace("\n", " — "), judged)
     fixed_layout(fig, top=0.47 + title_height(heading, 10), gap=0.3)  # each panel's title
