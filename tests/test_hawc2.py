@@ -224,3 +224,22 @@ def test_a_model_in_a_folder_below_htc_reads_its_files_from_the_model_s_folder(m
     there, here = load(below), load(model)
     assert there.rotor.speed.max_rpm == here.rotor.speed.max_rpm
     assert there.blade.mass_kg == here.blade.mass_kg
+
+
+def test_a_shaft_with_its_inertia_at_one_end_turns_the_blades_against_it(model):
+    """The shaft's masses all at its hub end (the IEA-15's generator inertia moved there):
+    no shaft torsion to model — the blades against the one inertia, said so."""
+    from wtvib import audit
+    from wtvib.importers import load
+
+    bodies = model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
+    _edit(
+        bodies,
+        "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+        "concentrated_mass  2  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+    )
+    spec = load(model)
+    assert [c.name for c in spec.drivetrain.chain] == ["blades", "hub"]
+    assert spec.drivetrain.chain[1].inertia_kgm2 == 969_952 + 1_836_784
+    assert any("at one end only" in a for a in spec.assumptions)
+    assert audit.run(spec).verdict in ("pass", "warn", "fail")

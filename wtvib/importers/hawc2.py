@@ -506,22 +506,22 @@ def _drivetrain(
     """The drive train: the blades on a rigid hub, the shaft's torsion to the generator;
     and what the import made of a rigid shaft or of a shaft with no generator inertia."""
     shaft_k = _shaft_stiffness(shaft)
+    if not hub_inertia + gen_inertia > 0:
+        raise SpecError(
+            f"body {shaft.name}: no inertia about the shaft (no concentrated_mass with one): "
+            "the hub and generator a drive train turns are missing",
+            line=shaft.block.line,
+            source=str(shaft.block.file),
+        )
+    blades = {"name": "blades", "inertia_kgm2": j_blades}
     note: str | None
-    if gen_inertia <= 0 or hub_inertia <= 0:
+    if gen_inertia <= 0 or hub_inertia <= 0:  # everything at one end: nothing to twist
         inertia = hub_inertia + gen_inertia
-        if not inertia > 0:
-            raise SpecError(
-                f"body {shaft.name}: no inertia about the shaft (no concentrated_mass with "
-                "one): the hub and generator a drive train turns are missing",
-                line=shaft.block.line,
-                source=str(shaft.block.file),
-            )
         note = (
             f"Drive train: the shaft {shaft.name} carries its inertia at one end only "
             f"({inertia:.4g} kg·m²): the blades against that inertia, no shaft torsion."
         )
-        chain = [{"name": "blades", "inertia_kgm2": j_blades},
-                 {"name": "hub", "inertia_kgm2": inertia}]  # fmt: skip
+        chain = [blades, {"name": "hub", "inertia_kgm2": inertia}]
         return {"chain": chain, "shafts": [{"stiffness_nm_rad": None}]}, note
     torsion_hz = math.sqrt(shaft_k * (1 / hub_inertia + 1 / gen_inertia)) / (2 * math.pi)
     rigid = torsion_hz > RIGID_SHAFT_HZ
@@ -539,7 +539,7 @@ def _drivetrain(
         else {"stiffness_nm_rad": shaft_k, "damping_nms_rad": shaft_k * shaft.damping[5]},
     ]
     chain = [
-        {"name": "blades", "inertia_kgm2": j_blades},
+        blades,
         {"name": "hub", "inertia_kgm2": hub_inertia},
         {"name": "generator", "inertia_kgm2": gen_inertia},
     ]
