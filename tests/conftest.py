@@ -54,6 +54,29 @@ ROOT = Path(__file__).resolve().parents[1]
 TURBINES = ROOT / "turbines"
 SHARED = ROOT.parent / "shared"
 
+#: The IEA-22-280-RWT repository's published stability results (tests/data/campbell/
+#: SOURCES.md): HAWC2's ``hawc2.yaml``, OpenFAST's ``openfast_unsteady_aero_rotoronly.yaml``.
+IEA22_STABILITY = ROOT / "tests" / "data" / "campbell" / "hawcstab2" / "iea22"
+
+
+def iea22_stability(name: str) -> dict[float, tuple[Any, Any]]:
+    """One of the IEA-22's stability files (``hawc2`` or ``openfast_unsteady_aero_rotoronly``)
+    by wind [m/s]: its unnamed modes' undamped frequencies [Hz] and damping ratios."""
+    import gzip
+
+    import numpy as np
+    import yaml
+
+    text = gzip.decompress((IEA22_STABILITY / f"{name}.yaml.gz").read_bytes())
+    return {
+        float(c["configuration"]["wind_speed"]): (
+            np.array(c["outputs"]["Frequency_undamped"]),
+            np.array(c["outputs"]["Damping_ratio"]),
+        )
+        for c in yaml.safe_load(text)["cases"]
+    }
+
+
 #: The files of the NREL 5-MW deck set (../shared/reference/NREL5MW) the importer reads from
 #: NREL-5MW.fst: the ones the importer fuzzing mutates.
 NREL_DECK_FILES = (

@@ -58,34 +58,18 @@ def iea22(tmp_path_factory: pytest.TempPathFactory) -> Path:
 @pytest.fixture(scope="module")
 def hs2_iea22() -> dict[float, tuple[np.ndarray, np.ndarray]]:
     """HAWC2's rotor modes of the IEA-22 by wind: undamped frequency [Hz], damping ratio."""
-    import yaml
+    from tests.conftest import iea22_stability
 
-    text = gzip.decompress((DATA / "campbell/hawcstab2/iea22/hawc2.yaml.gz").read_bytes())
-    cases = yaml.safe_load(text)["cases"]
-    return {
-        float(c["configuration"]["wind_speed"]): (
-            np.array(c["outputs"]["Frequency_undamped"]),
-            np.array(c["outputs"]["Damping_ratio"]),
-        )
-        for c in cases
-    }
+    return iea22_stability("hawc2")
 
 
 @pytest.fixture(scope="module")
 def openfast_iea22() -> dict[float, tuple[np.ndarray, np.ndarray]]:
     """OpenFAST's rotor modes of the IEA-22 (unsteady aerodynamics, rotor only; the same
     repository) by wind: undamped frequency [Hz], damping ratio."""
-    import yaml
+    from tests.conftest import iea22_stability
 
-    path = DATA / "campbell/hawcstab2/iea22/openfast_unsteady_aero_rotoronly.yaml.gz"
-    cases = yaml.safe_load(gzip.decompress(path.read_bytes()))["cases"]
-    return {
-        float(c["configuration"]["wind_speed"]): (
-            np.array(c["outputs"]["Frequency_undamped"]),
-            np.array(c["outputs"]["Damping_ratio"]),
-        )
-        for c in cases
-    }
+    return iea22_stability("openfast_unsteady_aero_rotoronly")
 
 
 @pytest.fixture(scope="module")

@@ -6,7 +6,6 @@ checked against Hodges & Pierce in test_aeroelastic.py); Wagner's indicial lift,
 starts at half the steady value (Leishman, *Principles of Helicopter Aerodynamics*, §8.5).
 """
 
-import subprocess
 from pathlib import Path
 
 import numpy as np
@@ -123,8 +122,6 @@ def test_a_separation_that_follows_at_once_leaves_the_shed_wakes_lag(nrel):
 # ---------------------------------------------------------------------------------------
 # Against the reference codes: the IEA-22's published aeroelastic Campbell data
 
-IEA22 = "IEAWindSystems/IEA-22-280-RWT"
-
 #: The first three aeroelastic modes (the first flap triple) of the IEA-22-280-RWT: mean
 #: damping ratio at each wind [m/s]. HAWC2 (HAWCStab2): outputs/02_stability/HAWC2/
 #: hawc2.yaml; OpenFAST with unsteady aerodynamics, rotor only: outputs/02_stability/
@@ -145,28 +142,20 @@ IEA22_FLAP1_MEAN = {
 
 
 def test_iea22_reference_means_are_the_files_numbers():
-    """The table above, recomputed from the repository where it is fetched (skipped
-    elsewhere: the numbers are stored)."""
-    repo = Path("/work/.mirror/IEAWindSystems+IEA-22-280-RWT/repo")
-    if not repo.exists():
-        pytest.skip(f"{IEA22} not fetched here; its numbers are stored in this test")
-    yaml = pytest.importorskip("yaml")
+    """The table above, recomputed from the repository's two files (in tests/data since
+    they are read for the HAWC2 model's tests too, test_hawc2.py)."""
+    from tests.conftest import iea22_stability
 
-    def means(path: str) -> dict[float, float]:
-        text = subprocess.run(
-            ["git", "-C", str(repo), "show", f"HEAD:{path}"], capture_output=True, text=True
-        ).stdout
+    def means(name: str) -> dict[float, float]:
         out = {}
-        for case in yaml.safe_load(text)["cases"]:
-            f = case["outputs"]["Frequency_undamped"][:3]
-            z = case["outputs"]["Damping_ratio"][:3]
-            out[case["configuration"]["wind_speed"]] = float(
-                np.mean([zi for fi, zi in zip(f, z, strict=True) if fi > 0.01])
+        for wind, (freq, zeta) in iea22_stability(name).items():
+            out[wind] = float(
+                np.mean([z for f, z in zip(freq[:3], zeta[:3], strict=True) if f > 0.01])
             )
         return out
 
-    hawc2 = means("outputs/02_stability/HAWC2/hawc2.yaml")
-    openfast = means("outputs/02_stability/OpenFAST/openfast_unsteady_aero_rotoronly.yaml")
+    hawc2 = means("hawc2")
+    openfast = means("openfast_unsteady_aero_rotoronly")
     for wind, (h, o) in IEA22_FLAP1_MEAN.items():
         assert hawc2[wind] == pytest.approx(h, abs=1e-4)
         assert openfast[wind] == pytest.approx(o, abs=1e-4)
