@@ -199,3 +199,40 @@ def test_nings_residual_in_the_momentum_and_propeller_brake_regions():
         np.sin(-0.1) * 0.8 - np.cos(-0.1) / 5 * 0.95,
     ]
     np.testing.assert_allclose(got, expected, rtol=1e-14)
+
+
+GIVEN = """
+  control:
+    operating_points: {{wind_m_s: [5, 8, 11, 15, 20], rpm: [18, 26, 30, 30, {top}],
+                        pitch_deg: [2, 2, 3, 9, 16], source: a published table}}
+"""
+
+
+def test_given_operating_points_are_solved_at_and_checked_against_the_speeds(write_spec):
+    """A model's own operating points replace the controller's schedule: the BEM is solved
+    at exactly those winds, speeds and pitches; the rated wind is the lowest at the top
+    speed. A point outside the rotor's operating speeds is a one-line input error naming
+    the point (file, line, field)."""
+    from wtvib.errors import SpecError
+    from wtvib.spec import load as load_spec
+
+    small = SMALL.replace("speed: {fixed_rpm: 30}", "speed: {min_rpm: 15, max_rpm: 30}")
+    aero = AERO.format(regulation="pitch").split("  control:")[0]
+    spec = load_spec(write_spec(small + aero + GIVEN.format(top=30)))
+    sch = bem.schedule(spec)
+    np.testing.assert_array_equal(sch.wind, [5, 8, 11, 15, 20])
+    np.testing.assert_allclose(sch.rpm, [18, 26, 30, 30, 30], rtol=1e-12)
+    np.testing.assert_allclose(sch.pitch_deg, [2, 2, 3, 9, 16], rtol=1e-12)
+    assert sch.rated_wind == 11.0
+    assert sch.region == ("partial load",) * 2 + ("full load",) * 3
+    assert any("a published table" in a for a in sch.assumptions)
+    # the region-2 tip-speed ratio: the median of the points below the top speed
+    lam = np.array([18, 26]) * np.pi / 30 * 20.0 / np.array([5.0, 8.0])
+    assert sch.tip_speed_ratio == pytest.approx(float(np.median(lam)), rel=1e-12)
+    with pytest.raises(SpecError) as err:
+        load_spec(write_spec(small + aero + GIVEN.format(top=45)))
+    assert "operating point 5 turns at 45 rpm, outside the rotor's operating speeds" in str(
+        err.value
+    )
+    assert err.value.path == "aerodynamics.control.operating_points.rpm.4"
+    assert err.value.line is not None

@@ -243,3 +243,41 @@ def test_a_shaft_with_its_inertia_at_one_end_turns_the_blades_against_it(model):
     assert spec.drivetrain.chain[1].inertia_kgm2 == 969_952 + 1_836_784
     assert any("at one end only" in a for a in spec.assumptions)
     assert audit.run(spec).verdict in ("pass", "warn", "fail")
+
+
+def test_the_model_s_own_operating_points_and_twisting_blade_are_read(model):
+    """The .opt's points are the audit's operating points (its wind, pitch and rotor speed:
+    what HAWCStab2 was run at), the pc file's fourth column the aerofoils' C_M, the st file's
+    x_sh the shear centres (HAWC2's blade x towards the leading edge: importers.hawc2.
+    _shear_centre) — the IEA-15's at 25–37 % of the chord over its outer half, near the
+    quarter chord as a blade's are."""
+    import numpy as np
+
+    from wtvib.aero import bem
+    from wtvib.importers import load
+
+    opt = np.loadtxt(model.parents[1] / "data" / "IEA_15MW_RWT_Onshore.opt", skiprows=1)
+    spec = load(model)
+    aero = spec.aerodynamics
+    assert aero is not None
+    pts = aero.control.operating_points
+    assert pts is not None and pts.source == "IEA_15MW_RWT_Onshore.opt"
+    np.testing.assert_array_equal(pts.wind_m_s, opt[:, 0])
+    np.testing.assert_array_equal(pts.rpm, opt[:, 2])
+    np.testing.assert_array_equal(pts.pitch_deg, opt[:, 1])
+    sch = bem.schedule(spec)
+    np.testing.assert_array_equal(sch.wind, opt[:, 0])
+    np.testing.assert_allclose(sch.rpm, opt[:, 2], rtol=1e-12)
+    # the rated wind: the lowest at the top speed (7.56 rpm from 10.7 m/s), full load on
+    assert sch.rated_wind == 10.7
+    assert [r == "full load" for r in sch.region] == list(opt[:, 0] >= 10.7)
+    assert all(a.cm is not None for a in aero.airfoils.values())
+    half = 0.5 * aero.stations.radius_m[-1]
+    stations = zip(aero.stations.airfoil, aero.stations.radius_m, strict=True)
+    cambered = [aero.airfoils[n] for n, r in stations if r > half]
+    assert all(a.cm is not None and min(a.cm) < -0.05 for a in cambered)
+    centre = np.asarray(aero.stations.shear_centre_chord)
+    r = np.asarray(aero.stations.radius_m) / aero.stations.radius_m[-1]
+    outer = (r > 0.5) & (r < 0.95)
+    assert np.all((centre[outer] > 0.24) & (centre[outer] < 0.38)), centre[outer]
+    assert bem.rotor(spec).torsion is not None

@@ -59,6 +59,7 @@ TESTS: dict[str, tuple[str, ...]] = {
     "judge.closeness": (),
     "numerics.rigid": ("tests/test_coupled.py",),
     "aero.bem": ("tests/validation/test_aerodynamics.py",),
+    "aero.torsion": ("tests/test_bem.py", "tests/validation/test_hawc2.py"),
     "aero.aerodamping": ("tests/validation/test_aerodynamics.py",),
     "numerics.unsteady": ("tests/validation/test_unsteady.py", "tests/test_aerodamping.py"),
     "aero.tuned_damper": ("tests/validation/test_tuned_damper.py",),

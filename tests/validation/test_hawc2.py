@@ -212,25 +212,44 @@ def _ccblade(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray
     return pitch, tsr, table("Power coefficient"), table("Thrust coefficient")
 
 
-def test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code(iea15):
-    """wtvib's steady BEM of the HAWC2 model's rotor, held rigid, at HAWCStab2's operating
-    points (its wind, pitch and speed: the model's own .opt) against CCBlade's BEM of the
-    same rotor (the ROSCO toolbox's performance table in the IEA-15 repository, also
-    rigid): thrust within +1 … +5 % and power within +2 … +7 % below rated — wtvib's
-    rotor is planar, CCBlade's coned by 4° and tilted by 6°, which takes the few per cent
-    off. HAWCStab2's own steady state at the same points lies 7 % (7 m/s) to 15 % (10 m/s)
-    and 29 % (15 m/s) below CCBlade's thrust: its blade deflects and twists towards feather
-    under load, which neither rigid BEM does. The gap between wtvib's steady state and
-    HAWCStab2's is the deformed rotor, not wtvib's BEM."""
+def test_the_iea15_steady_state_twists_as_hawcstab2_s(iea15):
+    """wtvib's steady BEM of the HAWC2 model's rotor at HAWCStab2's operating points (its
+    wind, pitch and speed: the model's own .opt), three codes side by side:
+
+    * held rigid in torsion (``steady_torsion`` false) it is CCBlade's BEM of the same rotor
+      (the ROSCO toolbox's performance table in the IEA-15 repository, also rigid): thrust
+      within +1 … +5 % and power within +2 … +7 % below rated — wtvib's rotor is planar,
+      CCBlade's coned by 4° and tilted by 6°, which takes the few per cent off. Both rigid
+      rotors overshoot HAWCStab2's own steady state (the .opt's last columns) by 7 % (7 m/s)
+      to 15 % (10 m/s) and 29 % (15 m/s) in thrust — wtvib's rigid one by +10 … +71 % in
+      thrust and up to +95 % in power from 5 m/s to cut-out (measured);
+    * twisting under its aerodynamic moment (:mod:`wtvib.aero.torsion`: the pc file's C_M,
+      the st file's shear centres, G·I_p) it is HAWCStab2's: thrust +1.9 … +9.9 %, power
+      −9 … +12 % at 5–25 m/s (measured), the tip 1.5–5° nose-down — what is left is the
+      deflection and coning HAWCStab2 also has and wtvib's planar rotor has not. The gap
+      between the rigid rotors and HAWCStab2 is the blade's torsion (as the IEA-22's
+      maintainers answer a user whose ElastoDyn model, rigid in torsion, thrusts 20 % above
+      BeamDyn's: IEAWindSystems/IEA-22-280-RWT issue 99)."""
     from wtvib.aero import bem
+    from wtvib.spec import Spec
 
     pitch, tsr, cp, ct = _ccblade(DATA / "performance" / "Cp_Ct_Cq.IEA15MW.txt.gz")
     opt_file = DATA / "campbell" / "hawcstab2" / "iea15" / "operation_1_25_windspeed.opt.gz"
     with gzip.open(opt_file, "rt") as text:
         opt = np.loadtxt(text, skiprows=1)
+    spec = importers.load(iea15)
+    assert spec.aerodynamics is not None
+    rigid_spec = spec.model_copy(
+        update={"aerodynamics": spec.aerodynamics.model_copy(update={"steady_torsion": False})}
+    )
+
+    def steady(s: Spec, rows: np.ndarray) -> "bem.Solution":
+        wind, pitch_deg, rpm = rows[:, 0], rows[:, 1], rows[:, 2]
+        return bem.solve(bem.rotor(s), wind, rpm * np.pi / 30, np.radians(pitch_deg))
+
     rows = opt[[int(np.argmin(np.abs(opt[:, 0] - v))) for v in (7.0, 8.0, 9.0, 10.0, 15.0)]]
     wind, pitch_deg, rpm = rows[:, 0], rows[:, 1], rows[:, 2]
-    sol = bem.solve(bem.rotor(importers.load(iea15)), wind, rpm * np.pi / 30, np.radians(pitch_deg))
+    sol = steady(rigid_spec, rows)
     radius = 120.97  # the table's normalisation: the IEA-15's rotor diameter 241.94 m
     q = 0.5 * 1.225 * np.pi * radius**2 * wind**2
     lam = rpm * np.pi / 30 * radius / wind
@@ -257,6 +276,16 @@ def test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code(iea15):
     hs2 = rows[:, 4] * 1e3 / thrust_cc - 1  # HawcStab2's thrust [kN]
     assert -0.10 < hs2[0] < -0.04 and -0.18 < hs2[3] < -0.12 and hs2[4] < -0.25
     assert np.all(np.diff(hs2) < 0)  # the more load, the more the blade gives
+    # the whole operating range, against HAWCStab2's own steady state
+    turning = opt[opt[:, 0] >= 5.0]
+    hs2_thrust, hs2_power = turning[:, 4] * 1e3, turning[:, 3] * 1e3
+    twisting, held = steady(spec, turning), steady(rigid_spec, turning)
+    assert twisting.elastic_twist is not None
+    assert np.all(np.abs(twisting.thrust / hs2_thrust - 1) < 0.12)
+    assert np.all(np.abs(twisting.power / hs2_power - 1) < 0.14)
+    assert np.max(held.thrust / hs2_thrust - 1) > 0.6 and np.max(held.power / hs2_power) > 1.8
+    tip = np.degrees(twisting.elastic_twist[:, -1])
+    assert np.all(tip < -1.0) and np.all(tip > -6.0)  # nose-down, by degrees
 
 
 @pytest.fixture(scope="module")
@@ -356,17 +385,20 @@ def test_the_iea22_damping_against_hawc2(iea22, hs2_iea22):
     aeroelastic modes of the rotor (the same repository): its first three modes are the flap
     triple, the next two the first edgewise pair, the sixth the collective edge (at 7 m/s
     and above HAWC2 reports one flap mode at 0 Hz, ζ = 1 — not found — left out of its
-    mean). Measured here:
+    mean). wtvib audits at the model's own operating points (its .opt) with the blades
+    twisting under load. Measured here:
 
-    * the flap triple's mean damping −0.16 … +0.05 from HAWC2's at 4–20 m/s (0.27 against
-      0.35 at 4 m/s, 0.86 against 0.82 at 12 m/s);
-    * the collective edge within ±50 % at 4, 6, 15 m/s (−3 %, +25 %, +18 %);
-    * the edgewise pair within a factor 0.6–1.6 at 4, 6, 8 and 20 m/s (−35 … +52 %);
-      OPEN near rated: 2.2–6.4 times HAWC2's at 10 and 12 m/s, where HAWC2's edge damping
-      falls to 0.7–4 % and wtvib's peaks — as against HAWCStab2's IEA-15 (4.2 times at
-      10 m/s, test_the_iea15_aeroelastic_damping_against_hawcstab2): two turbines, two
-      sources, one gap; wtvib's rigid rotor's steady state and its blade without torsion
-      are where the two models part."""
+    * the flap triple's mean damping within ±0.015 of HAWC2's at 4–8 m/s (0.340 against
+      0.347 at 4 m/s), −0.01 … +0.11 at 10–20 m/s (the +0.11 where HAWC2's collective is
+      missing from its mean) — at wtvib's own schedule and rigid blades it was 0.08 low at
+      4 m/s (the region-2 tip-speed ratio: 8.4 wtvib's optimum, 9.2 the model's);
+    * the collective edge within ±50 % at 4, 6, 15 m/s (−16 %, −5 %, +12 %);
+    * the edgewise pair within a factor 0.6–1.7 at 4, 6, 8 and 20 m/s (0.70–1.59);
+      OPEN near rated: 1.6–6.5 times HAWC2's at 10 and 12 m/s, where HAWC2's edge damping
+      falls to 0.7–4 % and wtvib's peaks — as against HAWCStab2's IEA-15 (test_the_iea15_
+      aeroelastic_damping_against_hawcstab2): two turbines, two sources, one gap; the
+      steady state is no longer where the models part (test_the_iea15_steady_state_twists_
+      as_hawcstab2_s), the blade's own torsion in its edgewise mode is left."""
     report = audit.run(importers.load(iea22))
     ops = {m.id: m.operating for m in report.modes if m.judged and m.operating is not None}
 
@@ -380,17 +412,18 @@ def test_the_iea22_damping_against_hawc2(iea22, hs2_iea22):
         freq, zeta = hs2_iea22[wind]
         found = [float(z) for f, z in zip(freq[:3], zeta[:3], strict=True) if f > 0.1]
         mean = float(np.mean([ours(n, wind) for n in flap]))
-        assert -0.17 <= mean - np.mean(found) <= 0.06, (wind, mean, found)
+        band = (-0.03, 0.03) if wind <= 8.0 else (-0.05, 0.13)
+        assert band[0] <= mean - np.mean(found) <= band[1], (wind, mean, found)
     for wind in (4.0, 6.0, 15.0):
         ratio = ours("edge1.collective", wind) / float(hs2_iea22[wind][1][5])
         assert 0.5 <= ratio <= 1.5, (wind, ratio)
     for name, j in (("edge1.backward", 3), ("edge1.forward", 4)):
         for wind in (4.0, 6.0, 8.0, 20.0):
             ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
-            assert 0.6 <= ratio <= 1.6, (name, wind, ratio)
+            assert 0.6 <= ratio <= 1.7, (name, wind, ratio)
         for wind in (10.0, 12.0):  # OPEN, held to what it measures
             ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
-            assert 2.0 <= ratio <= 7.0, (name, wind, ratio)
+            assert 1.4 <= ratio <= 7.0, (name, wind, ratio)
 
 
 def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, openfast_iea22):
@@ -398,10 +431,11 @@ def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, open
     hawc2): OpenFAST's linearisation of the same rotor (unsteady aerodynamics) damps the
     first edgewise pair near rated as HAWC2 does, within a factor 0.4–2.5 of it at 10 and
     12 m/s (0.039/0.026 and 0.016/0.010 against HAWC2's 0.023/0.039 and 0.007/0.014) — so the
-    gap is wtvib's: OPEN, held at 2–4.5 times OpenFAST's (measured 2.5–3.6). The lead, held
+    gap is wtvib's: OPEN, held at 1.5–4.5 times OpenFAST's (measured 1.8–3.5 at the model's
+    operating points with the blades twisting under load; 2.5–3.6 before). The lead, held
     too: both codes' flap roots have moved to 1.4–1.6 Hz at 10 m/s (their natural frequency
     with the lift's lags), away from the edge pair at 0.4–0.65 Hz, where wtvib's stay below
-    0.6 Hz beside it, and with the sections' cross terms zeroed wtvib's edge pair loses its
+    0.8 Hz beside it, and with the sections' cross terms zeroed wtvib's edge pair loses its
     damping near rated (the note on issue 53): the edge pair borrows the flap roots'
     damping through the cross-coupling while they are near."""
     report = audit.run(importers.load(iea22))
@@ -418,7 +452,7 @@ def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, open
         for name, j in (("edge1.backward", 3), ("edge1.forward", 4)):
             of, h2 = float(openfast_iea22[wind][1][j]), float(hs2_iea22[wind][1][j])
             assert 0.4 <= of / h2 <= 2.5, (name, wind, of, h2)
-            assert 2.0 <= ours(name, wind) / of <= 4.5, (name, wind, ours(name, wind), of)
+            assert 1.5 <= ours(name, wind) / of <= 4.5, (name, wind, ours(name, wind), of)
     assert np.all(openfast_iea22[10.0][0][:3] > 1.4)
     flap = ("flap1.backward", "flap1.collective", "flap1.forward")
-    assert max(ours(n, 10.0, "natural") for n in flap) < 0.6
+    assert max(ours(n, 10.0, "natural") for n in flap) < 0.8

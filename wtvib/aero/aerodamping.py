@@ -868,19 +868,60 @@ def _statement(spec: Spec, sch: bem.Schedule) -> str:
     c = spec.aerodynamics.control  # type: ignore[union-attr]
     rpm = sch.rpm
     pitch = sch.pitch_deg
+    given = c.operating_points
     text = (
-        f"Operating points: {len(sch.wind)} winds {sch.wind[0]:g}–{sch.wind[-1]:g} m/s, "
+        (
+            f"Operating points: the model's own {len(sch.wind)} "
+            f"({given.source or 'aerodynamics.control.operating_points'}), "
+            if given is not None
+            else f"Operating points: {len(sch.wind)} winds "
+        )
+        + f"{sch.wind[0]:g}–{sch.wind[-1]:g} m/s, "
         f"{rpm.min():.3g}–{rpm.max():.3g} rpm, pitch {pitch.min():.3g}–{pitch.max():.3g}°; "
         f"region-2 tip-speed ratio {sch.tip_speed_ratio:.3g} ({sch.tsr_source}); "
     )
-    if c.regulation == "pitch" and sch.rated_wind is not None and sch.rated_power:
+    twist = _twist_words(spec, sch)
+    if given is not None:
+        text += (
+            f"rated wind {sch.rated_wind:.3g} m/s (the lowest at the top rotor speed)"
+            if sch.rated_wind is not None
+            else f"{c.regulation} regulation"
+        )
+    elif c.regulation == "pitch" and sch.rated_wind is not None and sch.rated_power:
         text += (
             f"rated wind {sch.rated_wind:.3g} m/s, pitch holding {sch.rated_power / 1e3:,.0f} "
             "kW aerodynamic above it"
         )
     else:
         text += f"{c.regulation} regulation at the fine pitch {c.fine_pitch_deg:g}°"
-    return text + "."
+    return text + "." + twist
+
+
+def _twist_words(spec: Spec, sch: bem.Schedule) -> str:
+    """What the blades' steady twist under load did at the operating points (empty: rigid)."""
+    sol = sch.solution
+    if sol.elastic_twist is None:
+        return ""
+    tip = np.degrees(sol.elastic_twist[:, -1])
+    assert spec.aerodynamics is not None
+    centre = (
+        "the lift's arm about the given shear centres"
+        if spec.aerodynamics.stations.shear_centre_chord is not None
+        else "the shear centre taken at the quarter chord (not given: no lift arm)"
+    )
+    text = (
+        " The blades twist under their steady aerodynamic moment (the polars' C_M about the "
+        f"quarter chord, {centre}, the blade's GJ): at the tip "
+        f"{tip.min():+.2f} … {tip.max():+.2f}° (nose-up positive) over the operating points."
+    )
+    bad = sol.twist_unsettled
+    if bad is not None and bad.any():
+        winds = ", ".join(f"{v:g}" for v in sol.wind[bad])
+        text += (
+            f" At {winds} m/s the twist did not settle (the blade's torsion diverges there): "
+            "solved rigid in torsion at those points."
+        )
+    return text
 
 
 # ---------------------------------------------------------------------------------------
@@ -975,14 +1016,22 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
     # a rotor that draws no power anywhere is an input mistake (speed, pitch or twist), and
     # the damping computed at its operating points describes a rotor nobody builds
     braking = best <= 0
+    unsettled = sol.twist_unsettled is not None and bool(sol.twist_unsettled.any())
     operation = Check(
         f"{NAME}.operation",
         NAME,
-        "warn" if braking else "info",
+        "warn" if braking or unsettled else "info",
         (
             "the rotor draws no power at any operating point (C_p ≤ 0): check its speed, "
             "pitch and twist — the damping in operation below is of that rotor; "
             if braking
+            else ""
+        )
+        + (
+            "the blades' steady twist diverges at "
+            f"{', '.join(f'{v:g}' for v in sol.wind[sol.twist_unsettled])} m/s (torsional "
+            "divergence: check GJ, the shear centre and C_M) — solved rigid there; "
+            if unsettled and sol.twist_unsettled is not None
             else ""
         )
         + f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "

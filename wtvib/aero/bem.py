@@ -12,15 +12,19 @@ points at once (no iteration that can fail to converge).
 The controller's steady schedule (Jonkman et al. 2009 §7): variable speed holds the optimal
 tip-speed ratio between the minimum and rated rotor speed (region 2), then rated speed;
 pitch regulation pitches to feather where the aerodynamic power would exceed rated power /
-efficiency (region 3); stall regulation holds the fine pitch at every wind. Neglected and
-stated: shaft tilt, precone, prebend, blade deflection, wind shear, tower shadow and skewed
-inflow (uniform steady axial wind on a rigid, planar rotor).
+efficiency (region 3); stall regulation holds the fine pitch at every wind — or, where the
+model gives its own operating points (``control.operating_points``: a HAWC2 model's
+operational data file), those. Neglected and stated: shaft tilt, precone, prebend, blade
+bending, wind shear, tower shadow and skewed inflow (uniform steady axial wind on a planar
+rotor). The blades' steady twist under their aerodynamic moment is solved with the flow
+where the blade's torsional stiffness and the polars' C_M are given (:mod:`wtvib.aero.
+torsion`): the operating points of a torsionally soft blade, as HAWCStab2 computes them.
 """
 
 import functools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -28,6 +32,8 @@ from numpy.typing import NDArray
 from ..numerics.modal import ModalError
 from ..spec import Spec
 from ..units import rad_s_to_rpm, rpm_to_rad_s
+from . import torsion
+from .torsion import Torsion
 
 Array = NDArray[np.float64]
 
@@ -66,6 +72,9 @@ class Rotor:
     #: each station's separation time constant T_f0 [half-chord transits] where the lift's
     #: separation point lags (dynamic stall, :mod:`wtvib.numerics.unsteady`); None: it does not
     separation_time: Array | None = None
+    #: the blades' steady twist under their aerodynamic moment (:mod:`wtvib.aero.torsion`);
+    #: None: rigid in torsion
+    torsion: "Torsion | None" = None
 
     def polar(self, alpha: Array) -> tuple[Array, Array]:
         """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
@@ -83,6 +92,14 @@ class Rotor:
         u = 1 - t
         k1 = k + 1
         return tuple(table.take(k) * u + table.take(k1) * t for table in flat)
+
+    def moment(self, w: Array, alpha: Array) -> Array:
+        """Each section's aerodynamic moment about its shear centre per unit length [N·m/m]
+        at relative wind ``w`` and angle of attack ``alpha`` [rad], (K, S)
+        (:func:`wtvib.aero.torsion.moment`); the rotor must have its ``torsion``."""
+        assert self.torsion is not None
+        cl, cd, cm = self._lookup(alpha, (*self._flat, self.torsion.cm.ravel()))
+        return torsion.moment(self.torsion, self.rho, self.chord, w, alpha, cl, cd, cm)
 
     @functools.cached_property
     def separation(self) -> tuple[Array, Array, Array]:
@@ -166,6 +183,9 @@ def _rotor(spec: Spec) -> Rotor:
         )
     st = aero.stations
     hub = spec.blade.structure.hub_radius_m if spec.blade.structure else st.radius_m[0]
+    twisting = None
+    if aero.steady_torsion:
+        twisting = _torsion(spec, grid)
     return Rotor(
         np.asarray(st.radius_m, float),
         np.asarray(st.chord_m, float),
@@ -181,7 +201,43 @@ def _rotor(spec: Spec) -> Rotor:
         np.array([aero.airfoils[n].separation_time for n in st.airfoil], float)
         if aero.dynamic_stall
         else None,
+        twisting,
     )
+
+
+def _torsion(spec: Spec, grid: Array) -> Torsion | None:
+    """What the blades' steady twist needs (:mod:`wtvib.aero.torsion`): None where the blade
+    has no torsional stiffness (blade.structure.gj_nm2) or nothing twists it (no polar's cm,
+    no shear centre off the quarter chord)."""
+    aero = spec.aerodynamics
+    s = spec.blade.structure
+    assert aero is not None
+    if s is None or s.gj_nm2 is None:
+        return None
+    st = aero.stations
+    offset = st.shear_centre_chord
+    if all(aero.airfoils[n].cm is None for n in st.airfoil) and (
+        offset is None or not any(x != 0.25 for x in offset)
+    ):
+        return None
+    cm = np.zeros((len(st.airfoil), len(grid)))
+    for i, name in enumerate(st.airfoil):
+        p = aero.airfoils[name]
+        if p.cm is not None:
+            a = np.asarray(p.alpha_deg, float)
+            c = np.asarray(p.cm, float)
+            a_ext = np.concatenate([a[-1:] - 360.0, a, a[:1] + 360.0])
+            cm[i] = np.interp(grid, a_ext, np.concatenate([c[-1:], c, c[:1]]))
+    radius = np.asarray(st.radius_m, float)
+    chord = np.asarray(st.chord_m, float)
+    arm = np.zeros_like(chord) if offset is None else (np.asarray(offset) - 0.25) * chord
+    span = np.asarray(s.span_m, float)
+    gj = np.asarray(s.gj_nm2, float)
+    root = s.hub_radius_m if s.hub_radius_m > 0 else float(radius[0])
+    root = min(root, float(radius[0]))
+    at = np.interp(radius - root, span, gj)
+    flex = torsion.flexibility(radius, root, at, float(gj[0]), s.pitch_drive_nm_rad)
+    return Torsion(flex, arm, cm)
 
 
 @dataclass(frozen=True)
@@ -201,6 +257,12 @@ class Solution:
     thrust: Array  # (K,) [N]
     torque: Array  # (K,) [N·m]
     converged: NDArray[np.bool_]  # (K, S): a bracketed root was found
+    #: the blades' steady elastic twist (K, S) [rad], nose-up positive (the angle of attack
+    #: grows by it); None: rigid in torsion
+    elastic_twist: Array | None = None
+    #: (K,): points where the steady twist did not settle (torsional divergence), solved
+    #: rigid there
+    twist_unsettled: NDArray[np.bool_] | None = None
 
     @property
     def power(self) -> Array:
@@ -352,7 +414,59 @@ def solve(
     all stations and points at once; ``motion``: every section moving at (v_n, v_t) [m/s]
     (downwind, in the direction of rotation), its momentum balance solved in the flow it
     meets — V − v_n axially, Ωr + v_t in the rotor plane — as AeroDyn's BEMT takes a
-    blade's own velocity into its inflow (the induction in equilibrium with the motion)."""
+    blade's own velocity into its inflow (the induction in equilibrium with the motion).
+    With the rotor's ``torsion`` the blades twist under their moment: the steady twist is
+    solved with the flow (:func:`_twisted`)."""
+    if r.torsion is not None:
+        return _twisted(r, wind, omega, pitch, motion)
+    return _solve(r, wind, omega, pitch, motion)
+
+
+#: The steady twist's Newton rounds at most, its step tolerance [rad], and the twist [rad]
+#: beyond which a point is taken as torsionally divergent (solved rigid there, said).
+TORSION_ROUNDS, TORSION_TOLERANCE, TORSION_LIMIT = 12, 1e-7, math.radians(30.0)
+
+
+def _twisted(
+    r: Rotor, wind: Array, omega: Array, pitch: Array, motion: tuple[float, float]
+) -> Solution:
+    """The BEM solution with the blades' steady elastic twist θ = F·m (:mod:`wtvib.aero.
+    torsion`): Newton's method on θ − F·m(α(θ)) with each section's ∂m/∂α, all points at
+    once; a point whose twist does not settle within TORSION_ROUNDS or passes
+    TORSION_LIMIT is solved rigid."""
+    t = r.torsion
+    assert t is not None
+    h = math.radians(SLOPE_STEP_DEG)
+    elastic = np.zeros((len(np.atleast_1d(wind)), len(r.radius)))
+    eye = np.eye(len(r.radius))
+    settled = np.zeros(len(elastic), dtype=bool)
+    for _ in range(TORSION_ROUNDS):
+        sol = _solve(r, wind, omega, pitch, motion, elastic)
+        m = r.moment(sol.w, sol.alpha)
+        dm = (r.moment(sol.w, sol.alpha + h) - r.moment(sol.w, sol.alpha - h)) / (2 * h)
+        residual = elastic - m @ t.flexibility.T
+        jac = eye[None] - t.flexibility[None] * dm[:, None, :]
+        step = np.linalg.solve(jac, residual[..., None])[..., 0]
+        elastic = elastic - step
+        settled = np.max(np.abs(step), axis=1) <= TORSION_TOLERANCE
+        if settled.all():
+            break
+    wild = ~settled | ~np.all(np.isfinite(elastic), axis=1)
+    wild |= np.max(np.abs(np.where(np.isfinite(elastic), elastic, np.inf)), axis=1) > TORSION_LIMIT
+    elastic[wild] = 0.0
+    sol = _solve(r, wind, omega, pitch, motion, elastic)
+    return replace(sol, elastic_twist=elastic, twist_unsettled=wild)
+
+
+def _solve(
+    r: Rotor,
+    wind: Array,
+    omega: Array,
+    pitch: Array,
+    motion: tuple[float, float] = (0.0, 0.0),
+    elastic: Array | None = None,
+) -> Solution:
+    """:func:`solve` with the blades' twist grown by ``elastic`` (K, S) [rad] (nose-up)."""
     wind = np.asarray(wind, float)
     omega = np.asarray(omega, float)
     pitch = np.asarray(pitch, float)
@@ -362,6 +476,8 @@ def solve(
         raise ModalError("the operating points' wind, rotor speed or pitch is not finite")
     shape = (len(wind), len(r.radius))
     theta = np.broadcast_to((r.twist[None, :] + pitch[:, None]), shape)
+    if elastic is not None:
+        theta = theta - elastic
     axial = wind[:, None] - motion[0]  # the flow each section meets
     spin = omega[:, None] * r.radius[None, :] + motion[1]
     lam = np.maximum(spin / axial, 1e-9)
@@ -488,12 +604,9 @@ def _schedule(spec: Spec) -> Schedule:
     r = rotor(spec)
     c = aero.control
     fine = math.radians(c.fine_pitch_deg)
-    notes = [
-        "steady BEM (Ning 2014 residual; Prandtl tip/hub losses "
-        f"{'on' if r.tip_loss else 'off'}/{'on' if r.hub_loss else 'off'}, Buhl's high-"
-        "induction thrust): uniform steady axial wind on a rigid planar rotor (no tilt, "
-        "precone, prebend, shear or tower shadow)"
-    ]
+    notes = [_method(r)]
+    if c.operating_points is not None:
+        return _given(spec, r, notes)
     if c.tip_speed_ratio is not None:
         tsr, tsr_source = c.tip_speed_ratio, "given as aerodynamics.control.tip_speed_ratio"
     else:
@@ -559,6 +672,56 @@ def _schedule(spec: Spec) -> Schedule:
         rated_wind,
         float(tsr),
         tsr_source,
+        p_rated,
+        tuple(notes),
+    )
+
+
+def _method(r: Rotor) -> str:
+    """The BEM's method and assumptions, in the words the report says them."""
+    rigid = "rigid" if r.torsion is None else "rigid-in-bending (twisting under load)"
+    return (
+        "steady BEM (Ning 2014 residual; Prandtl tip/hub losses "
+        f"{'on' if r.tip_loss else 'off'}/{'on' if r.hub_loss else 'off'}, Buhl's high-"
+        f"induction thrust): uniform steady axial wind on a {rigid} planar rotor (no tilt, "
+        "precone, prebend, shear or tower shadow)"
+    )
+
+
+def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
+    """The schedule at the model's own operating points (``control.operating_points``): the
+    BEM solved there; the rated wind is the lowest given wind at the top rotor speed (pitch
+    regulation), full load from it; the region-2 tip-speed ratio the median of the points
+    below it."""
+    aero = spec.aerodynamics
+    assert aero is not None and aero.control.operating_points is not None
+    c = aero.control
+    pts = c.operating_points
+    assert pts is not None
+    winds = np.asarray(pts.wind_m_s, float)
+    omega = np.asarray(rpm_to_rad_s(np.asarray(pts.rpm, float)))
+    sol = solve(r, winds, omega, np.radians(np.asarray(pts.pitch_deg, float)))
+    top = omega >= omega.max() * (1 - 1e-3)
+    rated_wind = None
+    region = ["stall" if c.regulation == "stall" else "partial load"] * len(winds)
+    if c.regulation == "pitch":
+        rated_wind = float(winds[np.argmax(top)])
+        region = ["full load" if v >= rated_wind else "partial load" for v in winds]
+    below = ~top if np.any(~top) else np.ones_like(top)
+    tsr = float(np.median(omega[below] * r.tip_radius / winds[below]))
+    rated_kw = c.rated_power_kw or spec.turbine.rated_power_kw
+    p_rated = rated_kw * 1e3 / c.generator_efficiency if rated_kw is not None else None
+    where = pts.source or "aerodynamics.control.operating_points"
+    notes.append(
+        f"at the model's {len(winds)} operating points ({where}): its rotor speed and "
+        "pitch, not a schedule computed here"
+    )
+    return Schedule(
+        sol,
+        tuple(region),
+        rated_wind,
+        tsr,
+        "the given operating points' median below rated",
         p_rated,
         tuple(notes),
     )

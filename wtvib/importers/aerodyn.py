@@ -113,8 +113,9 @@ def blade_stations(path: Path, hub_radius: float) -> dict[str, Any]:
     }
 
 
-def polar(path: Path) -> dict[str, list[float]]:
-    """The first table of an AirfoilInfo file: α [deg], C_L, C_D."""
+def polar(path: Path, cm_column: int = 0) -> dict[str, list[float]]:
+    """The first table of an AirfoilInfo file: α [deg], C_L, C_D — and C_M from column
+    ``cm_column`` (1-based: AeroDyn's InCol_Cm; 0: none)."""
     lines = read_text(path).splitlines()
     at = next((i for i, ln in enumerate(lines) if ln.split()[1:2] == ["NumAlf"]), None)
     if at is None:
@@ -127,12 +128,15 @@ def polar(path: Path) -> dict[str, list[float]]:
             line=at + 1,
             source=str(path),
         )
-    rows = _table(path, lines, at + 1, int(count), 3, "aerofoil")
-    return {
+    rows = _table(path, lines, at + 1, int(count), max(3, cm_column), "aerofoil")
+    out = {
         "alpha_deg": [r[0] for r in rows],
         "cl": [r[1] for r in rows],
         "cd": [r[2] for r in rows],
     }
+    if cm_column > 0:
+        out["cm"] = [r[cm_column - 1] for r in rows]
+    return out
 
 
 def negative_drag(name: str, table: dict[str, list[float]]) -> str | None:
@@ -277,7 +281,8 @@ def aerodynamics(
     if max(ids) > len(files):
         raise SpecError(f"BlAFID {max(ids)} exceeds NumAFfiles {len(files)}", source=str(blade))
     used = sorted(set(ids))
-    airfoils: dict[str, dict[str, Any]] = {files[i - 1].stem: polar(files[i - 1]) for i in used}
+    cm = ad.whole("InCol_Cm", low=0) if "InCol_Cm" in ad.values else 0  # 0: no C_M column
+    airfoils: dict[str, dict[str, Any]] = {files[i - 1].stem: polar(files[i - 1], cm) for i in used}
     model = unsteady_model(ad)
     if model in SEPARATION_UA:
         for i in used:

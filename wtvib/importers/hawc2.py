@@ -681,6 +681,14 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
         control["cut_in_wind_m_s"] = float(max(table[0, 0], 1.0))
         control["cut_out_wind_m_s"] = float(table[-1, 0])
         control["fine_pitch_deg"] = float(table[:, 1].min())
+        turning = (table[:, 0] > 0) & (rpm > 0)
+        if np.count_nonzero(turning) >= 2:  # the model's own points, where the rotor turns
+            control["operating_points"] = {
+                "wind_m_s": [float(v) for v in table[turning, 0]],
+                "rpm": [float(v) for v in rpm[turning]],
+                "pitch_deg": [float(v) for v in table[turning, 1]],
+                "source": opt[0].name,
+            }
         return (
             speed,
             control,
@@ -744,6 +752,7 @@ def _aerodynamics(
     radius[0] = max(radius[0], 1e-3)
     twist = -np.interp(r, z_c2, c2[:, 3])
     airfoils, names = _blended(profiles, thick)
+    centre = _shear_centre(body, r, chord)
     wind = top.block("wind")
     density = wind.get("density") if wind is not None else None
     stall = aero.get("dynstall_method")
@@ -764,10 +773,29 @@ def _aerodynamics(
             "chord_m": [float(max(v, 1e-3)) for v in chord],
             "twist_deg": [float(v) for v in twist],
             "airfoil": names,
+            "shear_centre_chord": centre,
         },
         "airfoils": airfoils,
         "control": control,
     }
+
+
+def _shear_centre(body: Body, r: np.ndarray, chord: np.ndarray) -> list[float] | None:
+    """Each aerodynamic station's shear centre as a fraction of its chord from the leading
+    edge: the classical st set's x_sh from the half-chord line c2_def, along the chord (None
+    for a fully populated set: its x_e is the elastic centre, and the shear centre within its
+    stiffness matrix is not read — the quarter chord is taken, said). HAWC2's blade x axis
+    points in the direction of rotation, towards the leading edge: y is downwind (the IEA
+    blades' upwind prebend is negative y) and z towards the tip, so x = y × z points ahead of
+    a blade of a rotor turning clockwise seen from upwind, as HAWC2's turn. The IEA 15 MW's
+    st file agrees: over its outer half its shear centres lie 0.14–0.26 chords ahead of the
+    half chord (at 24–37 % of the chord, near the quarter chord as a blade's are; the other
+    way round they would lie at 63–76 % and the blade diverge in torsion at rated)."""
+    if body.fpm:
+        return None
+    st = body.st
+    ahead = np.interp(r, st[:, 0] - st[0, 0], st[:, ST.index("x_sh")])
+    return [float(v) for v in np.clip(0.5 - ahead / chord, -0.5, 1.5)]
 
 
 #: The separation point's time constant [half-chord transits] of HAWC2's dynamic stall
@@ -790,6 +818,7 @@ def _blended(
     grid = np.linspace(-180.0, 180.0, 361)
     cl = np.array([np.interp(grid, t[:, 0], t[:, 1]) for t in tables])
     cd = np.array([np.interp(grid, t[:, 0], t[:, 2]) for t in tables])
+    cm = np.array([np.interp(grid, t[:, 0], t[:, 3]) for t in tables])
     airfoils: dict[str, Any] = {}
     names = []
     for t in thickness:
@@ -802,15 +831,17 @@ def _blended(
                 else 0
             )
             if len(thick) == 1:
-                c_l, c_d = cl[0], cd[0]
+                c_l, c_d, c_m = cl[0], cd[0], cm[0]
             else:
                 w = (t - thick[j]) / (thick[j + 1] - thick[j]) if thick[j + 1] > thick[j] else 0.0
                 c_l = (1 - w) * cl[j] + w * cl[j + 1]
                 c_d = (1 - w) * cd[j] + w * cd[j + 1]
+                c_m = (1 - w) * cm[j] + w * cm[j + 1]
             airfoils[name] = {
                 "alpha_deg": [float(a) for a in grid],
                 "cl": [float(v) for v in c_l],
                 "cd": [float(max(v, 0.0)) for v in c_d],
+                "cm": [float(v) for v in c_m],
             }
         names.append(name)
     return airfoils, names

@@ -29,24 +29,32 @@ def _field(node: Any, key: str) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(f["grid"], float), np.asarray(f["values"], float)
 
 
-def _polar(foil: Any, v2: bool, source: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """α [deg], C_L, C_D of an aerofoil's first polar (first Reynolds set)."""
+#: An aerofoil's polar: α [deg], C_L, C_D and C_M (None: the file gives none).
+Polar = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray | None]
+
+
+def _polar(foil: Any, v2: bool, source: str) -> Polar:
+    """α [deg], C_L, C_D, C_M of an aerofoil's first polar (first Reynolds set)."""
     p = foil["polars"][0]
     if v2:
         p = p["re_sets"][0]
-        a_l, cl = _field(p, "cl")
-        a_d, cd = _field(p, "cd")
-    else:
-        a_l, cl = _field(p, "c_l")
-        a_d, cd = _field(p, "c_d")
+    keys = ("cl", "cd", "cm") if v2 else ("c_l", "c_d", "c_m")
+    a_l, cl = _field(p, keys[0])
+    a_d, cd = _field(p, keys[1])
+    moment = _field(p, keys[2]) if isinstance(p.get(keys[2]), dict) else None
+    if not v2:  # windIO 1.x tabulates α in radians
         a_l, a_d = np.degrees(a_l), np.degrees(a_d)
+        moment = None if moment is None else (np.degrees(moment[0]), moment[1])
     alpha = np.union1d(np.round(a_l, 6), np.round(a_d, 6))
     alpha = alpha[(alpha >= -180) & (alpha <= 180)]
     if len(alpha) < 2 or not (np.all(np.isfinite(cl)) and np.all(np.isfinite(cd))):
         raise SpecError(
             f"airfoils: {foil.get('name')!r} has no usable polar (α within ±180°)", source=source
         )
-    return alpha, np.interp(alpha, a_l, cl), np.interp(alpha, a_d, cd)
+    cm = None
+    if moment is not None and len(moment[0]) >= 2 and np.all(np.isfinite(moment[1])):
+        cm = np.interp(alpha, moment[0], moment[1])
+    return alpha, np.interp(alpha, a_l, cl), np.interp(alpha, a_d, cd), cm
 
 
 def aerodynamics(
@@ -120,7 +128,7 @@ def aerodynamics(
 def _station_foils(
     stations: np.ndarray,
     placed: list[tuple[float, str]],
-    polars: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]],
+    polars: dict[str, Polar],
 ) -> tuple[list[str], dict[str, dict[str, list[float]]]]:
     """Each station's aerofoil (span fractions ``stations``): the one named at or before
     it, or a linear blend of the two named around it (``a|b@t``), with the tables of every
@@ -137,8 +145,7 @@ def _station_foils(
         if a == b or t < 1e-3 or t > 1 - 1e-3:
             name = a if t <= 0.5 or a == b else b
             if name not in out_foils:
-                al, cl, cd = polars[name]
-                out_foils[name] = _table(al, cl, cd)
+                out_foils[name] = _table(*polars[name])
         else:
             name = f"{a}|{b}@{t:.3f}"
             if name not in out_foils:
@@ -182,22 +189,24 @@ def _control(d: Any, v2: bool) -> tuple[dict[str, Any], str]:
     return control, tsr_key
 
 
-def _table(alpha: np.ndarray, cl: np.ndarray, cd: np.ndarray) -> dict[str, list[float]]:
-    if len(alpha) > MAX_POLAR_POINTS:
-        cl, cd, alpha = (
-            np.interp(_RESAMPLED, alpha, cl),
-            np.interp(_RESAMPLED, alpha, cd),
-            _RESAMPLED,
-        )
-    return {"alpha_deg": alpha.tolist(), "cl": cl.tolist(), "cd": np.maximum(cd, 0.0).tolist()}
-
-
-def _blend(
-    a: tuple[np.ndarray, np.ndarray, np.ndarray],
-    b: tuple[np.ndarray, np.ndarray, np.ndarray],
-    t: float,
+def _table(
+    alpha: np.ndarray, cl: np.ndarray, cd: np.ndarray, cm: np.ndarray | None = None
 ) -> dict[str, list[float]]:
+    if len(alpha) > MAX_POLAR_POINTS:
+        cl, cd = np.interp(_RESAMPLED, alpha, cl), np.interp(_RESAMPLED, alpha, cd)
+        cm = None if cm is None else np.interp(_RESAMPLED, alpha, cm)
+        alpha = _RESAMPLED
+    out = {"alpha_deg": alpha.tolist(), "cl": cl.tolist(), "cd": np.maximum(cd, 0.0).tolist()}
+    if cm is not None:
+        out["cm"] = cm.tolist()
+    return out
+
+
+def _blend(a: Polar, b: Polar, t: float) -> dict[str, list[float]]:
     alpha = np.union1d(a[0], b[0])
     cl = (1 - t) * np.interp(alpha, a[0], a[1]) + t * np.interp(alpha, b[0], b[1])
     cd = (1 - t) * np.interp(alpha, a[0], a[2]) + t * np.interp(alpha, b[0], b[2])
-    return _table(alpha, cl, cd)
+    cm = None
+    if a[3] is not None and b[3] is not None:
+        cm = (1 - t) * np.interp(alpha, a[0], a[3]) + t * np.interp(alpha, b[0], b[3])
+    return _table(alpha, cl, cd, cm)

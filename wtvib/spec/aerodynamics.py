@@ -32,6 +32,12 @@ class AirfoilPolar(_Strict):
     )
     cl: list[float] = Field(description="Lift coefficient C_L. [-]")
     cd: list[float] = Field(description="Drag coefficient C_D. [-]")
+    cm: list[float] | None = Field(
+        None,
+        description="Pitching-moment coefficient C_M about the quarter chord, nose-up "
+        "positive; with the blade's torsional stiffness it twists the blade in operation "
+        "(aerodynamics.steady_torsion); none: 0. [-]",
+    )
     separation_time: float = Field(
         3.0,
         ge=0,
@@ -52,6 +58,8 @@ class AirfoilPolar(_Strict):
             raise ValueError(f"cd must lie within 0 … {MAX_COEFFICIENT:g}")
         if max(abs(c) for c in self.cl) > MAX_COEFFICIENT:
             raise ValueError(f"cl must lie within ±{MAX_COEFFICIENT:g} (a lift coefficient)")
+        if self.cm is not None and max(abs(c) for c in self.cm) > MAX_COEFFICIENT:
+            raise ValueError(f"cm must lie within ±{MAX_COEFFICIENT:g} (a moment coefficient)")
         return self
 
 
@@ -67,6 +75,13 @@ class BladeStations(_Strict):
         "(positive towards feather). [deg]"
     )
     airfoil: list[str] = Field(description="Aerofoil of each station (a key of `airfoils`).")
+    shear_centre_chord: list[float] | None = Field(
+        None,
+        description="Where the section twists about (its shear centre), as a fraction of the "
+        "chord from the leading edge; the lift and drag act at the quarter chord, so a shear "
+        "centre aft of it lets them twist the blade nose-up (aerodynamics.steady_torsion); "
+        "none: at the quarter chord. [-]",
+    )
 
     @model_validator(mode="after")
     def _consistent(self) -> "BladeStations":
@@ -80,6 +95,13 @@ class BladeStations(_Strict):
             raise ValueError("chord_m longer than the rotor radius: a unit mistake?")
         if max(abs(t) for t in self.twist_deg) > 180:
             raise ValueError("twist_deg must lie within ±180 (degrees, not radians × …)")
+        if self.shear_centre_chord is not None and any(
+            not -0.5 <= x <= 1.5 for x in self.shear_centre_chord
+        ):
+            raise ValueError(
+                "shear_centre_chord must lie within -0.5 … 1.5 chords of the leading edge "
+                "(a fraction of the chord, not metres)"
+            )
         return self
 
 
@@ -94,6 +116,29 @@ class MinimumPitch(_Strict):
     def _consistent(self) -> "MinimumPitch":
         _increasing("wind_m_s", self.wind_m_s)
         _same_length(self, "wind_m_s")
+        if any(abs(p) > 90 for p in self.pitch_deg):
+            raise ValueError("pitch_deg must lie within ±90")
+        return self
+
+
+class OperatingPoints(_Strict):
+    """Steady operating points the model gives (a HAWC2 model's operational data file, a
+    controller's published schedule): the blade-element momentum solution is found at these
+    winds, rotor speeds and pitches instead of at the controller's schedule."""
+
+    wind_m_s: list[float] = Field(min_length=2, max_length=400, description="Wind. [m/s]")
+    rpm: list[float] = Field(description="Rotor speed. [rpm]")
+    pitch_deg: list[float] = Field(description="Blade pitch, positive towards feather. [deg]")
+    source: str | None = Field(None, description="Where the points come from.")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "OperatingPoints":
+        _increasing("wind_m_s", self.wind_m_s)
+        _same_length(self, "wind_m_s")
+        if self.wind_m_s[0] <= 0 or self.wind_m_s[-1] > MAX_WIND_M_S:
+            raise ValueError(f"wind_m_s must lie within 0 … {MAX_WIND_M_S:g} m/s")
+        if any(not 0 < n <= 1000 for n in self.rpm):
+            raise ValueError("rpm must lie within 0 … 1000 (a turning rotor)")
         if any(abs(p) > 90 for p in self.pitch_deg):
             raise ValueError("pitch_deg must lie within ±90")
         return self
@@ -137,6 +182,12 @@ class Control(_Strict):
         None,
         description="Minimum pitch over wind (peak shaving); the pitch below rated is the "
         "higher of this and fine_pitch_deg.",
+    )
+    operating_points: OperatingPoints | None = Field(
+        None,
+        description="The model's own steady operating points (wind, rotor speed, pitch): "
+        "the aerodynamics is solved at these; the schedule above (tip-speed ratio, fine and "
+        "minimum pitch, pitching to rated power) is then not used.",
     )
 
     @model_validator(mode="after")
@@ -187,6 +238,15 @@ class Aerodynamics(_Strict):
         "flap mode: dynamic inflow, OpenFAST's DBEMT or frozen-wake linearisation); "
         "'equilibrium', at once — each section's momentum balance re-solved with its "
         "motion (AeroDyn's BEMT without dynamic wake, DBEMT_Mod 0): less flap damping.",
+    )
+    steady_torsion: bool = Field(
+        True,
+        description="Let the blades twist under their steady aerodynamic moment (the "
+        "polars' cm about the quarter chord, the lift's arm about stations.shear_centre_chord) "
+        "where blade.structure gives the torsional stiffness gj_nm2: the operating points of "
+        "a torsionally soft blade (large modern blades twist nose-down by degrees at rated) "
+        "as HAWCStab2 and OpenFAST with BeamDyn compute them. false: the blade is rigid in "
+        "torsion (OpenFAST with ElastoDyn).",
     )
 
     @model_validator(mode="after")

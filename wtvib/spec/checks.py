@@ -164,6 +164,21 @@ def _check_aerodynamics(spec: Spec, doc: Document) -> None:
             "radius_m",
         )
     c = aero.control
+    pts = c.operating_points
+    if pts is not None:
+        low = min(a for a, _ in spec.rotor.speed.steady_rpm)
+        high = max(b for _, b in spec.rotor.speed.steady_rpm)
+        for i, n in enumerate(pts.rpm):
+            if not low * (1 - 0.01) <= n <= high * (1 + 0.01):
+                fail(
+                    f"operating point {i + 1} turns at {n:g} rpm, outside the rotor's "
+                    f"operating speeds {low:g}–{high:g} rpm (rotor.speed)",
+                    "control",
+                    "operating_points",
+                    "rpm",
+                    i,
+                )
+        return
     if c.regulation == "pitch" and (c.rated_power_kw or spec.turbine.rated_power_kw) is None:
         fail(
             "pitch regulation needs a rated power (control.rated_power_kw or "
