@@ -373,7 +373,8 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         (float(om), (d, k)) for om, d, k in zip(sol.omega, qs_d, qs_k, strict=True)
     ]
     structural = [path.frequency_hz[i] for i in where]
-    steady = matched(model, qs_points, refs, reduced=path.basis, frequencies=structural)
+    ids = sw.names
+    steady = matched(model, qs_points, refs, reduced=path.basis, frequencies=structural, names=ids)
     if _shed_wake(spec) or sec.separated is not None:  # the lift's lagged parts: lag states
         lag, d_now = _lagged(model, sec, d_qs, _shed_wake(spec))
         d_aero, k_aero = fixed_frame_damping(model, d_now, sol.omega)
@@ -381,7 +382,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
             (d, k, lag.at(i)) for i, (d, k) in enumerate(zip(d_aero, k_aero, strict=True))
         ]
         points = [(float(om), extra) for om, extra in zip(sol.omega, extras, strict=True)]
-        damped = matched(model, points, refs, reduced=path.basis, frequencies=structural)
+        damped = matched(model, points, refs, reduced=path.basis, frequencies=structural, names=ids)
     else:  # quasi-steady: the judged damping is the quasi-steady one
         extras, damped = [extra for _, extra in qs_points], steady
     freq, zeta, unresolved, quasi = _matched_roots(
