@@ -223,12 +223,13 @@ def test_given_operating_points_are_solved_at_and_checked_against_the_speeds(wri
     np.testing.assert_array_equal(sch.wind, [5, 8, 11, 15, 20])
     np.testing.assert_allclose(sch.rpm, [18, 26, 30, 30, 30], rtol=1e-12)
     np.testing.assert_allclose(sch.pitch_deg, [2, 2, 3, 9, 16], rtol=1e-12)
-    assert sch.rated_wind == 11.0
     assert sch.region == ("partial load",) * 2 + ("full load",) * 3
     assert any("a published table" in a for a in sch.assumptions)
-    # the region-2 tip-speed ratio: the median of the points below the top speed
+    # the region-2 tip-speed ratio: the median of the points below the top speed; the rated
+    # wind where it reaches the top speed (30 rpm), before the first point there (11 m/s)
     lam = np.array([18, 26]) * np.pi / 30 * 20.0 / np.array([5.0, 8.0])
     assert sch.tip_speed_ratio == pytest.approx(float(np.median(lam)), rel=1e-12)
+    assert sch.rated_wind == pytest.approx(30 * np.pi / 30 * 20.0 / np.median(lam), rel=1e-12)
     with pytest.raises(SpecError) as err:
         load_spec(write_spec(small + aero + GIVEN.format(top=45)))
     assert "operating point 5 turns at 45 rpm, outside the rotor's operating speeds" in str(

@@ -884,7 +884,8 @@ def _statement(spec: Spec, sch: bem.Schedule) -> str:
     twist = _twist_words(spec, sch)
     if given is not None:
         text += (
-            f"rated wind {sch.rated_wind:.3g} m/s (the lowest at the top rotor speed)"
+            f"rated wind {sch.rated_wind:.3g} m/s (where that tip-speed ratio reaches the top "
+            "rotor speed)"
             if sch.rated_wind is not None
             else f"{c.regulation} regulation"
         )

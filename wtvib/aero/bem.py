@@ -710,9 +710,9 @@ def _method(r: Rotor) -> str:
 
 def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
     """The schedule at the model's own operating points (``control.operating_points``): the
-    BEM solved there; the rated wind is the lowest given wind at the top rotor speed (pitch
-    regulation), full load from it; the region-2 tip-speed ratio the median of the points
-    below it."""
+    BEM solved there; the region-2 tip-speed ratio is the median of the points below the
+    top rotor speed, the rated wind where it reaches that speed (pitch regulation; at most
+    the lowest given wind at it), full load at the points at the top speed from there."""
     aero = spec.aerodynamics
     assert aero is not None and aero.control.operating_points is not None
     c = aero.control
@@ -722,13 +722,20 @@ def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
     omega = np.asarray(rpm_to_rad_s(np.asarray(pts.rpm, float)))
     sol = solve(r, winds, omega, np.radians(np.asarray(pts.pitch_deg, float)))
     top = omega >= omega.max() * (1 - 1e-3)
+    below = ~top if np.any(~top) else np.ones_like(top)
+    tsr = float(np.median(omega[below] * r.tip_radius / winds[below]))
     rated_wind = None
     region = ["stall" if c.regulation == "stall" else "partial load"] * len(winds)
     if c.regulation == "pitch":
-        rated_wind = float(winds[np.argmax(top)])
-        region = ["full load" if v >= rated_wind else "partial load" for v in winds]
-    below = ~top if np.any(~top) else np.ones_like(top)
-    tsr = float(np.median(omega[below] * r.tip_radius / winds[below]))
+        # where the region-2 tip-speed ratio reaches the top speed, at most the lowest
+        # given wind at it (between the points: the IEA-22's 11 m/s still tracks, 12 m/s
+        # is at the top speed — 11.5 m/s)
+        first = float(winds[np.argmax(top)])
+        rated_wind = min(first, float(omega.max() * r.tip_radius / tsr)) if any(~top) else first
+        region = [
+            "full load" if t and v >= rated_wind else "partial load"
+            for v, t in zip(winds, top, strict=True)
+        ]
     rated_kw = c.rated_power_kw or spec.turbine.rated_power_kw
     p_rated = rated_kw * 1e3 / c.generator_efficiency if rated_kw is not None else None
     where = pts.source or "aerodynamics.control.operating_points"
