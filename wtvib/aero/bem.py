@@ -784,10 +784,13 @@ PITCH_STEP_DEG, PITCH_SPAN_DEG, PITCH_REFINE, PITCH_CHUNK = 5.0, 60.0, 5, 6
 
 def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: float) -> Array:
     """The pitch (towards feather from ``low``, each wind's lowest) at which each wind's
-    aerodynamic power is rated."""
+    aerodynamic power is rated. A rotor whose blades twist brackets it on the rigid blade's
+    grid (one solve a point, the twisted blade's four), then checks and widens the bracket
+    on the twisting blade before refining there (:func:`_twisted_bracket`)."""
     steps = np.radians(np.arange(0.0, PITCH_SPAN_DEG + 1e-9, PITCH_STEP_DEG))
     grid = low[:, None] + steps[None, :]  # (winds, grid)
     k, g = grid.shape
+    held = r if r.torsion is None else replace(r, torsion=None)
     excess = np.full((k, g), np.inf)  # a point not solved: above rated, as far as we know
     for start in range(0, g, PITCH_CHUNK):
         rows = np.flatnonzero(~np.any(excess <= 0, axis=1))  # no bracket yet
@@ -796,16 +799,17 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
         cols = np.arange(start, min(start + PITCH_CHUNK, g))
         pts = np.ix_(rows, cols)
         n = cols.size
-        power = solve(r, np.repeat(wind[rows], n), np.repeat(omega[rows], n), grid[pts].ravel())
+        power = solve(held, np.repeat(wind[rows], n), np.repeat(omega[rows], n), grid[pts].ravel())
         excess[pts] = power.power.reshape(rows.size, n) - p_rated
-    below = excess <= 0
-    j = np.where(below.any(axis=1), np.argmax(below, axis=1), g - 1)
+    j = np.where((excess <= 0).any(axis=1), np.argmax(excess <= 0, axis=1), g - 1)
     j = np.maximum(j, 1)
     rows = np.arange(k)
     lo, hi = grid[rows, j - 1], grid[rows, j]
     f_lo, f_hi = excess[rows, j - 1], excess[rows, j]
-    x = hi
     twist = None  # the blades' twist at the step before: where the next one starts
+    if r.torsion is not None:
+        lo, hi, f_lo, f_hi, twist = _twisted_bracket(r, wind, omega, grid, lo, hi, p_rated)
+    x = hi
     for _ in range(PITCH_REFINE):
         den = np.where(f_hi != f_lo, f_hi - f_lo, 1.0)
         x = np.clip(hi - f_hi * (hi - lo) / den, np.minimum(lo, hi), np.maximum(lo, hi))
@@ -816,4 +820,29 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
         f_lo = np.where(swap, f_hi, 0.5 * f_lo)  # Illinois: halve the end that stays
         hi, f_hi = x, f_x
     # a wind whose power stays above rated at the last grid pitch: the last grid pitch
-    return np.asarray(np.where(below.any(axis=1) | (j < g - 1), x, grid[:, -1]))
+    bracketed = (excess <= 0).any(axis=1) if r.torsion is None else f_lo * f_hi <= 0
+    return np.asarray(np.where(bracketed | (j < g - 1), x, grid[:, -1]))
+
+
+def _twisted_bracket(
+    r: Rotor, wind: Array, omega: Array, grid: Array, lo: Array, hi: Array, p_rated: float
+) -> tuple[Array, Array, Array, Array, Array | None]:
+    """The rigid blade's bracket of rated power (``lo``, ``hi`` on ``grid``'s steps) checked
+    on the twisting blade and moved a grid step down or up where it no longer brackets (its
+    twist lowers or raises the power at a pitch), until it does or reaches the grid's ends:
+    the ends, their power excess and the twist at ``hi``."""
+    first, last = grid[:, 0], grid[:, -1]
+    step = grid[:, 1] - grid[:, 0]
+    for _ in range(grid.shape[1]):
+        at_lo = solve(r, wind, omega, lo)
+        at_hi = solve(r, wind, omega, hi, start=at_lo.elastic_twist)
+        f_lo, f_hi = at_lo.power - p_rated, at_hi.power - p_rated
+        down = (f_lo <= 0) & (lo > first + 1e-12)  # rated lies below the bracket
+        up = (f_hi > 0) & (hi < last - 1e-12)  # above it
+        if not (down | up).any():
+            break
+        lo, hi = (
+            np.where(down, np.maximum(lo - step, first), np.where(up, hi, lo)),
+            np.where(down, lo, np.where(up, np.minimum(hi + step, last), hi)),
+        )
+    return lo, hi, f_lo, f_hi, at_hi.elastic_twist
