@@ -21,7 +21,10 @@ convergence is linear at the rate of that answer, fast).
 
 Large modern blades are soft in torsion: the IEA 15 MW's twists ~3° nose-down at its tip at
 rated under C_M ≈ −0.1 — the difference between OpenFAST with ElastoDyn (rigid in torsion)
-and with BeamDyn, or HAWCStab2, in their thrust (IEA-22-280-RWT issue 99). Left out: the
+and with BeamDyn, or HAWCStab2, in their thrust (IEA-22-280-RWT issue 99; the IEA-15's HAWC2
+README: both its blade models "feature torsional deflections and are therefore equivalent to
+a BeamDyn model", an ElastoDyn equivalent needs the shear modulus raised by orders of
+magnitude — what ``aerodynamics.steady_torsion: false`` does here). Left out: the
 bending–torsion coupling of swept or anisotropic blades and the twist the flapwise
 deflection of a prebent blade adds.
 """
