@@ -283,3 +283,26 @@ def test_the_model_s_own_operating_points_and_twisting_blade_are_read(model):
     outer = (r > 0.5) & (r < 0.95)
     assert np.all((centre[outer] > 0.24) & (centre[outer] < 0.38)), centre[outer]
     assert bem.rotor(spec).torsion is not None
+
+
+def test_an_operational_data_file_out_of_order_or_with_a_repeated_wind_is_read(model):
+    """The .opt's rows taken in wind order, one per wind (the first of a repeated one), the
+    parked rows (0 rpm) left out of the points: the points a valid file gives, never a
+    refusal (reversed, a cut-in above the cut-out was refused)."""
+    from wtvib.importers import load
+
+    opt = model.parents[1] / "data" / "IEA_15MW_RWT_Onshore.opt"
+    lines = opt.read_text().splitlines()
+    head, rows = lines[0], lines[1:]
+    rows = [*rows[::-1], rows[5]]
+    opt.write_text("\n".join([head.replace("17", str(len(rows)), 1), *rows]) + "\n")
+    aero = load(model).aerodynamics
+    assert aero is not None and aero.control.operating_points is not None
+    winds = aero.control.operating_points.wind_m_s
+    assert winds == sorted(set(winds)) and len(winds) == 17
+    assert (aero.control.cut_in_wind_m_s, aero.control.cut_out_wind_m_s) == (1.0, 25.0)
+    # a parked row (0 rpm) is no operating point
+    opt.write_text("\n".join([head.replace("17", "18", 1), *lines[1:], "  26.0  90.0  0.0  0 0"]))
+    again = load(model).aerodynamics
+    assert again is not None and again.control.operating_points is not None
+    assert 26.0 not in again.control.operating_points.wind_m_s

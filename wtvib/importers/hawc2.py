@@ -675,18 +675,22 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
         control["rated_power_kw"] = constants[1]
     if opt:
         table = htc.read_opt(opt[0])
+        table = table[np.argsort(table[:, 0], kind="stable")]  # in wind order
         rpm = table[:, 2]
         speed = {"min_rpm": round(float(rpm.min()), 6), "max_rpm": round(float(rpm.max()), 6),
                  "source": f"{opt[0].name} (operating points)"}  # fmt: skip
         control["cut_in_wind_m_s"] = float(max(table[0, 0], 1.0))
         control["cut_out_wind_m_s"] = float(table[-1, 0])
         control["fine_pitch_deg"] = float(table[:, 1].min())
-        turning = (table[:, 0] > 0) & (rpm > 0)
-        if np.count_nonzero(turning) >= 2:  # the model's own points, where the rotor turns
+        # the model's own points where the rotor turns, one per wind (the first of a
+        # repeated wind)
+        turning = table[(table[:, 0] > 0) & (rpm > 0)]
+        turning = turning[np.r_[True, np.diff(turning[:, 0]) > 0]]
+        if len(turning) >= 2:
             control["operating_points"] = {
-                "wind_m_s": [float(v) for v in table[turning, 0]],
-                "rpm": [float(v) for v in rpm[turning]],
-                "pitch_deg": [float(v) for v in table[turning, 1]],
+                "wind_m_s": [float(v) for v in turning[:, 0]],
+                "rpm": [float(v) for v in turning[:, 2]],
+                "pitch_deg": [float(v) for v in turning[:, 1]],
                 "source": opt[0].name,
             }
         return (
