@@ -17,9 +17,10 @@ the second flap family within 3 % of HAWCStab2 (the blades Timoshenko beams as H
 their shear stiffness k·G·A from the st file; the DTU 10 MW's first five blade modes within
 +1.0 … +1.7 %); open: the IEA-15's first edge collective (+3.8 %), its second edge family
 (HAWCStab2 five mixed roots at 1.8–2.3 Hz, wtvib four) and the aeroelastic damping of its
-flap and first edge modes, 2–4 times HAWCStab2's near rated (wtvib's steady state is a rigid
-rotor's, test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code; HAWCStab2
-linearises about the deformed one).
+flap and first edge modes, 1.3–3.5 times HAWCStab2's near rated (the steady state now as
+HAWCStab2's — the model's operating points, the blades twisting under load,
+test_the_iea15_steady_state_twists_as_hawcstab2_s; HAWCStab2's modes twist the blade,
+wtvib's bend only).
 """
 
 import gzip
@@ -304,11 +305,11 @@ def test_the_iea15_aeroelastic_damping_against_hawcstab2(iea15, hs2_aeroelastic)
     """HAWCStab2's aeroelastic modes of the IEA-15 (its .cmb: ζ in % with the real parts,
     −Re λ/|λ| to five digits) against wtvib's damping in operation of the HAWC2 model, at
     7, 10 and 11 m/s: the first tower fore-aft, which the rotor's thrust damps, +5 … +20 %
-    (measured +14, +11, +17 %: wtvib's rigid rotor's thrust slope above the deformed one's,
-    test_the_iea15_steady_state_is_the_rigid_rotors_of_another_code). OPEN, held to what it
-    measures: at 10 m/s the first flap collective 2.5 times HAWCStab2's 0.32 and the first
-    edge backward whirl 4.2 times its 0.016 — HAWCStab2 linearises the deformed, twisting
-    blade; wtvib's blade bends without torsion about a rigid rotor's steady state. A third
+    (measured +16, +13, +13 % at the model's operating points with the blades twisting under
+    load, test_the_iea15_steady_state_twists_as_hawcstab2_s). OPEN, held to what it
+    measures: at 10 m/s the first flap collective 2.8 times HAWCStab2's 0.32 and the first
+    edge backward whirl 3.1 times its 0.016 (4.2 with a rigid rotor at wtvib's own
+    schedule) — HAWCStab2's modes twist the blade, wtvib's bend only. A third
     reference puts this example's flap damping in doubt: HAWCStab2 and OpenFAST (unsteady
     aerodynamics) on the IEA-22, a rotor of the same kind, damp its first flap triple at
     ζ 0.58–0.88 from 7 m/s on (test_unsteady.py, the IEA-22 repository's published
@@ -327,8 +328,8 @@ def test_the_iea15_aeroelastic_damping_against_hawcstab2(iea15, hs2_aeroelastic)
 
     for wind in (7.0, 10.0, 11.0):
         assert 1.05 <= ratio("tower.fa1", wind) <= 1.20, wind
-    assert 2.0 <= ratio("blade.flap1.collective", 10.0) <= 3.0
-    assert 3.0 <= ratio("blade.edge1.backward", 10.0) <= 5.5
+    assert 2.0 <= ratio("blade.flap1.collective", 10.0) <= 3.5
+    assert 2.5 <= ratio("blade.edge1.backward", 10.0) <= 4.5
 
 
 def test_the_iea22_hawc2_model_reads_as_its_repository_writes_it(iea22, tmp_path):
