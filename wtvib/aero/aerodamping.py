@@ -421,7 +421,7 @@ def _lagged(
         d_sep = on_model(sec.separated)
         attached = d_lift - d_sep
     lag = None
-    d_now = d_qs - attached
+    d_now = d_qs  # without a shed wake the attached part acts at once
     columns = lag_columns(model, np.abs(attached) + (0.0 if d_sep is None else np.abs(d_sep)))
     if shed_wake:
         lag = lift_lag(model, attached, on_model(sec.attached_rate), omega, columns=columns)
