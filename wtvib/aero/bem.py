@@ -170,17 +170,10 @@ def _rotor(spec: Spec) -> Rotor:
     aero = spec.aerodynamics
     assert aero is not None and spec.turbine.rotor_diameter_m is not None
     grid = np.arange(-180.0, 180.0 + 1e-9, POLAR_STEP_DEG)
-    tables = {}
-    for name, p in aero.airfoils.items():
-        a = np.asarray(p.alpha_deg, float)
-        # periodic in α: a polar that stops short of ±180° is continued to its other end
-        a_ext = np.concatenate([a[-1:] - 360.0, a, a[:1] + 360.0])
-        cl = np.asarray(p.cl, float)
-        cd = np.asarray(p.cd, float)
-        tables[name] = (
-            np.interp(grid, a_ext, np.concatenate([cl[-1:], cl, cl[:1]])),
-            np.interp(grid, a_ext, np.concatenate([cd[-1:], cd, cd[:1]])),
-        )
+    tables = {
+        name: (_periodic(grid, p.alpha_deg, p.cl), _periodic(grid, p.alpha_deg, p.cd))
+        for name, p in aero.airfoils.items()
+    }
     st = aero.stations
     hub = spec.blade.structure.hub_radius_m if spec.blade.structure else st.radius_m[0]
     twisting = None
@@ -205,6 +198,15 @@ def _rotor(spec: Spec) -> Rotor:
     )
 
 
+def _periodic(grid: Array, alpha_deg: list[float], values: list[float]) -> Array:
+    """A polar's column on the α grid [deg], linear between its points and periodic in α: a
+    polar that stops short of ±180° is continued to its other end."""
+    a = np.asarray(alpha_deg, float)
+    v = np.asarray(values, float)
+    a_ext = np.concatenate([a[-1:] - 360.0, a, a[:1] + 360.0])
+    return np.asarray(np.interp(grid, a_ext, np.concatenate([v[-1:], v, v[:1]])))
+
+
 def _torsion(spec: Spec, grid: Array) -> Torsion | None:
     """What the blades' steady twist needs (:mod:`wtvib.aero.torsion`): None where the blade
     has no torsional stiffness (blade.structure.gj_nm2) or nothing twists it (no polar's cm,
@@ -220,14 +222,11 @@ def _torsion(spec: Spec, grid: Array) -> Torsion | None:
         offset is None or not any(x != 0.25 for x in offset)
     ):
         return None
-    cm = np.zeros((len(st.airfoil), len(grid)))
+    cm = np.zeros((len(st.airfoil), len(grid)))  # C_M 0 where a polar gives none
     for i, name in enumerate(st.airfoil):
         p = aero.airfoils[name]
         if p.cm is not None:
-            a = np.asarray(p.alpha_deg, float)
-            c = np.asarray(p.cm, float)
-            a_ext = np.concatenate([a[-1:] - 360.0, a, a[:1] + 360.0])
-            cm[i] = np.interp(grid, a_ext, np.concatenate([c[-1:], c, c[:1]]))
+            cm[i] = _periodic(grid, p.alpha_deg, p.cm)
     radius = np.asarray(st.radius_m, float)
     chord = np.asarray(st.chord_m, float)
     arm = np.zeros_like(chord) if offset is None else (np.asarray(offset) - 0.25) * chord
@@ -809,6 +808,8 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
     twist = None  # the blades' twist at the step before: where the next one starts
     if r.torsion is not None:
         lo, hi, f_lo, f_hi, twist = _twisted_bracket(r, wind, omega, grid, lo, hi, p_rated)
+    # a wind whose power stays above rated at the last grid pitch keeps that pitch
+    stays_above = (f_hi > 0) & (hi >= grid[:, -1] - 1e-12)
     x = hi
     for _ in range(PITCH_REFINE):
         den = np.where(f_hi != f_lo, f_hi - f_lo, 1.0)
@@ -819,9 +820,7 @@ def _pitch_to_rated(r: Rotor, wind: Array, omega: Array, low: Array, p_rated: fl
         lo = np.where(swap, hi, lo)
         f_lo = np.where(swap, f_hi, 0.5 * f_lo)  # Illinois: halve the end that stays
         hi, f_hi = x, f_x
-    # a wind whose power stays above rated at the last grid pitch: the last grid pitch
-    bracketed = (excess <= 0).any(axis=1) if r.torsion is None else f_lo * f_hi <= 0
-    return np.asarray(np.where(bracketed | (j < g - 1), x, grid[:, -1]))
+    return np.asarray(np.where(stays_above, grid[:, -1], x))
 
 
 def _twisted_bracket(
