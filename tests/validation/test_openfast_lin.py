@@ -75,9 +75,11 @@ def test_every_reference_root_is_a_mode_or_said_left_out(case, tmp_path):
     or among the roots it lists as left out (inflow, unsteady aerodynamics, radiation,
     rigid-body motion) — whatever their number (5MW_Land_Linear_Aero: 78 inflow roots,
     the lowest 0.13 Hz, below every structural mode but the tower's) — to the rounding the
-    arithmetic allows each root (tests/tolerances.py)."""
+    arithmetic allows each root (tests/tolerances.py). BeamDyn's states as OpenFAST wrote
+    them, as the reference took them (wtvib turns them into the rotating frame first:
+    test_beamdyn_states_are_turned_into_the_rotating_frame)."""
     files = _case(case, tmp_path)
-    point, _ = ol.operating_point(files)
+    point, _ = ol.operating_point(files, as_written=True)
     left = point.left_out.get("roots", np.zeros(0, complex))
     found = np.concatenate([point.frequency_hz, np.abs(left) / (2 * math.pi)])
     lay = ol.layout(files[0].states, files[0].path, files[0].rotor_speed, files[0].a)
@@ -90,6 +92,114 @@ def test_every_reference_root_is_a_mode_or_said_left_out(case, tmp_path):
         tol = 0.02 * f_ref if case == "5MW_Land_BD_Linear" else rounding
         assert np.min(np.abs(found - f_ref)) <= tol, (case, f_ref, tol)
     assert len(point.names) >= 1  # every r-test case has a structural mode to judge
+
+
+def test_beamdyn_states_are_turned_into_the_rotating_frame(tmp_path):
+    """OpenFAST writes BeamDyn's states in the blade root's frame frozen at the
+    linearisation's instant but flags them rotating (OpenFAST issue #3394, its fix pull
+    request #3400): MBC3 then adds a spurious rotor speed to every mode they take part in.
+    wtvib turns them into the rotating frame as the fix does (openfast_lin.beamdyn_frame).
+    Checked on r-test's 5MW_Land_BD_Linear (12.1 rpm, written in August 2024):
+
+    * the rotor's free spin — a rigid-body motion, frequency zero — sits at 0.19 Hz (near
+      Ω/2π = 0.20 Hz) as written, below 0.01 Hz turned (left out as rigid either way);
+    * the tower's first side-side, 0.3221 Hz at standstill (the issue's NREL 5-MW with
+      BeamDyn blades), droops to 0.3113 Hz as written (−3.4 %) — the issue's droop, 2.3 %
+      at 12 rpm on its build — and is 0.3216 Hz turned: no droop, as the issue's
+      RotStates = False control shows. Its fix's regenerated r-test baseline moves this mode
+      +2.1 % and the fore-aft −0.4 % (r-test pull request #184, from 0.3087 Hz on a newer
+      build); here +3.3 % and −0.5 %;
+    * the modes named from the blades keep their order and whirl (forward above backward,
+      2P apart: test_whirl_splits_by_twice_the_rotor_speed)."""
+    files = _case("5MW_Land_BD_Linear", tmp_path)
+    written, _ = ol.operating_point(files, as_written=True)
+    turned, _ = ol.operating_point(files)
+    spin = written.left_out["roots"]
+    assert written.left_out["modules"] == {"rigid": 1}
+    assert abs(spin[0]) / (2 * math.pi) == pytest.approx(
+        files[0].rotor_speed / (2 * math.pi), rel=0.1
+    )
+    assert turned.left_out["modules"] == {"rigid": 1}
+    assert abs(turned.left_out["roots"][0]) / (2 * math.pi) < 0.01
+    at = dict(zip(turned.names, turned.frequency_hz, strict=True))
+    was = dict(zip(written.names, written.frequency_hz, strict=True))
+    assert at["tower.ss1"] == pytest.approx(0.3221, rel=0.01)
+    assert was["tower.ss1"] < 0.975 * 0.3221
+    assert at["tower.fa1"] / was["tower.fa1"] - 1 == pytest.approx(-0.004, abs=0.004)
+    assert len(turned.notes) == 1 and "#3394" in turned.notes[0]
+    assert not written.notes
+
+
+def test_beamdyn_s_frame_turns_with_the_rotor_s_spin_in_the_pitched_blade(tmp_path):
+    """The turn's own terms, on A = 0 so that only they remain: each node triplet's block
+    is −ω̃ (ω̃·x = ω × x) and the rates' rows take −ω̃·A of the displacements', with
+    ω = Ω·(cos θ, sin θ, 0) the rotor's spin in ElastoDyn's pitched blade frame
+    (j₁ = cos θ·i₁ − sin θ·i₂, j₂ = sin θ·i₁ + cos θ·i₂: ω·j₂ = Ω·sin θ; OpenFAST's
+    ElastoDyn SetCoordSy), each blade with its own pitch."""
+    files = _case("5MW_Land_BD_Linear", tmp_path)
+    f = replace(files[0], a=np.zeros_like(files[0].a), pitch=(0.3, -0.2, 0.1))
+    lay = ol.layout(f.states, f.path, f.rotor_speed, files[0].a)
+    bd = [p for p, i in enumerate(lay.q) if f.states[i].module == "BD"]
+    found = ol._node_triplets(f.states, lay, bd)
+    assert found is not None
+    positions, blades = found
+    assert positions.shape == (30, 3) and sorted(set(blades.tolist())) == [1, 2, 3]
+    a = ol._rotating_frame(f, lay, positions, blades)
+    omega = f.speed(lay)[0]
+    assert omega > 1.0
+    x = np.array([0.3, -1.1, 0.7])
+    for row, blade in zip(positions, blades, strict=True):
+        theta = f.pitch[blade - 1]
+        w = omega * np.array([math.cos(theta), math.sin(theta), 0.0])
+        q, d = lay.q[row], lay.qd[row]
+        assert a[np.ix_(q, q)] @ x == pytest.approx(-np.cross(w, x), abs=1e-12)
+        assert a[np.ix_(d, d)] @ x == pytest.approx(-np.cross(w, x), abs=1e-12)
+    # an isotropic oscillator q̈ = −k·q written in the frozen frame, seen from the turning
+    # one: q̈ = −k·q − 2ω × q̇ − ω × (ω × q), q̇ = q̇ (Coriolis and centrifugal terms)
+    k = 3.0
+    plain = np.zeros_like(f.a)
+    q, d = lay.q[positions[0]], lay.qd[positions[0]]
+    plain[np.ix_(q, d)] = np.eye(3)
+    plain[np.ix_(d, q)] = -k * np.eye(3)
+    b = ol._rotating_frame(replace(f, a=plain), lay, positions[:1], blades[:1])
+    w = omega * np.array([math.cos(0.3), math.sin(0.3), 0.0])
+    assert b[np.ix_(q, q)] @ x == pytest.approx(np.zeros(3), abs=1e-12)
+    assert b[np.ix_(q, d)] @ x == pytest.approx(x, abs=1e-12)
+    assert b[np.ix_(d, d)] @ x == pytest.approx(-2 * np.cross(w, x), abs=1e-12)
+    assert b[np.ix_(d, q)] @ x == pytest.approx(-k * x - np.cross(w, np.cross(w, x)), abs=1e-12)
+
+
+def test_beamdyn_states_written_after_the_fix_are_taken_as_written(tmp_path):
+    """A file written on or after the day OpenFAST's fix was proposed (2026-07-21) may come
+    from a build with it: its states are taken as written, and the report says so."""
+    files = _case("5MW_Land_BD_Linear", tmp_path)
+    later = [replace(f, generated=ol.BEAMDYN_FIX_PROPOSED) for f in files]
+    point, _ = ol.operating_point(later)
+    written, _ = ol.operating_point(files, as_written=True)
+    assert np.array_equal(point.frequency_hz, written.frequency_hz)
+    assert "taken as written" in point.notes[0]
+    assert files[0].generated is not None and files[0].generated.isoformat() == "2024-08-29"
+
+
+def test_the_pitch_and_the_day_are_read_from_the_header():
+    """The pitch each blade's BeamDyn frame is turned by comes from the inputs' table
+    ("ED Blade k pitch command, rad", as OpenFAST writes it: r-test's full
+    5MW_Land_BD_Linear.1.lin); a table without them gives none, not zeros."""
+    head = [
+        "Predictions were generated on 05-Mar-2025 at 10:00:00 using OpenFAST",
+        "Order of inputs:",
+        "   Row/Column Operating Point   Rotating Frame? Derivative Order Description",
+        "   ---------- ---------------   --------------- ---------------- -----------",
+        "          1    1.745329251994E-001   T   0   ED Blade 1 pitch command, rad",
+        "          2    1.745329251994E-001   T   0   ED Blade 2 pitch command, rad",
+        "          3    1.745329251994E-001   T   0   ED Blade 3 pitch command, rad",
+        "          4    0.000000000000E+000   F   0   ED Yaw moment, Nm",
+        "",
+    ]
+    assert ol._pitch(head) == pytest.approx((0.17453292519943,) * 3)
+    assert ol._generated(head).isoformat() == "2025-03-05"
+    assert ol._pitch(head[:4] + head[7:]) is None
+    assert ol._generated(["Predictions were generated on 31-Feb-2025 at"]) is None
 
 
 #: OpenFAST's linearisation of the NREL 5-MW at 8 m/s and 12.2 rpm (5MW_Land_Linear_Aero)

@@ -37,7 +37,8 @@ whole system and are left out (and refused where named).
 import math
 import re
 from collections import defaultdict
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from datetime import date
 from pathlib import Path
 from typing import Any
 
@@ -144,6 +145,8 @@ class LinFile:
     a: Array
     rates: Array | None = None  # the operating point's state derivatives ẋ_op (where given)
     description: str | None = None  # the deck's title, as the header quotes it
+    generated: date | None = None  # the day OpenFAST wrote it, as the header says
+    pitch: tuple[float, ...] | None = None  # each blade's pitch command [rad], from the inputs
 
     def speed(self, lay: "Layout") -> tuple[float, float]:
         """Rotor speed Ω [rad/s] and its rate Ω̇ [rad/s²] at this azimuth, as MBC3 takes
@@ -262,7 +265,57 @@ def read(path: Path) -> LinFile:
     if marker is None:
         raise fail("no state matrix 'A:' (linearise with continuous states)")
     a = _matrix(raw, marker, n, fail)
-    return LinFile(path, speed, azimuth, wind, states, a, rates, _description(lines))
+    return LinFile(
+        path, speed, azimuth, wind, states, a, rates, _description(lines), _generated(lines),
+        _pitch(lines),
+    )  # fmt: skip
+
+
+_GENERATED = re.compile(r"generated on (\d{1,2})-([A-Za-z]{3})-(\d{4})")
+_MONTHS = ("jan", "feb", "mar", "apr", "may", "jun", "jul", "aug", "sep", "oct", "nov", "dec")
+
+
+def _generated(lines: list[str]) -> date | None:
+    """The day the header says OpenFAST wrote the file ("Predictions were generated on
+    29-Aug-2024 at …"), None where it says none or no real day."""
+    for ln in lines[:10]:
+        found = _GENERATED.search(ln)
+        if found and found[2].lower() in _MONTHS:
+            try:
+                return date(int(found[3]), _MONTHS.index(found[2].lower()) + 1, int(found[1]))
+            except ValueError:
+                return None
+    return None
+
+
+_PITCH = re.compile(r"ED Blade (\d+) pitch command, rad")
+
+
+def _pitch(lines: list[str]) -> tuple[float, ...] | None:
+    """Each blade's pitch command at the operating point [rad], from the inputs' table
+    ("ED Blade 1 pitch command, rad"), None where the file has no such inputs (the table
+    left out, or the numbers not finite)."""
+    start = next(
+        (i for i, ln in enumerate(lines) if ln.strip().startswith("Order of inputs")), None
+    )
+    if start is None:
+        return None
+    found: dict[int, float] = {}
+    for ln in lines[start + 3 :]:
+        if not ln.strip() or not ln.split()[0].isdigit():
+            break
+        hit = _PITCH.search(ln)
+        if hit:
+            try:
+                value = float(ln.split()[1].rstrip(","))
+            except (IndexError, ValueError):
+                return None
+            if not math.isfinite(value):
+                return None
+            found[int(hit[1])] = value
+    if not found or sorted(found) != list(range(1, len(found) + 1)):
+        return None
+    return tuple(found[k] for k in sorted(found))
 
 
 #: The header line that carries the deck's own title (the .fst file's second line).
@@ -647,6 +700,110 @@ def mbc_average(files: list[LinFile], lay: Layout) -> Array:
     return total[np.ix_(order, order)]
 
 
+# ------------------------------------------------------------------------------------------
+# BeamDyn's states in the rotating frame
+
+#: OpenFAST writes BeamDyn's states (RotStates = True, its default) in the blade root's frame
+#: frozen at the linearisation's instant, yet flags them rotating: MBC3 then adds the
+#: rotation's terms to states that do not turn, a spurious Ω in every mode they take part in
+#: (OpenFAST issue #3394). Its fix (pull request #3400, re-expressing the Jacobians in the
+#: turning frame) was proposed on this day: files written before it carry the frozen frame.
+BEAMDYN_FIX_PROPOSED = date(2026, 7, 21)
+
+
+def beamdyn_frame(files: list[LinFile], lay: Layout) -> tuple[list[LinFile], str | None]:
+    """The files with BeamDyn's states re-expressed in the rotating frame, as OpenFAST's fix
+    does (:data:`BEAMDYN_FIX_PROPOSED`), and what was done (None: nothing to do — no rotating
+    BeamDyn state, or a rotor standing still, where the two frames are one).
+
+    Each node's translation and rotation triplet q (BeamDyn's X, Y, Z: flapwise, edgewise,
+    along the blade) and its rate: q̇ ← q̇ − ω̃·q, A ← S·A·S⁻¹ − blkdiag(ω̃) with
+    S = [[I, 0], [−ω̃, I]] per pair — ω the rotor's spin in the pitched blade's frame,
+    Ω·(cos θ, sin θ, 0) (ElastoDyn's j-axes: j₁ = cos θ·i₁ − sin θ·i₂; θ each blade's pitch
+    command from the file's inputs, 0 where it has none). The cone, which the file does not
+    give, is left out: Ω·sin(cone) along the blade moves the modes of r-test's
+    5MW_Land_BD_Linear (2.5°) by under 0.1 %."""
+    first = files[0]
+    bd = [p for p, i in enumerate(lay.q) if first.states[i].module == "BD"]
+    if not bd or not any(first.states[lay.q[p]].rotating for p in bd) or first.rotor_speed == 0:
+        return files, None
+    head = (
+        "BeamDyn's states: OpenFAST writes them in the blade root's frame frozen at the "
+        "linearisation's instant and flags them rotating, so MBC3 puts a spurious rotor "
+        "speed into every mode they take part in (OpenFAST issue #3394: the rotor's free spin "
+        "at Ω, not 0; the tower's side-side falling with speed)"
+    )
+    if first.generated is not None and first.generated >= BEAMDYN_FIX_PROPOSED:
+        return files, (
+            f"{head}. These files were written on {first.generated.isoformat()}, after the "
+            "fix was proposed (OpenFAST pull request #3400): taken as written — from a build "
+            "without it their BeamDyn modes carry that error."
+        )
+    triples = _node_triplets(first.states, lay, bd)
+    if triples is None:
+        return files, (
+            f"{head}. Their states here are not each node's translation and rotation "
+            "triplets: taken as written, with that error."
+        )
+    positions, blades = triples
+    pitch = [f.pitch for f in files if f.pitch is not None]
+    out = [replace(f, a=_rotating_frame(f, lay, positions, blades)) for f in files]
+    told = (
+        f"pitch {', '.join(f'{math.degrees(t):.3g}°' for t in pitch[0])} from the inputs"
+        if pitch
+        else "the files give no pitch input: 0° taken"
+    )
+    return out, (
+        f"{head}. Written before the fix (OpenFAST pull request #3400), they are turned into "
+        "the rotating frame here as the fix does: each node's q̇ − ω×q, with ω the rotor's "
+        f"spin in the pitched blade's frame ({told}; the cone, not in the files, left out)."
+    )
+
+
+def _node_triplets(
+    states: tuple[State, ...], lay: Layout, bd: list[int]
+) -> tuple[NDArray[np.intp], NDArray[np.intp]] | None:
+    """BeamDyn's q positions as (translation X, Y, Z) and (rotation about X, Y, Z) triplets,
+    node by node, with each triplet's blade; None where they are not written so."""
+    if len(bd) % 6:
+        return None
+    rows, blades = [], []
+    for k in range(0, len(bd), 6):
+        six = [states[lay.q[p]] for p in bd[k : k + 6]]
+        words = [s.description for s in six]
+        moved = all(
+            f"translational displacement in {a}" in w for a, w in zip("XYZ", words[:3], strict=True)
+        )
+        turned = all("rotational displacement" in w for w in words[3:])
+        one = {s.blade for s in six}
+        if not (moved and turned and len(one) == 1 and six[0].rotating):
+            return None
+        rows += [bd[k : k + 3], bd[k + 3 : k + 6]]
+        blades += [six[0].blade or 1] * 2
+    return np.asarray(rows, dtype=np.intp), np.asarray(blades, dtype=np.intp)
+
+
+def _rotating_frame(
+    f: LinFile, lay: Layout, positions: NDArray[np.intp], blades: NDArray[np.intp]
+) -> Array:
+    """A with the triplets at ``positions`` (q positions, (m, 3)) in the rotating frame:
+    S·A·S⁻¹ − blkdiag(ω̃) (:func:`beamdyn_frame`)."""
+    omega = f.speed(lay)[0]
+    theta = np.asarray(f.pitch, dtype=float)[blades - 1] if f.pitch else np.zeros(len(blades))
+    w = omega * np.stack([np.cos(theta), np.sin(theta), np.zeros_like(theta)], axis=-1)
+    skew = np.zeros((len(w), 3, 3))  # ω̃·x = ω × x
+    skew[:, 0, 1], skew[:, 0, 2] = -w[:, 2], w[:, 1]
+    skew[:, 1, 0], skew[:, 1, 2] = w[:, 2], -w[:, 0]
+    skew[:, 2, 0], skew[:, 2, 1] = -w[:, 1], w[:, 0]
+    q, d = lay.q[positions], lay.qd[positions]
+    a = f.a.copy()
+    a[d] -= np.einsum("mab,mbn->man", skew, f.a[q])  # S·A: the rates' rows
+    a[:, q] += np.einsum("nmb,mba->nma", a[:, d], skew)  # ·S⁻¹: the displacements' columns
+    for rows in (q, d):  # − ω̃ on each triplet's own block
+        a[rows[:, :, None], rows[:, None, :]] -= skew
+    return a
+
+
 def coordinates(lay: Layout) -> tuple[str, ...]:
     """The multi-blade coordinate of each q position: fixed, collective, cos1, sin1, …"""
     out = ["fixed"] * len(lay.q)
@@ -738,10 +895,13 @@ class PointModes:
     shapes: Array  # participation of each q coordinate (columns: modes)
     frame: str  # fixed (multi-blade coordinates) or rotating (one blade, its own frame)
     left_out: dict[str, Any] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()  # what was done to the states before MBC3
 
 
-def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
-    """MBC3 over the azimuths of one point, its structural modes and the number of blades."""
+def operating_point(files: list[LinFile], as_written: bool = False) -> tuple[PointModes, int]:
+    """MBC3 over the azimuths of one point, its structural modes and the number of blades;
+    BeamDyn's states turned into the rotating frame first (:func:`beamdyn_frame`), unless
+    ``as_written`` (the states as OpenFAST wrote them: openfast_toolbox's MBC3)."""
     first = files[0]
     for f in files[1:]:
         if [s.description for s in f.states] != [s.description for s in first.states]:
@@ -766,6 +926,9 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
             "and the multi-blade transformation needs three or more blades",
             source=str(first.path),
         )
+    frame_note = None
+    if not as_written:
+        files, frame_note = beamdyn_frame(files, lay)
     a_nr = mbc_average(files, lay)
     try:
         found = state_modes(a_nr)
@@ -778,7 +941,7 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
     structural = (s_q * structural_q[:, None]).sum(axis=0)
     oscillating = _oscillating(lam)
     images = _mirror_images(lam, oscillating & (structural >= STRUCTURAL_SHARE))
-    rigid = _rigid(s_q, lay, lam)
+    rigid = _rigid(s_q, lay, lam, first.rotor_speed)
     elastic = (structural >= STRUCTURAL_SHARE) & ~rigid & ~images
     keep = np.where(oscillating & elastic)[0]
     keep = keep[np.argsort(np.abs(lam[keep]))]
@@ -805,6 +968,7 @@ def operating_point(files: list[LinFile]) -> tuple[PointModes, int]:
         shapes / np.maximum(shapes.sum(axis=0), 1e-300),
         frame,
         left_out,
+        () if frame_note is None else (frame_note,),
     )
     return point, lay.blades
 
@@ -925,14 +1089,17 @@ def _oscillating(lam: NDArray[np.complex128]) -> NDArray[np.bool_]:
     return np.asarray((lam.imag > 1e-9 * scale) & (np.abs(lam) > 1e-8 * scale))
 
 
-def _rigid(s_q: Array, lay: Layout, lam: NDArray[np.complex128]) -> NDArray[np.bool_]:
+def _rigid(s_q: Array, lay: Layout, lam: NDArray[np.complex128], omega: float) -> NDArray[np.bool_]:
     """Which roots are rigid-body motion: held mostly by free DOFs and the generator
     azimuth (:data:`FREE_BELOW_HZ`), or undamped with the generator azimuth taking part —
     the rotor turning, which no structural damping resists (r-test 5MW_Land_BD_Linear:
-    0.19 Hz, ζ = 0, BeamDyn's collective edgewise states and the azimuth)."""
+    0.003 Hz, BeamDyn's collective edgewise states and the azimuth; 0.19 Hz = Ω/2π with
+    BeamDyn's states as written, :func:`beamdyn_frame`). Undamped: |Re λ| within 1e-5 of
+    |λ| or of the rotor speed Ω [rad/s] (one azimuth's periodic terms move the spin's zero
+    root by ~1e-6 rad/s)."""
     free = (s_q * lay.free[:, None]).sum(axis=0)
     turning = (s_q * lay.azimuth[:, None]).sum(axis=0)
-    undamped = np.abs(lam.real) <= 1e-5 * np.abs(lam)
+    undamped = np.abs(lam.real) <= 1e-5 * np.maximum(np.abs(lam), omega)
     return np.asarray(
         ((free >= FREE_SHARE) & (free + turning >= RIGID_SHARE))
         | (undamped & (turning >= TURNING_SHARE))
@@ -1083,6 +1250,7 @@ def to_spec_data(
     left: list[str] = []
     growing: list[str] = []
     titles: dict[str, None] = {}
+    notes: dict[str, None] = {}  # one statement however many points it applies to
     for root, paths in sorted(groups.items()):
         lins = [read(p) for p in paths]
         read_files += [str(p) for p in paths]
@@ -1090,6 +1258,8 @@ def to_spec_data(
             titles[lins[0].description] = None
         pm, nb = operating_point(lins)
         points.append(pm)
+        for note in pm.notes:
+            notes[note] = None
         nbs.add(nb)
         if lins[0].rotor_speed > 0 and nb >= 3 and not _even(lins):
             uneven.append(f"{root} ({len(lins)} at {pm.rpm:.4g} rpm)")
@@ -1135,6 +1305,7 @@ def to_spec_data(
         f"part {STRUCTURAL_SHARE:.0%} or more (participation factors); each named after the "
         "coordinate group that takes part most, with its share."
     )
+    data["assumptions"] += list(notes)
     if left:
         data["assumptions"].append(
             "Roots left out, no structural vibration (inflow, unsteady aerodynamics, "
