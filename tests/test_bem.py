@@ -163,6 +163,38 @@ def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nr
     assert np.all(bem._losses(neither, phi) == 1.0)
 
 
+def test_a_station_at_the_tip_carries_no_load(nrel):
+    """Prandtl's tip loss is zero at the tip: AeroDyn's BEMT sets a = 1, a′ = −1 where F = 0
+    (BEMTUncoupled's inductionFactors), the section meets no flow and carries nothing. A
+    station at the tip radius, or within a deck's rounding of it (r-test's AeroDyn blades
+    end at BlSpn 61.4999 m on a 61.5 m blade: 1.6e-6 of R), is unloaded — with a floor on
+    F instead it met 105 m/s at the 5-MW's tip against 79 m/s a station inboard, and held
+    a flap damping larger than any other section's. A station 1 % inboard is loaded as
+    before; without tip loss the tip station is loaded too."""
+    import dataclasses
+
+    r = bem.rotor(nrel)
+    assert r.tip_loss and r.radius[-1] == pytest.approx(r.tip_radius, rel=1e-5)
+    wind = np.array([8.0, 14.0])
+    omega = np.full(2, 12.1 * math.pi / 30)
+    sol = bem.solve(r, wind, omega, np.radians([0.0, 8.0]))
+    assert np.all(sol.w[:, -1] == 0.0) and np.all(sol.a[:, -1] == 1.0)
+    assert np.all(sol.w[:, -2] > 50.0)  # the station inboard, loaded
+    # the thrust: the trapezoid of the sections' loads, the tip's zero
+    q = 0.5 * r.rho * sol.w**2 * r.chord
+    f_n = q * (sol.cl * np.cos(sol.phi) + sol.cd * np.sin(sol.phi))
+    assert f_n[:, -1] == pytest.approx(np.zeros(2), abs=0.0)
+    np.testing.assert_allclose(sol.thrust, r.blades * np.trapezoid(f_n, r.radius, axis=1))
+    rounded = dataclasses.replace(r, tip_radius=float(r.radius[-1]) * (1 + 5e-5))
+    assert rounded.at_tip[-1] and not rounded.at_tip[-2]
+    inboard = dataclasses.replace(r, tip_radius=float(r.radius[-1]) * 1.01)
+    assert not inboard.at_tip.any()
+    assert np.all(bem.solve(inboard, wind, omega, np.zeros(2)).w[:, -1] > 50.0)
+    free = dataclasses.replace(r, tip_loss=False)
+    assert not free.at_tip.any()
+    assert np.all(bem.solve(free, wind, omega, np.zeros(2)).w[:, -1] > 50.0)
+
+
 def test_momentum_theory_gives_the_induction_in_both_of_its_paths():
     """Below k = 2/3 the axial induction is momentum theory's a = k/(1 + k) (Ning 2014,
     eq. 14) — on the path taken when every station is lightly loaded and, station by station,

@@ -74,20 +74,22 @@ def test_tower_on_its_subdyn_monopile_against_openfasts_linearisation(decks):
         assert f[name] == pytest.approx(openfast, rel=0.02), name
 
 
-#: OpenFAST on 5MW_Land_BD_Linear (12.1 rpm, BeamDyn blades, no aerodynamics) [Hz]:
-#: reference.json's roots, named as wtvib's .lin reader names them (Table 9-1's families,
-#: whirl from the cyclic phase).
-BD_TOWER = {"tower.ss1": 0.3113478623, "tower.fa1": 0.3265040517, "tower.fa2": 2.9086642929}
+#: OpenFAST on 5MW_Land_BD_Linear (12.1 rpm, BeamDyn blades, no aerodynamics) [Hz]: its
+#: .lin (tests/data/openfast_lin) read by wtvib with BeamDyn's states in the rotating frame
+#: (openfast_lin.beamdyn_frame: OpenFAST issue #3394 — as written, reference.json's
+#: roots, the side-side is 0.3113, the first edgewise pair 0.9211/1.3173), named as wtvib's
+#: .lin reader names them (Table 9-1's families, whirl from the cyclic phase).
+BD_TOWER = {"tower.ss1": 0.3216252216, "tower.fa1": 0.3248856133, "tower.fa2": 2.9096657158}
 BD_ROTOR = {
-    "blade.flap1.backward": 0.5372176674,
-    "blade.flap1.collective": 0.7622970612,
-    "blade.edge1.backward": 0.9210525461,
-    "blade.flap1.forward": 0.936156269,
-    "blade.edge1.forward": 1.3173440383,
-    "drivetrain1": 1.691625942,
-    "blade.flap2.backward": 1.8269544846,
-    "blade.flap2.collective": 2.1161466126,
-    "blade.flap2.forward": 2.2150477559,
+    "blade.flap1.backward": 0.5365956090,
+    "blade.flap1.collective": 0.7622303129,
+    "blade.edge1.backward": 0.8963687237,
+    "blade.flap1.forward": 0.9357140050,
+    "blade.edge1.forward": 1.3032366402,
+    "drivetrain1": 1.6882661711,
+    "blade.flap2.backward": 1.8269892441,
+    "blade.flap2.collective": 2.1160708650,
+    "blade.flap2.forward": 2.2148614244,
 }
 
 
@@ -99,8 +101,8 @@ def test_beamdyn_rotor_against_openfasts_linearisation(decks):
     edgewise K44: swapped, the first flap family moves 30 %), and each Campbell curve the
     same physical mode as OpenFAST's (before, the curve named after the collective
     flap mode at standstill was the forward whirl at 12.1 rpm). The tower's first pair
-    within 5 % (measured −3.8 % fore-aft, +2.7 % side-side: ElastoDyn's assumed shapes, see
-    the module notes) and its second fore-aft within 2 %."""
+    within 5 % (measured −3.3 % fore-aft: ElastoDyn's assumed shapes, see the module notes;
+    −0.6 % side-side) and its second fore-aft within 2 %."""
     deck = decks / "rtest/glue-codes/openfast/5MW_Land_BD_Linear/5MW_Land_BD_Linear.fst"
     s = importers.load(deck)
     assert any("Blade from BeamDyn" in a for a in s.assumptions)
@@ -215,7 +217,7 @@ def test_aerodynamic_damping_against_openfasts_linearisation_at_its_own_point(de
     """wtvib on the very deck set OpenFAST linearised (r-test 5MW_Land_Linear_Aero: fixed
     12.1 rpm, pitch 0), interpolated to 8 m/s. The deck's aerofoils are quasi-steady
     (UA_Mod 0), and so is wtvib's lift on it (aerodynamics.shed_wake false): the damping
-    judged is the quasi-steady one. OpenFAST's lies below it by 5–17 %: its DBEMT inflow
+    judged is the quasi-steady one. OpenFAST's lies below it by 2–9 %: its DBEMT inflow
     (τ₁ = 4 s; the near-wake filter τ₂ = τ₁·(0.39 − 0.26·(r/R)²), 0.5–1.6 s) follows the
     blades' motion in part, which frozen induction — wtvib's, the upper bound — does not."""
     import gzip
@@ -241,4 +243,4 @@ def test_aerodynamic_damping_against_openfasts_linearisation_at_its_own_point(de
         assert op.omega[0] == pytest.approx(12.1 * np.pi / 30)
         judged = float(np.interp(8.0, op.wind, op.total))
         assert judged == pytest.approx(float(np.interp(8.0, op.wind, op.quasi_steady)))
-        assert zeta < judged < 1.2 * zeta, (name, judged, zeta)
+        assert zeta < judged < 1.12 * zeta, (name, judged, zeta)

@@ -7,7 +7,9 @@ and Buhl's correction of the thrust coefficient for a > 0.4. The equations are s
 the inflow angle φ alone, after S. A. Ning, "A simple solution method for the blade element
 momentum equations with guaranteed convergence", Wind Energy 17 (2014) 1327–1345: one
 residual R(φ) with a bracketed root, found by bisection for all stations and operating
-points at once (no iteration that can fail to converge).
+points at once (no iteration that can fail to converge). A station at the tip, where
+Prandtl's tip loss is zero, carries no load (AeroDyn's BEMT: a = 1, a′ = −1 where F = 0;
+:attr:`Rotor.at_tip`).
 
 The controller's steady schedule (Jonkman et al. 2009 §7): variable speed holds the optimal
 tip-speed ratio between the minimum and rated rotor speed (region 2), then rated speed;
@@ -52,6 +54,9 @@ SLOPE_STEP_DEG = 0.5
 BISECTIONS, FALSI = 8, 8
 
 _EPS = 1e-6
+#: A station this close to the tip radius (relative) is at the tip: a deck's rounding (r-test's
+#: AeroDyn blades end at BlSpn 61.4999 m on a 61.5 m blade).
+TIP_ROUNDING = 1e-4
 
 
 @dataclass(frozen=True)
@@ -127,6 +132,16 @@ class Rotor:
         (f_down,) = self._lookup(alpha - step, flat)
         inviscid = slope * (np.degrees(alpha) - alpha0)
         return separated_slope(inviscid, f_now, (f_up - f_down) / (2 * step))
+
+    @functools.cached_property
+    def at_tip(self) -> NDArray[np.bool_]:
+        """The stations at the blade's tip (within :data:`TIP_ROUNDING` of the tip radius,
+        a deck's rounding) where Prandtl's tip loss is on: F = 0 there, the section carries
+        no load (AeroDyn's BEMT: a = 1, a′ = −1 where F = 0) — its momentum balance has no
+        root in that limit, and a floor on F leaves it an arbitrary load."""
+        if not self.tip_loss:
+            return np.zeros(len(self.radius), dtype=bool)
+        return np.asarray(self.radius >= self.tip_radius * (1 - TIP_ROUNDING))
 
     @functools.cached_property
     def solidity(self) -> Array:
@@ -516,6 +531,10 @@ def _solve(
     a_t = np.where(found, a_t, 0.0)
     if not np.all(found):
         cl, cd = r.polar(phi - theta)
+    tip = r.at_tip
+    if tip.any():  # F = 0: the flow stopped at the section, no load (Rotor.at_tip)
+        a = np.where(tip, 1.0, a)
+        a_t = np.where(tip, -1.0, a_t)
     u_n = axial * (1 - a)
     u_t = spin * (1 + a_t)
     w = np.hypot(u_n, u_t)
