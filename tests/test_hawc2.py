@@ -336,3 +336,49 @@ def test_oye_s_model_in_attached_flow_damps_as_the_static_lift(model):
     oye, static = damping(1), damping(0)
     for name in oye:
         np.testing.assert_allclose(oye[name], static[name], rtol=0.05, err_msg=name)
+
+
+@pytest.fixture
+def model22(tmp_path: Path) -> Path:
+    with tarfile.open(DATA / "iea22_monopile.tar.gz") as tar:
+        tar.extractall(tmp_path, filter="data")
+    return tmp_path / "HAWC2/IEA-22-280-RWT-Monopile/htc/iea_22mw_rwt_steps.htc"
+
+
+def test_the_water_a_monopile_moves_is_read_from_the_hydro_block(model22):
+    """The IEA-22 monopile's hydro_element (sec z Cm Cd V Vr width: 0 and 34 m from its
+    first node, at the seabed — mudlevel 34 m — Cm 1, Vr = π·10²/4 m²): ρ·Cm·Vr =
+    1027·78.5398 = 80,660 kg/m from the tower's base to the mean water level, the tower's
+    added mass. With the water 10 m lower (mwl 10: HAWC2's z points down) it stops 24 m
+    above the base, the section above the water cut where the surface crosses it."""
+    from wtvib import importers
+
+    spec = importers.load(model22)
+    added = spec.tower.added_mass
+    assert added is not None and added.height_m == [0.0, 34.0]
+    assert added.mass_per_length_kg_m == pytest.approx([1027 * 78.5398] * 2, rel=1e-6)
+    assert not any("hydro" in w for w in spec.warnings)
+    _edit(model22, "mwl 0.0;", "mwl 10.0;")
+    lower = importers.load(model22).tower.added_mass
+    assert lower is not None and lower.height_m == pytest.approx([0.0, 24.0])
+    assert lower.mass_per_length_kg_m == pytest.approx([1027 * 78.5398] * 2, rel=1e-6)
+
+
+def test_a_hydro_element_off_the_tower_is_said_and_a_broken_one_refused(model22):
+    """A hydro element on a body that is not the tower's is not read, and said so (its water
+    is missing); a section off its body is one line with file and line, exit 2."""
+    from wtvib import importers
+
+    text = model22.read_text()
+    _edit(
+        model22, "mbdy_name monopile;\n    hydrosections", "mbdy_name towertop;\n    hydrosections"
+    )
+    spec = importers.load(model22)
+    assert spec.tower.added_mass is None
+    assert any("towertop" in w and "hydro" in w for w in spec.warnings)
+    model22.write_text(text)
+    _edit(model22, "sec 34.0 1.0 1.0 78.5398", "sec 340.0 1.0 1.0 78.5398")
+    result = CliRunner().invoke(app, ["check", str(model22)])
+    assert result.exit_code == 2, result.output
+    assert "hydro_element monopile" in result.output and "Traceback" not in result.output
+    assert re.search(r"iea_22mw_rwt_steps\.htc.*48[0-9]", result.output.replace("\n", " "))

@@ -30,6 +30,7 @@ with E·I_y (a fully populated set: K22 with K44, K11 with K55); the tower stays
 Euler–Bernoulli beam (a tube, whose shear deformation is negligible).
 """
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -466,7 +467,10 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             *([drivetrain_note] if drivetrain_note else []),
         ],
     }
-    warnings = _support_warnings(top, embedded)
+    added, hydro_left = _added_mass(top, chain)
+    if added is not None:
+        data["tower"]["added_mass"] = added
+    warnings = _support_warnings(embedded, hydro_left)
     if warnings:
         data["warnings"] = warnings
     aerodynamics = _aerodynamics(top, root, chain, control)
@@ -564,8 +568,9 @@ def _assembly_notes(path: Path, chain: "_Chain", downwind: float, above: float) 
     ]
 
 
-def _support_warnings(top: Block, embedded: set[str]) -> list[str]:
-    """What of the model's support is not read: its pile in the soil, its hydro block."""
+def _support_warnings(embedded: set[str], hydro_left: list[str]) -> list[str]:
+    """What of the model's support is not read: its pile in the soil, hydro elements on
+    bodies that are not the tower's."""
     warnings = []
     if embedded:
         warnings.append(
@@ -573,12 +578,118 @@ def _support_warnings(top: Block, embedded: set[str]) -> list[str]:
             "HAWC2's soil block) is not read: the tower is clamped at the mudline, so its "
             "bending frequencies are upper bounds"
         )
-    if top.block("hydro") is not None:
+    if hydro_left:
         warnings.append(
-            "tower.added_mass: HAWC2's hydro block (the water moving with the monopile) is "
-            "not read: the submerged part's added mass is missing"
+            "tower.added_mass: HAWC2's hydro elements on "
+            f"{', '.join(hydro_left)} (not the tower's bodies from the mudline up) are not read: "
+            "the water they move is missing"
         )
     return warnings
+
+
+#: HAWC2's water density where its water_properties give none [kg/m³].
+WATER_DENSITY = 1027.0
+
+
+def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, list[str]]:
+    """The water a submerged tower (monopile) moves in bending, from the hydro block: each
+    hydro_element's sections (``sec z Cm Cd V Vr width``, z along its body from node 1) give
+    ρ·Cm·Vr per length — Morison's added mass, Cm the added-mass coefficient and Vr its
+    reference volume per length (HAWC2's hydro_element; DTU's windIO-to-HAWC2 converter
+    writes Ca and πD²/4 there) — linear between sections, where the body is under the mean
+    water level (``mwl``; HAWC2's z points down) and above the mudline; on the tower's
+    bodies, at heights above its base. Returns the spec's ``tower.added_mass`` (None: no
+    such water) and the bodies whose elements were left (not the tower's)."""
+    hydro = top.block("hydro")
+    if hydro is None:
+        return None, []
+    water = hydro.block("water_properties")
+
+    def setting(key: str, default: float) -> float:
+        cmd = water.get(key) if water is not None else None
+        return cmd.number(0) if cmd is not None else default
+
+    rho, mwl = setting("rho", WATER_DENSITY), setting("mwl", 0.0)
+    mud = setting("mudlevel", math.inf)
+    offsets, at = {}, 0.0
+    for body in chain.tower:
+        offsets[body.name] = at
+        at += body.length
+    heights: list[float] = []
+    masses: list[float] = []
+    left: list[str] = []
+    for element in hydro.each("hydro_element"):
+        name_cmd = element.need("mbdy_name")
+        name = name_cmd.values[0].lower() if name_cmd.values else ""
+        body = next((b for b in chain.tower if b.name == name), None)
+        if body is None:
+            left.append(name or "an unnamed body")
+            continue
+        z, m = _sections(element, body, rho)
+        wet = _submerged(z, np.array([float(_along(body, v)[2]) for v in z]), mwl, mud)
+        heights += [offsets[name] + v for v in wet]
+        masses += list(np.interp(wet, z, m))
+    if len(heights) < 2:
+        return None, left
+    order = np.argsort(heights, kind="stable")
+    h, m = np.asarray(heights)[order], np.asarray(masses)[order]
+    keep = np.append(np.diff(h) > 0, True)  # one value per height (a section repeated)
+    return {
+        "height_m": [float(v) for v in h[keep]],
+        "mass_per_length_kg_m": [float(v) for v in m[keep]],
+        "source": (
+            "HAWC2's hydro block: ρ·Cm·Vr of each hydro_element section below the mean water "
+            f"level (ρ = {rho:g} kg/m³, Morison's added mass)"
+        ),
+    }, left
+
+
+def _sections(element: Block, body: Body, rho: float) -> tuple[np.ndarray, np.ndarray]:
+    """A hydro_element's sections along its body (z from node 1, rising) and ρ·Cm·Vr at
+    each [kg/m]."""
+    rows = []
+    for sec in element.all("sec"):
+        z, cm, vr = sec.number(0), sec.number(1), sec.number(4)
+        if not (math.isfinite(z) and cm >= 0 and vr >= 0 and 0 <= z <= body.length * 1.001):
+            raise SpecError(
+                f"hydro_element {body.name}: sec {z:g} {cm:g} … {vr:g}: z must lie on the "
+                f"body (0 to {body.length:.4g} m) and Cm, Vr be 0 or more",
+                line=sec.line,
+                source=str(sec.file),
+            )
+        rows.append((z, rho * cm * vr))
+    if len(rows) < 2 or any(b[0] <= a[0] for a, b in itertools.pairwise(rows)):
+        raise SpecError(
+            f"hydro_element {body.name}: its sections must be two or more, at rising z",
+            line=element.line,
+            source=str(element.file),
+        )
+    table = np.array(rows)
+    return table[:, 0], table[:, 1]
+
+
+def _submerged(z: np.ndarray, depth: np.ndarray, mwl: float, mud: float) -> list[float]:
+    """The positions along a body (its sections' ``z`` and where, linear between them, its
+    global ``depth`` — HAWC2's z, down — crosses the water level or the mudline) that lie in
+    the water: mwl ≤ depth ≤ mud."""
+    points = list(z)
+    for a, b, da, db in zip(z, z[1:], depth, depth[1:], strict=False):
+        for level in (mwl, mud):
+            if math.isfinite(level) and (da - level) * (db - level) < 0:
+                points.append(a + (b - a) * (level - da) / (db - da))
+    at = np.sort(np.asarray(points))
+    wet = np.interp(at, z, depth)
+    tol = 1e-9 * max(1.0, float(np.max(np.abs(depth))))
+    return [float(v) for v, d in zip(at, wet, strict=True) if mwl - tol <= d <= mud + tol]
+
+
+def _along(body: Body, distance: float) -> np.ndarray:
+    """The global position of the point ``distance`` along a body's centre line from its
+    first node."""
+    steps = np.linalg.norm(np.diff(body.c2[:, :3], axis=0), axis=1)
+    s = np.concatenate([[0.0], np.cumsum(steps)])
+    local = np.array([np.interp(distance, s, body.c2[:, k]) for k in range(3)])
+    return np.asarray(body.origin + body.frame @ local)
 
 
 def _plain(value: Any) -> Any:
