@@ -612,16 +612,16 @@ def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, lis
     rho, mwl = setting("rho", WATER_DENSITY), setting("mwl", 0.0)
     mud = setting("mudlevel", math.inf)
     offsets, at = {}, 0.0
-    for body in chain.tower:
-        offsets[body.name] = at
-        at += body.length
+    for each in chain.tower:
+        offsets[each.name] = at
+        at += each.length
     heights: list[float] = []
     masses: list[float] = []
     left: list[str] = []
     for element in hydro.each("hydro_element"):
         name_cmd = element.need("mbdy_name")
         name = name_cmd.values[0].lower() if name_cmd.values else ""
-        body = next((b for b in chain.tower if b.name == name), None)
+        body: Body | None = next((b for b in chain.tower if b.name == name), None)
         if body is None:
             left.append(name or "an unnamed body")
             continue
@@ -895,22 +895,38 @@ def _aerodynamics(
     }
 
 
-def _shear_centre(body: Body, r: np.ndarray, chord: np.ndarray) -> list[float] | None:
+def _shear_centre(body: Body, r: np.ndarray, chord: np.ndarray) -> list[float]:
     """Each aerodynamic station's shear centre as a fraction of its chord from the leading
-    edge: the classical st set's x_sh from the half-chord line c2_def, along the chord (None
-    for a fully populated set: its x_e is the elastic centre, and the shear centre within its
-    stiffness matrix is not read — the quarter chord is taken, said). HAWC2's blade x axis
-    points in the direction of rotation, towards the leading edge: y is downwind (the IEA
-    blades' upwind prebend is negative y) and z towards the tip, so x = y × z points ahead of
-    a blade of a rotor turning clockwise seen from upwind, as HAWC2's turn. The IEA 15 MW's
+    edge: the classical st set's x_sh from the half-chord line c2_def, along the chord (a
+    fully populated set's from its stiffness matrix: :func:`_fpm_shear_centre`). HAWC2's
+    blade x axis points in the direction of rotation, towards the leading edge: y is downwind
+    (the IEA blades' upwind prebend is negative y) and z towards the tip, so x = y × z points
+    ahead of a blade of a rotor turning clockwise seen from upwind, as HAWC2's turn. The IEA 15 MW's
     st file agrees: over its outer half its shear centres lie 0.14–0.26 chords ahead of the
     half chord (at 24–37 % of the chord, near the quarter chord as a blade's are; the other
     way round they would lie at 63–76 % and the blade diverge in torsion at rated)."""
-    if body.fpm:
-        return None
     st = body.st
-    ahead = np.interp(r, st[:, 0] - st[0, 0], st[:, ST.index("x_sh")])
+    x_sh = _fpm_shear_centre(st) if body.fpm else st[:, ST.index("x_sh")]
+    ahead = np.interp(r, st[:, 0] - st[0, 0], x_sh)
     return [float(v) for v in np.clip(0.5 - ahead / chord, -0.5, 1.5)]
+
+
+def _fpm_shear_centre(st: np.ndarray) -> np.ndarray:
+    """A fully populated st set's shear centres, x from the half-chord line as a classical
+    set's x_sh [m]. Its 6×6 stiffness is given at the elastic centre (x_e, y_e) in axes turned
+    by the structural pitch; the shear centre is where a shear force twists the section not
+    at all — with the compliance C = K⁻¹ (shear x, y, axial, bending x, y, torsion),
+    (−C₅₁/C₅₅, C₅₀/C₅₅) in those axes (zero-based) — turned back and moved to the half-chord
+    line. The IEA-15's FPM and classical st files of the same blade give the same x_sh at
+    every station to 2e-11 m (tests/test_hawc2.py)."""
+    k = np.zeros((len(st), 6, 6))
+    iu = np.triu_indices(6)
+    k[:, iu[0], iu[1]] = st[:, 9:30]
+    k[:, iu[1], iu[0]] = st[:, 9:30]
+    c = np.linalg.inv(k)
+    xs, ys = -c[:, 5, 1] / c[:, 5, 5], c[:, 5, 0] / c[:, 5, 5]
+    pitch = np.radians(st[:, FPM_HEAD.index("pitch")])
+    return np.asarray(st[:, FPM_HEAD.index("x_e")] + np.cos(pitch) * xs - np.sin(pitch) * ys)
 
 
 #: The separation point's time constant [half-chord transits] of HAWC2's dynamic stall
