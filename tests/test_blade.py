@@ -140,3 +140,37 @@ def test_a_principal_axis_turned_by_half_a_turn_is_the_same_axis():
     _, f_short, _, _ = blade.rotating_modes(short, np.array([0.0, 1.0]), count=4)
     _, f_wrapped, _, _ = blade.rotating_modes(wrapped, np.array([0.0, 1.0]), count=4)
     np.testing.assert_allclose(f_wrapped, f_short, rtol=1e-9)
+
+
+@pytest.mark.parametrize("shear", [False, True])
+def test_a_blade_twisted_to_feather_bends_downwind_towards_the_direction_of_rotation(shear):
+    """A uniform cantilever twisted 30° to feather (its leading edge turned upwind), flapwise
+    10 times softer than edgewise, pushed downwind at the tip: it bends about its weak axis,
+    normal to the chord — downwind and towards its leading edge, the direction of rotation:
+    v/w = C_vw/C_ww, the compliance tensor's ratio (1/EI_f − 1/EI_e)·sin β·cos β /
+    (cos²β/EI_f + sin²β/EI_e), flap axis (cos β, sin β) in (w, v) — in Euler–Bernoulli and
+    Timoshenko blades alike (shear far stiffer than bending here). A blade model with the
+    twist's coupling mirrored bends it the other way (test_hawc2: HAWCStab2's DTU 10 MW
+    blade leans as this one)."""
+    from wtvib.numerics import beam
+
+    ef, ee, beta = 1e9, 1e10, math.radians(30.0)
+    fields = {
+        "span_m": [0.0, 50.0],
+        "mass_per_length_kg_m": [300.0, 300.0],
+        "ei_flap_nm2": [ef, ef],
+        "ei_edge_nm2": [ee, ee],
+        "twist_deg": [30.0, 30.0],
+    }
+    if shear:
+        fields |= {"ga_flap_n": [1e15, 1e15], "ga_edge_n": [1e15, 1e15]}
+    s = spec.BladeStructure.model_validate(fields)
+    nodes = beam.mesh(np.asarray(s.span_m), 20)
+    k0, _, _, _ = blade.blade_parts(s, nodes)
+    load = np.zeros(len(k0))
+    load[-4] = 1.0  # the tip's w (dofs per node w, w′, v, v′; the root's four removed)
+    tip = np.linalg.solve(k0, load)
+    c, sn = math.cos(beta), math.sin(beta)
+    expected = (1 / ef - 1 / ee) * sn * c / (c**2 / ef + sn**2 / ee)
+    assert tip[-2] > 0 and tip[-4] > 0
+    assert tip[-2] / tip[-4] == pytest.approx(expected, rel=1e-4)

@@ -186,6 +186,45 @@ def test_the_dtu10mw_blade_against_hawcstab2(dtu10):
         assert np.all(np.abs(diff) <= 0.03), (name, diff)
 
 
+#: HAWCStab2's DTU 10 MW blade at standstill (blade.amp, CASEToolBox's HAWCStab2 results):
+#: mode → column of its u_x amplitude (u_x, phase, u_y, phase follow).
+_AMP_COLUMNS = {"flap1": 2, "edge1": 8}
+
+
+def test_the_dtu10mw_blade_bends_as_hawcstab2_s_in_and_out_of_the_rotor_plane(dtu10):
+    """Which way the twisted blade's modes lean: HAWCStab2's first flapwise mode of the DTU
+    10 MW blade at standstill (blade.amp) moves towards the leading edge as it moves
+    downwind (u_x/u_y = +0.22, +0.16, +0.13 at 31, 66 and 85 m, in phase; HAWC2's blade x
+    points ahead, in the direction of rotation, y downwind), its first edgewise mode the
+    other way (−18.9, −6.7, −4.1, in antiphase): a section twisted to feather, its leading
+    edge turned upwind, has its flapwise principal axis turned from the downwind direction
+    towards the direction of rotation. wtvib's blade of the same st file within 20 % of each
+    ratio, the sign the same (measured +0.23, +0.17, +0.13; −18, −8.2, −3.8). The blade
+    model once had the twist's coupling mirrored (ratios of the other sign, magnitudes the
+    same: frequencies cannot tell), which turned every twisted blade's modes the wrong way
+    against the aerodynamic forces of the coupled model."""
+    rows = [
+        [float(x) for x in line.split()]
+        for line in (DATA / "campbell" / "hawcstab2" / "blade.amp").read_text().splitlines()
+        if line.strip() and not line.startswith("#")
+    ]
+    amp = np.array([r for r in rows if r[0] == 0.0])
+    structure = importers.load(dtu10).blade.structure
+    assert structure is not None
+    names, _, nodes, shapes = blade.rotating_modes(structure, np.array([0.0]), count=4)
+    for name, col in _AMP_COLUMNS.items():
+        j = names.index(name)
+        w, v = shapes[0::4, j], shapes[2::4, j]
+        for radius in (31.0, 65.9, 85.1):
+            i = int(np.argmin(np.abs(amp[:, 1] - radius)))
+            ux, px, uy, py = amp[i, col : col + 4]
+            together = abs(((px - py + 180) % 360) - 180) < 90
+            theirs = (1 if together else -1) * ux / uy
+            k = int(np.argmin(np.abs(nodes[1:] + structure.hub_radius_m - amp[i, 1])))
+            ours = v[k] / w[k]
+            assert ours == pytest.approx(theirs, rel=0.2), (name, radius, ours, theirs)
+
+
 def test_the_dtu10mw_model_audits(dtu10):
     """The DTU 10 MW's own model (its controller's speeds 6–9.6 rpm, constants 2 and 3)
     audits end to end, every subsystem: tower, blades, drive train (its shaft's G·I_p and
@@ -308,7 +347,7 @@ def test_the_iea15_aeroelastic_damping_against_hawcstab2(iea15, hs2_aeroelastic)
     (measured +16, +13, +13 % at the model's operating points with the blades twisting under
     load, test_the_iea15_steady_state_twists_as_hawcstab2_s). OPEN, held to what it
     measures: at 10 m/s the first flap collective 2.9 times HAWCStab2's 0.32 and the first
-    edge backward whirl 3.2 times its 0.016 (4.2 with a rigid rotor at wtvib's own
+    edge backward whirl 3.0 times its 0.016 (4.2 with a rigid rotor at wtvib's own
     schedule) — HAWCStab2's modes twist the blade, wtvib's bend only. A third
     reference puts this example's flap damping in doubt: HAWCStab2 and OpenFAST (unsteady
     aerodynamics) on the IEA-22, a rotor of the same kind, damp its first flap triple at
@@ -389,15 +428,21 @@ def test_the_iea22_damping_against_hawc2(iea22, hs2_iea22):
     mean). wtvib audits at the model's own operating points (its .opt) with the blades
     twisting under load. Measured here:
 
-    * the flap triple's mean damping within ±0.015 of HAWC2's at 4–8 m/s (0.340 against
+    * the flap triple's mean damping within ±0.02 of HAWC2's at 4–8 m/s (0.338 against
       0.347 at 4 m/s), −0.01 … +0.11 at 10–20 m/s (the +0.11 where HAWC2's collective is
       missing from its mean) — at wtvib's own schedule and rigid blades it was 0.08 low at
       4 m/s (the region-2 tip-speed ratio: 8.4 wtvib's optimum, 9.2 the model's);
     * the backward and forward flap whirls one by one within ±0.05 at 10–20 m/s (the forward
       whirl once took a creeping root of its shape, ζ 0.98: multiblade._continuity);
-    * the collective edge within ±50 % at 4, 6, 15 m/s (−16 %, −5 %, +12 %);
-    * the edgewise pair within a factor 0.6–1.7 at 4, 6, 8 and 20 m/s (0.70–1.59);
-      OPEN near rated: 1.5–6.2 times HAWC2's at 10 and 12 m/s, where HAWC2's edge damping
+    * the collective edge within ±50 % at 4, 6, 15 m/s (+19 %, +18 %, −1 %);
+    * the edgewise pair within a factor 0.6–1.8 at 4, 6 and 8 m/s (1.03–1.75; 0.70–1.59
+      while the blade model's twist coupling was mirrored, test_the_dtu10mw_blade_bends_as_
+      hawcstab2_s_in_and_out_of_the_rotor_plane); OPEN above 18 m/s, where HAWC2's and
+      OpenFAST's edge damping rise with the pitch (0.023 → 0.049 from 18 to 25 m/s in
+      HAWC2's) and wtvib's does not (0.44 / 0.62 of HAWC2's at 20 m/s): the pitch turns the
+      blades' modes against the rotor plane, which wtvib's coupled model, its blades at zero
+      pitch, does not (the note on issue 53);
+      OPEN near rated: 1.6–6.0 times HAWC2's at 10 and 12 m/s, where HAWC2's edge damping
       falls to 0.7–4 % and wtvib's peaks — as against HAWCStab2's IEA-15 (test_the_iea15_
       aeroelastic_damping_against_hawcstab2): two turbines, two sources, one gap; the
       steady state is no longer where the models part (test_the_iea15_steady_state_twists_
@@ -421,9 +466,11 @@ def test_the_iea22_damping_against_hawc2(iea22, hs2_iea22):
         ratio = ours("edge1.collective", wind) / float(hs2_iea22[wind][1][5])
         assert 0.5 <= ratio <= 1.5, (wind, ratio)
     for name, j in (("edge1.backward", 3), ("edge1.forward", 4)):
-        for wind in (4.0, 6.0, 8.0, 20.0):
+        for wind in (4.0, 6.0, 8.0):
             ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
-            assert 0.6 <= ratio <= 1.7, (name, wind, ratio)
+            assert 0.6 <= ratio <= 1.8, (name, wind, ratio)
+        ratio = ours(name, 20.0) / float(hs2_iea22[20.0][1][j])  # OPEN, held as measured
+        assert 0.3 <= ratio <= 0.8, (name, ratio)
         for wind in (10.0, 12.0):  # OPEN, held to what it measures
             ratio = ours(name, wind) / float(hs2_iea22[wind][1][j])
             assert 1.4 <= ratio <= 7.0, (name, wind, ratio)
@@ -451,7 +498,7 @@ def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, open
     wtvib's modes bend only (the steady twist under load is in its operating points, not in
     its modes) — and where OpenFAST's blade is rigid in torsion too (ElastoDyn: the NREL
     5-MW at 8 m/s, test_rtest_models.test_the_aerodynamic_damping_is_openfasts_within_its_
-    wake_model), wtvib's edge damping is OpenFAST's within −7 … +9 %. OpenFAST's numbers
+    wake_model), wtvib's edge damping is OpenFAST's within −10 … +6 %. OpenFAST's numbers
     here are a BeamDyn model's linearised before its frame fix (OpenFAST issue #3394, which
     measured the IEA-22's modes drooping up to 8 % at rated speed; wtvib turns a .lin's
     BeamDyn states itself, openfast_lin.beamdyn_frame, but these are published results):

@@ -56,8 +56,8 @@ _FAKE = (
     "only, Øye's (UA_Mod 6, its T_f0 raised to 30 'to affect the Øye model') unsteady "
     "aerofoil, no dynamic wake). Its outer stations sit at or past the aerofoil's stall, "
     "where the separation point's lag decides the damping: with the lift on the static polar "
-    "wtvib damps the flap modes as OpenFAST does within −1 … +9 % (0.33 / 0.24 / 0.19 "
-    "against 0.33 / 0.23 / 0.17), with the separation lagged 1.3–1.5 times as much "
+    "wtvib damps the flap modes as OpenFAST does within +3 … +14 % (0.34 / 0.25 / 0.20 "
+    "against 0.33 / 0.23 / 0.17), with the separation lagged 1.4–1.6 times as much "
     "(test_the_fixtures_damping_against_openfasts_with_the_separation_lagged); the natural "
     "frequencies of so heavily damped modes move with the damping"
 )
@@ -206,9 +206,9 @@ EXCEPTIONS.update(
         **{
             ("Fake5MW_AeroLin_B3_UA6", mode): (lo, hi, _FAKE + f". Measured {said}")
             for mode, lo, hi, said in (
-                ("blade.flap1.backward", 0.15, 0.26, "+20.7 %"),
-                ("blade.flap1.collective", 0.08, 0.18, "+13.0 %"),
-                ("blade.flap1.forward", 0.05, 0.14, "+9.2 %"),
+                ("blade.flap1.backward", 0.15, 0.26, "+20.6 %"),
+                ("blade.flap1.collective", 0.08, 0.18, "+12.6 %"),
+                ("blade.flap1.forward", 0.05, 0.14, "+8.7 %"),
             )
         },
         ("Fake5MW_AeroLin_B1_UA4_DBEMT3", "blade.flap1"): (
@@ -579,10 +579,10 @@ def test_the_aerodynamic_damping_is_openfasts_within_its_wake_model(decks, tmp_p
     aerofoils): wtvib's damping at the same point within 20 % of OpenFAST's for every mode
     damped by more than 1 % — the flap modes and the first fore-aft, which the wake damps, above it
     (wtvib's wake frozen: the dynamic wake's upper bound, reached at ωτ → ∞; measured
-    +1.6 … +2.8 % in the first flap modes, +7 … +8 % in the second, +9 % in the fore-aft —
+    +1.8 … +3.0 % in the first flap modes, +8 … +9 % in the second, +9 % in the fore-aft —
     +7 … +19 % while a station at the tip still carried a load, which Prandtl's tip loss
     takes to zero there as AeroDyn does: bem.Rotor.at_tip), the edgewise ones on either side
-    (−9 %, +7 %), the second tower modes, damped by the structure mostly, below (−4 %, −6 %:
+    (−10 %, +6 %), the second tower modes, damped by the structure mostly, below (−4 %, −6 %:
     their structural damping taken at ElastoDyn's own reference frequencies, test above;
     they were −15 % and −37 %)."""
     case = "5MW_Land_Linear_Aero"
@@ -683,13 +683,15 @@ def test_the_fixtures_damping_against_openfasts_with_the_separation_lagged(decks
     the aerofoil's stall; Øye's model with T_f0 = 30, no shed wake, the induction in
     equilibrium): OpenFAST's linearisation damps the flap modes at ζ 0.330 / 0.228 / 0.174
     (backward, collective, forward). With the lift on the static polar wtvib damps them
-    within −1 … +9 % of that (0.326 / 0.240 / 0.190). It damped them 2.3–2.9 times as much
+    within +3 … +14 % of that (0.340 / 0.251 / 0.199; −1 … +9 % while the blade model's
+    twist coupling was mirrored: the flap modes of this blade, twisted 13° to feather at
+    its root, lean towards the direction of rotation). It damped them 2.3–2.9 times as much
     while its BEM loaded the station at the tip (r = 62.9999 m of a 63 m rotor, the
     deck's BlSpn 61.4999): Prandtl's tip loss vanishes there, AeroDyn's BEMT sets a = 1,
     a′ = −1 and the section carries nothing (bem.Rotor.at_tip) — on four stations that
     tip's 18 m of blade, linear to it, held most of the flap damping. OPEN: with the
     separation point lagging (dynamic stall, as the deck asks: UA_Mod 6 read with its
-    T_f0) wtvib damps them 1.3–1.5 times OpenFAST's (0.44 / 0.32 / 0.26). The lag raises
+    T_f0) wtvib damps them 1.4–1.6 times OpenFAST's (0.47 / 0.35 / 0.27). The lag raises
     the damping as Øye's model linearised says it must — a vibration faster than the
     separation's 1/T_f meets the frozen separation point's slope C_L′ − L, positive past
     stall, not the static polar's negative C_L′ (:mod:`wtvib.numerics.unsteady`) — and so
@@ -710,5 +712,5 @@ def test_the_fixtures_damping_against_openfasts_with_the_separation_lagged(decks
     theirs = dict(zip(ref.names, ref.damping_ratio, strict=True))
     for name in ("blade.flap1.backward", "blade.flap1.collective", "blade.flap1.forward"):
         assert 1.2 <= lagged[name] / theirs[name] <= 1.7, (name, lagged[name], theirs[name])
-        assert static[name] == pytest.approx(theirs[name], rel=0.12), (name, static[name])
+        assert static[name] == pytest.approx(theirs[name], rel=0.17), (name, static[name])
         assert lagged[name] > static[name], name  # the lag meets the frozen slope

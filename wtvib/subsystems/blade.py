@@ -75,12 +75,18 @@ RITZ_BLADE = 6
 def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, Array]:
     """K₀ (elastic), G (geometric stiffness of the centrifugal tension per Ω²), M_v (the
     in-plane part of the mass) and M of the cantilevered blade: K(Ω) = K₀ + Ω²·(G − M_v),
-    dofs per node (w, w', v, v'), w out of and v in the rotor plane.
+    dofs per node (w, w', v, v'), w out of the rotor plane (downwind) and v in it (in the
+    direction of rotation).
 
     Notes
     -----
-    With structural twist β the stiffnesses in rotor axes are EI_ww = EI_f·cos²β + EI_e·sin²β,
-    EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_e − EI_f)·sinβ·cosβ. Rotation adds the
+    With structural twist β (to feather) the stiffnesses in rotor axes are EI_ww = EI_f·cos²β
+    + EI_e·sin²β, EI_vv = EI_f·sin²β + EI_e·cos²β, EI_wv = (EI_f − EI_e)·sinβ·cosβ: a
+    section turned to feather has its leading edge turned upwind, its flapwise principal
+    axis (normal to the chord) from the downwind direction towards the direction of
+    rotation, ê_f = (cos β, sin β) in (w, v) — HAWCStab2's first flapwise mode of the DTU
+    10 MW blade moves towards its leading edge as it moves downwind, as wtvib's
+    (tests/validation/test_hawc2.py). Rotation adds the
     geometric stiffness of the centrifugal tension N(r) = Ω²∫_r^R m(s)·(r_hub + s) ds to both
     planes and the in-plane softening −Ω²·M_v (the centrifugal force has a component along
     an in-plane displacement). The root is clamped (its four dofs removed), or free
@@ -97,7 +103,7 @@ def blade_parts(s: BladeStructure, nodes: Array) -> tuple[Array, Array, Array, A
     b = beam.basis(nodes)
     m, ef, ee, beta = _sections(s, b)
     c, sn = np.cos(beta), np.sin(beta)
-    ei_ww, ei_vv, ei_wv = ef * c**2 + ee * sn**2, ef * sn**2 + ee * c**2, (ee - ef) * sn * c
+    ei_ww, ei_vv, ei_wv = ef * c**2 + ee * sn**2, ef * sn**2 + ee * c**2, (ef - ee) * sn * c
     # a tip mass pulls on every section (its centrifugal force per Ω²: m_tip·R)
     tension = _centrifugal_integral(nodes, m, s.hub_radius_m)
     tension = tension + s.tip_mass_kg * (s.hub_radius_m + nodes[-1])
@@ -139,7 +145,7 @@ def _shear_blocks(
     and v at the Gauss points per element dof, (n, 4, 8) each.
 
     Each element is interpolated in its own principal frame, turned by its mean twist
-    β_e (u_f = w·cos β_e − v·sin β_e, u_e = w·sin β_e + v·cos β_e), each plane with its
+    β_e (u_f = w·cos β_e + v·sin β_e, u_e = −w·sin β_e + v·cos β_e), each plane with its
     own φ = 12·EI/(κGA·L²) (:func:`wtvib.numerics.beam.timoshenko`); the sections'
     principal axes, at β − β_e in that frame, give the bending and shear stiffness tensors
     at each Gauss point as in the Euler–Bernoulli blade. Energy: ½∫κᵀ·EI·κ + ½∫γᵀ·κGA·γ
@@ -174,8 +180,8 @@ def _shear_blocks(
 
     def tensor(f: Array, e: Array) -> Array:  # the section's tensor in the element frame
         return np.stack(
-            [np.stack([f * c**2 + e * sn**2, (e - f) * sn * c], -1),
-             np.stack([(e - f) * sn * c, f * sn**2 + e * c**2], -1)], -2
+            [np.stack([f * c**2 + e * sn**2, (f - e) * sn * c], -1),
+             np.stack([(f - e) * sn * c, f * sn**2 + e * c**2], -1)], -2
         )  # fmt: skip
 
     def energy(rows: Array, mid: Array) -> Array:
@@ -183,9 +189,9 @@ def _shear_blocks(
 
     eye = np.broadcast_to(np.eye(2), (*b.w.shape, 2, 2))
     ce, se = np.cos(be)[:, None, None], np.sin(be)[:, None, None]
-    # w = u_f·cos β_e + u_e·sin β_e, v = −u_f·sin β_e + u_e·cos β_e
-    h_w = ce * deflection[:, :, 0] + se * deflection[:, :, 1]
-    h_v = -se * deflection[:, :, 0] + ce * deflection[:, :, 1]
+    # w = u_f·cos β_e − u_e·sin β_e, v = u_f·sin β_e + u_e·cos β_e
+    h_w = ce * deflection[:, :, 0] - se * deflection[:, :, 1]
+    h_v = se * deflection[:, :, 0] + ce * deflection[:, :, 1]
     blocks = np.stack(
         [
             energy(curvature, tensor(ef, ee)) + energy(strain, tensor(gf, ge)),
@@ -197,8 +203,8 @@ def _shear_blocks(
     # from the element frame to the rotor's dofs: p = T·q
     t = np.zeros((len(lengths), 8, 8))
     i4 = np.eye(4)
-    t[:, :4, :4], t[:, :4, 4:] = ce * i4, -se * i4
-    t[:, 4:, :4], t[:, 4:, 4:] = se * i4, ce * i4
+    t[:, :4, :4], t[:, :4, 4:] = ce * i4, se * i4
+    t[:, 4:, :4], t[:, 4:, 4:] = -se * i4, ce * i4
     out = np.einsum("eki,xekl,elj->xeij", t, blocks, t)
     return out, np.einsum("egk,ekj->egj", h_w, t), np.einsum("egk,ekj->egj", h_v, t)
 

@@ -513,15 +513,16 @@ def _deflections(v: Array) -> Array:
 def _blade_vector(p: Polynomial, nodes: Array, twist: Array, flap: bool) -> Array:
     """A blade shape as ElastoDyn builds it from a polynomial: its curvature φ″ along the
     principal flap (or edge) axis, which turns with the structural twist β — in rotor axes
-    (w out of, v in the plane) the flap axis is (cos β, −sin β), the edge axis
-    (sin β, cos β) (:func:`wtvib.subsystems.blade.blade_parts`' stiffness rotation) — integrated
-    twice
-    from the clamped root. The dofs (w, w′, v, v′) of every node but the root."""
+    (w downwind, v in the plane in the direction of rotation) the flap axis is
+    (cos β, sin β), the edge axis (−sin β, cos β) (:func:`wtvib.subsystems.blade.blade_parts`'
+    stiffness rotation; ElastoDyn's own, its Lj₁ = cos θ·j₁ − sin θ·j₂ with j₂ towards the
+    trailing edge) — integrated twice from the clamped root. The dofs (w, w′, v, v′) of every
+    node but the root."""
     length = float(nodes[-1] - nodes[0])
     fine = np.linspace(0.0, 1.0, 4001)
     beta = np.interp(fine, (nodes - nodes[0]) / length, twist)
     kappa = p.curvature(fine) / length**2
-    axis = (np.cos(beta), -np.sin(beta)) if flap else (np.sin(beta), np.cos(beta))
+    axis = (np.cos(beta), np.sin(beta)) if flap else (-np.sin(beta), np.cos(beta))
     h = fine * length
     out = []
     for comp in axis:
