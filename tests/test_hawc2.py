@@ -350,7 +350,8 @@ def test_the_water_a_monopile_moves_is_read_from_the_hydro_block(model22):
     first node, at the seabed — mudlevel 34 m — Cm 1, Vr = π·10²/4 m²): ρ·Cm·Vr =
     1027·78.5398 = 80,660 kg/m from the tower's base to the mean water level, the tower's
     added mass. With the water 10 m lower (mwl 10: HAWC2's z points down) it stops 24 m
-    above the base, the section above the water cut where the surface crosses it."""
+    above the base, the section above the water cut where the surface crosses it; with the
+    seabed 4 m higher, it starts 4 m up."""
     from wtvib import importers
 
     spec = importers.load(model22)
@@ -362,6 +363,11 @@ def test_the_water_a_monopile_moves_is_read_from_the_hydro_block(model22):
     lower = importers.load(model22).tower.added_mass
     assert lower is not None and lower.height_m == pytest.approx([0.0, 24.0])
     assert lower.mass_per_length_kg_m == pytest.approx([1027 * 78.5398] * 2, rel=1e-6)
+    # a seabed 4 m above the pile's first node (mudlevel 30, the pile's foot at 34): no water
+    # below it
+    _edit(model22, "mudlevel 34.0;", "mudlevel 30.0;")
+    shallow = importers.load(model22).tower.added_mass
+    assert shallow is not None and shallow.height_m == pytest.approx([4.0, 24.0])
 
 
 def test_a_hydro_element_off_the_tower_is_said_and_a_broken_one_refused(model22):
