@@ -427,3 +427,26 @@ def test_a_fully_populated_st_set_gives_the_shear_centre_of_the_classical_one(mo
     assert blade.torsion_frequency(full.blade.structure) == pytest.approx(
         blade.torsion_frequency(classical.blade.structure), rel=1e-3
     )
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "words"),
+    [
+        ("rho 1027;", "rho 1e9;", "water_properties rho"),
+        ("mudlevel 34.0;", "mudlevel nan;", "mudlevel"),
+        ("sec 34.0 1.0 1.0 78.5398 78.5398", "sec 34.0 1e6 1.0 78.5398 78.5398", "Cm from 0 to 10"),
+        ("sec 34.0 1.0 1.0 78.5398 78.5398", "sec 34.0 1.0 1.0 78.5398 -78.5398", "Vr from 0"),
+        ("sec 34.0 1.0 1.0", "sec 0.0 1.0 1.0", "rising z"),
+        ("nsec 2;\n    sec 0.0", "nsec 2;\n    sec x", "must be a number"),
+    ],
+)
+def test_a_broken_hydro_block_is_one_line_with_file_and_line(model22, old, new, words):
+    """The hydro block's numbers are read as any input's: a density that is no water's, a
+    level that is no number, a section's coefficient or area that no monopile has, sections
+    not along the body — one line naming the htc file and the line, exit 2, no traceback."""
+    _edit(model22, old, new)
+    result = CliRunner().invoke(app, ["check", str(model22)])
+    assert result.exit_code == 2, result.output
+    text = " ".join(result.output.split())
+    assert words in text and "iea_22mw_rwt_steps.htc" in text, text
+    assert "Traceback" not in result.output

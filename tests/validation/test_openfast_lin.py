@@ -307,3 +307,26 @@ def test_a_floating_linearisations_platform_modes_are_not_called_implausible(tmp
     surge = next(m for m in report.modes if m.id == "system.platform.surge")
     assert surge.frequency_hz == pytest.approx(0.00887, rel=0.01)
     assert not [w for w in report.warnings if "platform" in w and "implausible" in w]
+
+
+def test_beamdyn_states_not_in_node_triplets_are_taken_as_written_and_said(tmp_path):
+    """A file whose BeamDyn states are not each node's translation and rotation triplets
+    (here one rotation renamed a translation) is not turned: its states are taken as written
+    and the report says why — never a guess at which state is which."""
+    files = _case("5MW_Land_BD_Linear", tmp_path)
+    f = files[0]
+    states = list(f.states)
+    for blade in (1, 2, 3):  # the same state of every blade, so the rotor's triplets hold
+        k = next(
+            i
+            for i, s in enumerate(f.states)
+            if s.description.startswith(f"BD_{blade} ")
+            and "rotational displacement" in s.description
+        )
+        states[k] = replace(
+            states[k], description=states[k].description.replace("rotational", "translational")
+        )
+    point, _ = ol.operating_point([replace(f, states=tuple(states))])
+    written, _ = ol.operating_point(files, as_written=True)
+    assert np.array_equal(point.frequency_hz, written.frequency_hz)
+    assert len(point.notes) == 1 and "taken as written" in point.notes[0]

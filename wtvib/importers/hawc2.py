@@ -589,6 +589,9 @@ def _support_warnings(embedded: set[str], hydro_left: list[str]) -> list[str]:
 
 #: HAWC2's water density where its water_properties give none [kg/m³].
 WATER_DENSITY = 1027.0
+#: The largest reference area a hydro section may give [m²]: a pile 40 m across (monopiles
+#: are 6–12 m; a floater's column is no tower body).
+MAX_WATER_AREA = 1300.0
 
 
 def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, list[str]]:
@@ -605,12 +608,22 @@ def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, lis
         return None, []
     water = hydro.block("water_properties")
 
-    def setting(key: str, default: float) -> float:
+    def setting(key: str, default: float, low: float, high: float) -> float:
         cmd = water.get(key) if water is not None else None
-        return cmd.number(0) if cmd is not None else default
+        if cmd is None:
+            return default
+        value = cmd.number(0)
+        if not low <= value <= high:
+            raise SpecError(
+                f"water_properties {key} {value:g} is outside {low:g} … {high:g}",
+                line=cmd.line,
+                source=str(cmd.file),
+            )
+        return value
 
-    rho, mwl = setting("rho", WATER_DENSITY), setting("mwl", 0.0)
-    mud = setting("mudlevel", math.inf)
+    rho = setting("rho", WATER_DENSITY, 500.0, 2000.0)  # kg/m³: water, fresh to brine
+    mwl = setting("mwl", 0.0, -MAX_COORDINATE_M, MAX_COORDINATE_M)
+    mud = setting("mudlevel", math.inf, -MAX_COORDINATE_M, MAX_COORDINATE_M)
     offsets, at = {}, 0.0
     for each in chain.tower:
         offsets[each.name] = at
@@ -650,10 +663,11 @@ def _sections(element: Block, body: Body, rho: float) -> tuple[np.ndarray, np.nd
     rows = []
     for sec in element.all("sec"):
         z, cm, vr = sec.number(0), sec.number(1), sec.number(4)
-        if not (math.isfinite(z) and cm >= 0 and vr >= 0 and 0 <= z <= body.length * 1.001):
+        if not (0 <= z <= body.length * 1.001 and 0 <= cm <= 10 and 0 <= vr <= MAX_WATER_AREA):
             raise SpecError(
                 f"hydro_element {body.name}: sec {z:g} {cm:g} … {vr:g}: z must lie on the "
-                f"body (0 to {body.length:.4g} m) and Cm, Vr be 0 or more",
+                f"body (0 to {body.length:.4g} m), Cm from 0 to 10 and Vr from 0 to "
+                f"{MAX_WATER_AREA:g} m²",
                 line=sec.line,
                 source=str(sec.file),
             )
