@@ -330,3 +330,14 @@ def test_beamdyn_states_not_in_node_triplets_are_taken_as_written_and_said(tmp_p
     written, _ = ol.operating_point(files, as_written=True)
     assert np.array_equal(point.frequency_hz, written.frequency_hz)
     assert len(point.notes) == 1 and "taken as written" in point.notes[0]
+
+
+def test_a_pitch_input_for_fewer_blades_than_the_states_name_is_not_used(tmp_path):
+    """A file whose inputs give the pitch of fewer blades than its BeamDyn states name turns
+    every blade's states with 0° and says so (never an index past the inputs)."""
+    files = _case("5MW_Land_BD_Linear", tmp_path)
+    short = [replace(f, pitch=(0.2,)) for f in files]
+    point, _ = ol.operating_point(short)
+    assert "no pitch input" in point.notes[0]
+    turned, _ = ol.operating_point(files)
+    assert np.array_equal(point.frequency_hz, turned.frequency_hz)

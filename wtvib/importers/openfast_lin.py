@@ -746,6 +746,10 @@ def beamdyn_frame(files: list[LinFile], lay: Layout) -> tuple[list[LinFile], str
             "triplets: taken as written, with that error."
         )
     positions, blades = triples
+    # a pitch input for every blade the states name, else none (0°, said)
+    files = [
+        f if f.pitch and len(f.pitch) >= blades.max() else replace(f, pitch=None) for f in files
+    ]
     pitch = [f.pitch for f in files if f.pitch is not None]
     out = [replace(f, a=_rotating_frame(f, lay, positions, blades)) for f in files]
     told = (
