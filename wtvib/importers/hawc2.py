@@ -366,10 +366,7 @@ def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float
     if body.fpm:
         from .windio import _condensed, _shear
 
-        k = np.zeros((len(st), 6, 6))
-        iu = np.triu_indices(6)
-        k[:, iu[0], iu[1]] = st[:, 9:30]
-        k[:, iu[1], iu[0]] = st[:, 9:30]
+        k = _fpm_stiffness(st)
         flap, edge, tors = _condensed(k)
         shear = _shear(k)  # K22's with K44 (flap), K11's with K55 (edge)
         m, ri_x, ri_y, pitch = st[:, 1], st[:, 4], st[:, 5], st[:, 6]
@@ -931,16 +928,30 @@ def _fpm_shear_centre(st: np.ndarray) -> np.ndarray:
     by the structural pitch; the shear centre is where a shear force twists the section not
     at all — with the compliance C = K⁻¹ (shear x, y, axial, bending x, y, torsion),
     (−C₅₁/C₅₅, C₅₀/C₅₅) in those axes (zero-based) — turned back and moved to the half-chord
-    line. The IEA-15's FPM and classical st files of the same blade give the same x_sh at
-    every station to 2e-11 m (tests/test_hawc2.py)."""
+    line (a section whose matrix cannot be inverted: its elastic centre). The IEA-15's FPM
+    and classical st files of the same blade give the same x_sh at every station to 2e-11 m
+    (tests/test_hawc2.py)."""
+    k = _fpm_stiffness(st)
+    xs, ys = np.zeros(len(st)), np.zeros(len(st))
+    for i, mat in enumerate(k):  # a section whose matrix has no inverse: its elastic centre
+        try:
+            c = np.linalg.inv(mat)
+        except np.linalg.LinAlgError:
+            continue
+        if np.all(np.isfinite(c)) and c[5, 5] > 0:
+            xs[i], ys[i] = -c[5, 1] / c[5, 5], c[5, 0] / c[5, 5]
+    pitch = np.radians(st[:, FPM_HEAD.index("pitch")])
+    return np.asarray(st[:, FPM_HEAD.index("x_e")] + np.cos(pitch) * xs - np.sin(pitch) * ys)
+
+
+def _fpm_stiffness(st: np.ndarray) -> np.ndarray:
+    """A fully populated st set's 6×6 stiffness matrices, (rows, 6, 6), from their upper
+    triangles K11 … K66 (columns 9–29)."""
     k = np.zeros((len(st), 6, 6))
     iu = np.triu_indices(6)
     k[:, iu[0], iu[1]] = st[:, 9:30]
     k[:, iu[1], iu[0]] = st[:, 9:30]
-    c = np.linalg.inv(k)
-    xs, ys = -c[:, 5, 1] / c[:, 5, 5], c[:, 5, 0] / c[:, 5, 5]
-    pitch = np.radians(st[:, FPM_HEAD.index("pitch")])
-    return np.asarray(st[:, FPM_HEAD.index("x_e")] + np.cos(pitch) * xs - np.sin(pitch) * ys)
+    return k
 
 
 #: The separation point's time constant [half-chord transits] of HAWC2's dynamic stall
