@@ -368,6 +368,12 @@ def test_the_water_a_monopile_moves_is_read_from_the_hydro_block(model22):
     _edit(model22, "mudlevel 34.0;", "mudlevel 30.0;")
     shallow = importers.load(model22).tower.added_mass
     assert shallow is not None and shallow.height_m == pytest.approx([4.0, 24.0])
+    # the body named as the IEA-15 monopile model names it (HAWC2 reads both words)
+    _edit(
+        model22, "mbdy_name monopile;\n    hydrosections", "body_name monopile;\n    hydrosections"
+    )
+    named = importers.load(model22).tower.added_mass
+    assert named is not None and named.height_m == pytest.approx([4.0, 24.0])
 
 
 def test_a_hydro_element_off_the_tower_is_said_and_a_broken_one_refused(model22):

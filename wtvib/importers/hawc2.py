@@ -629,7 +629,7 @@ def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, lis
     masses: list[float] = []
     left: list[str] = []
     for element in hydro.each("hydro_element"):
-        name_cmd = element.need("mbdy_name")
+        name_cmd = element.get("mbdy_name") or element.need("body_name")  # HAWC2 reads both
         name = name_cmd.values[0].lower() if name_cmd.values else ""
         body: Body | None = next((b for b in chain.tower if b.name == name), None)
         if body is None:
