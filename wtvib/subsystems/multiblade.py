@@ -18,7 +18,7 @@ import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, replace
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -561,8 +561,30 @@ def _energy(m: Array, shapes: NDArray[np.complex128]) -> Array:
     # Re(x̄ᵢ·(M x)ᵢ) = xrᵢ·(M xr)ᵢ + xiᵢ·(M xi)ᵢ: one real product (M is real; a complex one
     # converts it to complex first — 4 ms a call at the IEA-15 monopile's n = 815)
     modes = shapes.shape[1]
-    both = m @ np.concatenate([shapes.real, shapes.imag], axis=1)
+    both = _mass_times(m, np.concatenate([shapes.real, shapes.imag], axis=1))
     return np.asarray(np.abs(shapes.real * both[:, :modes] + shapes.imag * both[:, modes:]))
+
+
+#: The last large mass matrix :func:`_mass_times` made sparse, with its sparse form.
+_SPARSE: tuple[Array, Any] | None = None
+
+
+def _mass_times(m: Array, x: Array) -> Array:
+    """M·X. A model of modal.PARTIAL_STATES coordinates or more (a tower on its monopile:
+    its beam's band and a few dense blocks, under 1 % of M filled) multiplies through M's
+    sparse form — 15 times faster at the IEA-15 monopile's 815 coordinates, the same sums to
+    rounding (1e-16); the form is made once per matrix (the last one kept: a sweep asks
+    with the same M at every speed)."""
+    global _SPARSE
+    if m.shape[0] < modal.PARTIAL_STATES:
+        return np.asarray(m @ x)
+    held = _SPARSE  # one read: the pair stays consistent whatever else runs
+    if held is None or held[0] is not m:
+        from scipy import sparse
+
+        held = (m, sparse.csr_matrix(m))
+        _SPARSE = held
+    return np.asarray(held[1] @ x)
 
 
 def _summed(keys: list[str], table: Array) -> tuple[tuple[str, ...], Array]:
