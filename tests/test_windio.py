@@ -358,3 +358,19 @@ def test_a_head_mass_given_on_the_command_line_keeps_the_files_blades(shared):
     assert s.coupled is not None
     with pytest.raises(SpecError, match="not more than the blades"):
         importers.load(path, importers.ReadOptions(head_mass=1.0e5))
+
+
+@pytest.mark.parametrize(
+    ("density", "words"),
+    [(5.0, "environment.water_density 5 kg/m³ is no water's"), ("salty", "water_density")],
+)
+def test_a_monopile_in_water_no_water_has_is_one_line(tmp_path, density, words, monkeypatch):
+    """The monopile's water is ρ_w from environment.water_density: a density no water has,
+    or no number, is one line naming the field, never a traceback."""
+    from wtvib.importers import windio_schema
+
+    monkeypatch.setattr(windio_schema, "available", lambda: False)
+    doc = iea15()
+    doc.setdefault("environment", {})["water_density"] = density
+    with pytest.raises(SpecError, match=words):
+        load_mutated(tmp_path, doc)

@@ -8,6 +8,7 @@ Table 9-1 and Table 6-1), IEA-15 (Gaertner et al. 2020, NREL/TP-5000-75698, Tabl
 """
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -217,6 +218,36 @@ def test_iea15_windio2_tower_and_monopile_first_bending():
     assert 0.17 * 0.95 <= f["tower.ss1"] <= 0.18 * 1.05
     assert any("clamped at the mudline" in a for a in s.assumptions)  # stated to the user
     assert s.tower_head.mass_kg == pytest.approx(947_480, rel=0.01)  # printed breakdown sum
+
+
+def test_iea15_windio2_monopile_moves_its_water_as_the_openfast_deck_of_the_turbine(tmp_path):
+    """The water a submerged monopile moves in bending (Ca·ρ_w·πD²/4 from the mudline to the
+    still-water level, Ca = 1: windIO gives a monopile no added-mass coefficient), read from
+    the windio package's IEA-15 example — 80,503 kg/m on its 10 m pile — against the
+    OpenFAST deck set of the same turbine (IEAWindTask37/IEA-15-240-RWT, tests/data/
+    openfast_decks/iea15.tar.gz), whose HydroDyn members give that water and the flooded
+    pile's inner water besides: the second tower pair within 1 % of the deck's (measured
+    +0.1 % fore-aft, +0.6 % side-side; +1.0 % and +1.8 % without the water), the first
+    within 0.5 % (it moves by 0.01 %: the water sits where the first mode barely moves)."""
+    import tarfile
+
+    from wtvib.subsystems import tower
+
+    s = importers.load(windio_example("IEA-15-240-RWT.yaml"))
+    water = s.tower.added_mass
+    assert water is not None and water.height_m == pytest.approx([0.0, 10.0, 20.0, 30.0])
+    assert water.mass_per_length_kg_m[0] == pytest.approx(1025 * math.pi * 10.0**2 / 4)
+    assert any("Ca = 1 assumed" in a for a in s.assumptions)
+    data = Path(__file__).resolve().parents[1] / "data" / "openfast_decks" / "iea15.tar.gz"
+    with tarfile.open(data) as tar:
+        tar.extractall(tmp_path, filter="data")
+    deck = importers.load(tmp_path / "OpenFAST/IEA-15-240-RWT-Monopile/IEA-15-240-RWT-Monopile.fst")
+    dry = s.model_copy(update={"tower": s.tower.model_copy(update={"added_mass": None})})
+    ours, theirs, without = ({m.id: m.frequency_hz for m in tower.modes(x)} for x in (s, deck, dry))
+    for name, tol in (("tower.fa2", 0.01), ("tower.ss2", 0.01), ("tower.fa1", 0.005)):
+        assert ours[name] == pytest.approx(theirs[name], rel=tol), (name, ours[name])
+    for name in ("tower.fa2", "tower.ss2"):  # the water moves them towards the deck's
+        assert abs(ours[name] / theirs[name] - 1) < abs(without[name] / theirs[name] - 1)
 
 
 def test_iea15_elastodyn_blade_matches_an_independent_beam_model(shared):

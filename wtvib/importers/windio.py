@@ -616,6 +616,10 @@ class _Reader:
             )
             if mmat["name"] != mat["name"] or mfactor != factor:
                 notes.append("Monopile material/outfitting taken equal to the tower's.")
+            water = self.monopile_water(mz, mdia, base)
+            if water is not None:
+                added, note = water
+                notes.append(note)
         tower = {
             "height_m": float(z[-1] - base),
             "sections": {
@@ -631,7 +635,50 @@ class _Reader:
             },
             "point_masses": masses,
         }
+        if "monopile" in self.c and water is not None:
+            tower["added_mass"] = added
         return tower, notes
+
+    def monopile_water(
+        self, z: np.ndarray, dia: np.ndarray, base: float
+    ) -> tuple[dict[str, Any], str] | None:
+        """The water the monopile moves in bending, below the still-water level (z = 0,
+        windIO's mean sea level) and above the mudline ``base``: Ca·ρ_w·πD²/4 per length, Ca = 1
+        (windIO gives a monopile's drag coefficient, no added-mass coefficient: a circular
+        cylinder's potential-flow value, HydroDyn's usual member Ca and what DTU's windIO-to-
+        HAWC2 converter writes for a monopile), ρ_w from environment.water_density; None where
+        the pile stands in no water."""
+        if base >= 0.0 or z[-1] <= base:
+            return None
+        env = self.d.get("environment") or {}
+        raw = env.get("water_density", 1025.0) if isinstance(env, dict) else 1025.0
+        try:
+            rho = float(raw)
+        except (TypeError, ValueError):
+            raise self.fail_at(
+                f"environment.water_density must be a number (got {raw!r})",
+                ("environment", "water_density"),
+            ) from None
+        if not 500.0 <= rho <= 2000.0:
+            raise self.fail_at(
+                f"environment.water_density {rho:g} kg/m³ is no water's",
+                ("environment", "water_density"),
+            )
+        top = min(0.0, float(z[-1]))
+        levels = np.unique(np.concatenate([z[(z >= base) & (z <= top)], [base, top]]))
+        diameter = np.interp(levels, z, dia)
+        mass = rho * np.pi * diameter**2 / 4
+        note = (
+            f"The monopile's water: Ca·ρ_w·πD²/4 per length from the mudline to the still-water "
+            f"level ({float(mass[0]):,.0f} kg/m at the mudline; Ca = 1 assumed — windIO gives "
+            f"no added-mass coefficient —, ρ_w = {rho:g} kg/m³) moves with it in bending; a "
+            "flooded pile's inner water, which the file does not say, is left out."
+        )
+        return {
+            "height_m": _list(levels - base),
+            "mass_per_length_kg_m": _list(mass),
+            "source": "windIO monopile outer diameter below the still-water level, Ca = 1",
+        }, note
 
     def mudline(self, mz: np.ndarray) -> tuple[float, str]:
         depth = self.d.get("environment", {}).get("water_depth")
