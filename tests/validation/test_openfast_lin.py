@@ -171,14 +171,23 @@ def test_beamdyn_s_frame_turns_with_the_rotor_s_spin_in_the_pitched_blade(tmp_pa
 
 def test_beamdyn_states_written_after_the_fix_are_taken_as_written(tmp_path):
     """A file written on or after the day OpenFAST's fix was proposed (2026-07-21) may come
-    from a build with it: its states are taken as written, and the report says so."""
+    from a build with it: its states are taken as written, and the report says so — unless
+    it names a release before the one the fix was proposed for (5.0.1: pull request #3400
+    targets rc-5.0.1), which has the frozen frame whatever its date."""
     files = _case("5MW_Land_BD_Linear", tmp_path)
-    later = [replace(f, generated=ol.BEAMDYN_FIX_PROPOSED) for f in files]
+    later = [replace(f, generated=ol.BEAMDYN_FIX_PROPOSED, version=None) for f in files]
     point, _ = ol.operating_point(later)
     written, _ = ol.operating_point(files, as_written=True)
     assert np.array_equal(point.frequency_hz, written.frequency_hz)
     assert "taken as written" in point.notes[0]
     assert files[0].generated is not None and files[0].generated.isoformat() == "2024-08-29"
+    old_release = [replace(f, version=(4, 1, 2)) for f in later]
+    turned, _ = ol.operating_point(old_release)
+    assert not np.array_equal(turned.frequency_hz, written.frequency_hz)
+    assert "OpenFAST 4.1.2, before the fix" in turned.notes[0]
+    new_release = [replace(f, version=(5, 0, 1)) for f in later]
+    as_is, _ = ol.operating_point(new_release)
+    assert np.array_equal(as_is.frequency_hz, written.frequency_hz)
 
 
 def test_the_pitch_and_the_day_are_read_from_the_header():
@@ -198,6 +207,11 @@ def test_the_pitch_and_the_day_are_read_from_the_header():
     ]
     assert ol._pitch(head) == pytest.approx((0.17453292519943,) * 3)
     assert ol._generated(head).isoformat() == "2025-03-05"
+    assert ol._version(head) is None  # "using OpenFAST" with no release named
+    # r-test's own headers: a development build after a release, and a release build
+    built = "Predictions were generated on 20-Feb-2024 at 14:17:34 using OpenFAST, compiled "
+    assert ol._version([built + "… at commit v3.5.2-957-g05b14cf"]) == (3, 5, 2)
+    assert ol._version(["generated on 01-Jan-2026 using OpenFAST-v4.0.2, compiled"]) == (4, 0, 2)
     assert ol._pitch(head[:4] + head[7:]) is None
     assert ol._generated(["Predictions were generated on 31-Feb-2025 at"]) is None
 

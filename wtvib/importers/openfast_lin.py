@@ -146,6 +146,7 @@ class LinFile:
     rates: Array | None = None  # the operating point's state derivatives ẋ_op (where given)
     description: str | None = None  # the deck's title, as the header quotes it
     generated: date | None = None  # the day OpenFAST wrote it, as the header says
+    version: tuple[int, int, int] | None = None  # the OpenFAST release it names (vX.Y.Z)
     pitch: tuple[float, ...] | None = None  # each blade's pitch command [rad], from the inputs
 
     def speed(self, lay: "Layout") -> tuple[float, float]:
@@ -267,7 +268,7 @@ def read(path: Path) -> LinFile:
     a = _matrix(raw, marker, n, fail)
     return LinFile(
         path, speed, azimuth, wind, states, a, rates, _description(lines), _generated(lines),
-        _pitch(lines),
+        _version(lines), _pitch(lines),
     )  # fmt: skip
 
 
@@ -285,6 +286,20 @@ def _generated(lines: list[str]) -> date | None:
                 return date(int(found[3]), _MONTHS.index(found[2].lower()) + 1, int(found[1]))
             except ValueError:
                 return None
+    return None
+
+
+_VERSION = re.compile(r"\bv(\d+)\.(\d+)\.(\d+)")
+
+
+def _version(lines: list[str]) -> tuple[int, int, int] | None:
+    """The OpenFAST release the header's first lines name ("using OpenFAST-v4.0.2", "at
+    commit v3.5.2-957-g05b14cf": a build after that release), None where they name none."""
+    for ln in lines[:10]:
+        if "OpenFAST" in ln or "commit" in ln:
+            found = _VERSION.search(ln)
+            if found:
+                return int(found[1]), int(found[2]), int(found[3])
     return None
 
 
@@ -709,6 +724,9 @@ def mbc_average(files: list[LinFile], lay: Layout) -> Array:
 #: (OpenFAST issue #3394). Its fix (pull request #3400, re-expressing the Jacobians in the
 #: turning frame) was proposed on this day: files written before it carry the frozen frame.
 BEAMDYN_FIX_PROPOSED = date(2026, 7, 21)
+#: The release the fix was proposed for (OpenFAST pull request #3400 targets rc-5.0.1): a
+#: file that names an earlier release has the frozen frame, whatever its date.
+BEAMDYN_FIX_RELEASE = (5, 0, 1)
 
 
 def beamdyn_frame(files: list[LinFile], lay: Layout) -> tuple[list[LinFile], str | None]:
@@ -733,7 +751,8 @@ def beamdyn_frame(files: list[LinFile], lay: Layout) -> tuple[list[LinFile], str
         "speed into every mode they take part in (OpenFAST issue #3394: the rotor's free spin "
         "at Ω, not 0; the tower's side-side falling with speed)"
     )
-    if first.generated is not None and first.generated >= BEAMDYN_FIX_PROPOSED:
+    earlier = first.version is not None and first.version < BEAMDYN_FIX_RELEASE
+    if not earlier and first.generated is not None and first.generated >= BEAMDYN_FIX_PROPOSED:
         return files, (
             f"{head}. These files were written on {first.generated.isoformat()}, after the "
             "fix was proposed (OpenFAST pull request #3400): taken as written — from a build "
@@ -757,8 +776,13 @@ def beamdyn_frame(files: list[LinFile], lay: Layout) -> tuple[list[LinFile], str
         if pitch
         else "the files give no pitch input: 0° taken"
     )
+    when = (
+        f"Written by OpenFAST {'.'.join(map(str, first.version))}, before the fix"
+        if earlier and first.version is not None
+        else "Written before the fix"
+    )
     return out, (
-        f"{head}. Written before the fix (OpenFAST pull request #3400), they are turned into "
+        f"{head}. {when} (OpenFAST pull request #3400), they are turned into "
         "the rotating frame here as the fix does: each node's q̇ − ω×q, with ω the rotor's "
         f"spin in the pitched blade's frame ({told}; the cone, not in the files, left out)."
     )
