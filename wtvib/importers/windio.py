@@ -572,6 +572,7 @@ class _Reader:
         base = z[0]
         self.tower_base = float(z[0])
         masses = []
+        water = None  # the monopile's added mass and its note
         if "monopile" in self.c:
             mz, mdia, mt, mmat, mfactor = self.member("monopile")
             mudline, how = self.mudline(mz)
@@ -618,8 +619,7 @@ class _Reader:
                 notes.append("Monopile material/outfitting taken equal to the tower's.")
             water = self.monopile_water(mz, mdia, base)
             if water is not None:
-                added, note = water
-                notes.append(note)
+                notes.append(water[1])
         tower = {
             "height_m": float(z[-1] - base),
             "sections": {
@@ -635,8 +635,8 @@ class _Reader:
             },
             "point_masses": masses,
         }
-        if "monopile" in self.c and water is not None:
-            tower["added_mass"] = added
+        if water is not None:
+            tower["added_mass"] = water[0]
         return tower, notes
 
     def monopile_water(

@@ -545,15 +545,20 @@ def shares(
     normalised) and the same with each cyclic cos/sin pair merged into one ``cyclic``
     group — all modes (the columns of ``shapes``) at once: the group names and a
     (groups, modes) table of shares, then the merged names and table."""
-    energy = _energy(m, shapes)
-    total = energy.sum(axis=0)
-    total[total == 0.0] = 1.0
     names = tuple(g for g, i in groups.items() if len(i))
-    table = np.array([energy[groups[g]].sum(axis=0) / total for g in names])
+    table = _fractions(_energy(m, shapes), [groups[g] for g in names])
     merged_names, merged = _summed(
         [g.replace("cos", "cyclic").replace("sin", "cyclic") for g in names], table
     )
     return names, table, merged_names, merged
+
+
+def _fractions(energy: Array, parts: Sequence[NDArray[np.intp]]) -> Array:
+    """(parts, modes): each mode's (column's) share of its energy in each part's
+    coordinates (a mode without energy: zeros)."""
+    total = energy.sum(axis=0)
+    total[total == 0.0] = 1.0
+    return np.array([energy[idx].sum(axis=0) / total for idx in parts])
 
 
 def _energy(m: Array, shapes: NDArray[np.complex128]) -> Array:
@@ -1218,10 +1223,7 @@ def _named_share(
 ) -> Array:
     """(modes, roots): each root's kinetic-energy share in the coordinates of each mode's
     named part (:func:`_named_groups`)."""
-    energy = _energy(model.multiblade[0], shapes)
-    total = energy.sum(axis=0)
-    total[total == 0.0] = 1.0
-    return np.array([energy[idx].sum(axis=0) / total for idx in named])
+    return _fractions(_energy(model.multiblade[0], shapes), named)
 
 
 #: A damped mode whose shape continues the one matched at the wind before with at least
