@@ -456,3 +456,60 @@ def test_a_broken_hydro_block_is_one_line_with_file_and_line(model22, old, new, 
     text = " ".join(result.output.split())
     assert words in text and "iea_22mw_rwt_steps.htc" in text, text
     assert "Traceback" not in result.output
+
+
+def _points(model: Path) -> tuple[list[float], list[float], list[str]]:
+    from wtvib.importers import load
+
+    spec = load(model)
+    assert spec.aerodynamics is not None
+    pts = spec.aerodynamics.control.operating_points
+    assert pts is not None
+    return pts.wind_m_s, pts.rpm, spec.assumptions
+
+
+def test_an_htc_beside_htc_runs_in_the_folder_that_holds_data(model):
+    """HAWC2 runs a model in the folder that holds its htc/ and data/ folders; HAWCStab2's
+    inputs are often kept in a folder beside htc/ (the IEA-10's hawcstab2/
+    steadystate_modal.htc names ./data/…). Such an htc finds the model's files one folder
+    up, as it does from htc/; a folder with no data/ near is still looked in alone."""
+    wind, rpm, _ = _points(model)
+    beside = model.parents[1] / "hawcstab2" / model.name
+    beside.parent.mkdir()
+    beside.write_text(model.read_text())
+    assert _points(beside)[:2] == (wind, rpm)
+    assert htc.root_folder(beside) == model.parents[1]
+    alone = model.parents[3] / "elsewhere" / "x" / "y" / model.name
+    assert htc.root_folder(alone) == alone.parent  # no data/ within reach: its own folder
+
+
+def test_the_operational_data_file_is_the_one_the_model_names_else_one_that_turns(model):
+    """A model's data/ folder may hold several .opt files — the IEA-10's a wind-only one
+    (rotor speed 0 on every row: HAWCStab2's winds for a controller) beside the one its
+    hawcstab2 block names. The named one is used; without a name, the first by name whose
+    rotor turns, and the others are said; a wind-only file alone gives no operating points
+    (the controller's constants do, said) — never a 0 rpm operating range."""
+    data = model.parents[1] / "data"
+    own = data / "IEA_15MW_RWT_Onshore.opt"
+    wind, rpm, _ = _points(model)
+    lines = own.read_text().splitlines()
+    (data / "A_windonly.opt").write_text(
+        "\n".join([lines[0], *(f"{r.split()[0]} 0 0" for r in lines[1:])]) + "\n"
+    )
+    found = _points(model)
+    assert found[:2] == (wind, rpm)
+    assert any("which holds A_windonly.opt too" in a for a in found[2])
+    # the model names its file: that one, whatever the others' names
+    own.rename(data / "Z_turning.opt")
+    _edit(model, "begin dll;", "begin hawcstab2;\n  operational_data_filename ./data/Z_turning.opt;"
+          "\nend hawcstab2;\nbegin dll;")  # fmt: skip
+    found = _points(model)
+    assert found[:2] == (wind, rpm)
+    assert any("named by the htc's hawcstab2 block" in a for a in found[2])
+    # it names the wind-only file: the controller's speed range, said
+    _edit(model, "Z_turning.opt", "A_windonly.opt")
+    from wtvib.importers import load
+
+    spec = load(model)
+    assert spec.rotor.speed.min_rpm > 0
+    assert any("no operational data file where the rotor turns" in a for a in spec.assumptions)

@@ -787,38 +787,73 @@ def _blade_damping(body: Body) -> dict[str, Any]:
     return _tower_damping(body)  # Kx flapwise (about x), Ky edgewise, Kz torsion
 
 
+def _operational_data(top: Block, root: Path) -> tuple[Path, np.ndarray, str] | None:
+    """The model's operational data file and its rows where the rotor turns (wind order):
+    the one its ``hawcstab2`` block names (``operational_data_filename``), else the one
+    ``.opt`` in its ``data/`` folder whose rotor turns — the first by name of several, said.
+    None where neither gives a turning rotor (a wind-only file: HAWCStab2's winds for a
+    controller to find the speeds)."""
+    hs2 = top.block("hawcstab2")
+    named = hs2.get("operational_data_filename") if hs2 is not None else None
+    if named is not None and named.values:
+        path = htc.resolve(named.values[0], root, named.file.parent, named)
+        table = _turning(htc.read_opt(path))
+        how = f"named by the htc's hawcstab2 block (line {named.line})"
+        return (path, table, how) if len(table) else None
+    found = sorted((root / "data").glob("*.opt")) if (root / "data").is_dir() else []
+    usable = [(p, t) for p in found if len(t := _turning(htc.read_opt(p)))]
+    if not usable:
+        return None
+    path, table = usable[0]
+    others = [p.name for p in found if p != path]
+    how = (
+        "the one in data/"
+        if not others
+        else (
+            f"the first by name of the model's data/ folder, which holds {', '.join(others)} "
+            "too (the htc names none: a hawcstab2 block's operational_data_filename would)"
+        )
+    )
+    return path, table, how
+
+
+def _turning(table: np.ndarray) -> np.ndarray:
+    """The rows of an operational data table where the rotor turns, in wind order."""
+    table = table[np.argsort(table[:, 0], kind="stable")]
+    return table[table[:, 2] > 0]
+
+
 def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict[str, Any], str]:
-    """The operating range and control: an operational data file in the model's data/
-    folder, else the DTU Wind Energy controller's constants."""
+    """The operating range and control: the model's operational data file
+    (:func:`_operational_data`), else the DTU Wind Energy controller's constants."""
     constants = _controller(top)
-    opt = sorted((root / "data").glob("*.opt")) if (root / "data").is_dir() else []
+    opt = _operational_data(top, root)
     control: dict[str, Any] = {"regulation": "pitch"}
     if 1 in constants:
         control["rated_power_kw"] = constants[1]
-    if opt:
-        table = htc.read_opt(opt[0])
-        table = table[np.argsort(table[:, 0], kind="stable")]  # in wind order
+    if opt is not None:
+        opt_path, table, how = opt
         rpm = table[:, 2]
         speed = {"min_rpm": round(float(rpm.min()), 6), "max_rpm": round(float(rpm.max()), 6),
-                 "source": f"{opt[0].name} (operating points)"}  # fmt: skip
+                 "source": f"{opt_path.name} (operating points)"}  # fmt: skip
         control["cut_in_wind_m_s"] = float(max(table[0, 0], 1.0))
         control["cut_out_wind_m_s"] = float(table[-1, 0])
         control["fine_pitch_deg"] = float(table[:, 1].min())
-        # the model's own points where the rotor turns, one per wind (the first of a
-        # repeated wind)
-        turning = table[(table[:, 0] > 0) & (rpm > 0)]
+        # the model's own points, one per wind (the first of a repeated wind)
+        turning = table[table[:, 0] > 0]
         turning = turning[np.r_[True, np.diff(turning[:, 0]) > 0]]
         if len(turning) >= 2:
             control["operating_points"] = {
                 "wind_m_s": [float(v) for v in turning[:, 0]],
                 "rpm": [float(v) for v in turning[:, 2]],
                 "pitch_deg": [float(v) for v in turning[:, 1]],
-                "source": opt[0].name,
+                "source": opt_path.name,
             }
         return (
             speed,
             control,
-            f"Operating range from {opt[0].name}: {rpm.min():.4g}–{rpm.max():.4g} rpm.",
+            f"Operating range from {opt_path.name} ({how}): {rpm.min():.4g}–{rpm.max():.4g} "
+            "rpm where its rotor turns.",
         )
     if 2 in constants and 3 in constants:
         lo, hi = constants[2] * 30 / math.pi, constants[3] * 30 / math.pi
@@ -829,11 +864,13 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
         return (
             speed,
             control,
-            f"Operating range {lo:.4g}–{hi:.4g} rpm from the controller's constants.",
+            f"Operating range {lo:.4g}–{hi:.4g} rpm from the controller's constants (no "
+            "operational data file where the rotor turns).",
         )
     raise SpecError(
-        "no operating range: the model names no operational data (.opt in data/) and no "
-        "DTU Wind Energy controller with its minimum and rated speed; give --rpm MIN:MAX",
+        "no operating range: the model has no operational data where its rotor turns (an "
+        ".opt its hawcstab2 block names, or one in data/) and no DTU Wind Energy controller "
+        "with its minimum and rated speed; give --rpm MIN:MAX",
         source=str(path),
     )
 

@@ -99,12 +99,23 @@ class Block:
         return [b for b in self.blocks if b.name == name]
 
 
+#: How many folders above an htc file outside any ``htc/`` folder are looked at for the
+#: model's ``data/`` (HAWCStab2's inputs kept in a ``hawcstab2/`` beside ``htc/``).
+ROOT_SEARCH = 2
+
+
 def root_folder(htc: Path) -> Path:
     """The folder HAWC2 runs the model in: the one holding the ``htc/`` the file is in (also
-    from a folder below it: the DLB templates' ``htc/_master/``), else the htc's own."""
+    from a folder below it: the DLB templates' ``htc/_master/``); else the nearest of the
+    htc's own folder and the ROOT_SEARCH above it that holds a ``data/`` folder (the
+    IEA-10's ``hawcstab2/steadystate_modal.htc`` names ``./data/…`` of the folder above);
+    else the htc's own."""
     for folder in htc.parents:
         if folder.name.lower() == "htc":
             return folder.parent
+    for folder in [htc.parent, *htc.parent.parents][: ROOT_SEARCH + 1]:
+        if (folder / "data").is_dir():
+            return folder
     return htc.parent
 
 
