@@ -148,12 +148,16 @@ EXCEPTIONS: dict[tuple[str, str], tuple[float, float, str]] = {
     ("5MW_OC3Spar_Linear", "tower.fa1"): (
         -0.06,
         -0.03,
-        "OPEN, traced, no third reference yet: the first fore-aft bending on the spar, "
-        "where the side-side is within 0.4 % and the deck's TwFAM1Sh is the tower's own "
-        "shape on its platform to 0.1 % (polynomials.tower) — not ElastoDyn's shape. The "
-        "fore-aft bending tilts the rotor and meets the blades' first flapwise backward "
-        "whirl: wtvib's fore-aft falls from 0.4746 Hz at standstill to 0.4619 at 12.1 rpm "
-        "(−2.7 %) as that whirl comes down to 0.555 Hz, where this one-azimuth "
+        "OPEN, traced: the first fore-aft bending on the spar, where the side-side is "
+        "within 0.4 % and the deck's TwFAM1Sh is the tower's own shape on its platform to "
+        "0.1 % (polynomials.tower) — not ElastoDyn's shape. Third reference for the "
+        "platform and tower: pyBModes 1.19.1 on the same deck (its rotor a point mass at "
+        "the apex, as wtvib's tower alone) 0.4922 Hz, wtvib's tower alone 0.4968 (+0.9 %, "
+        "test_floating.test_oc3_spar_matches_pybmodes). What the whole turbine adds: the "
+        "rigid rotor's nodding inertia (0.486 with the blades a thousand times stiffer) "
+        "and its flexible blades (0.4746 at standstill) — the fore-aft bending tilts the "
+        "rotor and meets the blades' first flapwise backward whirl, and falls to 0.4619 at "
+        "12.1 rpm (−2.7 %) as that whirl comes down to 0.555 Hz, where this one-azimuth "
         "linearisation holds it at 0.707 (the lopsided pairs below; a 36-azimuth "
         "linearisation of the same rotor puts it at 0.537). Measured −4.5 %",
     ),
