@@ -81,6 +81,10 @@ def main() -> None:
     pairs = int(sys.argv[1]) if len(sys.argv) > 1 else 5
     print(machine() + "; one BLAS thread; medians of", pairs, "alternating pairs")
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    # wtvib's bytecode, as an installed wheel has it: where PYTHONDONTWRITEBYTECODE is set
+    # (this machine's shells), an editable checkout would otherwise compile every module
+    # at every start (≈ 0.3 s) and the floor, whose libraries are installed, would not
+    subprocess.run([str(BIN / "python"), "-m", "compileall", "-q", str(ROOT / "wtvib")], check=True)
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         for name, cmd in cases(work).items():
