@@ -20,8 +20,30 @@ def test_condensation_removes_the_offset_term_of_the_diagonal():
     ea, ei, e = 1.0e9, 2.0e8, 0.3
     k = np.diag([1e9, 1e9, ea, 5e8, ei + ea * e * e, 1e8])
     k[2, 4] = k[4, 2] = ea * e
-    _, k55, k66 = windio._condensed(k[None])
+    _, k55, k66, _ = windio._condensed(k[None])
     assert k55[0] == pytest.approx(ei) and k66[0] == pytest.approx(1e8)
+
+
+@pytest.mark.parametrize("theta", [-30.0, -12.0, 0.0, 7.5, 40.0])
+def test_condensation_finds_the_principal_axes_of_a_turned_section(theta):
+    """A section whose principal bending axes are turned by θ from the matrix's axes (axis 1
+    towards axis 2): its 2×2 bending block R·diag(EI₁, EI₂)·Rᵀ has K45 = (EI₁ − EI₂)·sin θ
+    cos θ; the condensation gives EI₁, EI₂ and θ back — the cross term once dropped, the
+    diagonal (EI₁ cos²θ + EI₂ sin²θ) taken for the principal stiffness."""
+    ei_1, ei_2 = 4.0e10, 1.5e10
+    t = np.radians(theta)
+    r = np.array([[np.cos(t), -np.sin(t)], [np.sin(t), np.cos(t)]])
+    k = np.diag([1e9, 1e9, 5e9, 1.0, 1.0, 2e9])
+    k[3:5, 3:5] = r @ np.diag([ei_1, ei_2]) @ r.T
+    k44, k55, k66, turned = windio._condensed(k[None])
+    assert (k44[0], k55[0]) == pytest.approx((ei_1, ei_2), rel=1e-12)
+    assert turned[0] == pytest.approx(theta, abs=1e-9)
+    assert k66[0] == pytest.approx(2e9)
+    # the same section with its axes named the other way round: the same turn
+    swapped = k[:, [0, 1, 2, 4, 3, 5]][[0, 1, 2, 4, 3, 5], :]
+    k44, k55, _, turned = windio._condensed(swapped[None])
+    assert (k44[0], k55[0]) == pytest.approx((ei_2, ei_1), rel=1e-12)
+    assert turned[0] == pytest.approx(-theta, abs=1e-9)
 
 
 def test_a_floating_platform_without_its_parts_is_one_line_naming_them(tmp_path):

@@ -59,7 +59,7 @@ def blade(fst: Deck) -> Blade:
     eta, k, m = _stations(bld)
     length = float(span[-1] - span[0])
     s = eta * length
-    flap, edge, gj = _condensed(k)
+    flap, edge, gj, turned = _condensed(k)
     mass = m[:, 0, 0]
     polar = m[:, 5, 5]
     structure: dict[str, Any] = {
@@ -67,7 +67,9 @@ def blade(fst: Deck) -> Blade:
         "mass_per_length_kg_m": _list(mass),
         "ei_flap_nm2": _list(flap),
         "ei_edge_nm2": _list(edge),
-        "twist_deg": _list(np.interp(s, span - span[0], twist)),
+        # the principal axes: the key points' twist less the matrices' own turn (windio.
+        # _condensed; θ from BeamDyn's axis 1 towards axis 2, HAWC2's structural pitch)
+        "twist_deg": _list(np.interp(s, span - span[0], twist) - turned),
     }
     if np.all(gj > 0) and np.all(polar > 0):
         structure["gj_nm2"] = _list(gj)
@@ -191,12 +193,13 @@ def _shear(k: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
     return shear(k)
 
 
-def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Flapwise (about y), edgewise (about x) and torsional stiffness, other strains free."""
+def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Flapwise (about y), edgewise (about x) and torsional stiffness, other strains free,
+    about the principal axes, and their turn from the section's axes [deg]."""
     from .windio import _condensed as condensed  # one condensation for 6×6 sections
 
-    k44, k55, k66 = condensed(k)
-    return k55, k44, k66
+    k44, k55, k66, turned = condensed(k)
+    return k55, k44, k66, turned
 
 
 def _centres(k: np.ndarray, m: np.ndarray) -> str:

@@ -367,9 +367,10 @@ def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float
         from .windio import _condensed, _shear
 
         k = _fpm_stiffness(st)
-        flap, edge, tors = _condensed(k)
+        flap, edge, tors, turned = _condensed(k)
         shear = _shear(k)  # K22's with K44 (flap), K11's with K55 (edge)
-        m, ri_x, ri_y, pitch = st[:, 1], st[:, 4], st[:, 5], st[:, 6]
+        # the matrices are in the axes turned by the pitch: a turn they still hold adds
+        m, ri_x, ri_y, pitch = st[:, 1], st[:, 4], st[:, 5], st[:, 6] + turned
     else:
         cols = {name: st[:, i] for i, name in enumerate(ST)}
         flap = cols["E"] * cols["I_x"]

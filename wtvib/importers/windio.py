@@ -316,27 +316,45 @@ def _symmetric(upper: np.ndarray) -> np.ndarray:
     return full
 
 
-def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Bending (K44, K55) and torsional (K66) stiffnesses of 6×6 section matrices with the
-    other strains free: the 2×2 bending block of the inverted compliance, and 1/C66.
+def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Principal bending stiffnesses (about axis 1 and axis 2 turned by θ: the K44 and K55
+    of the turned section), the torsional stiffness (K66) and θ [deg] of 6×6 section
+    matrices with the other strains free: the 2×2 bending block of the inverted compliance,
+    its principal axes, and 1/C66.
 
     The 6×6 matrices refer to the blade's reference axis; where the tension or shear centre
     lies off it, the diagonal terms K44/K55 include EA·offset² (bending–extension coupling)
     and overstate the stiffness of a beam free to stretch. Condensing the other strains out
     gives the bending stiffness about the section's own centres (Hodges, *Nonlinear
     Composite Beam Theory*, 2006, §4: static condensation of a cross-sectional stiffness
-    matrix). Falls back to the diagonal where a matrix is singular.
+    matrix). The block's cross term K45 says the principal axes are turned from the
+    section's axes (the aerodynamic twist's, in windIO and BeamDyn) by
+    θ = ½·atan(2·K45/(K44 − K55)), |θ| < 45°, from axis 1 towards axis 2 — HAWC2's
+    structural pitch: the IEA-15's HAWC2 st file's pitch column is this θ of the same
+    blade's BeamDyn matrices to 0.1° (tests/validation/test_windio.py). Falls back to the
+    diagonal (θ = 0) where a matrix is singular.
     """
     k44, k55, k66 = k[:, 3, 3].copy(), k[:, 4, 4].copy(), k[:, 5, 5].copy()
+    theta = np.zeros(len(k))
     for i, mat in enumerate(k):
         try:
             c = np.linalg.inv(mat)
             bend = np.linalg.inv(c[3:5, 3:5])
         except np.linalg.LinAlgError:
             continue
-        if np.all(np.isfinite(bend)) and bend[0, 0] > 0 and bend[1, 1] > 0 and c[5, 5] > 0:
-            k44[i], k55[i], k66[i] = bend[0, 0], bend[1, 1], 1.0 / c[5, 5]
-    return k44, k55, k66
+        if not (np.all(np.isfinite(bend)) and bend[0, 0] > 0 and bend[1, 1] > 0 and c[5, 5] > 0):
+            continue
+        a, b, ab = bend[0, 0], bend[1, 1], 0.5 * (bend[0, 1] + bend[1, 0])
+        t = 0.5 * math.atan(2.0 * ab / (a - b)) if a != b else (math.pi / 4 if ab else 0.0)
+        cs, sn = math.cos(t), math.sin(t)
+        one = a * cs * cs + 2.0 * ab * sn * cs + b * sn * sn
+        two = a * sn * sn - 2.0 * ab * sn * cs + b * cs * cs
+        if one > 0 and two > 0:  # else (a block no section has) the diagonal, unturned
+            k44[i], k55[i], theta[i] = one, two, math.degrees(t)
+        else:
+            k44[i], k55[i] = a, b
+        k66[i] = 1.0 / c[5, 5]
+    return k44, k55, k66, theta
 
 
 def _shear(k: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
@@ -711,7 +729,7 @@ class _Reader:
                 for a, c in zip(*np.triu_indices(6), strict=True)
             ]
             six = _symmetric(np.stack(upper, axis=1))
-            flap, edge, gj = _condensed(six)
+            flap, edge, gj, turned = _condensed(six)
             shear = _shear(six)
             ip = _at({"grid": im["grid"], "values": im["i_plr"]}, grid) if "i_plr" in im else None
             twist = _at(b["outer_shape"]["twist"], grid)  # degrees in 2.x
@@ -722,7 +740,7 @@ class _Reader:
             grid = np.asarray(six["stiff_matrix"]["grid"], float)
             kv = np.asarray(six["stiff_matrix"]["values"], float)
             mv = np.asarray(six["inertia_matrix"]["values"], float)
-            flap, edge, gj = _condensed(_symmetric(kv[:, :21]))
+            flap, edge, gj, turned = _condensed(_symmetric(kv[:, :21]))
             shear = _shear(_symmetric(kv[:, :21]))
             mass, ip = mv[:, _UT["mass"]], mv[:, _UT["i_plr"]]
             twist = np.degrees(_at(six["twist"], grid))  # radians in 1.x
@@ -731,6 +749,14 @@ class _Reader:
             # BeamDyn (K44 edgewise): the lower stiffness over most of the span is flapwise.
             flap, edge = edge, flap
             shear = shear[::-1] if shear is not None else None
+        else:
+            # the schema's axes (x to the trailing edge, y to the suction side) are BeamDyn's
+            # (x to the suction side, y to the trailing edge) named the other way round: a
+            # turn from axis 1 towards axis 2 is the opposite turn about the span
+            turned = -turned
+        # the principal axes: the aerodynamic twist less the matrices' own turn (θ from
+        # BeamDyn's axis 1 towards axis 2, HAWC2's structural pitch: _condensed)
+        twist = twist - turned
         span = grid * length
         structure: dict[str, Any] = {
             "hub_radius_m": hub_r,
