@@ -910,10 +910,17 @@ def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -
 
 def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool = True) -> "Path":
     """The sweep's modes at other rotor speeds [rad/s] (the operating points'), each
-    followed by MAC from the sweep's nearest speed — the sweep's names and kept modes, one
-    solve per speed; ``reduced``: in the sweep's Ritz basis, else in the full model."""
+    followed from the sweep's nearest speed as the sweep follows its own from speed to
+    speed (:func:`track`: the shape's MAC, and its identity — whirl and part — where a
+    candidate lies near) — the sweep's names and kept modes, one solve per speed;
+    ``reduced``: in the sweep's Ritz basis, else in the full model. (By MAC alone, an
+    operating speed inside a close veering took the pair the other way round from the
+    sweep: the windIO IEA-15's first flap forward and edge backward whirls, 1 % apart at
+    6.7 rpm.)"""
     path = sw.path
-    weight = np.sqrt(np.diag(model.multiblade[0]))[:, None]
+    m = model.multiblade[0]
+    weight = np.sqrt(np.diag(m))[:, None]
+    part = np.array(parts(model, m, path.first.shapes), dtype=object)
     freqs = np.empty((len(omegas), path.kept))
     zetas = np.empty((len(omegas), path.kept))
     shapes = []
@@ -922,7 +929,14 @@ def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool 
     found = _candidates(model, points, path.first.span + TRACK_SPARE, basis, path.kept)
     for i, (om, cur) in enumerate(zip(omegas, found, strict=True)):
         near = int(np.argmin(np.abs(sw.omega - om)))
-        order = modal.track(weight * path.shapes[near], weight * cur.shapes)
+        kinds, where = whirls_and_parts(model, m, cur.shapes)
+        mac = modal.mac(weight * path.shapes[near], weight * cur.shapes)
+        same = _same_kind(path.whirl[near], kinds) + np.equal.outer(
+            part, np.array(where, dtype=object)
+        )
+        step = float(om) - float(sw.omega[near])
+        score = _identity_score(mac, same, path.frequency_hz[near], cur.frequency_hz, step)
+        order = modal.assign(score, optimal=True)
         assert cur.damping_ratio is not None
         freqs[i], zetas[i] = cur.frequency_hz[order], cur.damping_ratio[order]
         shapes.append(cur.shapes[:, order])
