@@ -396,3 +396,38 @@ def test_a_monopile_in_water_no_water_has_is_one_line(tmp_path, density, words, 
     doc.setdefault("environment", {})["water_density"] = density
     with pytest.raises(SpecError, match=words):
         load_mutated(tmp_path, doc)
+
+
+def test_a_blade_written_in_the_schema_s_axes_reads_as_the_same_blade(tmp_path):
+    """The published IEA files give their 6×6 sections in BeamDyn's axes (K44 edgewise);
+    windIO's schema names the axes the other way round (x to the trailing edge, y to the
+    suction side: K44 flapwise). The same blade written both ways — axes 1 and 2 swapped
+    in every matrix — is one blade: the same principal stiffnesses and the same principal
+    axes' twist (the turn the cross term K45 gives runs the other way in swapped axes)."""
+    windio_pkg = pytest.importorskip("windIO", reason="the windio package (dev extra) is needed")
+    from pathlib import Path
+
+    import yaml
+
+    from wtvib import importers
+
+    source = Path(windio_pkg.__file__).parent / "examples" / "turbine" / "IEA-15-240-RWT.yaml"
+    data = yaml.safe_load(source.read_text())
+    k = data["components"]["blade"]["structure"]["elastic_properties"]["stiffness_matrix"]
+    swap = {1: 2, 2: 1, 3: 3, 4: 5, 5: 4, 6: 6}
+    old = {key: value for key, value in k.items() if key.startswith("K")}
+    for a in range(1, 7):
+        for b in range(a, 7):
+            i, j = sorted((swap[a], swap[b]))
+            if f"K{i}{j}" in old:
+                k[f"K{a}{b}"] = old[f"K{i}{j}"]
+            else:
+                k.pop(f"K{a}{b}", None)
+    written = tmp_path / "schema_axes.yaml"
+    written.write_text(yaml.safe_dump(data, sort_keys=False))
+    published = importers.load(source).blade.structure
+    schema = importers.load(written).blade.structure
+    assert published is not None and schema is not None
+    for field in ("ei_flap_nm2", "ei_edge_nm2", "twist_deg", "gj_nm2", "ga_flap_n", "ga_edge_n"):
+        np.testing.assert_allclose(getattr(schema, field), getattr(published, field),
+                                   rtol=1e-12, atol=1e-9, err_msg=field)  # fmt: skip
