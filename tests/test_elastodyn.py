@@ -152,6 +152,26 @@ def test_rosco_tower_resonance_avoidance_is_a_quick_pass_band(tmp_path):
     assert "passed quickly" in found.note
 
 
+@pytest.mark.parametrize("vs", ["5", "3"])
+def test_a_deck_s_pitch_control_holds_when_its_controller_cannot_be_read(tmp_path, vs):
+    """OpenFAST's regression decks name a Bladed DLL compiled from NREL's baseline source,
+    whose input file ('DISCON.IN') is not in the set; a user-defined controller (VSContrl
+    3) cannot be read at all. The deck still says its pitch is controlled (PCMode 5): the
+    operation taken is pitch-regulated, not a stall-regulated rotor at its fine pitch (which
+    drove the NREL 5-MW's tips into stall at 25 m/s and failed it for the instability)."""
+    servo = elastodyn.parse(
+        tmp_path / "s.dat", f'5 PCMode -\n{vs} VSContrl -\n"DISCON.IN" DLL_InFile -\n'
+    )
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    found = servodyn.operation(main, servo)
+    assert found.speed == {"fixed_rpm": 12.1, "source": "the initial RotSpeed of d.dat"}
+    assert found.control["regulation"] == "pitch"
+    unpitched = elastodyn.parse(
+        tmp_path / "u.dat", f'0 PCMode -\n{vs} VSContrl -\n"DISCON.IN" DLL_InFile -\n'
+    )
+    assert servodyn.operation(main, unpitched).control["regulation"] == "stall"
+
+
 @pytest.mark.parametrize(
     ("case", "root"),
     [("Ideal_Beam_Fixed_Free_Linear", "clamped"), ("Ideal_Beam_Free_Free_Linear", "free")],

@@ -467,3 +467,39 @@ def test_a_negative_estimate_the_coupled_model_supersedes_is_said(shared: Path):
     assert stab.numbers["negative_where_not_judged"]["blade.edge1"] < 0
     assert "blade.edge1's own isolated estimate falls below zero" in stab.message
     assert "= -" not in stab.message and "ζ -" not in stab.message
+
+
+def test_a_pitch_regulated_deck_without_its_controller_file_pitches_at_an_estimated_rating(
+    shared: Path, tmp_path
+):
+    """The NREL 5-MW deck set with its controller's input file taken away (as OpenFAST's
+    regression decks name a DLL whose 'DISCON.IN' they do not hold): audited at its initial
+    12.1 rpm, fixed, pitch-regulated as its ServoDyn says (PCMode 5), its rated power
+    estimated where the rotor reaches that speed at its region-2 tip-speed ratio — 10.4 m/s
+    and 4.16 MW aerodynamic here, against 11.4 m/s and 5.30 MW (5 MW at 94.4 %) with the
+    controller's file (Jonkman et al. 2009, NREL/TP-500-38060: rated wind 11.4 m/s); held
+    within 70–100 % of the controller's rating, said in the report. At 25 m/s its blades
+    pitch to within 3° of the controller case's and its tips stay out of stall: no
+    aeroelastic instability. Taken stall-regulated at its fine pitch (before) its tips
+    reached α = 12° at 25 m/s and its first edgewise whirl went unstable there — a FAIL
+    the deck does not have."""
+    folder = edited_reference(shared, tmp_path, "NREL5MW", "DISCON.IN", "", "")
+    (folder / "DISCON.IN").unlink()
+    spec = load(folder / "NREL-5MW.fst")
+    assert spec.aerodynamics is not None
+    assert spec.aerodynamics.control.regulation == "pitch"
+    assert spec.rotor.speed.fixed_rpm == pytest.approx(12.1)
+    estimated = bem.schedule(spec)
+    given = bem.schedule(load(shared / "reference/NREL5MW/NREL-5MW.fst"))
+    assert given.rated_power == pytest.approx(5e6 / 0.944, rel=1e-3)
+    assert estimated.rated_power is not None
+    assert 0.7 <= estimated.rated_power / given.rated_power <= 1.0
+    assert any("an estimate" in n for n in estimated.assumptions)
+    i, j = int(np.argmax(estimated.wind)), int(np.argmax(given.wind))
+    assert estimated.wind[i] == given.wind[j] == 25.0
+    pitch = estimated.pitch_deg[i], given.pitch_deg[j]
+    assert abs(pitch[0] - pitch[1]) < 3.0 and pitch[0] > 20.0
+    report = audit.run(spec)
+    checks = {c.id: c for c in report.checks}
+    assert checks["aerodynamics.stability"].status != "fail"
+    assert any("no rated power given" in a for a in report.assumptions)

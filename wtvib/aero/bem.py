@@ -664,6 +664,8 @@ def _schedule(spec: Spec) -> Schedule:
     def at_fine(v: Array) -> Solution:
         return solve(r, v, _rotor_speed(spec, r, v, tsr, fine), lowest(v))
 
+    if c.regulation == "pitch" and p_rated is None:
+        p_rated = _rated_estimate(spec, r, tsr, at_fine, notes)
     rated_wind = None
     pitching = c.regulation == "pitch" and p_rated is not None
     if pitching:
@@ -713,6 +715,44 @@ def _schedule(spec: Spec) -> Schedule:
         p_rated,
         tuple(notes),
     )
+
+
+def _rated_estimate(
+    spec: Spec, r: Rotor, tsr: float, at_fine: Callable[[Array], Solution], notes: list[str]
+) -> float | None:
+    """A pitch-regulated rotor's rated power where none is given (an OpenFAST deck whose
+    controller's input file is not in the set): the rotor's aerodynamic power at the fine
+    pitch where it reaches its top speed at the region-2 tip-speed ratio, V = Ω·R/λ — the
+    end of region 2 of a variable-speed turbine, at or a little below its rated power (the
+    NREL 5-MW: 10.6 against 11.4 m/s), so that the pitch holds the rotor out of the stall
+    the fine pitch would drive it into; said. None where that wind lies outside the
+    operating winds (the rotor then runs at its fine pitch, as without pitch control)."""
+    speed = spec.rotor.speed
+    fixed = speed.fixed_rpm
+    top_rpm = max(fixed) if isinstance(fixed, list) else fixed
+    if top_rpm is None:
+        top_rpm = speed.rated_rpm or speed.top_rpm
+    c = spec.aerodynamics.control if spec.aerodynamics is not None else None
+    wind = float(rpm_to_rad_s(top_rpm)) * r.tip_radius / tsr
+    power = (
+        float(at_fine(np.array([wind])).power[0])
+        if c is not None and c.cut_in_wind_m_s < wind < c.cut_out_wind_m_s
+        else 0.0
+    )
+    if not power > 0:
+        notes.append(
+            "pitch regulation with no rated power given, and none to estimate (the top "
+            f"speed's region-2 wind, {wind:.3g} m/s, outside the operating winds or without "
+            "power): the rotor at its fine pitch at every wind"
+        )
+        return None
+    notes.append(
+        f"pitch regulation with no rated power given: rated power taken as the rotor's "
+        f"aerodynamic power where it reaches its top speed ({top_rpm:.4g} rpm) at the region-2 "
+        f"tip-speed ratio, {wind:.3g} m/s: {power / 1e3:,.0f} kW (an estimate; give the "
+        "turbine's rated power to judge its own)"
+    )
+    return power
 
 
 def _method(r: Rotor) -> str:

@@ -75,7 +75,7 @@ def operation(main: Deck, servo: Deck | None, fst: Deck | None = None) -> Operat
         return _constant_speed(main, servo, fst, regulation, pitch)
     return _initial(
         main, f"its controller is user-defined (VSContrl = {mode}), which wtvib cannot read",
-        fixed_pitch,
+        {"regulation": regulation, "fine_pitch_deg": pitch},
     )  # fmt: skip
 
 
@@ -111,7 +111,8 @@ def _initial(main: Deck, why: str, control: dict[str, Any]) -> Operation:
 def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
     """ROSCO / Bladed-style controller: its input file's speeds, TSR, power, fine pitch."""
     gb = main.num("GBRatio", default=1.0)
-    fixed = {"regulation": "stall", "fine_pitch_deg": pitch}
+    # the deck's pitch control (PCMode) holds whether or not its controller file is here
+    fixed = {"regulation": regulation, "fine_pitch_deg": pitch}
     if "DLL_InFile" not in servo.values:
         return _initial(main, "its DLL controller names no input file (DLL_InFile)", fixed)
     name = servo.text("DLL_InFile")

@@ -133,7 +133,8 @@ def _check_coupled(spec: Spec, doc: Document) -> None:
 
 def _check_aerodynamics(spec: Spec, doc: Document) -> None:
     """The aerodynamic stations must lie on a horizontal-axis rotor whose radius is known,
-    inside it, and the schedule needs a rated power when it pitches."""
+    inside it, and the given operating points within the rotor's speeds. (Pitch regulation
+    without a rated power is estimated and said: aero.bem._rated_estimate.)"""
     aero = spec.aerodynamics
     if aero is None:
         return
@@ -179,12 +180,6 @@ def _check_aerodynamics(spec: Spec, doc: Document) -> None:
                     i,
                 )
         return
-    if c.regulation == "pitch" and (c.rated_power_kw or spec.turbine.rated_power_kw) is None:
-        fail(
-            "pitch regulation needs a rated power (control.rated_power_kw or "
-            "turbine.rated_power_kw)",
-            "control",
-        )
 
 
 def _check_results(spec: Spec, doc: Document) -> None:
