@@ -34,14 +34,24 @@ def test_head_mass_is_for_windio_files_only(tmp_path):
 
 
 def test_the_headline_says_where_imported_speeds_come_from(shared):
-    """windIO 1.x speeds: the IEA-3.4 1.x file's control block carries 6.9–12.1
-    rpm; the report says they are the file's (operation.source, and the headline's Speed
-    row), and a range given on the command line says so instead."""
+    """windIO 1.x speeds: the IEA-3.4 1.x file's torque block gives no limits (VS_minspd 0,
+    VS_maxspd 2 rad/s) but its tip-speed ratio, cut-in and tip-speed limit: the rotor runs
+    3.53–11.75 rpm as WISDEM runs it (windio._Reader._torque_speeds) — its OpenFAST deck's
+    controller 3.539–11.63 rpm (VS_MinOMSpd, VS_RefSpd), its HAWC2 model's 3.77–11.75
+    (the DTU controller's constants 2 and 3; IEAWindTask37/IEA-3.4-130-RWT) — where its
+    supervisory block's minOmega/maxOmega, the NREL 5-MW's 6.9–12.1 rpm, were taken
+    before (and are said, not used). The report says where the range comes from
+    (operation.source, the headline's Speed row); a range given on the command line says
+    so instead."""
     from wtvib import audit
     from wtvib.importers import ReadOptions, load
 
     path = shared / "reference/IEA3.4/IEA-3.4-130-RWT.yaml"
-    doc = audit.run(load(path, ReadOptions(head_mass=1.5e5))).to_dict()
+    spec = load(path, ReadOptions(head_mass=1.5e5))
+    assert spec.rotor.speed.min_rpm == pytest.approx(3.539, rel=0.01)
+    assert spec.rotor.speed.max_rpm == pytest.approx(11.75, rel=0.01)
+    assert any("6.9–12.1 rpm: not used" in a for a in spec.assumptions)
+    doc = audit.run(spec).to_dict()
     assert "control.supervisory" in doc["operation"]["source"]
     assert "IEA-3.4-130-RWT.yaml" in doc["operation"]["source"]
     doc = audit.run(load(path, ReadOptions(head_mass=1.5e5, rpm=(3.8, 11.75)))).to_dict()

@@ -1,5 +1,8 @@
 """windIO at unit level: 6×6 section matrices, floating turbines, speeds from control."""
 
+import math
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -431,3 +434,40 @@ def test_a_blade_written_in_the_schema_s_axes_reads_as_the_same_blade(tmp_path):
     for field in ("ei_flap_nm2", "ei_edge_nm2", "twist_deg", "gj_nm2", "ga_flap_n", "ga_edge_n"):
         np.testing.assert_allclose(getattr(schema, field), getattr(published, field),
                                    rtol=1e-12, atol=1e-9, err_msg=field)  # fmt: skip
+
+
+#: WISDEM's IEA-3.4 example (WISDEM/WISDEM examples/02_reference_turbines/IEA-3p4-130-RWT.yaml,
+#: windIO 2.0): its assembly's rotor diameter and its control block as the file gives them
+IEA34_DIAMETER = 129.82183952
+IEA34_CONTROL = {
+    "supervisory": {"Vin": 3.0, "Vout": 25.0, "maxTS": 80.0},
+    "torque": {"tsr": 8.01754386, "VS_minspd": 0.0, "VS_maxspd": 19.098593171027442},
+}
+
+
+def test_a_wisdem_control_block_gives_the_speeds_wisdem_runs_the_rotor_at():
+    """WISDEM's current windIO examples (IEA-3.4, BAR) give VS_minspd 0 (no limit) and a
+    VS_maxspd of 2 rad/s that the tip-speed limit undercuts: WISDEM runs the rotor at
+    the region-2 tip-speed ratio between them, Ω = clip(tsr·V/R, VS_minspd, min(VS_maxspd,
+    maxTS/R)) (wisdem/rotorse/rotor_power.py). The IEA-3.4's: 3.539–11.77 rpm — its
+    OpenFAST deck's controller (IEAWindTask37/IEA-3.4-130-RWT, DISCON.IN) has VS_MinOMSpd
+    3.539 rpm and VS_RefSpd 11.63 rpm (the rated speed a little below the tip-speed
+    limit). Such files were refused for 'no rotor speed range'."""
+    d = {"assembly": {"rotor_diameter": IEA34_DIAMETER}, "components": {}, "control": IEA34_CONTROL}
+    speed, note = windio._Reader(d, Path("iea34.yaml"), v2=True).speed()
+    r = IEA34_DIAMETER / 2
+    assert speed["min_rpm"] == pytest.approx(8.01754386 * 3.0 / r * 30 / math.pi, rel=1e-12)
+    assert speed["max_rpm"] == pytest.approx(80.0 / r * 30 / math.pi, rel=1e-12)
+    assert speed["min_rpm"] == pytest.approx(3.539, abs=1e-3)  # the deck's VS_MinOMSpd
+    assert speed["max_rpm"] == pytest.approx(11.63, rel=0.015)  # the deck's VS_RefSpd
+    assert "as WISDEM runs the rotor" in note and "maxTS 80" in note
+    # a VS_maxspd below the tip-speed limit stands; a VS_minspd given stands
+    given = {**IEA34_CONTROL, "torque": {"tsr": 8.0, "VS_minspd": 5.0, "VS_maxspd": 10.0}}
+    d["control"] = given
+    speed, note = windio._Reader(d, Path("iea34.yaml"), v2=True).speed()
+    assert speed == {"min_rpm": 5.0, "max_rpm": 10.0}
+    assert note == "Operating range from control.torque.VS_minspd/VS_maxspd (rpm): 5–10 rpm."
+    # no tip-speed ratio or cut-in to place the lowest speed: refused, as before
+    d["control"] = {"supervisory": {"maxTS": 80.0}, "torque": {"VS_minspd": 0.0, "VS_maxspd": 12.0}}
+    with pytest.raises(SpecError, match="no rotor speed range"):
+        windio._Reader(d, Path("iea34.yaml"), v2=True).speed()

@@ -316,6 +316,13 @@ def _symmetric(upper: np.ndarray) -> np.ndarray:
     return full
 
 
+def _number(value: Any) -> float:
+    """A finite number from a control entry, else 0 (absent, text, a boolean, NaN)."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        return 0.0
+    return float(value)
+
+
 def _condensed(k: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Principal bending stiffnesses (about axis 1 and axis 2 turned by θ: the K44 and K55
     of the turned section), the torsional stiffness (K66) and θ [deg] of 6×6 section
@@ -520,27 +527,79 @@ class _Reader:
         # v1p0_to_v2p0.convert_controls: "from rad/s to rpm"; WISDEM's 2.0 examples: the
         # NREL 5-MW's 6.9/12.1)
         per_rad_s = 60.0 / (2.0 * math.pi)
-        for block, lo_key, hi_key, factor, unit in (
-            (
-                "torque",
-                "VS_minspd",
-                "VS_maxspd",
-                *((1.0, "rpm") if self.v2 else (per_rad_s, "rad/s")),
-            ),
-            ("supervisory", "minOmega", "maxOmega", per_rad_s, "rad/s"),
-        ):
-            sub = ctl.get(block, {})
-            lo, hi = sub.get(lo_key), sub.get(hi_key)
-            if lo and hi and 0 < lo < hi:
-                return (
-                    {"min_rpm": lo * factor, "max_rpm": hi * factor},
-                    f"Operating range from control.{block}.{lo_key}/{hi_key} ({unit}): "
-                    f"{lo * factor:.3g}–{hi * factor:.3g} rpm.",
-                )
+        torque = self._torque_speeds(ctl, 1.0 if self.v2 else per_rad_s)
+        if torque is not None:
+            return torque
+        sub = ctl.get("supervisory", {})
+        lo, hi = _number(sub.get("minOmega")), _number(sub.get("maxOmega"))
+        if 0 < lo < hi:
+            return (
+                {"min_rpm": lo * per_rad_s, "max_rpm": hi * per_rad_s},
+                "Operating range from control.supervisory.minOmega/maxOmega (rad/s): "
+                f"{lo * per_rad_s:.3g}–{hi * per_rad_s:.3g} rpm.",
+            )
         raise self.fail(
             "no rotor speed range in 'control' (min/rated_rotor_speed, "
             "torque.VS_minspd/VS_maxspd or supervisory.minOmega/maxOmega); give "
             "--rpm MIN:MAX"
+        )
+
+    def _torque_speeds(
+        self, ctl: dict[str, Any], factor: float
+    ) -> tuple[dict[str, float], str] | None:
+        """The rotor speeds of ``control.torque`` (VS_minspd, VS_maxspd: rpm in 2.0, rad/s in
+        1.x): the range they give; where VS_minspd is 0 — no limit, as WISDEM's IEA-3.4 and
+        BAR examples give it, with a VS_maxspd of 2 rad/s to match — as WISDEM runs the
+        rotor (wisdem/rotorse/rotor_power.py: Ω = clip(tsr·V/R, VS_minspd, min(VS_maxspd,
+        maxTS/R))): the lowest the region-2 tip-speed ratio's speed at cut-in, tsr·Vin/R
+        (the IEA-3.4's 3.539 rpm, its OpenFAST deck's VS_MinOMSpd), the top the lower of
+        VS_maxspd and the tip-speed limit supervisory.maxTS over the rotor radius. (Where
+        the file gives a range, its VS_maxspd stands: WISDEM's tip-speed cap would take the
+        IEA-15's rated 7.56 rpm 0.8 % down.) None where the block gives no range."""
+        torque, sup = ctl.get("torque", {}), ctl.get("supervisory", {})
+        lo, hi = (
+            _number(torque.get("VS_minspd")) * factor,
+            _number(torque.get("VS_maxspd")) * factor,
+        )
+        unit = "rpm" if factor == 1.0 else "rad/s"
+        radius = _number(self.d.get("assembly", {}).get("rotor_diameter")) / 2.0
+        said: list[str] = []
+        rpm_per_rad_s = 60.0 / (2.0 * math.pi)
+        tip_speed = _number(sup.get("maxTS"))
+        if 0 < lo < hi:  # a range the file means (the IEA-10's and IEA-15's rated speeds)
+            tip_speed = 0.0
+        if hi > 0 and tip_speed > 0 and radius > 0 and tip_speed / radius * rpm_per_rad_s < hi:
+            hi = tip_speed / radius * rpm_per_rad_s
+            said.append(
+                f"the top speed the tip-speed limit maxTS {tip_speed:g} m/s over R {radius:.4g} m"
+            )
+        tsr, cut_in = _number(torque.get("tsr")), _number(sup.get("Vin"))
+        if lo == 0 and tsr > 0 and cut_in > 0 and radius > 0:
+            lo = tsr * cut_in / radius * rpm_per_rad_s
+            said.append(
+                f"the lowest the speed at cut-in, tsr {tsr:g} × Vin {cut_in:g} m/s / R "
+                "(VS_minspd 0: no limit)"
+            )
+        if not 0 < lo < hi:
+            return None
+        if not said:
+            where = f"control.torque.VS_minspd/VS_maxspd ({unit})"
+            return {
+                "min_rpm": lo,
+                "max_rpm": hi,
+            }, f"Operating range from {where}: {lo:.3g}–{hi:.3g} rpm."
+        other = ""
+        low, high = _number(sup.get("minOmega")), _number(sup.get("maxOmega"))
+        if 0 < low < high:  # a second range in the file, unused: said (the IEA-3.4 1.x file's
+            # are the NREL 5-MW's 6.9–12.1 rpm)
+            other = (
+                f" (control.supervisory.minOmega/maxOmega give {low * rpm_per_rad_s:.3g}–"
+                f"{high * rpm_per_rad_s:.3g} rpm: not used)"
+            )
+        return (
+            {"min_rpm": lo, "max_rpm": hi},
+            f"Operating range from control.torque and control.supervisory as WISDEM runs the "
+            f"rotor: {lo:.4g}–{hi:.4g} rpm — {'; '.join(said)}{other}.",
         )
 
     # -- tower and monopile ---------------------------------------------------------
