@@ -266,3 +266,30 @@ def test_a_verdict_resting_on_a_warning_is_marked_in_every_summary(shared, tmp_p
     pdf = PdfReader(io.BytesIO((out / "audit.pdf").read_bytes()))
     text = "\n".join(p.extract_text() for p in pdf.pages)
     assert "WARN*" in text and "Warnings" in text and "names no lowest" in text
+
+
+def test_wisdem_s_options_files_are_left_out_of_a_batch_and_said(tmp_path):
+    """Every WISDEM example folder holds its modeling and analysis options beside the
+    windIO turbine: a batch of such a folder audits the turbine, and says of each options
+    file that it is one (they were eleven 'input errors' in WISDEM's reference-turbine
+    folder); ``check`` on one says what it is, exit 2."""
+    shutil.copy(TURBINES / "mod-2.yaml", tmp_path / "turbine.yaml")
+    options = {
+        "modeling_options.yaml": "General:\n  verbosity: False\nWISDEM:\n  RotorSE:\n"
+        "    flag: True\n",
+        "analysis_options.yaml": "general:\n  folder_output: outputs\n  fname_output: x\n",
+        "analysis_options_opt.yaml": "general:\n  folder_output: o\ndriver:\n  optimization:\n"
+        "    flag: False\nrecorder:\n  flag: False\n",
+    }
+    for name, text in options.items():
+        (tmp_path / name).write_text(text)
+    found, skipped = batch.discover_all([tmp_path])
+    assert [p.name for p in found] == ["turbine.yaml"]
+    assert sorted(Path(p).name for p, _ in skipped) == sorted(options)
+    assert all(why == batch.OPTIONS for _, why in skipped)
+    result = CliRunner().invoke(app, ["check", str(tmp_path / "modeling_options.yaml")])
+    assert result.exit_code == 2
+    assert "WISDEM/WEIS modeling or analysis options file, not a turbine" in result.stderr
+    # a spec that merely has a 'general' block is not taken for one
+    (tmp_path / "other.yaml").write_text("general:\n  note: mine\n")
+    assert "other.yaml" in [p.name for p in batch.discover_all([tmp_path])[0]]

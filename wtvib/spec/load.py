@@ -2,6 +2,7 @@
 
 import hashlib
 import os
+import re
 import stat
 from pathlib import Path as FsPath
 from typing import Any
@@ -162,6 +163,40 @@ def from_data(data: dict[str, Any], source: str | None = None) -> Spec:
     return from_document(Document(data=data, lines={}, source=source))
 
 
+#: Top-level keys of WISDEM's and WEIS's modeling options (General, WISDEM) and analysis
+#: options (driver, design_variables, merit_figure, …) files, which sit beside the windIO
+#: turbine in every WISDEM example folder
+_WISDEM_MODELING = {"General", "WISDEM"}
+_WISDEM_ANALYSIS = {"driver", "recorder", "design_variables", "merit_figure", "constraints"}
+
+
+def _options_file(data: dict[str, Any]) -> bool:
+    general = data.get("general")
+    output = isinstance(general, dict) and "folder_output" in general
+    return is_options_keys(set(data)) or (set(data) == {"general"} and output)
+
+
+def is_options_keys(keys: set[str]) -> bool:
+    """Whether a YAML document's top-level keys are those of a WISDEM/WEIS options file."""
+    return keys >= _WISDEM_MODELING or len(keys & _WISDEM_ANALYSIS) >= 2
+
+
+_TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
+
+
+def is_options_file(path: FsPath) -> bool:
+    """Whether a YAML file is a WISDEM/WEIS options file (its top-level keys, read from its
+    first 200 kB without parsing it: a batch's discovery must stay cheap)."""
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(200_000).decode("utf-8", "replace")
+    except OSError:
+        return False
+    keys = set(_TOP_KEY.findall(head))
+    # the smallest analysis options: a general block naming the output folder alone
+    return is_options_keys(keys) or (keys == {"general"} and "folder_output" in head)
+
+
 def from_document(doc: Document) -> Spec:
     """Validate a parsed document as a :class:`Spec`."""
     if not isinstance(doc.data, dict):
@@ -172,6 +207,13 @@ def from_document(doc: Document) -> Spec:
         )
     version = doc.data.get("wtvib")
     if "wtvib" not in doc.data:
+        if _options_file(doc.data):
+            raise SpecError(
+                "a WISDEM/WEIS modeling or analysis options file, not a turbine: give the "
+                "turbine's windIO file (the geometry YAML the options go with)",
+                line=1,
+                source=doc.source,
+            )
         raise SpecError(
             "not a wtvib spec: the version key 'wtvib: 1' is missing", line=1, source=doc.source
         )

@@ -135,6 +135,11 @@ LEFT_OUT = {
 }
 
 
+#: Why a WISDEM/WEIS options file in a folder is not audited (every WISDEM example folder
+#: holds its modeling and analysis options beside the windIO turbine)
+OPTIONS = "a WISDEM/WEIS modeling or analysis options file, not a turbine"
+
+
 #: Stems of the batch's own files: an input may not take them (its report would be
 #: overwritten by the summary).
 RESERVED = frozenset({"summary", "run-metadata", "audit"})
@@ -144,6 +149,7 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
     """The main inputs in a folder and its subfolders; a subfolder that cannot be searched
     (no permission) is itself an input, whose audit says why — never skipped silently."""
     from ..importers import is_main_input
+    from ..spec.load import is_options_file
 
     out: list[Path] = []
     unreadable: list[Path] = []
@@ -159,7 +165,9 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
                 regular = q.is_file()
             except OSError:
                 regular = False
-            if regular and is_main_input(q):
+            if regular and q.suffix.lower() in (".yaml", ".yml") and is_options_file(q):
+                left.append((str(q), OPTIONS))
+            elif regular and is_main_input(q):
                 out.append(q)
             elif regular and q.suffix.lower() in LEFT_OUT:
                 left.append((str(q), LEFT_OUT[q.suffix.lower()]))
