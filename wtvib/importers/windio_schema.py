@@ -45,13 +45,26 @@ def problems(data: Any) -> list[tuple[tuple[str | int, ...], str]]:
     (uniqueItems), and enough of the first entries that no length limit changes (the schema's
     minItems and maxItems are at most 6; only lists of more than :data:`SAMPLE_ABOVE` are
     sampled). An objection inside a sampled list names the entry's own index."""
+    return [(where, message) for where, message, _ in objections(data)]
+
+
+def objections(data: Any) -> list[tuple[tuple[str | int, ...], str, bool]]:
+    """:func:`problems` with, for each, whether it is a key the schema requires and the file
+    leaves out (a ``required`` objection) rather than a value it refuses."""
     validator = _validator()
     if validator is None:
         return []
     index: dict[tuple[str | int, ...], list[int]] = {}
     sample = _sampled(data, (), index)
     found = sorted(validator.iter_errors(sample), key=lambda e: [str(p) for p in e.absolute_path])
-    return [(_original(tuple(e.absolute_path), index), _message(e, data, index)) for e in found]
+    return [
+        (
+            _original(tuple(e.absolute_path), index),
+            _message(e, data, index),
+            e.validator == "required",
+        )
+        for e in found
+    ]
 
 
 def _message(error: Any, data: Any, index: dict[tuple[str | int, ...], list[int]]) -> str:
