@@ -32,7 +32,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..numerics.modal import ModalError
-from ..spec import Spec
+from ..spec import Control, Spec
 from ..units import rad_s_to_rpm, rpm_to_rad_s
 from . import torsion
 from .torsion import Torsion
@@ -665,7 +665,7 @@ def _schedule(spec: Spec) -> Schedule:
         return solve(r, v, _rotor_speed(spec, r, v, tsr, fine), lowest(v))
 
     if c.regulation == "pitch" and p_rated is None:
-        p_rated = _rated_estimate(spec, r, tsr, at_fine, notes)
+        p_rated = _rated_estimate(spec, c, r, tsr, at_fine, notes)
     rated_wind = None
     pitching = c.regulation == "pitch" and p_rated is not None
     if pitching:
@@ -718,7 +718,12 @@ def _schedule(spec: Spec) -> Schedule:
 
 
 def _rated_estimate(
-    spec: Spec, r: Rotor, tsr: float, at_fine: Callable[[Array], Solution], notes: list[str]
+    spec: Spec,
+    c: Control,
+    r: Rotor,
+    tsr: float,
+    at_fine: Callable[[Array], Solution],
+    notes: list[str],
 ) -> float | None:
     """A pitch-regulated rotor's rated power where none is given (an OpenFAST deck whose
     controller's input file is not in the set): the rotor's aerodynamic power at the fine
@@ -728,15 +733,11 @@ def _rated_estimate(
     the fine pitch would drive it into; said. None where that wind lies outside the
     operating winds (the rotor then runs at its fine pitch, as without pitch control)."""
     speed = spec.rotor.speed
-    fixed = speed.fixed_rpm
-    top_rpm = max(fixed) if isinstance(fixed, list) else fixed
-    if top_rpm is None:
-        top_rpm = speed.rated_rpm or speed.top_rpm
-    c = spec.aerodynamics.control if spec.aerodynamics is not None else None
+    top_rpm = speed.rated_rpm or speed.top_rpm  # the top speed, as _rotor_speed takes it
     wind = float(rpm_to_rad_s(top_rpm)) * r.tip_radius / tsr
     power = (
         float(at_fine(np.array([wind])).power[0])
-        if c is not None and c.cut_in_wind_m_s < wind < c.cut_out_wind_m_s
+        if c.cut_in_wind_m_s < wind < c.cut_out_wind_m_s
         else 0.0
     )
     if not power > 0:

@@ -332,6 +332,10 @@ def _symmetric(upper: np.ndarray) -> np.ndarray:
     return full
 
 
+#: rpm per rad/s: windIO 1.x gives its control block's rotor speeds in rad/s
+_RPM_PER_RAD_S = 60.0 / (2.0 * math.pi)
+
+
 def _number(value: Any) -> float:
     """A finite number from a control entry, else 0 (absent, text, a boolean, NaN)."""
     if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
@@ -542,17 +546,16 @@ class _Reader:
         # VS_minspd/VS_maxspd are rpm (windIO's own converter, converters/windIO2windIO.py,
         # v1p0_to_v2p0.convert_controls: "from rad/s to rpm"; WISDEM's 2.0 examples: the
         # NREL 5-MW's 6.9/12.1)
-        per_rad_s = 60.0 / (2.0 * math.pi)
-        torque = self._torque_speeds(ctl, 1.0 if self.v2 else per_rad_s)
+        torque = self._torque_speeds(ctl, 1.0 if self.v2 else _RPM_PER_RAD_S)
         if torque is not None:
             return torque
         sub = ctl.get("supervisory", {})
         lo, hi = _number(sub.get("minOmega")), _number(sub.get("maxOmega"))
         if 0 < lo < hi:
             return (
-                {"min_rpm": lo * per_rad_s, "max_rpm": hi * per_rad_s},
+                {"min_rpm": lo * _RPM_PER_RAD_S, "max_rpm": hi * _RPM_PER_RAD_S},
                 "Operating range from control.supervisory.minOmega/maxOmega (rad/s): "
-                f"{lo * per_rad_s:.3g}–{hi * per_rad_s:.3g} rpm.",
+                f"{lo * _RPM_PER_RAD_S:.3g}–{hi * _RPM_PER_RAD_S:.3g} rpm.",
             )
         raise self.fail(
             "no rotor speed range in 'control' (min/rated_rotor_speed, "
@@ -577,40 +580,35 @@ class _Reader:
             _number(torque.get("VS_minspd")) * factor,
             _number(torque.get("VS_maxspd")) * factor,
         )
-        unit = "rpm" if factor == 1.0 else "rad/s"
+        if 0 < lo < hi:  # a range the file means (the IEA-10's and IEA-15's rated speeds)
+            where = f"control.torque.VS_minspd/VS_maxspd ({'rpm' if factor == 1.0 else 'rad/s'})"
+            return {"min_rpm": lo, "max_rpm": hi}, (
+                f"Operating range from {where}: {lo:.3g}–{hi:.3g} rpm."
+            )
         radius = _number(self.d.get("assembly", {}).get("rotor_diameter")) / 2.0
         said: list[str] = []
-        rpm_per_rad_s = 60.0 / (2.0 * math.pi)
         tip_speed = _number(sup.get("maxTS"))
-        if 0 < lo < hi:  # a range the file means (the IEA-10's and IEA-15's rated speeds)
-            tip_speed = 0.0
-        if hi > 0 and tip_speed > 0 and radius > 0 and tip_speed / radius * rpm_per_rad_s < hi:
-            hi = tip_speed / radius * rpm_per_rad_s
+        if hi > 0 and tip_speed > 0 and radius > 0 and tip_speed / radius * _RPM_PER_RAD_S < hi:
+            hi = tip_speed / radius * _RPM_PER_RAD_S
             said.append(
                 f"the top speed the tip-speed limit maxTS {tip_speed:g} m/s over R {radius:.4g} m"
             )
         tsr, cut_in = _number(torque.get("tsr")), _number(sup.get("Vin"))
         if lo == 0 and tsr > 0 and cut_in > 0 and radius > 0:
-            lo = tsr * cut_in / radius * rpm_per_rad_s
+            lo = tsr * cut_in / radius * _RPM_PER_RAD_S
             said.append(
                 f"the lowest the speed at cut-in, tsr {tsr:g} × Vin {cut_in:g} m/s / R "
                 "(VS_minspd 0: no limit)"
             )
-        if not 0 < lo < hi:
+        if not 0 < lo < hi:  # where it holds now, the cut-in placed the lowest speed (said)
             return None
-        if not said:
-            where = f"control.torque.VS_minspd/VS_maxspd ({unit})"
-            return {
-                "min_rpm": lo,
-                "max_rpm": hi,
-            }, f"Operating range from {where}: {lo:.3g}–{hi:.3g} rpm."
         other = ""
         low, high = _number(sup.get("minOmega")), _number(sup.get("maxOmega"))
         if 0 < low < high:  # a second range in the file, unused: said (the IEA-3.4 1.x file's
             # are the NREL 5-MW's 6.9–12.1 rpm)
             other = (
-                f" (control.supervisory.minOmega/maxOmega give {low * rpm_per_rad_s:.3g}–"
-                f"{high * rpm_per_rad_s:.3g} rpm: not used)"
+                f" (control.supervisory.minOmega/maxOmega give {low * _RPM_PER_RAD_S:.3g}–"
+                f"{high * _RPM_PER_RAD_S:.3g} rpm: not used)"
             )
         return (
             {"min_rpm": lo, "max_rpm": hi},

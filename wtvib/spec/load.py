@@ -170,15 +170,21 @@ _WISDEM_MODELING = {"General", "WISDEM"}
 _WISDEM_ANALYSIS = {"driver", "recorder", "design_variables", "merit_figure", "constraints"}
 
 
+#: What such a file is, said where one is given or found
+OPTIONS_FILE = "a WISDEM/WEIS modeling or analysis options file, not a turbine"
+
+
+def _options_keys(keys: set[str], names_output: bool) -> bool:
+    """Whether a YAML document's top-level ``keys`` are a WISDEM/WEIS options file's —
+    ``names_output``: its ``general`` block names an output folder (the smallest analysis
+    options hold that block alone)."""
+    analysis = len(keys & _WISDEM_ANALYSIS) >= 2 or (keys == {"general"} and names_output)
+    return keys >= _WISDEM_MODELING or analysis
+
+
 def _options_file(data: dict[str, Any]) -> bool:
     general = data.get("general")
-    output = isinstance(general, dict) and "folder_output" in general
-    return is_options_keys(set(data)) or (set(data) == {"general"} and output)
-
-
-def is_options_keys(keys: set[str]) -> bool:
-    """Whether a YAML document's top-level keys are those of a WISDEM/WEIS options file."""
-    return keys >= _WISDEM_MODELING or len(keys & _WISDEM_ANALYSIS) >= 2
+    return _options_keys(set(data), isinstance(general, dict) and "folder_output" in general)
 
 
 _TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
@@ -192,9 +198,7 @@ def is_options_file(path: FsPath) -> bool:
             head = fh.read(200_000).decode("utf-8", "replace")
     except OSError:
         return False
-    keys = set(_TOP_KEY.findall(head))
-    # the smallest analysis options: a general block naming the output folder alone
-    return is_options_keys(keys) or (keys == {"general"} and "folder_output" in head)
+    return _options_keys(set(_TOP_KEY.findall(head)), "folder_output" in head)
 
 
 def from_document(doc: Document) -> Spec:
@@ -209,8 +213,8 @@ def from_document(doc: Document) -> Spec:
     if "wtvib" not in doc.data:
         if _options_file(doc.data):
             raise SpecError(
-                "a WISDEM/WEIS modeling or analysis options file, not a turbine: give the "
-                "turbine's windIO file (the geometry YAML the options go with)",
+                f"{OPTIONS_FILE}: give the turbine's windIO file (the geometry YAML the "
+                "options go with)",
                 line=1,
                 source=doc.source,
             )

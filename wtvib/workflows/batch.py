@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 from ..errors import WtvibError
 from ..outputs.files import campbell_to_csv
 from ..rules import STATUS_ORDER, worst_check
+from ..spec.load import OPTIONS_FILE
 from .options import Options
 
 if TYPE_CHECKING:
@@ -137,7 +138,7 @@ LEFT_OUT = {
 
 #: Why a WISDEM/WEIS options file in a folder is not audited (every WISDEM example folder
 #: holds its modeling and analysis options beside the windIO turbine)
-OPTIONS = "a WISDEM/WEIS modeling or analysis options file, not a turbine"
+OPTIONS = OPTIONS_FILE
 
 
 #: Stems of the batch's own files: an input may not take them (its report would be
