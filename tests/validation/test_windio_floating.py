@@ -182,3 +182,44 @@ def test_the_iea22_floater_against_its_openfast_deck():
     assert p.mass_kg == pytest.approx(21192874.0 + 6.4516e6 / 9.80665, rel=0.01)
     assert p.cm_m == pytest.approx(-15.2493, rel=0.025)
     assert p.cm_m < -15.2493
+
+
+def test_a_windio_1x_platform_is_read_as_the_same_platform(tmp_path):
+    """The IEA-15's own windIO 1.x VolturnUS-S (IEAWindTask37/IEA-15-240-RWT, WT_Ontology;
+    tests/data/windio_floating/SOURCES.md) and the windio package's 2.0 file describe one
+    platform in two versions' words: 1.x names a member's walls and ballast
+    ``internal_structure`` and ``ballasts`` and gives cylindrical joints' angles in radians
+    (2.0: ``structure``, ``ballast``, degrees). Read in 2.0's words, the 1.x file lost its
+    walls and ballast and bunched its three columns within 3° of the x axis — a platform that
+    "capsized in roll". Now its joints are the 2.0 file's within 1 mm and its members' walls
+    and compartments the same; and the whole 1.x turbine (with the RAFT head mass above)
+    rolls as it pitches, at Allen et al. 2020's pitch and yaw (NREL/TP-5000-76773, Table 8:
+    0.036 and 0.011 Hz) within 10 % (measured +2 %, +7 %)."""
+    import gzip
+
+    from wtvib import importers
+    from wtvib.importers import windio
+    from wtvib.importers.windio_platform import _Platform
+    from wtvib.subsystems.tower import modes
+
+    v1 = tmp_path / "IEA-15-240-RWT_VolturnUS-S.yaml"
+    v1.write_bytes(gzip.decompress((DATA / "IEA-15-240-RWT_VolturnUS-S_v1.yaml.gz").read_bytes()))
+    old = _Platform(windio._paths(yaml.safe_load(v1.read_text()), (), str(v1)), v1, v2=False)
+    new, new_members, new_joints = reader(windio_example("IEA-15-240-RWT_VolturnUS-S.yaml"))
+    old_joints = old.joints()
+    old_members = old.members(old_joints)
+    assert old_joints.keys() == new_joints.keys()
+    for name, xyz in old_joints.items():
+        assert np.allclose(xyz, new_joints[name], atol=1e-3), name
+    for a, b in zip(old_members, new_members, strict=True):
+        assert (a.name, len(a.layers), len(a.fills)) == (b.name, len(b.layers), len(b.fills))
+        assert np.allclose(a.layers[0].thickness, b.layers[0].thickness)
+        assert [(f.start, f.end, f.volume) for f in a.fills] == [
+            (f.start, f.end, f.volume) for f in b.fills
+        ]
+    head = RAFT_SYSTEM["IEA-15-240-RWT_VolturnUS-S.yaml"][0]
+    spec = importers.load(v1, importers.ReadOptions(head_mass=head))
+    found = {m.id.split(".")[-1]: m.frequency_hz for m in modes(spec)}
+    assert found["roll"] == pytest.approx(found["pitch"], rel=0.01)
+    assert found["pitch"] == pytest.approx(0.036, rel=0.10)
+    assert found["yaw"] == pytest.approx(0.011, rel=0.10)

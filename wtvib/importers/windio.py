@@ -110,7 +110,7 @@ def _to_spec_data(
     if floating and not clamped_base:
         from .windio_platform import platform
 
-        floater = platform(d, path, _carried(tower, head), reader.tower_base)
+        floater = platform(d, path, _carried(tower, head), reader.tower_base, v2)
         tower["foundation"] = {"kind": "platform", "platform": floater.block}
         notes += floater.notes
         warnings += floater.warnings

@@ -1,7 +1,9 @@
-"""windIO 2.x ``floating_platform`` and ``mooring`` → wtvib's ``platform`` foundation.
+"""windIO ``floating_platform`` and ``mooring`` → wtvib's ``platform`` foundation (2.x, and
+1.x in its own words: a member's ``internal_structure`` and ``ballasts``, cylindrical
+joints' angles in radians).
 
 The platform is the hull of :mod:`wtvib.numerics.hull`: each member a circular tube between two
-joints (cartesian, cylindrical (r, θ°, z) or relative to another joint), its outer diameter,
+joints (cartesian, cylindrical (r, θ, z) or relative to another joint), its outer diameter,
 wall layers, bulkheads, ring and longitudinal stiffeners, outfitting factor and ballast as
 the file gives them; pontoons that enter another member's side are cut at its surface (so
 no volume counts twice); the transition piece and ``rigid_bodies`` are point masses at
@@ -48,6 +50,10 @@ AXIS_TOLERANCE = 0.5
 #: A flooded member's fill: "to the water line" rather than a volume.
 FLOODED = -1.0
 
+#: windIO 1.x's names of a member's ``structure`` and of its ``ballast`` list (2.x's
+#: names; the IEA-15's own WT_Ontology/IEA-15-240-RWT_VolturnUS-S.yaml is 1.x).
+V1_STRUCTURE, V1_BALLAST = "internal_structure", "ballasts"
+
 #: At most this many members and joints (a platform has tens; hostile files stay bounded).
 MAX_PARTS = 500
 
@@ -61,16 +67,20 @@ class Floater:
     warnings: list[str]
 
 
-def platform(d: dict[str, Any], path: Path, carried_kg: float, tower_base_z: float) -> Floater:
+def platform(
+    d: dict[str, Any], path: Path, carried_kg: float, tower_base_z: float, v2: bool = True
+) -> Floater:
     """The windIO file's floating platform under a turbine of ``carried_kg`` (tower and
-    head) whose tower starts at ``tower_base_z`` [m above the still-water line]."""
-    reader = _Platform(d, path)
+    head) whose tower starts at ``tower_base_z`` [m above the still-water line]; ``v2``:
+    the file is windIO 2.x (else 1.x: :data:`V1_STRUCTURE`, cylindrical joints' angles in
+    radians)."""
+    reader = _Platform(d, path, v2)
     return reader.floater(carried_kg, tower_base_z)
 
 
 class _Platform:
-    def __init__(self, d: dict[str, Any], path: Path) -> None:
-        self.d, self.path = d, path
+    def __init__(self, d: dict[str, Any], path: Path, v2: bool = True) -> None:
+        self.d, self.path, self.v2 = d, path, v2
         self.fp = d["components"]["floating_platform"]
         env = d.get("environment", {}) if isinstance(d.get("environment"), dict) else {}
         self.rho = self.positive(env.get("water_density", SEA_WATER), "environment.water_density")
@@ -121,7 +131,9 @@ class _Platform:
                     raise self.fail(f"{where}.location must be three numbers", where)
                 a, b, z = (self.number(v, f"{where}.location") for v in loc)
                 if j.get("cylindrical", False):
-                    t = math.radians(b)
+                    # θ in degrees in windIO 2.x, in radians in 1.x (the IEA-15's own 1.x
+                    # VolturnUS-S gives its columns at 3.14159265, 1.0471976, −1.0471976)
+                    t = math.radians(b) if self.v2 else b
                     xyz = np.array([a * math.cos(t), a * math.sin(t), z])
                 else:
                     xyz = np.array([a, b, z])
@@ -195,26 +207,30 @@ class _Platform:
         if length <= 1e-6:
             raise self.fail(f"{where}: joint1 and joint2 are at one point", where)
         grid, diameter = self.table(shape["outer_diameter"], f"{where}.outer_shape.outer_diameter")
-        struct = m.get("structure", {}) or {}
+        # windIO 1.x names a member's walls and ballast internal_structure and ballasts
+        part = "structure" if "structure" in m or "internal_structure" not in m else V1_STRUCTURE
+        struct = m.get(part, {}) or {}
+        at = f"{where}.{part}"
         layers = []
         for k, layer in enumerate(struct.get("layers", []) or []):
-            lw = f"{where}.structure.layers[{k}]"
+            lw = f"{at}.layers[{k}]"
             g, t = self.table(layer["thickness"], f"{lw}.thickness", zero=True)
             layers.append(hull.Layer(np.interp(grid, g, t), self.density(layer["material"], lw)))
         bulkheads = []
         if struct.get("bulkhead"):
-            bw = f"{where}.structure.bulkhead"
+            bw = f"{at}.bulkhead"
             rho = self.density(struct["bulkhead"]["material"], bw)
             g, t = self.table(struct["bulkhead"]["thickness"], f"{bw}.thickness", zero=True)
             bulkheads = [hull.Disc(float(s), float(x), rho) for s, x in zip(g, t, strict=True)]
         inner = float(np.min(diameter)) - 2 * sum(float(np.max(x.thickness)) for x in layers)
-        stiffeners = self.stiffeners(struct, where, max(inner, 0.0) / 2, length)
+        stiffeners = self.stiffeners(struct, at, max(inner, 0.0) / 2, length)
         fills = []
         if struct.get("flooded", False):  # open to the sea: its water, to the water line, is mass
             self.flooded.append(str(m["name"]))
             fills.append(hull.Fill(0.0, 1.0, self.rho, FLOODED))
-        for k, ballast in enumerate(struct.get("ballast", []) or []):
-            bw = f"{where}.structure.ballast[{k}]"
+        key = "ballast" if "ballast" in struct or V1_BALLAST not in struct else V1_BALLAST
+        for k, ballast in enumerate(struct.get(key, []) or []):
+            bw = f"{at}.{key}[{k}]"
             g, _ = self.table(
                 {"grid": ballast["grid"], "values": [0.0] * len(ballast["grid"])},
                 f"{bw}.grid",
@@ -242,7 +258,7 @@ class _Platform:
             bulkheads=bulkheads,
             stiffener_mass_per_m=stiffeners,
             outfitting=self.positive(
-                struct.get("outfitting_factor", 1.0), f"{where}.structure.outfitting_factor"
+                struct.get("outfitting_factor", 1.0), f"{at}.outfitting_factor"
             ),
             ca=self.coefficient(m.get("Ca"), f"{where}.Ca"),
             ca_end=self.axial_ca(m),
@@ -336,7 +352,7 @@ class _Platform:
             s = struct.get(key)
             if not s:
                 continue
-            sw = f"{where}.structure.{key}"
+            sw = f"{where}.{key}"
             rho = self.density(s["material"], sw)
             area = sum(
                 self.number(s[a], f"{sw}.{a}", 0.0, 10.0)
