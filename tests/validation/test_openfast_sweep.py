@@ -1,0 +1,133 @@
+"""wtvib's own model of the onshore NREL 5-MW against OpenFAST's linearisation of the same
+deck set over its operating range — the aeroelastic damping of the flap and edge modes from
+partial load through rated to 20 m/s.
+
+OpenFAST 5.0.0 (OpenFAST/openfast ``dev`` @ 70694f1f0, built here), run on r-test's
+``5MW_Land_Linear_Aero_CalcSteady`` deck set trimmed by CalcSteady at 8, 10, 11.4, 16 and
+20 m/s, 12 linearisations over a revolution each (tests/data/openfast_sweep: the decks, how
+they were made — ``make_decks.py`` — and the ``.lin`` files, read here by wtvib's MBC3,
+which reproduces openfast_toolbox's on every root of r-test's files: test_openfast_lin.py).
+The decks keep OpenFAST's aerodynamics where wtvib's model is: quasi-steady aerofoils, the
+induction in equilibrium with the motion (BEMT without dynamic wake), no tower influence —
+one model, two codes. ElastoDyn's blades do not twist, nor do wtvib's modes.
+
+Measured (wtvib / OpenFAST): the edgewise whirls' damping 0.016 / 0.016 and 0.014 / 0.014
+at 8 m/s, 0.021 / 0.020, 0.016 / 0.016 at 10 m/s, 0.010 / 0.013, 0.009 / 0.008 at
+16 m/s, 0.012 / 0.012, 0.010 / 0.008 at 20 m/s; the flap family within +8 %. This is the
+third code for the near-rated edge damping of the IEA-22 (test_hawc2.py: wtvib 1.8–3.4
+times OpenFAST's BeamDyn model and HAWC2 at 10–12 m/s): on a turbine whose blades do not
+twist, wtvib's edge damping at rated is OpenFAST's.
+"""
+
+import gzip
+import math
+import tarfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wtvib import audit, importers
+from wtvib.importers import openfast_lin as ol
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+SWEEP = DATA / "openfast_sweep"
+WINDS = (8.0, 10.0, 11.4, 16.0, 20.0)
+
+
+@pytest.fixture(scope="module")
+def decks(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    root = tmp_path_factory.mktemp("sweep")
+    for archive in (DATA / "openfast_decks" / "rtest_more.tar.gz", SWEEP / "decks.tar.gz"):
+        with tarfile.open(archive) as tar:
+            tar.extractall(root, filter="data")
+    return root / "glue-codes" / "openfast"
+
+
+def _openfast(case: str, folder: Path) -> ol.PointModes:
+    files = []
+    for k in range(1, 13):
+        path = folder / f"{case}.{k}.lin"
+        path.write_bytes(gzip.decompress((SWEEP / f"{case}.{k}.lin.gz").read_bytes()))
+        files.append(ol.read(path))
+    return ol.operating_point(files)[0]
+
+
+def _wtvib(deck: Path, rpm: float, wind: float) -> dict[str, tuple[float, float | None]]:
+    """wtvib's judged modes at the point: natural frequency and total damping."""
+    report = audit.run(importers.load(deck, importers.ReadOptions(deck_dofs=True)))
+    out = {}
+    for m in report.modes:
+        if not m.judged:
+            continue
+        name = m.id.removeprefix("system.")
+        op = m.operating
+        if op is not None and op.natural_hz is not None:
+            f = float(np.interp(wind, np.asarray(op.wind), op.natural_hz))
+            z = float(np.interp(wind, np.asarray(op.wind), op.total))
+            out[name] = (f, z)
+        else:
+            out[name] = (float(m.frequency_at([rpm * math.pi / 30])[0]), None)
+    return out
+
+
+#: The first tower fore-aft bending, ElastoDyn's TwFAM1Sh 3.3 % stiffer than the tower's own
+#: shape (test_rtest_models.EXCEPTIONS, the same deck's tower): held at −2 … −4 %.
+FA1 = (-0.04, -0.02)
+
+
+@pytest.mark.parametrize("wind", WINDS)
+def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
+    case = f"ED_{wind:g}"
+    ref = _openfast(case, tmp_path)
+    assert ref.wind == pytest.approx(wind)
+    ours = _wtvib(decks / case / f"{case}.fst", ref.rpm, wind)
+    theirs = {
+        n: (float(f), float(z))
+        for n, f, z in zip(ref.names, ref.frequency_hz, ref.damping_ratio, strict=True)
+    }
+    checked = 0
+    for name, (f, z) in theirs.items():
+        if name not in ours or f > 3.5 or name.startswith("drivetrain"):
+            continue  # the drive train: test_the_generator_law_damps_the_drive_train
+        mine, zeta = ours[name]
+        # the flap family, damped at ζ 0.45–0.84: the natural frequency |λ| of so damped a
+        # root moves with its damping (held within 12 % below): 4 % (measured −3.2 … +1.3 %)
+        band = 0.04 if name.startswith("blade.flap1") else 0.03
+        lo, hi = FA1 if name == "tower.fa1" else (-band, band)
+        assert lo <= mine / f - 1 <= hi, (case, name, mine, f)
+        checked += 1
+        if zeta is None:
+            continue
+        if name.startswith("blade.flap1"):  # ζ 0.45–0.84: within 12 %
+            assert zeta == pytest.approx(z, rel=0.12), (case, name, zeta, z)
+        elif name in ("blade.edge1.backward", "blade.edge1.forward"):  # ζ 0.008–0.021
+            assert 0.7 <= zeta / z <= 1.35, (case, name, zeta, z)
+    assert checked >= 10, checked
+
+
+@pytest.mark.parametrize(
+    ("wind", "low", "high"), [(8.0, 0.4, 0.6), (10.0, 0.35, 0.55), (11.4, 0.9, 1.15)]
+)
+def test_the_generator_law_damps_the_drive_train(decks, tmp_path, wind, low, high):
+    """OPEN, traced: the first drive-train torsion (1.7 Hz, the rotor against the
+    generator). Below rated ServoDyn's simple variable-speed law holds the generator torque
+    at k·ω² — a torque that grows with the generator's speed, 2T/ω per unit of it: a
+    damper on the generator, which OpenFAST's linearisation holds (ζ 0.051 at 8 m/s, 0.059
+    at 10 m/s) and wtvib's model, whose torque-controlled generator is a free end, does not
+    (0.024, 0.025): held at what it measures, 0.47 and 0.42 of OpenFAST's. At rated the
+    torque is constant (region 3 of the law, no such damper) and the two agree (0.025 /
+    0.024)."""
+    case = f"ED_{wind:g}"
+    ref = _openfast(case, tmp_path)
+    ours = _wtvib(decks / case / f"{case}.fst", ref.rpm, wind)
+    f_ours, z_ours = ours["drivetrain1"]
+    found = [
+        (abs(float(f) / f_ours - 1), float(z))
+        for n, f, z in zip(ref.names, ref.frequency_hz, ref.damping_ratio, strict=True)
+        if n.startswith("drivetrain")
+    ]
+    gap, z_theirs = min(found)
+    assert gap < 0.03, (case, f_ours, found)
+    zeta = z_ours if z_ours is not None else 0.0
+    assert low <= zeta / z_theirs <= high, (case, zeta, z_theirs)
