@@ -4,6 +4,7 @@ import json
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from wtvib import importers
@@ -72,6 +73,55 @@ def test_simple_variable_speed_gives_rated_speed_and_power(tmp_path):
     assert found.control["rated_power_kw"] == pytest.approx(power)
     assert found.control["regulation"] == "pitch"
     assert "names no lowest speed" in found.warnings[0]
+
+
+
+def test_the_simple_variable_speed_law_is_read_as_torque_against_speed(tmp_path):
+    """ServoDyn's simple law (its CalculateTorque; the NREL 5-MW's values, Jonkman 2009 §7:
+    VS_Rgn2K 0.0255764 N·m/rpm², VS_SlPc 10 %, VS_RtGnSp 1161.963 rpm, VS_RtTq 43093.55
+    N·m) on the rotor's shaft: k·(GB·n)²·GB in region 2, the line from the synchronous speed
+    1161.963/1.1 = 1056.33 rpm to rated, VS_RtTq above — and the slope each operating point
+    meets (aerodamping.generator_damping): 2T/Ω in region 2, the line's in region 2½, none
+    on the flat top; at the kink a point's own torque decides the side."""
+    from wtvib.aero import aerodamping
+
+    servo = elastodyn.parse(
+        tmp_path / "s.dat",
+        "1 VSContrl -\n1 PCMode -\n100 GenEff -\n1161.963 VS_RtGnSp -\n43093.55 VS_RtTq -\n"
+        "0.0255764 VS_Rgn2K -\n10 VS_SlPc -\n",
+    )
+    main = elastodyn.parse(tmp_path / "d.dat", DECK.replace("12.1     RotSpeed", "7 RotSpeed"))
+    law = servodyn.operation(main, servo).control["generator_torque"]
+    rpm, torque = law["rpm"], law["torque_nm"]
+    gb, k = 97.0, 0.0255764
+    # region 2 on the rotor's shaft: k·(97·n)² ·97
+    assert torque[50] == pytest.approx(k * (gb * rpm[50]) ** 2 * gb, rel=1e-12)
+    assert torque[-1] == torque[-2] == pytest.approx(43093.55 * gb)
+    assert rpm[-2] == pytest.approx(1161.963 / gb)
+    sync, rated = 1161.963 / 1.1, 1161.963
+    # region 2 meets the line where k·ω² = slope·(ω − sync)
+    line = 43093.55 / (rated - sync)
+    meet = rpm[-3] * gb
+    assert k * meet**2 == pytest.approx(line * (meet - sync), rel=1e-9)
+
+    class _Sch:  # three points: region 2, region 2½ at the rated node, the flat top
+        def __init__(self, n: list[float], torque: list[float]) -> None:
+            omega = np.array(n) * math.pi / 30
+            self.solution = type("S", (), {"omega": omega, "power": np.array(torque) * omega})
+            self.region = ("partial load",) * len(n)
+
+    n_rated = rated / gb
+    sch = _Sch([9.0, n_rated, n_rated], [k * (gb * 9.0) ** 2 * gb, 3.8e6, 4.17e6])
+    spec = type(
+        "Spec", (), {"aerodynamics": type("A", (), {"control": type("C", (), {
+            "generator_torque": type("G", (), law)})}), "coupled": type(
+            "Cm", (), {"rotating_condition": "free"})}
+    )  # fmt: skip
+    slope = aerodamping.generator_damping(spec, sch)  # type: ignore[arg-type]
+    omega9 = 9.0 * math.pi / 30
+    assert slope[0] == pytest.approx(2 * sch.solution.power[0] / omega9**2, rel=1e-3)
+    assert slope[1] == pytest.approx(line * gb * gb * 30 / math.pi, rel=1e-6)  # the line
+    assert slope[2] == 0.0  # 4.17 MN·m: within 1 % of the flat top's 4.18
 
 
 def test_rosco_discon_values(tmp_path):

@@ -11,13 +11,14 @@ The decks keep OpenFAST's aerodynamics where wtvib's model is: quasi-steady aero
 induction in equilibrium with the motion (BEMT without dynamic wake), no tower influence —
 one model, two codes. ElastoDyn's blades do not twist, nor do wtvib's modes.
 
-Measured (wtvib / OpenFAST): the edgewise whirls' damping 0.016 / 0.016 and 0.014 / 0.014
-at 8 m/s, 0.021 / 0.020, 0.016 / 0.016 at 10 m/s, 0.024 / 0.023, 0.019 / 0.018 at rated
-(11.4 m/s), 0.010 / 0.013, 0.009 / 0.008 at 16 m/s, 0.012 / 0.012, 0.010 / 0.008 at 20 m/s;
-the flap family's within −4 … +8 %. This is the
-third code for the near-rated edge damping of the IEA-22 (test_hawc2.py: wtvib 1.8–3.4
-times OpenFAST's BeamDyn model and HAWC2 at 10–12 m/s): on a turbine whose blades do not
-twist, wtvib's edge damping at rated is OpenFAST's.
+Measured at OpenFAST's operating points (wtvib / OpenFAST), the backward and forward
+edgewise whirls: 0.016 / 0.016, 0.014 / 0.014 at 8 m/s; 0.021 / 0.020, 0.016 / 0.016 at
+10 m/s; 0.023 / 0.022, 0.018 / 0.017 at 11 m/s; 0.024 / 0.023, 0.019 / 0.018 at rated
+(11.4 m/s); 0.010 / 0.013, 0.009 / 0.008 at 16 m/s; 0.012 / 0.012, 0.010 / 0.008 at 20 m/s.
+The flap family (ζ 0.46–0.82) within −3 … +5 %. This is the third code for the near-rated
+edge damping of the IEA-22 (test_hawc2.py: wtvib 1.8–3.4 times OpenFAST's BeamDyn model
+and HAWC2 at 10–12 m/s): on a turbine whose blades do not twist, wtvib's edge damping at
+rated is OpenFAST's.
 """
 
 import gzip
@@ -25,7 +26,6 @@ import math
 import tarfile
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from wtvib import audit, importers
@@ -33,7 +33,7 @@ from wtvib.importers import openfast_lin as ol
 
 DATA = Path(__file__).resolve().parents[1] / "data"
 SWEEP = DATA / "openfast_sweep"
-WINDS = (8.0, 10.0, 11.4, 16.0, 20.0)
+WINDS = (8.0, 10.0, 11.0, 11.4, 16.0, 20.0)
 
 
 @pytest.fixture(scope="module")
@@ -54,9 +54,23 @@ def _openfast(case: str, folder: Path) -> ol.PointModes:
     return ol.operating_point(files)[0]
 
 
+#: OpenFAST's trimmed pitch at each wind [deg] (its log, SOURCES.md): wtvib is audited at
+#: OpenFAST's operating point — its speed (the .lin files') and this pitch.
+PITCH = {8.0: 0.0, 10.0: 0.0, 11.0: 0.0, 11.4: 0.0, 16.0: 12.02, 20.0: 17.46}
+
+
 def _wtvib(deck: Path, rpm: float, wind: float) -> dict[str, tuple[float, float | None]]:
-    """wtvib's judged modes at the point: natural frequency and total damping."""
-    report = audit.run(importers.load(deck, importers.ReadOptions(deck_dofs=True)))
+    """wtvib's judged modes at OpenFAST's operating point (``control.operating_points``:
+    the deck's wind, OpenFAST's rotor speed and trimmed pitch): natural frequency and total
+    damping."""
+    spec = importers.load(deck, importers.ReadOptions(deck_dofs=True))
+    data = spec.model_dump()
+    data["aerodynamics"]["control"]["operating_points"] = {
+        "wind_m_s": [wind, wind + 0.5],
+        "rpm": [rpm, rpm],
+        "pitch_deg": [PITCH[wind]] * 2,
+    }
+    report = audit.run(type(spec).model_validate(data))
     out = {}
     for m in report.modes:
         if not m.judged:
@@ -64,9 +78,7 @@ def _wtvib(deck: Path, rpm: float, wind: float) -> dict[str, tuple[float, float 
         name = m.id.removeprefix("system.")
         op = m.operating
         if op is not None and op.natural_hz is not None:
-            f = float(np.interp(wind, np.asarray(op.wind), op.natural_hz))
-            z = float(np.interp(wind, np.asarray(op.wind), op.total))
-            out[name] = (f, z)
+            out[name] = (float(op.natural_hz[0]), float(op.total[0]))
         else:
             out[name] = (float(m.frequency_at([rpm * math.pi / 30])[0]), None)
     return out
@@ -93,32 +105,30 @@ def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
             continue  # the drive train: test_the_generator_law_damps_the_drive_train
         mine, zeta = ours[name]
         # the flap family, damped at ζ 0.45–0.84: the natural frequency |λ| of so damped a
-        # root moves with its damping (held within 12 % below): 4 % (measured −3.2 … +1.3 %)
+        # root moves with its damping (held within 8 % below): 4 % (measured −3.2 … +1.3 %)
         band = 0.04 if name.startswith("blade.flap1") else 0.03
         lo, hi = FA1 if name == "tower.fa1" else (-band, band)
         assert lo <= mine / f - 1 <= hi, (case, name, mine, f)
         checked += 1
         if zeta is None:
             continue
-        if name.startswith("blade.flap1"):  # ζ 0.45–0.84: within 12 %
-            assert zeta == pytest.approx(z, rel=0.12), (case, name, zeta, z)
+        if name.startswith("blade.flap1"):  # ζ 0.45–0.82: within 8 %
+            assert zeta == pytest.approx(z, rel=0.08), (case, name, zeta, z)
         elif name in ("blade.edge1.backward", "blade.edge1.forward"):  # ζ 0.008–0.021
             assert 0.7 <= zeta / z <= 1.35, (case, name, zeta, z)
     assert checked >= 10, checked
 
 
-@pytest.mark.parametrize(
-    ("wind", "low", "high"), [(8.0, 0.4, 0.6), (10.0, 0.35, 0.55), (11.4, 0.9, 1.15)]
-)
-def test_the_generator_law_damps_the_drive_train(decks, tmp_path, wind, low, high):
-    """OPEN, traced: the first drive-train torsion (1.7 Hz, the rotor against the
-    generator). Below rated ServoDyn's simple variable-speed law holds the generator torque
-    at k·ω² — a torque that grows with the generator's speed, 2T/ω per unit of it: a
-    damper on the generator, which OpenFAST's linearisation holds (ζ 0.051 at 8 m/s, 0.059
-    at 10 m/s) and wtvib's model, whose torque-controlled generator is a free end, does not
-    (0.024, 0.025): held at what it measures, 0.47 and 0.42 of OpenFAST's. At rated the
-    torque is constant (region 3 of the law, no such damper) and the two agree (0.025 /
-    0.024)."""
+@pytest.mark.parametrize("wind", WINDS)
+def test_the_generator_law_damps_the_drive_train(decks, tmp_path, wind):
+    """The first drive-train torsion (1.7 Hz, the rotor against the generator) as OpenFAST
+    damps it: ServoDyn's simple variable-speed law holds the generator's torque at k·ω²
+    below rated (a damper 2T/Ω on the generator), on a steep line in region 2½ (11 m/s:
+    ζ 0.28) and constant above (no damper) — ``control.generator_torque``,
+    ``aerodamping.generator_damping``. Within 10 % of OpenFAST's at every point (measured
+    −4 … +4 %); before the law was modelled (the torque-controlled generator a free end)
+    wtvib had 0.024–0.025
+    everywhere, 0.47 and 0.42 of OpenFAST's at 8 and 10 m/s, 0.09 of it at 11 m/s."""
     case = f"ED_{wind:g}"
     ref = _openfast(case, tmp_path)
     ours = _wtvib(decks / case / f"{case}.fst", ref.rpm, wind)
@@ -126,9 +136,9 @@ def test_the_generator_law_damps_the_drive_train(decks, tmp_path, wind, low, hig
     found = [
         (abs(float(f) / f_ours - 1), float(z))
         for n, f, z in zip(ref.names, ref.frequency_hz, ref.damping_ratio, strict=True)
-        if n.startswith("drivetrain")
+        if n.startswith(("drivetrain", "blade.edge1.collective"))
     ]
     gap, z_theirs = min(found)
     assert gap < 0.03, (case, f_ours, found)
-    zeta = z_ours if z_ours is not None else 0.0
-    assert low <= zeta / z_theirs <= high, (case, zeta, z_theirs)
+    assert z_ours is not None
+    assert z_ours == pytest.approx(z_theirs, rel=0.10), (case, z_ours, z_theirs)

@@ -205,7 +205,7 @@ def test_a_windio_1x_platform_is_read_as_the_same_platform(tmp_path):
     v1 = tmp_path / "IEA-15-240-RWT_VolturnUS-S.yaml"
     v1.write_bytes(gzip.decompress((DATA / "IEA-15-240-RWT_VolturnUS-S_v1.yaml.gz").read_bytes()))
     old = _Platform(windio._paths(yaml.safe_load(v1.read_text()), (), str(v1)), v1, v2=False)
-    new, new_members, new_joints = reader(windio_example("IEA-15-240-RWT_VolturnUS-S.yaml"))
+    _, new_members, new_joints = reader(windio_example("IEA-15-240-RWT_VolturnUS-S.yaml"))
     old_joints = old.joints()
     old_members = old.members(old_joints)
     assert old_joints.keys() == new_joints.keys()

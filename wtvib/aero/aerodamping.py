@@ -70,6 +70,7 @@ from ..results import Check, Mode, OperatingDamping, Rule
 from ..rules import HEAVY_DAMPING, NEGATIVE
 from ..spec import Spec
 from ..subsystems import blade
+from ..units import rad_s_to_rpm
 from . import bem
 
 if TYPE_CHECKING:
@@ -85,6 +86,14 @@ Estimate = tuple[Array, Array]
 #: A damped mode stands for a structural one when MAC + energy overlap reaches this (of 2);
 #: below it the structural mode's first-order damping is used (:func:`multiblade.perturbed`).
 MATCH = 1.5
+
+#: Below :data:`MATCH` but at least this, the best damped root is a weak match: the lower of
+#: its damping and the first-order estimate is kept — the conservative of two estimates. The
+#: first-order damping of a structural mode that mixes with a heavily damped one is that
+#: mode's borrowed: the NREL 5-MW's first backward edgewise whirl at 10 m/s and 11.43 rpm,
+#: beside the forward flap whirl (0.88 Hz, ζ 0.56), matched at 1.495 to a root of ζ 0.016
+#: (OpenFAST: 0.020, tests/validation/test_openfast_sweep.py), had a first-order 0.165.
+WEAK = 1.0
 
 #: The tower's equivalent tip mass in its first bending mode: 33/140 = 0.2357 of its mass (a
 #: uniform cantilever with a tip mass, Rayleigh's cubic shape: the 0.2357·mL of DOMAIN.md
@@ -367,6 +376,10 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # every operating point's aerodynamic damping and stiffness at once (stacks): the
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
     d_qs = model.section_damping(c_points)
+    law = generator_damping(spec, sec.schedule)
+    if law is not None and model.generator is not None:  # the torque law: a damper
+        at_gen = int(np.searchsorted(model.active, model.generator))
+        d_qs[:, at_gen, at_gen] += law
     refs = [path.shapes[i] for i in where]
     qs_d, qs_k = fixed_frame_damping(model, d_qs, sol.omega)
     qs_points: list[tuple[float, Extra]] = [
@@ -398,6 +411,37 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         tuple(part[i] for i in where),
         np.minimum(quasi, 1.0),
     )
+
+
+#: How near the law's torque at a kink a point's torque counts as on the higher region's
+#: side (its aerodynamic torque is the generator's less the losses the law leaves out).
+KINK = 0.01
+
+
+def generator_damping(spec: Spec, sch: bem.Schedule) -> Array | None:
+    """The generator's torque law as a damper on the drive train at each operating point:
+    dT/dΩ [N·m·s/rad] of ``control.generator_torque`` at the point's rotor speed (2T/Ω
+    where T = k·Ω², nothing where the torque is held). At a kink of the law (where two of
+    its regions meet, the rated speed of a fixed-speed schedule) the point's own torque —
+    its aerodynamic power over its speed — says which side the generator is on: within
+    :data:`KINK` of the law's torque there or above it, the higher region (a fixed-speed
+    schedule at the rated speed holding rated power is on the law's flat top, not on its
+    steep region 2½). None without a law or where the generator is not free (locked, or on
+    the grid: ``coupled.rotating_condition``)."""
+    aero, cm = spec.aerodynamics, spec.coupled
+    if aero is None or aero.control.generator_torque is None:
+        return None
+    if cm is None or cm.rotating_condition != "free":
+        return None
+    law = aero.control.generator_torque
+    rpm, torque = np.asarray(law.rpm), np.asarray(law.torque_nm)
+    n = np.asarray(rad_s_to_rpm(sch.solution.omega))
+    step = 1e-6 * np.maximum(n, 1e-3)
+    omega = np.maximum(sch.solution.omega, 1e-9)
+    above = sch.solution.power / omega >= np.interp(n, rpm, torque) * (1 - KINK)
+    low = np.where(above, n, n - step)
+    slope = (np.interp(low + step, rpm, torque) - np.interp(low, rpm, torque)) / step
+    return np.asarray(slope * 30 / math.pi)
 
 
 def _lagged(
@@ -465,10 +509,13 @@ def _matched_roots(
         lam = modal.eigenvalue(path.frequency_hz[i], path.damping_ratio[i])
         poor_qs = qs_score < MATCH
         if np.any(poor_qs):
-            quasi[k, poor_qs] = perturbed(model, float(om), qs_points[k][1], ref, lam)[poor_qs]
+            first = perturbed(model, float(om), qs_points[k][1], ref, lam)
+            poor_qs &= (qs_score < WEAK) | (first < quasi[k])
+            quasi[k, poor_qs] = first[poor_qs]
         poor = score < MATCH
         if np.any(poor):
             first = perturbed(model, float(om), extra, ref, lam)
+            poor &= (score < WEAK) | (first < zeta[k])  # a weak match: the lower of the two
             zeta[k, poor] = first[poor]
             freq[k, poor] = path.frequency_hz[i][poor]
             unresolved[k] = poor
@@ -767,6 +814,15 @@ def _notes(
             f"curve, which the aeroelastic |λ| of the modes damped below ζ = {heavy:g} "
             f"departs from by at most {shift:.1%}."
         )
+        law = generator_damping(spec, sch)
+        if law is not None and spec.aerodynamics.control.generator_torque is not None:
+            source = spec.aerodynamics.control.generator_torque.source or "control.generator_torque"
+            notes.append(
+                f"The generator's torque law ({source}) damps the drive train: its slope "
+                "dT/dΩ at each operating point, a damper from the generator to ground "
+                f"({law.min():,.3g} … {law.max():,.3g} N·m·s/rad; 2T/Ω where the torque is "
+                "k·Ω², none where it is held constant)."
+            )
     if cpl is not None and cpl.first_order.any():
         present = {m.id for ms in out.values() for m in ms}
         named = [
@@ -777,7 +833,8 @@ def _notes(
         notes.append(
             f"At {int(cpl.first_order.sum())} of {cpl.first_order.size} mode-points no "
             "damped mode resembled the structural one (MAC + energy overlap below "
-            f"{MATCH:g} of 2: strong aerodynamic coupling, overdamping or veering); there "
+            f"{MATCH:g} of 2, or below {WEAK:g} with a lower damping than the first-order "
+            "estimate: strong aerodynamic coupling, overdamping or veering); there "
             "the structural mode's first-order damping xᴴ(λD + K′)x / xᴴ(2λM + G)x is used: "
             + ", ".join(named)
             + "."

@@ -200,6 +200,9 @@ def _simple_variable_speed(main: Deck, servo: Deck, regulation: str, pitch: floa
         )
     power_kw = torque * gen_rpm * math.pi / 30 * control.get("generator_efficiency", 1.0) / 1e3
     control["rated_power_kw"] = power_kw
+    law = _torque_law(servo, gb, gen_rpm, torque)
+    if law is not None:
+        control["generator_torque"] = law
     source = f"{servo.path.name} (VS_RtGnSp, VS_RtTq; simple variable speed)"
     if 0 < rot < 0.999 * rated:
         speed: dict[str, Any] = {"min_rpm": rot, "max_rpm": rated, "source": source}
@@ -228,6 +231,35 @@ def _simple_variable_speed(main: Deck, servo: Deck, regulation: str, pitch: floa
         + f"); {regulated}"
     )
     return Operation(speed, note, warnings, control)
+
+
+#: Rotor speeds at which the simple variable-speed law is tabulated below its region 2½.
+LAW_POINTS = 200
+
+
+def _torque_law(servo: Deck, gb: float, gen_rpm: float, torque: float) -> dict[str, Any] | None:
+    """ServoDyn's simple variable-speed law (its ``CalculateTorque``) as torque on the rotor's
+    shaft against rotor speed: k·ω² in region 2 (VS_Rgn2K, N·m/rpm² on the generator's
+    side), a straight line from the synchronous speed VS_RtGnSp/(1 + VS_SlPc/100) to rated
+    in region 2½, VS_RtTq above; None where VS_Rgn2K or VS_SlPc is not a law (0, unused)."""
+    k = servo.num("VS_Rgn2K", default=0.0)
+    slip = servo.num("VS_SlPc", default=0.0)
+    if not (0 < k < UNUSED and 0 < slip < UNUSED):
+        return None
+    sync = gen_rpm / (1 + 0.01 * slip)
+    slope = torque / (gen_rpm - sync)  # region 2½ [N·m/rpm]
+    disc = slope * (slope - 4 * k * sync)
+    if disc < 0:  # region 2's curve never meets the line: ServoDyn's own check
+        return None
+    trans = (slope - math.sqrt(disc)) / (2 * k)  # where region 2 meets region 2½ [rpm]
+    speeds = [trans * i / LAW_POINTS for i in range(LAW_POINTS + 1)] + [gen_rpm, 1.5 * gen_rpm]
+    torques = [k * w * w for w in speeds[:-2]] + [torque, torque]
+    return {
+        "rpm": [w / gb for w in speeds],
+        "torque_nm": [t * gb for t in torques],
+        "source": f"{servo.path.name} (VS_Rgn2K, VS_SlPc, VS_RtGnSp, VS_RtTq; simple variable "
+        "speed)",
+    }
 
 
 def _constant_speed(

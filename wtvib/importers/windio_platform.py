@@ -224,29 +224,7 @@ class _Platform:
             bulkheads = [hull.Disc(float(s), float(x), rho) for s, x in zip(g, t, strict=True)]
         inner = float(np.min(diameter)) - 2 * sum(float(np.max(x.thickness)) for x in layers)
         stiffeners = self.stiffeners(struct, at, max(inner, 0.0) / 2, length)
-        fills = []
-        if struct.get("flooded", False):  # open to the sea: its water, to the water line, is mass
-            self.flooded.append(str(m["name"]))
-            fills.append(hull.Fill(0.0, 1.0, self.rho, FLOODED))
-        key = "ballast" if "ballast" in struct or V1_BALLAST not in struct else V1_BALLAST
-        for k, ballast in enumerate(struct.get(key, []) or []):
-            bw = f"{at}.{key}[{k}]"
-            g, _ = self.table(
-                {"grid": ballast["grid"], "values": [0.0] * len(ballast["grid"])},
-                f"{bw}.grid",
-                zero=True,
-            )
-            if ballast.get("variable_flag", False):
-                fills.append(hull.Fill(float(g[0]), float(g[-1]), self.rho))
-            else:
-                fills.append(
-                    hull.Fill(
-                        float(g[0]),
-                        float(g[-1]),
-                        self.density(ballast["material"], bw),
-                        self.positive(ballast["volume"], f"{bw}.volume"),
-                    )
-                )
+        fills = self.fills(m, struct, at)
         a, b = self.cut_ends(i, m, a, b, joints, hosts, raw)
         return hull.Member(
             name=str(m["name"]),
@@ -268,6 +246,30 @@ class _Platform:
             ),
             fills=fills,
         )
+
+    def fills(self, m: dict[str, Any], struct: dict[str, Any], at: str) -> list[hull.Fill]:
+        """A member's water and ballast: open to the sea (``flooded``: its water to the
+        water line), fixed ballast (a material's volume), the compartments the trim fills
+        with water (``variable_flag``)."""
+        fills = []
+        if struct.get("flooded", False):  # open to the sea: its water, to the water line, is mass
+            self.flooded.append(str(m["name"]))
+            fills.append(hull.Fill(0.0, 1.0, self.rho, FLOODED))
+        key = "ballast" if "ballast" in struct or V1_BALLAST not in struct else V1_BALLAST
+        for k, ballast in enumerate(struct.get(key, []) or []):
+            bw = f"{at}.{key}[{k}]"
+            g, _ = self.table(
+                {"grid": ballast["grid"], "values": [0.0] * len(ballast["grid"])},
+                f"{bw}.grid",
+                zero=True,
+            )
+            if ballast.get("variable_flag", False):
+                fills.append(hull.Fill(float(g[0]), float(g[-1]), self.rho))
+            else:
+                rho = self.density(ballast["material"], bw)
+                volume = self.positive(ballast["volume"], f"{bw}.volume")
+                fills.append(hull.Fill(float(g[0]), float(g[-1]), rho, volume))
+        return fills
 
     def cut_ends(
         self,

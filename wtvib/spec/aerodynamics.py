@@ -144,6 +144,29 @@ class OperatingPoints(_Strict):
         return self
 
 
+class GeneratorTorque(_Strict):
+    """The generator's torque against the rotor's speed as the controller holds it (a
+    variable-speed law: ServoDyn's simple one, a controller's k·ω²), on the rotor's shaft.
+    Its slope dT/dΩ damps the drive train — a damper from the generator to ground, 2T/Ω
+    where T = k·Ω², none where the torque is held constant (OpenFAST linearises the law
+    so: tests/validation/test_openfast_sweep.py)."""
+
+    rpm: list[float] = Field(min_length=2, max_length=1000, description="Rotor speed. [rpm]")
+    torque_nm: list[float] = Field(
+        description="Generator torque on the rotor's shaft (the generator's times the gear "
+        "ratio). [N·m]"
+    )
+    source: str | None = Field(None, description="Where the law comes from.")
+
+    @model_validator(mode="after")
+    def _consistent(self) -> "GeneratorTorque":
+        _increasing("rpm", self.rpm)
+        _same_length(self, "rpm")
+        if self.rpm[0] < 0 or any(t < 0 for t in self.torque_nm):
+            raise ValueError("rpm and torque_nm must not be negative")
+        return self
+
+
 class Control(_Strict):
     """The controller's steady schedule (Hau ch. 5; Jonkman et al. 2009 §7).
 
@@ -182,6 +205,12 @@ class Control(_Strict):
         None,
         description="Minimum pitch over wind (peak shaving); the pitch below rated is the "
         "higher of this and fine_pitch_deg.",
+    )
+    generator_torque: GeneratorTorque | None = Field(
+        None,
+        description="The generator's torque–speed law (variable speed); its slope damps the "
+        "drive train at each operating point. Not given: the torque-controlled generator is "
+        "the drive train's free end (no such damping).",
     )
     operating_points: OperatingPoints | None = Field(
         None,

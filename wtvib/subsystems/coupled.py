@@ -354,13 +354,23 @@ class Model:
     @functools.cached_property
     def active(self) -> Index:
         """The coordinates the blades' sections move (each blade's modes and the tower top's,
-        nacelle's and shaft's motion they ride on), ascending — the blades' last: the rows
-        and columns an aerodynamic damping matrix fills (a few dozen of the hundreds a
-        tower on a monopile has)."""
+        nacelle's and shaft's motion they ride on) and the generator's (:attr:`generator`),
+        ascending — the blades' last: the rows and columns an operating point's damping
+        matrix fills (a few dozen of the hundreds a tower on a monopile has)."""
         local = self.layout.local
-        out = np.unique(local[local >= 0]).astype(np.intp)
+        found = local[local >= 0]
+        if self.generator is not None:
+            found = np.append(found, self.generator)
+        out = np.unique(found).astype(np.intp)
         out.flags.writeable = False
         return out
+
+    @property
+    def generator(self) -> int | None:
+        """The generator's coordinate: the drive-train chain's last (the hub's where the
+        chain is one mass); None without a chain."""
+        chain = self.layout.chain
+        return chain.stop - 1 if chain.stop > chain.start else None
 
     def section_damping(self, c: Array) -> Array:
         """The damping matrix (ψ = 0) of section forces −c·v per blade point, on the
