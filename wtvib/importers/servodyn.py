@@ -252,6 +252,8 @@ def _torque_law(servo: Deck, gb: float, gen_rpm: float, torque: float) -> dict[s
     if disc < 0:  # region 2's curve never meets the line: ServoDyn's own check
         return None
     trans = (slope - math.sqrt(disc)) / (2 * k)  # where region 2 meets region 2½ [rpm]
+    if not 0 < trans < gen_rpm:  # k·ω² above VS_RtTq at rated: OpenFAST refuses the law too
+        return None
     speeds = [trans * i / LAW_POINTS for i in range(LAW_POINTS + 1)] + [gen_rpm, 1.5 * gen_rpm]
     torques = [k * w * w for w in speeds[:-2]] + [torque, torque]
     return {
