@@ -75,7 +75,6 @@ def test_simple_variable_speed_gives_rated_speed_and_power(tmp_path):
     assert "names no lowest speed" in found.warnings[0]
 
 
-
 def test_the_simple_variable_speed_law_is_read_as_torque_against_speed(tmp_path):
     """ServoDyn's simple law (its CalculateTorque; the NREL 5-MW's values, Jonkman 2009 §7:
     VS_Rgn2K 0.0255764 N·m/rpm², VS_SlPc 10 %, VS_RtGnSp 1161.963 rpm, VS_RtTq 43093.55
