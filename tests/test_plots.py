@@ -1,6 +1,7 @@
 """Figures draw results: each returns a figure where the report has its data and None
 where it has not, and the registry lists what check writes (PNG tagged as wtvib's)."""
 
+import dataclasses
 import pytest
 
 from tests.conftest import TURBINES
@@ -431,6 +432,25 @@ def test_log_axes_label_their_decades_as_plain_numbers(reports):
     FigureCanvasAgg(fig).draw()
     labels = [t.get_text() for t in fig.axes[0].get_yticklabels() if t.get_text()]
     assert "10" in labels and "0" in labels and not any("$" in t for t in labels)
+
+
+def test_the_damping_figure_says_the_aerodynamic_model_the_report_says(reports):
+    """The damping figure's title names the model the audit used — the lift lagged or
+    quasi-steady, the induction frozen or in equilibrium — as the terminal report does (an
+    OpenFAST deck with UA_Mod 0 and DBEMT_Mod 0 was drawn as "lift lagged by the shed
+    wake, frozen induction" under a report saying the lift quasi-steady)."""
+    report = reports["stall-rotor-1mw"]
+    aero = report.spec.aerodynamics
+    assert aero is not None and aero.shed_wake and aero.induction != "equilibrium"
+    title = campbell.damping_plot(report).axes[0].get_title()
+    assert "lift lagged by the shed wake" in " ".join(title.split())
+    quiet = report.spec.model_copy(
+        update={
+            "aerodynamics": aero.model_copy(update={"shed_wake": False, "induction": "equilibrium"})
+        }
+    )
+    said = campbell.damping_plot(dataclasses.replace(report, spec=quiet)).axes[0].get_title()
+    assert "lift quasi-steady, induction in equilibrium" in " ".join(said.split())
 
 
 LEAST = "resonance in operation, at its least margin"

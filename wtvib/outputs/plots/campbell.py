@@ -597,11 +597,7 @@ def damping_plot(report: Report) -> "Figure | None":
     ax.set_xlabel("rotor speed [rpm]" if tool else "wind speed [m/s]")
     ax.set_ylabel("damping ratio ζ [% of critical]")
     ax.grid(True, which="both", alpha=0.3)
-    how = (
-        f"total, as computed by {tool}"
-        if tool
-        else "aerodynamic + structural; lift lagged by the shed wake, frozen induction"
-    )
+    how = f"total, as computed by {tool}" if tool else f"aerodynamic + structural; {_model(report)}"
     judged = headline.of_checks(
         report.checks,
         ("aerodynamics.stability", "system.stability"),
@@ -624,6 +620,17 @@ def damping_plot(report: Report) -> "Figure | None":
 
 #: The most modes a standstill chart names, lowest first (a BeamDyn beam has 48).
 STANDSTILL_MODES = 30
+
+
+def _model(report: Report) -> str:
+    """The aerodynamic model the damping in operation was computed with, as the report
+    says it: the lift lagged or quasi-steady (``aerodynamics.shed_wake``), the induction
+    frozen or in equilibrium with the motion (``aerodynamics.induction``)."""
+    aero = report.spec.aerodynamics
+    lagged = aero is not None and aero.shed_wake
+    equilibrium = aero is not None and aero.induction == "equilibrium"
+    lift = "lift lagged by the shed wake" if lagged else "lift quasi-steady"
+    return f"{lift}, {'induction in equilibrium' if equilibrium else 'frozen induction'}"
 
 
 def standstill_plot(report: Report) -> "Figure | None":
