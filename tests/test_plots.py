@@ -2,6 +2,7 @@
 where it has not, and the registry lists what check writes (PNG tagged as wtvib's)."""
 
 import dataclasses
+
 import pytest
 
 from tests.conftest import TURBINES
