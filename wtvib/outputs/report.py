@@ -101,7 +101,7 @@ def _summary(data: ReportDoc, shed_wake: bool = True) -> Panel:
     camp = data.get("campbell", {})
     if data.get("damping") == "aeroelastic" and camp.get("wind_m_s"):
         winds = camp["wind_m_s"]
-        lift = "the lift lagged by the shed wake" if shed_wake else "the lift quasi-steady"
+        lift = f"the {words.lift(shed_wake)}"
         grid.add_row(
             "Damping",
             f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "

@@ -31,3 +31,9 @@ def signed_percent(value: float, digits: int = 1) -> str:
 def counted(n: int, noun: str) -> str:
     """``n`` and the noun, plural where n is not 1: ``counted(1, "blade")`` → '1 blade'."""
     return f"{n} {noun}{'' if n == 1 else 's'}"
+
+
+def lift(lagged: bool) -> str:
+    """How the blades' lift answers their motion in the damping in operation, as the
+    report and the damping figure say it (``aerodynamics.shed_wake``)."""
+    return "lift lagged by the shed wake" if lagged else "lift quasi-steady"

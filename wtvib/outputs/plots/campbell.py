@@ -17,6 +17,7 @@ from ...results import Mode, Sampled
 from ...rules import NEGATIVE, STATUS_ORDER
 from ...subsystems import tower as tower_model
 from ...units import rad_s_to_rpm, rpm_to_rad_s
+from .. import words
 from . import headline
 from .headline import Headline
 from .layout import (
@@ -629,8 +630,8 @@ def _model(report: Report) -> str:
     aero = report.spec.aerodynamics
     lagged = aero is not None and aero.shed_wake
     equilibrium = aero is not None and aero.induction == "equilibrium"
-    lift = "lift lagged by the shed wake" if lagged else "lift quasi-steady"
-    return f"{lift}, {'induction in equilibrium' if equilibrium else 'frozen induction'}"
+    induction = "induction in equilibrium" if equilibrium else "frozen induction"
+    return f"{words.lift(lagged)}, {induction}"
 
 
 def standstill_plot(report: Report) -> "Figure | None":
