@@ -343,6 +343,9 @@ class Coupled:
     first_order: NDArray[np.bool_]  # (K, modes): no damped mode matched, first-order ζ
     parts: tuple[tuple[str, ...], ...]  # (K, modes): where each mode's energy sits there
     quasi_steady: Array  # (K, modes): ζ with the lift unlagged (quasi-steady), to compare
+    #: (K,): the generator's torque law as a damper [N·m·s/rad] (:func:`generator_damping`),
+    #: None where it has none
+    generator: Array | None = None
 
 
 def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
@@ -376,7 +379,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
     # every operating point's aerodynamic damping and stiffness at once (stacks): the
     # quasi-steady forces, and the lift slope's part of them that the shed wake lags
     d_qs = model.section_damping(c_points)
-    law = generator_damping(spec, sec.schedule)
+    law = generator_damping(spec, sec.schedule) if model.generator is not None else None
     if law is not None and model.generator is not None:  # the torque law: a damper
         at_gen = int(np.searchsorted(model.active, model.generator))
         d_qs[:, at_gen, at_gen] += law
@@ -410,6 +413,7 @@ def coupled(spec: Spec, sec: Sections, reduced: bool = True) -> Coupled | None:
         unresolved,
         tuple(part[i] for i in where),
         np.minimum(quasi, 1.0),
+        law,
     )
 
 
@@ -814,7 +818,7 @@ def _notes(
             f"curve, which the aeroelastic |λ| of the modes damped below ζ = {heavy:g} "
             f"departs from by at most {shift:.1%}."
         )
-        law = generator_damping(spec, sch)
+        law = cpl.generator
         if law is not None and spec.aerodynamics.control.generator_torque is not None:
             source = spec.aerodynamics.control.generator_torque.source or "control.generator_torque"
             notes.append(
