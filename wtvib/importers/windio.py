@@ -991,8 +991,9 @@ class _Reader:
         if not any(p.name == "nacelle" for p in parts):
             raise self.fail(
                 "the file gives no nacelle/hub masses (windIO files may leave them to WISDEM, "
-                "which sizes them); give the tower-head mass with --head-mass KG, or convert "
-                "and edit tower_head"
+                "which sizes them); give the whole tower head's mass — blades, hub, nacelle "
+                "and yaw bearing together, not an OpenFAST deck's HubMass + NacMass + "
+                "YawBrMass alone — with --head-mass KG, or convert and edit tower_head"
             )
         return parts
 

@@ -7,7 +7,8 @@ reads it before numpy loads."""
 HELP = {
     "rpm": "Operating range [rpm] (or one fixed speed) for imports that do not give it.",
     "rated": "Rated speed [rpm].",
-    "head_mass": "Tower-head mass [kg] for windIO files (1.x hold no hub/nacelle).",
+    "head_mass": "Tower-head mass [kg] for windIO files (1.x hold no hub/nacelle): the "
+    "whole rotor-nacelle assembly, blades included.",
     "clamped_base": "Read a floating turbine's tower (windIO, OpenFAST) as clamped at its base "
     "(said in the report; platform and moorings are not modelled).",
     "deck_dofs": "Model an OpenFAST deck with the degrees of freedom it switches on (FlapDOF1 … "
