@@ -456,10 +456,12 @@ def test_an_old_spelling_still_works_end_to_end(tmp_path):
 
 def test_a_windio_file_without_its_nacelle_asks_for_the_whole_head(shared):
     """A windIO file that leaves the nacelle to WISDEM (the IEA-3.4's) asks for the tower
-    head's mass, and says it is the whole rotor–nacelle assembly: an OpenFAST deck's
-    HubMass + NacMass + YawBrMass of the IEA-15 (742,237 kg) given for it puts the
-    blades' 201 t inside that figure and the rest 27 % light — the floating tower's first
-    bending then came out 13 % high (0.599 Hz against 0.567 with the whole head's 946 t)."""
+    head's mass, and says it is the whole rotor–nacelle assembly. The IEA-15 UMaineSemi
+    OpenFAST deck's HubMass + NacMass + YawBrMass (69,131 + 644,857 + 28,249 = 742,237 kg,
+    tests/data/openfast_decks/iea15_semi.tar.gz) given for it puts the blades' 201 t inside
+    that figure and the rest 27 % light: on the windio package's IEA-15-240-RWT_VolturnUS-S
+    .yaml, wtvib's tower clamped at its base bent first at 0.406 Hz against 0.364 with the
+    whole head's 946 t (the deck's own: 0.357; measured by wtvib, a script's)."""
     windio1 = shared / "reference" / "IEA3.4" / "IEA-3.4-130-RWT.yaml"
     result = run("check", str(windio1), "--no-plot")
     assert result.exit_code == 2
