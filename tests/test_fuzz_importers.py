@@ -11,6 +11,7 @@ pure function of it). CI runs a few examples per property (derandomised); ``make
 runs the campaign recorded in tests/FUZZ.md.
 """
 
+import atexit
 import json
 import os
 import shutil
@@ -153,6 +154,7 @@ def mutated_windio(draw: Any) -> tuple[str, dict[str, Any], dict[str, Any]]:
 
 
 _WORK = Path(tempfile.mkdtemp(prefix="wtvib-fuzz-"))
+atexit.register(shutil.rmtree, _WORK, ignore_errors=True)  # not left in /tmp, a copy a run
 
 
 @pytest.mark.skipif(not WINDIO_BASES, reason="neither windIO base file is available")

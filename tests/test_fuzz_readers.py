@@ -11,9 +11,11 @@ time. CI runs a few examples per property (derandomised); ``make fuzz`` the camp
 recorded in tests/FUZZ.md.
 """
 
+import atexit
 import gzip
 import json
 import os
+import shutil
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -32,6 +34,7 @@ if os.environ.get("HYPOTHESIS_PROFILE", "ci") == "ci":
     EXAMPLES = 20
 
 _WORK = Path(tempfile.mkdtemp(prefix="wtvib-fuzz-readers-"))
+atexit.register(shutil.rmtree, _WORK, ignore_errors=True)  # not left in /tmp, a copy a run
 
 #: What replaces a token: numbers at and past their limits, text, half numbers, quotes.
 junk = st.sampled_from(

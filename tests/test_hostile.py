@@ -50,12 +50,16 @@ _FLOATING: list[Path] = []
 
 def _floating() -> Path:
     """r-test's floating deck sets (tests/data/openfast_decks/rtest_floating.tar.gz),
-    extracted once a session."""
+    extracted once a session and removed when it ends (they were left in /tmp, one copy a
+    run)."""
     if not _FLOATING:
+        import atexit
+        import shutil
         import tarfile
         import tempfile
 
         root = Path(tempfile.mkdtemp(prefix="wtvib-floating-"))
+        atexit.register(shutil.rmtree, root, ignore_errors=True)
         with tarfile.open(DATA / "openfast_decks" / "rtest_floating.tar.gz") as tar:
             tar.extractall(root, filter="data")
         _FLOATING.append(root)
