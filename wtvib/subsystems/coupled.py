@@ -242,6 +242,29 @@ class Model:
             index.flags.writeable = False
         return out
 
+    @functools.cached_property
+    def tower_curvatures(self) -> dict[str, Array]:
+        """The tower's own bending modes in each plane (``tower.fa``, ``tower.ss``) as
+        curvatures — the change of slope from node to node, a column each, lowest first:
+        the isolated tower of :mod:`wtvib.subsystems.tower`, its head as the tower's modes
+        carry it (:func:`tower.bending_head`), on the coupled model's nodes. A coupled mode is
+        named the tower's k-th bending only where it bends the tower as the k-th of these
+        (:func:`multiblade._bends_as_its_own`); none for a rigid tower."""
+        t = self.spec.tower
+        if t.rigid:
+            return {}
+        b, head = tower.discretise(t), tower.bending_head(self.spec)
+        out = {}
+        planes: tuple[tuple[str, Literal["fa", "ss"]], ...] = (
+            ("tower.fa", "fa"),
+            ("tower.ss", "ss"),
+        )
+        for part, direction in planes:
+            k, m = tower.bending_system(b, head, t.point_masses, t.foundation, direction, t.gravity)
+            shapes = modal.solve(k, m).shapes
+            out[part] = np.diff(shapes[1::2], axis=0)
+        return out
+
     def standstill_modes(self, count: int) -> modal.Modes:
         """The lowest ``count`` undamped modes at standstill, blade 1 up (K₀ and M of
         :attr:`standstill`): solved once for the Ritz bases and the parked modes — at least
