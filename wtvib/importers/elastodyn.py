@@ -187,6 +187,14 @@ def _switches(main: Deck, floating: bool, follow: bool, beamdyn: bool) -> _Switc
                      out.tower_rigid, out.platform_held, note)  # fmt: skip
 
 
+#: Said where a deck read as OpenFAST models it has ElastoDyn's yaw DOF on and no yaw spring.
+FREE_YAW = (
+    "ElastoDyn's yaw DOF is on and the deck set gives no yaw spring (ServoDyn's YawSpr, or no "
+    "ServoDyn): as OpenFAST models it, the nacelle turns freely on the tower top, and the "
+    "tower does not twist (ElastoDyn has no tower torsion) — a free yaw lifts the blades' "
+    "cyclic flap modes."
+)
+
 #: ElastoDyn models one to three blades (NumBl; its blade inputs are BldFile(1..3)).
 MAX_BLADES = 3
 
@@ -255,7 +263,7 @@ def to_spec_data(
     source = f"{path.name} (OpenFAST ElastoDyn deck) and the tower and blade files it names"
     n_blades = main.whole("NumBl", low=1, high=MAX_BLADES)
     tower_height = main.num("TowerHt") - main.num("TowerBsHt", default=0.0)
-    yaw_block = {} if switches.yaw_held else _yaw(main, servo)
+    yaw_block = _yaw_block(main, servo, switches, deck_dofs)
     tw = _tower_on_support(
         main, fst, below, floater, tower_file, tower_height, bool(yaw_block) or switches.yaw_held
     )
@@ -295,6 +303,7 @@ def to_spec_data(
             *bl.notes,
             *tw.notes,
             operating.note,
+            *([FREE_YAW] if yaw_block.get("yaw", {}).get("drive") == "free" else []),
             _files_read(main, [d.path for d in (fst, main, servo) if d is not None], aero),
         ],
     }
@@ -1252,6 +1261,18 @@ def _speed_block(speed: dict[str, Any] | None) -> dict[str, Any]:
         return [six(x) for x in v] if isinstance(v, list) else float(f"{v:.6g}")
 
     return {k: v if k in ("source", "parked") else six(v) for k, v in speed.items()}
+
+
+def _yaw_block(
+    main: Deck, servo: Deck | None, switches: "_Switches", deck_dofs: bool
+) -> dict[str, Any]:
+    """The spec's yaw block: none where the deck holds the yaw (its DOF off), the yaw spring
+    the deck set gives; read as OpenFAST models the deck (``deck_dofs``), a yaw DOF with no
+    spring is a free yaw (:data:`FREE_YAW`)."""
+    if switches.yaw_held:
+        return {}
+    block = _yaw(main, servo)
+    return {"yaw": {"drive": "free"}} if deck_dofs and not block else block
 
 
 def _yaw(main: Deck, servo: Deck | None) -> dict[str, Any]:

@@ -607,7 +607,12 @@ def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]
 
 def _yaw_spring(spec: Spec, n_tor: int, notes: list[str]) -> float | None:
     """The yaw drive's stiffness (in series with the tower's torsion where the tower's own
-    torsion is not modelled), None where the nacelle's yaw is held."""
+    torsion is not modelled), None where the nacelle's yaw is held; 0 for a free yaw
+    (``yaw.drive: free`` without a stiffness: the nacelle turns on the tower top with
+    nothing to hold it, as ElastoDyn's yaw DOF without ServoDyn's yaw spring)."""
+    if spec.yaw.drive == "free" and not spec.yaw.has_model:
+        notes.append("the nacelle free in yaw (yaw.drive: free, no yaw stiffness)")
+        return 0.0
     if spec.yaw.has_model:
         k_yaw = yaw.model(spec).drive
         if n_tor == 0 and spec.yaw.tower_torsion_nm_rad:
@@ -698,10 +703,12 @@ def _layout(
     kb = len(rotor.names)
     nb = spec.rotor.blades
     n_dampers = len(spec.tower.dampers)
-    offsets = np.cumsum([0, n_fa, n_ss, n_tor, 1 if k_yaw else 0, n_chain, n_dampers, nb * kb])
+    offsets = np.cumsum(
+        [0, n_fa, n_ss, n_tor, 0 if k_yaw is None else 1, n_chain, n_dampers, nb * kb]
+    )
     size = int(offsets[-1])
     fa, ss, tor = (slice(int(offsets[i]), int(offsets[i + 1])) for i in range(3))
-    yaw_dof = int(offsets[3]) if k_yaw else None
+    yaw_dof = None if k_yaw is None else int(offsets[3])
     ch = slice(int(offsets[4]), int(offsets[5]))
     dampers = slice(int(offsets[5]), int(offsets[6]))
     bl = slice(int(offsets[6]), int(offsets[7]))

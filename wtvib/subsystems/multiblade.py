@@ -884,7 +884,8 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     rpm = f"{rad_s_to_rpm(float(speeds[-1])):.3g} rpm"
     assert path.first.damping_ratio is not None
     by_mode = tuple(tuple(row[j] for row in path.whirl) for j in range(path.kept))
-    names = _in_operation(path.first.names, by_mode)
+    by_part = tuple(tuple(row[j] for row in path.parts) for j in range(path.kept))
+    names = _in_operation(path.first.names, by_mode, by_part)
     texts = tuple(
         _described(a, b, n, n0, rpm)
         for a, b, n, n0 in zip(
@@ -920,31 +921,54 @@ def _described(standstill: str, top: str, name: str, first: str, rpm: str) -> st
         return f"{standstill} (coupled)"
     if name == first:
         return f"{standstill}; at {rpm}: {top} (coupled)"
-    whirl = name.rpartition(".")[2].rstrip("0123456789")
+    family, _, coord = name.rpartition(".")
+    whirl = coord.rstrip("0123456789")
     lead = re.sub(r"cyclic(\d*) \((tilt|yaw)\)", rf"cyclic\1, {whirl} whirl", standstill, count=1)
+    if family != first.rpartition(".")[0]:  # a veering made it another blade mode's whirl
+        mode = family.split(".")[1]
+        kind = mode.rstrip("0123456789")
+        harmonic = coord[len(whirl) :]
+        lead = (
+            f"{ordinal(int(mode[len(kind) :]))} blade {_KINDS[kind]}, cyclic{harmonic}, "
+            f"{whirl} whirl"
+        )
     if _SHARE.sub("", _ORDINAL.sub("", lead)) == _SHARE.sub("", _ORDINAL.sub("", top)):
         return f"{top} (coupled; at standstill: {standstill})"
     return f"{lead}; at {rpm}: {top} (coupled; at standstill: {standstill})"
 
 
-def _in_operation(names: Sequence[str], whirl: Sequence[Sequence[str | None]]) -> tuple[str, ...]:
+def _in_operation(
+    names: Sequence[str],
+    whirl: Sequence[Sequence[str | None]],
+    part: Sequence[Sequence[str]],
+) -> tuple[str, ...]:
     """The sweep's curves named for what they are in operation: a cyclic rotor mode, named
     at standstill by the axis it turns the rotor about (``blade.flap1.cyclic_yaw``), is in
     the fixed frame a backward or a forward whirl once the rotor turns — named so
     (``blade.flap1.backward``; ``backward2`` for the second cyclic harmonic) where that is
     its whirl at most of the rotating speeds where it whirls at all (a speed where the
     tower holds more of its energy than its cyclic pattern — a flap whirl coupled with the
-    tower's bending — does not vote). A pair both of one whirl keeps its names."""
+    tower's bending — does not vote), and after the blade mode (``part``) it is a whirl of
+    at those speeds: a veering that hands a curve from one blade mode to another at low
+    speed names it after what it is in operation (the OC3 decks with the nacelle free in
+    yaw: the first flap cyclic (yaw) mode at standstill is the edgewise backward whirl from
+    5 rpm on, as OpenFAST names it at 12.1 rpm). A pair both of one whirl keeps its
+    names."""
     out = list(names)
     for j, name in enumerate(names):
         base, _, coord = name.rpartition(".")
         if not coord.startswith("cyclic"):
             continue
-        turning = [w for w in whirl[j][1:] if w is not None]
-        for kind in ("backward", "forward"):
-            if turning and turning.count(kind) > len(turning) / 2:
+        votes = [
+            (p if p.startswith("blade.") else base, w)
+            for w, p in zip(whirl[j][1:], part[j][1:], strict=True)
+            if w is not None
+        ]
+        for key in dict.fromkeys(votes):
+            family, kind = key
+            if kind in ("backward", "forward") and votes.count(key) > len(votes) / 2:
                 harmonic = coord.split("_")[0].removeprefix("cyclic")
-                new = f"{base}.{kind}{harmonic}"
+                new = f"{family}.{kind}{harmonic}"
                 if new not in out:
                     out[j] = new
     return tuple(out)
@@ -997,6 +1021,7 @@ class Path:
     whirl: tuple[tuple[str | None, ...], ...]  # (points, modes)
     shapes: tuple[NDArray[np.complex128], ...]  # (points): each (coordinates, modes)
     basis: int = 0  # the standstill modes of the Ritz basis it was followed in (0: none)
+    parts: tuple[tuple[str, ...], ...] = ()  # (points, modes): the part each mode is in (parts)
 
     @property
     def kept(self) -> int:
@@ -1035,6 +1060,7 @@ def track(
     # keeps that identity through a crossing, where two modes mix for a point or two and
     # the last point's parts would hand the one's name to the other
     part = np.array(parts(model, m, shapes), dtype=object)
+    where_all = [tuple(part.tolist())]
     kind: list[str | None] = list(first.whirl)
     found = _candidates(model, points[1:], first.span + TRACK_SPARE, basis, kept)
     for i, cur in enumerate(found, start=1):
@@ -1053,10 +1079,20 @@ def track(
         shapes = cur.shapes[:, order]
         every.append(shapes)
         whirl.append([kinds[o] for o in order])
+        where_all.append(tuple(where[o] for o in order))
         if i == len(points) - 1:  # named with every candidate, so that "2nd" counts the
             texts = _name(model, m, cur.shapes)[1]  # same modes wherever it is asked
             last = tuple(texts[o] for o in order)
-    return Path(first, freqs, zetas, last, tuple(tuple(w) for w in whirl), tuple(every), basis)
+    return Path(
+        first,
+        freqs,
+        zetas,
+        last,
+        tuple(tuple(w) for w in whirl),
+        tuple(every),
+        basis,
+        tuple(where_all),
+    )
 
 
 #: How much a mode keeping its kind (collective, backward or forward whirl, not a rotor

@@ -632,7 +632,7 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
         out.append(_platform_mode("yaw", f_yaw, share))
         out.append(_computed(spec, "tor1", f_tor, b.nodes, x_tor))
     else:
-        head_yaw = spec.tower_head.inertia_yaw_kgm2 if spec.tower_head is not None else 0.0
+        head_yaw = _head_yaw(spec)
 
         def rigid_yaw(f: float | None) -> float:
             inertia, stiffness = platform.yaw(p, f)
@@ -640,6 +640,18 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
         out.append(_platform_mode("yaw", platform.at_own_frequency(rigid_yaw), 1.0))
     return sorted(out, key=lambda mode: mode.frequency_hz)
+
+
+def _head_yaw(spec: Spec) -> float:
+    """The tower head's inertia about the tower's axis that turns with the tower top
+    (I_yaw + M·x², as :func:`torsion_system`): none where the nacelle is free in yaw
+    (``yaw.drive: free`` with no stiffness — an OpenFAST deck's yaw DOF without a yaw
+    spring: the OC3 spar's platform then yaws at 0.130 Hz in OpenFAST's linearisation, not
+    at the 0.121 Hz it has with the head turning along)."""
+    h = spec.tower_head
+    if h is None or (spec.yaw.drive == "free" and not spec.yaw.has_model):
+        return 0.0
+    return h.inertia_yaw_kgm2 + h.mass_kg * h.cm_downwind_m**2
 
 
 def rigid_share(x: Array, m: Array, heights: Array) -> float:
