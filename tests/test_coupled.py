@@ -200,3 +200,22 @@ def test_aerodynamic_damping_in_multi_blade_coordinates_is_the_dense_transformat
     np.testing.assert_allclose(stiffness, omega[:, None, None] * (t.T @ d @ t1), atol=1e-13)
     single = multiblade.fixed_frame_damping(model, d[2], 1.1)
     np.testing.assert_array_equal(single[0], damping[2])
+
+
+def test_a_rigid_shaft_leaves_the_hub_its_own_inertia(shared):
+    """Read as OpenFAST models it (``deck_dofs``), the IEA-3.4 reference deck has its shaft
+    rigid (DrTrDOF off) and its generator free: the hub and the geared generator turn as
+    one mass (9.96e6 kg·m², the generator's 1,056 kg·m² times the gearbox ratio squared),
+    and that merged mass was taken for the hub's own polar inertia — subtracted from the
+    head with the blades, it left less than nothing for the nacelle, and a valid deck was
+    refused ("tower_head.inertia_roll_kgm2 … is less than the rotor's …"). The hub is its
+    own 31,094 kg·m² (the deck's HubIner; the spec's chain), the audit runs."""
+    from wtvib import importers
+
+    deck = shared / "reference" / "IEA3.4" / "IEA-3.4-130-RWT_ElastoDyn.dat"
+    s = importers.load(deck, importers.ReadOptions(deck_dofs=True, rpm=(6.0, 12.0)))
+    hub = next(c for c in s.drivetrain.chain if c.name == "hub")
+    chain = coupled._chain(s, "free", [])
+    assert chain.hub_polar == hub.inertia_kgm2
+    assert chain.m[0, 0] > 100 * hub.inertia_kgm2  # the generator merged with it
+    assert any(m.id == "system.tower.fa1" for m in audit.run(s).modes)

@@ -668,8 +668,12 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
             coupling, own = reduced.coupling[:size], reduced.own[:size]
             if size == 0:  # one rigid mass, held: the rotor turns at its speed
                 pass
-            elif cm.hub_inertia_kgm2 is None:
-                hub_polar = float(chain_m[0, 0])
+            elif cm.hub_inertia_kgm2 is None:  # the hub's own (a rigid shaft merges more)
+                hub_polar = (
+                    float(chain_m[0, 0])
+                    if reduced.names[0] == rest[0].name
+                    else rest[0].inertia_kgm2
+                )
             elif reduced.names[0] == rest[0].name:  # the given hub inertia replaces the hub's
                 chain_m = chain_m.copy()
                 chain_m[0, 0] = coupling[0] = own[0] = hub_polar
