@@ -110,11 +110,16 @@ def make(r_test: Path, out: Path) -> Path:
         path = case / name
         path.write_text(change(path.read_text()))
     sea = case / "SeaState.dat"
-    lines = sea.read_text().splitlines()
-    mod = next(i for i, x in enumerate(lines) if _key(x) == "WaveStMod")
-    sea.write_text("\n".join([*lines[: mod + 1], "             0   WvCrntMod      - (switch)",
-                              *lines[mod + 1 :]]) + "\n")  # fmt: skip
+    sea.write_text(_sea_state5(sea.read_text()))
     return case
+
+
+def _sea_state5(text: str) -> str:
+    """SeaState's new ``WvCrntMod`` (0: waves and current superposed, as before)."""
+    lines = text.splitlines()
+    mod = next(i for i, x in enumerate(lines) if _key(x) == "WaveStMod")
+    new = ["             0   WvCrntMod      - (switch)"]
+    return "\n".join([*lines[: mod + 1], *new, *lines[mod + 1 :]]) + "\n"
 
 
 if __name__ == "__main__":
