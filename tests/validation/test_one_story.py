@@ -472,6 +472,32 @@ def test_every_coupled_campbell_curve_is_one_mode_from_end_to_end(request, name)
     assert excess.max() <= 0.10, (sw.names[worst[1]], float(excess.max()))
 
 
+@pytest.mark.parametrize("name", sorted(SWEEPS))
+def test_a_blade_curve_is_named_for_what_it_is_at_most_speeds(request, name):
+    """A swept curve named a blade mode's backward or forward whirl or collective is that,
+    and of that blade mode, at most of the rotating speeds where it is a rotor mode: named
+    at standstill, the windIO VolturnUS-S's first edgewise "collective" (0.74 Hz, the
+    edgewise modes mixed with the tower's side-side) was the forward whirl from 0.5 rpm
+    on, and its "cyclic (tilt)" the collective; the IEA-10's second edgewise "collective"
+    its forward whirl."""
+    from wtvib.subsystems import coupled
+
+    folder = request.getfixturevalue("shared") if name.startswith("reference/") else None
+    sw = coupled.rotating_sweep(load(_input(name, folder), ReadOptions(**SWEEPS[name])))
+    parts = [[row[j] for row in sw.path.parts] for j in range(len(sw.names))]
+    for j, curve in enumerate(sw.names):
+        family, _, kind = curve.rpartition(".")
+        kind = kind.rstrip("0123456789")
+        if not family.startswith("blade.") or kind not in ("backward", "forward", "collective"):
+            continue
+        votes = [
+            (p if p.startswith("blade.") else family, w)
+            for w, p in zip(sw.whirl[j][1:], parts[j][1:], strict=True)
+            if w is not None
+        ]
+        assert votes.count((family, kind)) > len(votes) / 2, (curve, votes)
+
+
 def test_a_floating_turbines_modes_at_the_operating_points_continue_the_sweep():
     """The Campbell data at the operating points continue the sweep's curves: the
     IEA-15 VolturnUS-S's first tower side-side mode (0.49 Hz) was carried at 5.9 Hz there,

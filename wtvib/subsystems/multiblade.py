@@ -924,13 +924,17 @@ def _described(standstill: str, top: str, name: str, first: str, rpm: str) -> st
     family, _, coord = name.rpartition(".")
     whirl = coord.rstrip("0123456789")
     lead = re.sub(r"cyclic(\d*) \((tilt|yaw)\)", rf"cyclic\1, {whirl} whirl", standstill, count=1)
-    if family != first.rpartition(".")[0]:  # a veering made it another blade mode's whirl
+    was, _, before = first.rpartition(".")
+    if family != was or (whirl == "collective") != before.startswith("collective"):
+        # a veering made it another blade mode's, or a collective a whirl (or back)
         mode = family.split(".")[1]
         kind = mode.rstrip("0123456789")
+        words = f"{ordinal(int(mode[len(kind) :]))} blade {_KINDS[kind]}"
         harmonic = coord[len(whirl) :]
         lead = (
-            f"{ordinal(int(mode[len(kind) :]))} blade {_KINDS[kind]}, cyclic{harmonic}, "
-            f"{whirl} whirl"
+            f"{words}, collective"
+            if whirl == "collective"
+            else f"{words}, cyclic{harmonic}, {whirl} whirl"
         )
     if _SHARE.sub("", _ORDINAL.sub("", lead)) == _SHARE.sub("", _ORDINAL.sub("", top)):
         return f"{top} (coupled; at standstill: {standstill})"
@@ -952,26 +956,43 @@ def _in_operation(
     at those speeds: a veering that hands a curve from one blade mode to another at low
     speed names it after what it is in operation (the OC3 decks with the nacelle free in
     yaw: the first flap cyclic (yaw) mode at standstill is the edgewise backward whirl from
-    5 rpm on, as OpenFAST names it at 12.1 rpm). A pair both of one whirl keeps its
-    names."""
+    5 rpm on, as OpenFAST names it at 12.1 rpm). So too a collective and a cyclic mode
+    mixed at standstill (the windIO VolturnUS-S's first edgewise modes through the tower's
+    side-side: its "collective" at 0.74 Hz is the forward whirl from 0.5 rpm on, its cyclic
+    (tilt) the collective). A pair both of one whirl keeps its names."""
     out = list(names)
-    for j, name in enumerate(names):
-        base, _, coord = name.rpartition(".")
-        if not coord.startswith("cyclic"):
-            continue
-        votes = [
-            (p if p.startswith("blade.") else base, w)
-            for w, p in zip(whirl[j][1:], part[j][1:], strict=True)
-            if w is not None
-        ]
-        for key in dict.fromkeys(votes):
-            family, kind = key
-            if kind in ("backward", "forward") and votes.count(key) > len(votes) / 2:
-                harmonic = coord.split("_")[0].removeprefix("cyclic")
-                new = f"{family}.{kind}{harmonic}"
-                if new not in out:
-                    out[j] = new
+    wanted = {j: want for j in range(len(names)) if (want := _wanted(names[j], whirl[j], part[j]))}
+    for _ in range(len(wanted)):  # a name one curve leaves may be the one another wants
+        moved = False
+        for j, new in wanted.items():
+            if out[j] != new and new not in out:
+                out[j], moved = new, True
+        if not moved:
+            break
     return tuple(out)
+
+
+def _wanted(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> str | None:
+    """The name a blade mode's curve has in operation (:func:`_in_operation`): the blade mode
+    and the kind — backward, forward, collective — it is at most of the rotating speeds
+    where it is a rotor mode; None where no kind holds most of them or it is not a blade
+    mode's."""
+    base, _, coord = name.rpartition(".")
+    if not base.startswith("blade.") or not coord.startswith(("cyclic", "collective")):
+        return None
+    votes = [
+        (p if p.startswith("blade.") else base, w)
+        for w, p in zip(whirl[1:], part[1:], strict=True)
+        if w is not None
+    ]
+    for key in dict.fromkeys(votes):
+        family, kind = key
+        if kind in ("backward", "forward", "collective") and votes.count(key) > len(votes) / 2:
+            cyclic = coord.startswith("cyclic") and kind != "collective"
+            harmonic = coord.split("_")[0].removeprefix("cyclic") if cyclic else ""
+            new = f"{family}.{kind}{harmonic}"
+            return None if new == name else new
+    return None
 
 
 def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool = True) -> "Path":
