@@ -219,23 +219,3 @@ def test_a_rigid_shaft_leaves_the_hub_its_own_inertia(shared):
     assert chain.hub_polar == hub.inertia_kgm2
     assert chain.m[0, 0] > 100 * hub.inertia_kgm2  # the generator merged with it
     assert any(m.id == "system.tower.fa1" for m in audit.run(s).modes)
-
-
-def test_a_mode_named_by_its_second_share_stands_for_no_isolated_mode(shared):
-    """The NREL 5-MW deck's coupled 3.2 Hz mode bends the tower as its second side-side (47 %
-    of its energy) and twists the shaft (25 %); the tower's name being taken, it is called
-    after its second share, ``drivetrain2`` (as OpenFAST's ElastoDyn view names it,
-    drivetrain1_2). It is not the lumped chain's second mode (24 Hz, the hub between the
-    shaft and the blades' edgewise spring), which stays judged against the generator's
-    speed (``drivetrain.resonance.1G``) and drawn — superseded, it judged nothing and the
-    drive train's figure went."""
-    from wtvib import importers
-
-    report = audit.run(importers.load(shared / "reference" / "NREL5MW" / "NREL-5MW.fst"))
-    modes = {m.id: m for m in report.modes}
-    assert "system.drivetrain2" in modes and "47% tower side-side" in (
-        modes["system.drivetrain2"].description
-    )
-    assert modes["drivetrain.free.2"].superseded_by is None
-    assert modes["drivetrain.free.1"].superseded_by == "system.drivetrain1"
-    assert any(c.id == "drivetrain.resonance.1G" for c in report.checks)

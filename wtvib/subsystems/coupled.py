@@ -904,7 +904,6 @@ class _Standing:
     known: Mapping[str, float]
     pairs: Mapping[str, str]
     chained: Collection[str]
-    secondary: Collection[str] = ()  # named by a part that holds less than its largest share
 
     def exists(self, name: str) -> frozenset[str] | None:
         if name.startswith("drivetrain"):
@@ -913,33 +912,15 @@ class _Standing:
 
     def stands_for(self, j: int, name: str, f: float) -> str | None:
         iso = self.pairs[name]
-        if name in self.secondary:  # mostly another part's: the isolated mode is not it
-            return None
         if j < kept(self.spec) or iso not in self.known or name in self.chained:
             return iso
         return iso if max(f, self.known[iso]) <= PAIRED * min(f, self.known[iso]) else None
 
 
-def _secondary(names: Sequence[str], energy: Sequence[Mapping[str, float]]) -> frozenset[str]:
-    """The modes named after a part (drive train, tower, yaw, damper) that holds less of their
-    kinetic energy at standstill than another group (named by their second share, the first
-    one's name taken): the NREL 5-MW's 3.2 Hz "drivetrain2" is 47 % the tower's second
-    side-side and 25 % the shaft — it does not stand for the lumped chain's second mode."""
-    out = []
-    for name, share in zip(names, energy, strict=True):
-        part = next((p for p in ("tower.fa", "tower.ss", "tower.tor", "drivetrain", "yaw",
-                                 "damper") if name.startswith(p)), None)  # fmt: skip
-        if part is not None and share and share.get(part, 0.0) < max(share.values()):
-            out.append(name)
-    return frozenset(out)
-
-
 def _parked_modes(spec: Spec, model: Model, cond: str, known: Mapping[str, float]) -> list[Mode]:
     """A two-bladed turbine's coupled modes: parked only (its rotation is periodic)."""
     res = parked_named(model)
-    at = _Standing(
-        spec, cond, known, *counterparts(spec, res.names, cond), _secondary(res.names, res.energy)
-    )
+    at = _Standing(spec, cond, known, *counterparts(spec, res.names, cond))
     return [
         Mode(
             f"system.{n}",
@@ -966,13 +947,7 @@ def _rotating_modes(spec: Spec, model: Model, cond: str, known: Mapping[str, flo
     sw = rotating_sweep(spec)
     omega = tuple(sw.omega.tolist())
     order = np.argsort(sw.frequency_hz[0])
-    at = _Standing(
-        spec,
-        cond,
-        known,
-        *counterparts(spec, [sw.names[j] for j in order], cond),
-        _secondary(sw.names, sw.path.first.energy),
-    )
+    at = _Standing(spec, cond, known, *counterparts(spec, [sw.names[j] for j in order], cond))
     weighted = strain_weighted(spec, model, sw.path.shapes[0], sw.frequency_hz[0])
     lower = default_damping(spec)
     said = "the drive train's dampers" + (
