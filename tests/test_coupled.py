@@ -219,3 +219,22 @@ def test_a_rigid_shaft_leaves_the_hub_its_own_inertia(shared):
     assert chain.hub_polar == hub.inertia_kgm2
     assert chain.m[0, 0] > 100 * hub.inertia_kgm2  # the generator merged with it
     assert any(m.id == "system.tower.fa1" for m in audit.run(s).modes)
+
+
+def test_the_drive_trains_lines_act_on_the_coupled_modes_that_stand_for_its_modes(shared):
+    """The NREL 5-MW deck's coupled model supersedes both modes of the drive train's lumped
+    chain (``system.drivetrain1`` at 1.68 Hz, ``system.drivetrain2`` at 3.2 Hz — the second
+    47 % the tower's second side-side, named by its second share as the ElastoDyn DOF view
+    names OpenFAST's drivetrain1_2; the chain's own 24 Hz second mode, the hub between the
+    shaft and the blades' edgewise spring, is a frequency no model of the turbine has).
+    Superseded, the isolated modes are not judged, and the drive train's own lines — the
+    generator's speed (1G), gear mesh — judged nothing: now they act on the coupled modes
+    that stand for its modes (``system.resonance.1G``)."""
+    from wtvib import importers
+
+    report = audit.run(importers.load(shared / "reference" / "NREL5MW" / "NREL-5MW.fst"))
+    modes = {m.id: m for m in report.modes}
+    assert modes["drivetrain.free.2"].superseded_by == "system.drivetrain2"
+    assert "47% tower side-side" in modes["system.drivetrain2"].description
+    check = next(c for c in report.checks if c.id == "system.resonance.1G")
+    assert check.status == "pass" and "system.drivetrain" in check.message

@@ -630,9 +630,21 @@ def assess_all(
     default_damping: float,
     heavy_damping: float = HEAVY_DAMPING,
 ) -> list[Finding]:
-    """Every judged mode (:attr:`Mode.judged`) against every excitation acting on it."""
-    pairs = [(m, e) for e in excitations for m in modes if e.acts_on(m.subsystem) and m.judged]
+    """Every judged mode (:attr:`Mode.judged`) against every excitation acting on it — on a
+    coupled mode, the lines that act on the part whose isolated mode it stands for too (the
+    drive train's generator and gear-mesh lines on ``system.drivetrain1``, which supersedes
+    ``drivetrain.free.1``: superseded, that mode is not judged, and those lines judged
+    nothing)."""
+    pairs = [(m, e) for e in excitations for m in modes if m.judged and acts(e, m)]
     return _assess(pairs, op, rule, severity, default_damping, heavy_damping)
+
+
+def acts(e: Excitation, m: Mode) -> bool:
+    """Whether line ``e`` acts on mode ``m``: on its subsystem, or — a coupled mode — on the
+    subsystem of the isolated mode it stands for (``replaces``)."""
+    if e.acts_on(m.subsystem):
+        return True
+    return m.replaces is not None and e.acts_on(m.replaces.split(".", 1)[0])
 
 
 def resonance_checks(

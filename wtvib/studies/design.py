@@ -23,7 +23,7 @@ from numpy.typing import NDArray
 
 from ..errors import WtvibError
 from ..judge.excitation import Excitation, OperatingRange
-from ..judge.resonance import Finding, assess_all
+from ..judge.resonance import Finding, acts, assess_all
 from ..numerics import beam
 from ..results import Mode
 from ..rules import STATUS_ORDER, MarginRule, Status, worst
@@ -183,7 +183,7 @@ def _judged(report: Report, mode: Mode, ks: NDArray[np.float64]) -> list[tuple[S
     """The resonance routine's judgement of the mode moved to each factor ``ks``: the
     worst status over every line acting on it, and the lines that warn or fail there —
     exactly what ``check`` would say of a design with that frequency."""
-    lines = [e for e in report.lines if e.acts_on(mode.subsystem)]
+    lines = [e for e in report.lines if acts(e, mode)]
     candidates = [_candidate(mode, float(k)) for k in ks]
     found = assess_all(
         candidates,
@@ -217,7 +217,7 @@ def _edges(report: Report, mode: Mode) -> tuple[list[tuple[float, float]], list[
     f0 = steady_frequency(mode, op)
     if f0 <= 0:
         return [(0.0, math.inf)], []
-    lines = [e for e in report.lines if e.acts_on(mode.subsystem)]
+    lines = [e for e in report.lines if acts(e, mode)]
     top = max((float(e.frequency_hz(op.overspeed)) for e in lines), default=f0)
     low_line = min(
         (float(e.frequency_hz(max(op.lowest, 0.05 * op.highest))) for e in lines if e.order),

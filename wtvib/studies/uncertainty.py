@@ -25,6 +25,7 @@ from numpy.typing import NDArray
 
 from ..errors import SpecError
 from ..judge.excitation import Excitation, excitations, operating_range
+from ..judge.resonance import acts
 from ..numerics import modal
 from ..results import Mode, Southwell
 from ..rules import MarginRule
@@ -398,9 +399,7 @@ def summary(
         )
         if exists:
             assert mode is not None
-            line_hz = {
-                e.id: e.frequency_hz(omega)[None, :] for e in lines if e.acts_on(mode.subsystem)
-            }
+            line_hz = {e.id: e.frequency_hz(omega)[None, :] for e in lines if acts(e, mode)}
             hits = dict.fromkeys(line_hz, 0)
             factors = f[stable] / mode.frequency_hz
             # in blocks of samples: each block's (samples × speeds) arrays stay in cache
