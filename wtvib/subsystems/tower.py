@@ -432,7 +432,7 @@ def torsion_system(
     assert b.gj is not None and b.polar is not None
     k, m = beam.assemble_torsion(b.nodes, b.gj, b.polar)
     if head is not None:
-        m[-1, -1] += head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
+        m[-1, -1] += _yaw_inertia(head)
     if foundation.kind == "springs" and foundation.torsional_nm_rad:
         k[0, 0] += foundation.torsional_nm_rad
         return k, m
@@ -644,14 +644,19 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
 def _head_yaw(spec: Spec) -> float:
     """The tower head's inertia about the tower's axis that turns with the tower top
-    (I_yaw + M·x², as :func:`torsion_system`): none where the nacelle is free in yaw
+    (:func:`_yaw_inertia`, as :func:`torsion_system` has it): none where the nacelle is free in yaw
     (``yaw.drive: free`` with no stiffness — an OpenFAST deck's yaw DOF without a yaw
     spring: the OC3 spar's platform then yaws at 0.130 Hz in OpenFAST's linearisation, not
     at the 0.121 Hz it has with the head turning along)."""
     h = spec.tower_head
     if h is None or (spec.yaw.drive == "free" and not spec.yaw.has_model):
         return 0.0
-    return h.inertia_yaw_kgm2 + h.mass_kg * h.cm_downwind_m**2
+    return _yaw_inertia(h)
+
+
+def _yaw_inertia(head: "spec_mod.TowerHead") -> float:
+    """The head's inertia about the tower's axis: about its CM, and its mass's offset."""
+    return head.inertia_yaw_kgm2 + head.mass_kg * head.cm_downwind_m**2
 
 
 def rigid_share(x: Array, m: Array, heights: Array) -> float:
