@@ -71,3 +71,9 @@ class Yaw(_Strict):
     @property
     def has_model(self) -> bool:
         return self.drive_stiffness_nm_rad is not None
+
+    @property
+    def free(self) -> bool:
+        """The nacelle turns freely on the tower top: a free yaw drive with no stiffness (an
+        OpenFAST deck's yaw DOF without a yaw spring, read as OpenFAST models it)."""
+        return self.drive == "free" and not self.has_model

@@ -116,6 +116,13 @@ SPEED_SAMPLES = 30
 STANDSTILL_SOLVED = 96
 
 
+#: The tower's own modes a plane a coupled tower ordinal is compared with
+#: (:attr:`Model.tower_curvatures`): beyond them an ordinal is not checked — a coupled model
+#: keeps MODES_KEPT modes and a few more, a floating platform's two rigid motions a plane
+#: counted among the tower's.
+TOWER_MODES_NAMED = 12
+
+
 @dataclass(frozen=True)
 class BladeModes:
     """One blade's lowest cantilever modes evaluated at its Gauss points (point masses)."""
@@ -254,16 +261,13 @@ class Model:
         if t.rigid:
             return {}
         b, head = tower.discretise(t), tower.bending_head(self.spec)
-        out = {}
-        planes: tuple[tuple[str, Literal["fa", "ss"]], ...] = (
-            ("tower.fa", "fa"),
-            ("tower.ss", "ss"),
+        pair = tower.bending_pair(
+            b, head, t.point_masses, t.foundation, t.gravity, count=TOWER_MODES_NAMED
         )
-        for part, direction in planes:
-            k, m = tower.bending_system(b, head, t.point_masses, t.foundation, direction, t.gravity)
-            shapes = modal.solve(k, m).shapes
-            out[part] = np.diff(shapes[1::2], axis=0)
-        return out
+        return {
+            part: np.diff(modes.shapes[1::2], axis=0)
+            for part, modes in zip(("tower.fa", "tower.ss"), pair, strict=True)
+        }
 
     def standstill_modes(self, count: int) -> modal.Modes:
         """The lowest ``count`` undamped modes at standstill, blade 1 up (K₀ and M of
@@ -610,7 +614,7 @@ def _yaw_spring(spec: Spec, n_tor: int, notes: list[str]) -> float | None:
     torsion is not modelled), None where the nacelle's yaw is held; 0 for a free yaw
     (``yaw.drive: free`` without a stiffness: the nacelle turns on the tower top with
     nothing to hold it, as ElastoDyn's yaw DOF without ServoDyn's yaw spring)."""
-    if spec.yaw.drive == "free" and not spec.yaw.has_model:
+    if spec.yaw.free:
         notes.append("the nacelle free in yaw (yaw.drive: free, no yaw stiffness)")
         return 0.0
     if spec.yaw.has_model:

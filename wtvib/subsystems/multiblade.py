@@ -820,8 +820,7 @@ def _mode_name(
         return f"{top}{k}", f"{ordinal(k)} {_PARTS[top]}"
     _, mode, coord = top.split(".")
     kind = mode.rstrip("0123456789")
-    number = int(mode[len(kind) :])
-    words = f"{ordinal(number)} blade {_KINDS[kind]}"
+    words = _blade_words(mode)
     if coord == "collective":
         return f"blade.{mode}.collective", f"{words}, collective"
     if coord == "alternating":
@@ -838,6 +837,12 @@ def _mode_name(
     if whirl in ("forward", "backward"):
         return name, f"{words}, cyclic{suffix}"
     return name, f"{words}, cyclic{suffix} ({axis})"
+
+
+def _blade_words(mode: str) -> str:
+    """A blade mode in words: ``edge1`` → '1st blade edgewise'."""
+    kind = mode.rstrip("0123456789")
+    return f"{ordinal(int(mode[len(kind) :]))} blade {_KINDS[kind]}"
 
 
 def _whirl(top: str, x: NDArray[np.complex128], groups: Mapping[str, Index]) -> str | None:
@@ -927,9 +932,7 @@ def _described(standstill: str, top: str, name: str, first: str, rpm: str) -> st
     was, _, before = first.rpartition(".")
     if family != was or (whirl == "collective") != before.startswith("collective"):
         # a veering made it another blade mode's, or a collective a whirl (or back)
-        mode = family.split(".")[1]
-        kind = mode.rstrip("0123456789")
-        words = f"{ordinal(int(mode[len(kind) :]))} blade {_KINDS[kind]}"
+        words = _blade_words(family.split(".")[1])
         harmonic = coord[len(whirl) :]
         lead = (
             f"{words}, collective"

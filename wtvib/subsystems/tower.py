@@ -644,12 +644,12 @@ def floating_modes(spec: Spec, b: Beam) -> list[Mode]:
 
 def _head_yaw(spec: Spec) -> float:
     """The tower head's inertia about the tower's axis that turns with the tower top
-    (:func:`_yaw_inertia`, as :func:`torsion_system` has it): none where the nacelle is free in yaw
-    (``yaw.drive: free`` with no stiffness — an OpenFAST deck's yaw DOF without a yaw
+    (:func:`_yaw_inertia`, as :func:`torsion_system` has it): none where the nacelle is
+    free in yaw (``Yaw.free``: an OpenFAST deck's yaw DOF without a yaw
     spring: the OC3 spar's platform then yaws at 0.130 Hz in OpenFAST's linearisation, not
     at the 0.121 Hz it has with the head turning along)."""
     h = spec.tower_head
-    if h is None or (spec.yaw.drive == "free" and not spec.yaw.has_model):
+    if h is None or spec.yaw.free:
         return 0.0
     return _yaw_inertia(h)
 
