@@ -46,6 +46,32 @@ class Southwell:
 
 
 @dataclass(frozen=True)
+class Stiffened:
+    """A parked frequency carried over rotor speed by another mode's rotational
+    stiffening: f² = f₀² + g(Ω)² − g(0)².
+
+    A one- or two-bladed rotor's coupled modes are solved parked (turning, the system is
+    periodic); a blade mode among them stiffens as the isolated blade it stands for does
+    — Southwell's increment, the centrifugal stiffness added to the parked mode's.
+
+    Parameters
+    ----------
+    f0_hz
+        The parked frequency. [Hz]
+    along
+        The curve whose increment is added (the isolated blade mode's).
+    """
+
+    f0_hz: float
+    along: SpeedCurve
+
+    def __call__(self, omega: NDArray[np.float64]) -> NDArray[np.float64]:
+        g = self.along(np.asarray(omega, dtype=float))
+        g0 = float(self.along(np.zeros(1))[0])
+        return np.sqrt(np.maximum(self.f0_hz**2 + g**2 - g0**2, 0.0))
+
+
+@dataclass(frozen=True)
 class Sampled:
     """A frequency-vs-speed curve computed at some rotor speeds, linear in between.
 

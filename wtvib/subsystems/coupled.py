@@ -88,7 +88,7 @@ from ..numerics.kinematics import (
     spin,
 )
 from ..numerics.rigid import Rigid, nacelle, rotor_points
-from ..results import Check, Mode, Rule, Sampled, Whirl, ordinal
+from ..results import Check, Mode, Rule, Sampled, Stiffened, Whirl, ordinal
 from ..spec import BladeStructure, Spec
 from ..spec.base import StiffnessDamping
 from ..units import rpm_to_rad_s
@@ -1339,7 +1339,26 @@ def default_damping(spec: Spec) -> Damping:
 def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
     if spec.results is not None:  # another tool's whole-turbine modes, in the model's place
         return imported.modes(spec, "fixed")
-    return modes(spec, {m.id: m.frequency_hz for ms in built.values() for m in ms})
+    isolated = {m.id: m for ms in built.values() for m in ms}
+    found = modes(spec, {k: m.frequency_hz for k, m in isolated.items()})
+    if spec.rotor.blades >= 3:
+        return found
+    return [_turning(m, isolated) for m in found]
+
+
+def _turning(mode: Mode, isolated: Mapping[str, Mode]) -> Mode:
+    """A one- or two-bladed rotor's parked coupled blade mode over rotor speed: its parked
+    frequency stiffened as the isolated blade mode of its family is (:class:`Stiffened`),
+    said in its condition. Other modes (the tower's, the drive train's) stay as parked."""
+    name = mode.id.removeprefix("system.")
+    base = isolated.get("blade." + name.split(".")[1]) if name.startswith("blade.") else None
+    if base is None or base.curve is None:
+        return mode
+    return replace(
+        mode,
+        curve=Stiffened(mode.frequency_hz, base.curve),
+        condition=f"{mode.condition}; turning, stiffened as the isolated {base.id} is",
+    )
 
 
 def analyse(spec: Spec, ctx: Context) -> Analysis:
