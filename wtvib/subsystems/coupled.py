@@ -257,17 +257,13 @@ class Model:
         carry it (:func:`tower.bending_head`), on the coupled model's nodes. A coupled mode is
         named the tower's k-th bending only where it bends the tower as the k-th of these
         (:func:`multiblade._bends_as_its_own`); none for a rigid tower."""
-        t = self.spec.tower
-        if t.rigid:
+        spec = self.spec
+        if spec.tower.rigid:
             return {}
-        b, head = tower.discretise(t), tower.bending_head(self.spec)
-        pair = tower.bending_pair(
-            b, head, t.point_masses, t.foundation, t.gravity, count=TOWER_MODES_NAMED
+        found: dict[str, Array] = spec.derived(
+            ("coupled.tower_curvatures", 0), spec, lambda: _tower_curvatures(spec)
         )
-        return {
-            part: np.diff(modes.shapes[1::2], axis=0)
-            for part, modes in zip(("tower.fa", "tower.ss"), pair, strict=True)
-        }
+        return found
 
     def standstill_modes(self, count: int) -> modal.Modes:
         """The lowest ``count`` undamped modes at standstill, blade 1 up (K₀ and M of
@@ -464,6 +460,23 @@ def _nacelle(spec: Spec, rotor: BladeModes, hub_mass: float, hub_polar: float) -
         n * float(rotor.mass.sum()) + hub_mass,
         n * float(np.sum(rotor.mass * rotor.radius**2)) + hub_polar,
     )
+
+
+def _tower_curvatures(spec: Spec) -> dict[str, Array]:
+    """:attr:`Model.tower_curvatures`, solved once per spec: the same for every generator
+    condition's model (the tower and its head do not change with it)."""
+    t = spec.tower
+    b, head = tower.discretise(t), tower.bending_head(spec)
+    pair = tower.bending_pair(
+        b, head, t.point_masses, t.foundation, t.gravity, count=TOWER_MODES_NAMED
+    )
+    out = {
+        part: np.diff(modes.shapes[1::2], axis=0)
+        for part, modes in zip(("tower.fa", "tower.ss"), pair, strict=True)
+    }
+    for found in out.values():
+        found.flags.writeable = False  # shared by the conditions' models
+    return out
 
 
 def build(spec: Spec, condition: str) -> Model:
