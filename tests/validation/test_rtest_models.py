@@ -946,7 +946,10 @@ def _fixture(name: str, folder: Path) -> ol.PointModes:
 def test_the_fixtures_flap_modes_are_elastodyns_three_blade_nodes(decks, tmp_path):
     """The AeroDyn fixtures' flap modes sit 9–21 % below wtvib's in r-test's linearisations
     (EXCEPTIONS): the fixtures integrate the blade over three ElastoDyn nodes (BldNodes 3,
-    "to limit the size of the matrices"), where the NREL 5-MW's deck has 17. OpenFAST 5 on
+    "to limit the size of the matrices"), where the NREL 5-MW's deck has 17 — ElastoDyn's
+    equations bend the blade by its shapes' curvature integrated twice over those nodes
+    (Coeff's TwistedSF, a midpoint rule; its reference frequency FreqBF takes the
+    polynomials themselves, test_the_blade_s_reference_frequencies_are_elastodyn_s). OpenFAST 5 on
     the same decks (tests/data/openfast_fixtures): without AeroDyn the three-bladed
     fixture's collective flap at 12.1 rpm is 0.648 Hz with three nodes, 0.724 with 17 — the
     discretisation alone, −10 %. With 17 nodes and AeroDyn, wtvib's own model of the deck
