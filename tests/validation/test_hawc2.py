@@ -34,6 +34,7 @@ import numpy as np
 import pytest
 
 from wtvib import audit, importers
+from wtvib.aero import aerodamping
 from wtvib.subsystems import blade
 
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -515,6 +516,7 @@ def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, open
     BeamDyn states itself, openfast_lin.beamdyn_frame, but these are published results):
     a doubtful third code by a few per cent, not by the factor 2–4 held here."""
     report = audit.run(importers.load(iea22))
+    assert aerodamping.BENDING_ONLY in report.assumptions  # the upper bound is said
     ops = {m.id: m.operating for m in report.modes if m.judged and m.operating is not None}
 
     def ours(name: str, wind: float, field: str = "total") -> float:
