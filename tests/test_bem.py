@@ -163,36 +163,49 @@ def test_prandtl_losses_are_the_textbook_factors_inside_and_outside_the_blade(nr
     assert np.all(bem._losses(neither, phi) == 1.0)
 
 
-def test_a_station_at_the_tip_carries_no_load(nrel):
-    """Prandtl's tip loss is zero at the tip: AeroDyn's BEMT sets a = 1, a′ = −1 where F = 0
-    (BEMTUncoupled's inductionFactors), the section meets no flow and carries nothing. A
+def test_a_station_at_the_tip_is_loaded_as_its_model_says(nrel):
+    """Prandtl's tip loss is zero at the tip, where the momentum balance has no root. A
     station at the tip radius, or within a deck's rounding of it (r-test's AeroDyn blades
-    end at BlSpn 61.4999 m on a 61.5 m blade: 1.6e-6 of R), is unloaded — with a floor on
-    F instead it met 105 m/s at the 5-MW's tip against 79 m/s a station inboard, and held
-    a flap damping larger than any other section's. A station 1 % inboard is loaded as
-    before; without tip loss the tip station is loaded too."""
+    end at BlSpn 61.4999 m on a 61.5 m blade: 1.6e-6 of R), carries no load in wtvib's own
+    models (a = 1, a′ = −1: the flow stopped there) — with a floor on F instead it met
+    105 m/s at the 5-MW's tip against 79 m/s a station inboard, and held a flap damping
+    larger than any other section's. Read from an AeroDyn deck it carries what AeroDyn's
+    BEMT gives its blade's last node, whose inductions it fixes at a = 1, a′ = 0 (BEMT.f90,
+    FixedInductions: the node's tip-loss constant is 0 by construction): the rotation's
+    speed alone at φ = 0, the lift at α = −θ (OpenFAST 5 on r-test's AeroDyn fixture,
+    settled: its last node at a = 1, a′ = 0, W = 79.7 m/s = Ω·r, 2.3 kN/m normal to the
+    plane). A station 1 % inboard is loaded as before; without tip loss the tip station
+    is loaded too."""
     import dataclasses
 
     r = bem.rotor(nrel)
     assert r.tip_loss and r.radius[-1] == pytest.approx(r.tip_radius, rel=1e-5)
+    assert r.fixed_tip_induction  # an AeroDyn deck
     wind = np.array([8.0, 14.0])
     omega = np.full(2, 12.1 * math.pi / 30)
-    sol = bem.solve(r, wind, omega, np.radians([0.0, 8.0]))
+    pitch = np.radians([0.0, 8.0])
+    sol = bem.solve(r, wind, omega, pitch)
+    assert np.all(sol.a[:, -1] == 1.0) and np.all(sol.a_t[:, -1] == 0.0)
+    assert np.all(sol.phi[:, -1] == 0.0)
+    np.testing.assert_allclose(sol.w[:, -1], omega * r.radius[-1], rtol=1e-12)
+    np.testing.assert_allclose(sol.alpha[:, -1], -(r.twist[-1] + pitch), rtol=1e-12)
+    own = dataclasses.replace(r, fixed_tip_induction=False)  # wtvib's own models
+    sol = bem.solve(own, wind, omega, pitch)
     assert np.all(sol.w[:, -1] == 0.0) and np.all(sol.a[:, -1] == 1.0)
     assert np.all(sol.w[:, -2] > 50.0)  # the station inboard, loaded
     # the thrust: the trapezoid of the sections' loads, the tip's zero
-    q = 0.5 * r.rho * sol.w**2 * r.chord
+    q = 0.5 * own.rho * sol.w**2 * own.chord
     f_n = q * (sol.cl * np.cos(sol.phi) + sol.cd * np.sin(sol.phi))
     assert f_n[:, -1] == pytest.approx(np.zeros(2), abs=0.0)
-    np.testing.assert_allclose(sol.thrust, r.blades * np.trapezoid(f_n, r.radius, axis=1))
-    rounded = dataclasses.replace(r, tip_radius=float(r.radius[-1]) * (1 + 5e-5))
+    np.testing.assert_allclose(sol.thrust, own.blades * np.trapezoid(f_n, own.radius, axis=1))
+    rounded = dataclasses.replace(own, tip_radius=float(own.radius[-1]) * (1 + 5e-5))
     assert rounded.at_tip[-1] and not rounded.at_tip[-2]
-    inboard = dataclasses.replace(r, tip_radius=float(r.radius[-1]) * 1.01)
+    inboard = dataclasses.replace(own, tip_radius=float(own.radius[-1]) * 1.01)
     assert not inboard.at_tip.any()
-    assert np.all(bem.solve(inboard, wind, omega, np.zeros(2)).w[:, -1] > 50.0)
-    free = dataclasses.replace(r, tip_loss=False)
+    assert np.all(bem.solve(inboard, wind, omega, pitch).w[:, -1] > 50.0)
+    free = dataclasses.replace(own, tip_loss=False)
     assert not free.at_tip.any()
-    assert np.all(bem.solve(free, wind, omega, np.zeros(2)).w[:, -1] > 50.0)
+    assert np.all(bem.solve(free, wind, omega, pitch).w[:, -1] > 50.0)
 
 
 def test_momentum_theory_gives_the_induction_in_both_of_its_paths():

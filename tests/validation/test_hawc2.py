@@ -509,7 +509,7 @@ def test_the_iea22_edge_damping_near_rated_is_wtvib_s_gap(iea22, hs2_iea22, open
     its modes) — and where OpenFAST's blade is rigid in torsion too (ElastoDyn: the NREL
     5-MW at 8 m/s, test_rtest_models.test_the_aerodynamic_damping_is_openfasts_within_its_
     wake_model, and trimmed at 8–20 m/s, rated included, test_openfast_sweep.py), wtvib's
-    edge damping is OpenFAST's within −23 … +25 % — at rated 0.024 / 0.023: the gap is
+    edge damping is OpenFAST's within −32 … +12 % — at rated 0.025 / 0.023: the gap is
     the blades' twist. OpenFAST's numbers
     here are a BeamDyn model's linearised before its frame fix (OpenFAST issue #3394, which
     measured the IEA-22's modes drooping up to 8 % at rated speed; wtvib turns a .lin's

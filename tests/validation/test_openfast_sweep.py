@@ -12,13 +12,14 @@ induction in equilibrium with the motion (BEMT without dynamic wake), no tower i
 one model, two codes. ElastoDyn's blades do not twist, nor do wtvib's modes.
 
 Measured at OpenFAST's operating points (wtvib / OpenFAST), the backward and forward
-edgewise whirls: 0.016 / 0.016, 0.014 / 0.014 at 8 m/s; 0.021 / 0.020, 0.016 / 0.016 at
-10 m/s; 0.023 / 0.022, 0.018 / 0.017 at 11 m/s; 0.024 / 0.023, 0.019 / 0.018 at rated
-(11.4 m/s); 0.010 / 0.013, 0.009 / 0.008 at 16 m/s; 0.012 / 0.012, 0.010 / 0.008 at 20 m/s.
-The flap family (ζ 0.46–0.82) within −3 … +5 %. This is the third code for the near-rated
-edge damping of the IEA-22 (test_hawc2.py: wtvib 1.8–3.4 times OpenFAST's BeamDyn model
-and HAWC2 at 10–12 m/s): on a turbine whose blades do not twist, wtvib's edge damping at
-rated is OpenFAST's.
+edgewise whirls: 0.016 / 0.016, 0.014 / 0.014 at 8 m/s; 0.021 / 0.020, 0.017 / 0.016 at
+10 m/s; 0.024 / 0.022, 0.018 / 0.017 at 11 m/s; 0.025 / 0.023, 0.019 / 0.018 at rated
+(11.4 m/s); 0.009 / 0.013, 0.008 / 0.008 at 16 m/s; 0.010 / 0.012, 0.009 / 0.008 at 20 m/s
+— with AeroDyn's last blade node loaded as AeroDyn loads it (before, left unloaded: 0.010
+/ 0.013 at 16 m/s, 0.010 / 0.008 at 20 m/s). The flap family (ζ 0.46–0.82) within
+−3 … +5 %. This is the third code for the near-rated edge damping of the IEA-22
+(test_hawc2.py: wtvib 1.8–3.4 times OpenFAST's BeamDyn model and HAWC2 at 10–12 m/s): on a
+turbine whose blades do not twist, wtvib's edge damping at rated is OpenFAST's.
 """
 
 import gzip
@@ -115,7 +116,11 @@ def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
         if name.startswith("blade.flap1"):  # ζ 0.45–0.82: within 8 %
             assert zeta == pytest.approx(z, rel=0.08), (case, name, zeta, z)
         elif name in ("blade.edge1.backward", "blade.edge1.forward"):  # ζ 0.008–0.021
-            assert 0.7 <= zeta / z <= 1.35, (case, name, zeta, z)
+            # measured −32 … +12 %: at 16 m/s the backward whirl 0.68 of OpenFAST's (0.80
+            # while wtvib left AeroDyn's last node unloaded, which OpenFAST loads: its own
+            # whirls damp 1.13 times as much without it, test_rtest_models.
+            # test_aerodyn_loads_its_blades_last_node), the forward at 20 m/s +12 % (+23 %)
+            assert 0.65 <= zeta / z <= 1.2, (case, name, zeta, z)
     assert checked >= 10, checked
 
 

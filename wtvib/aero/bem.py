@@ -8,8 +8,8 @@ the inflow angle φ alone, after S. A. Ning, "A simple solution method for the b
 momentum equations with guaranteed convergence", Wind Energy 17 (2014) 1327–1345: one
 residual R(φ) with a bracketed root, found by bisection for all stations and operating
 points at once (no iteration that can fail to converge). A station at the tip, where
-Prandtl's tip loss is zero, carries no load (AeroDyn's BEMT: a = 1, a′ = −1 where F = 0;
-:attr:`Rotor.at_tip`).
+Prandtl's tip loss is zero, carries no load — or, read from an AeroDyn deck, what AeroDyn's
+BEMT gives its last node (a = 1, a′ = 0, loaded at φ = 0; :attr:`Rotor.at_tip`).
 
 The controller's steady schedule (Jonkman et al. 2009 §7): variable speed holds the optimal
 tip-speed ratio between the minimum and rated rotor speed (region 2), then rated speed;
@@ -80,6 +80,8 @@ class Rotor:
     #: the blades' steady twist under their aerodynamic moment (:mod:`wtvib.aero.torsion`);
     #: None: rigid in torsion
     torsion: "Torsion | None" = None
+    #: a station at the tip loaded as AeroDyn loads its last node (:attr:`at_tip`)
+    fixed_tip_induction: bool = False
 
     def polar(self, alpha: Array) -> tuple[Array, Array]:
         """C_L, C_D at angles of attack ``alpha`` [rad], shaped (…, S) (a non-finite angle
@@ -136,9 +138,14 @@ class Rotor:
     @functools.cached_property
     def at_tip(self) -> NDArray[np.bool_]:
         """The stations at the blade's tip (within :data:`TIP_ROUNDING` of the tip radius,
-        a deck's rounding) where Prandtl's tip loss is on: F = 0 there, the section carries
-        no load (AeroDyn's BEMT: a = 1, a′ = −1 where F = 0) — its momentum balance has no
-        root in that limit, and a floor on F leaves it an arbitrary load."""
+        a deck's rounding) where Prandtl's tip loss is on: F = 0 there, and the momentum
+        balance has no root in that limit (a floor on F leaves an arbitrary load). Such a
+        section carries no load (a = 1, a′ = −1: the flow stopped there) — or, with
+        :attr:`fixed_tip_induction`, what AeroDyn's BEMT gives its blade's last node, whose
+        inductions it fixes at a = 1, a′ = 0 (BEMT.f90, ``FixedInductions``): the section
+        meets the rotation's speed alone, at φ = 0, and carries that lift and drag; with
+        the induction in equilibrium the node's own motion then leaves its inflow angle at
+        0 (a stays 1), with the induction frozen it moves it."""
         if not self.tip_loss:
             return np.zeros(len(self.radius), dtype=bool)
         return np.asarray(self.radius >= self.tip_radius * (1 - TIP_ROUNDING))
@@ -210,6 +217,7 @@ def _rotor(spec: Spec) -> Rotor:
         if aero.dynamic_stall
         else None,
         twisting,
+        aero.fixed_tip_induction,
     )
 
 
@@ -532,9 +540,15 @@ def _solve(
     if not np.all(found):
         cl, cd = r.polar(phi - theta)
     tip = r.at_tip
-    if tip.any():  # F = 0: the flow stopped at the section, no load (Rotor.at_tip)
+    if tip.any():  # F = 0 (Rotor.at_tip)
         a = np.where(tip, 1.0, a)
-        a_t = np.where(tip, -1.0, a_t)
+        if r.fixed_tip_induction:  # AeroDyn's last node: a′ = 0, loaded at φ = 0
+            a_t = np.where(tip, 0.0, a_t)
+            phi = np.where(tip, 0.0, phi)
+            cl_tip, cd_tip = r.polar(phi - theta)
+            cl, cd = np.where(tip, cl_tip, cl), np.where(tip, cd_tip, cd)
+        else:  # the flow stopped at the section: no load
+            a_t = np.where(tip, -1.0, a_t)
     u_n = axial * (1 - a)
     u_t = spin * (1 + a_t)
     w = np.hypot(u_n, u_t)

@@ -291,6 +291,7 @@ def aerodynamics(
     stations["airfoil"] = [files[i - 1].stem for i in ids]
     rho = ad.num("AirDens", "AirDens(1)", default=1.225)
     key = next((k for k in ("AirDens", "AirDens(1)") if k in ad.values), None)
+    tip_loss = ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True
     block = {
         "air_density_kg_m3": {
             "value": rho,
@@ -300,8 +301,12 @@ def aerodynamics(
             if key is not None
             else "no AirDens in the AeroDyn file: 1.225 kg/m³ (sea level, 15 °C)",
         },
-        "tip_loss": ad.text("TipLoss").lower() in ("true", "t") if "TipLoss" in ad.values else True,
+        "tip_loss": tip_loss,
         "hub_loss": ad.text("HubLoss").lower() in ("true", "t") if "HubLoss" in ad.values else True,
+        # AeroDyn's BEMT fixes the inductions of the blade's last node (its tip-loss
+        # constant is 0 there by construction) at a = 1, a′ = 0 and loads it (BEMT.f90,
+        # FixedInductions; BEMTUncoupled.f90)
+        "fixed_tip_induction": tip_loss,
         "shed_wake": shed_wake(ad),
         "dynamic_stall": model in SEPARATION_UA,
         "induction": induction(ad)[0],

@@ -241,6 +241,14 @@ class Aerodynamics(_Strict):
     control: Control = Field(default_factory=Control)
     tip_loss: bool = Field(True, description="Prandtl's tip-loss factor. [-]")
     hub_loss: bool = Field(True, description="Prandtl's hub-loss factor. [-]")
+    fixed_tip_induction: bool = Field(
+        False,
+        description="How a station at the tip, where Prandtl's tip loss vanishes, is "
+        "loaded: false — as the loss says, not at all (the flow stopped there); true — as "
+        "AeroDyn's BEMT loads the blade's last node (its inductions fixed at a = 1, a′ = 0: "
+        "the section meets the rotation's speed alone, at φ = 0, and carries that lift; "
+        "read from an AeroDyn deck with TipLoss on). [-]",
+    )
     shed_wake: bool = Field(
         True,
         description="Lag the lift behind the angle of attack by the shed wake (Jones's "
