@@ -212,7 +212,9 @@ def _sections(spec: Spec) -> Sections:
         g = inflow_response(r, sol)
     elif r.fixed_tip_induction and r.at_tip.any():
         # AeroDyn's last node keeps a = 1 whatever its dynamic wake does (its DBEMT
-        # skips the node): its normal inflow stays 0, the in-plane follows the motion
+        # skips the node): its normal inflow stays 0, the in-plane follows the motion.
+        # (A wake frozen for linearisation, DBEMT_Mod −1, freezes the node's induced
+        # velocity too and lets the node's motion turn its flow: read as a dynamic wake.)
         g = np.broadcast_to(np.eye(2), (*sol.phi.shape, 2, 2)).copy()
         g[:, r.at_tip] = np.diag([0.0, 1.0])
     else:

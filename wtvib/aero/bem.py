@@ -144,8 +144,9 @@ class Rotor:
         :attr:`fixed_tip_induction`, what AeroDyn's BEMT gives its blade's last node, whose
         inductions it fixes at a = 1, a′ = 0 (BEMT.f90, ``FixedInductions``): the section
         meets the rotation's speed alone, at φ = 0, and carries that lift and drag; with
-        the induction in equilibrium the node's own motion then leaves its inflow angle at
-        0 (a stays 1), with the induction frozen it moves it."""
+        the induction in equilibrium or a dynamic wake the node's own motion then leaves
+        its inflow angle at 0 (a stays 1). AeroDyn fixes a node at the hub likewise where
+        the hub loss is on; left as it is here (the root's speed is small)."""
         if not self.tip_loss:
             return np.zeros(len(self.radius), dtype=bool)
         return np.asarray(self.radius >= self.tip_radius * (1 - TIP_ROUNDING))
