@@ -14,8 +14,9 @@ variant                    BldNodes    CompAero  what it shows
 ``n17_structure``          17          0         the same without AeroDyn: the blade alone
 ``n3_structure``           3 (r-test)  0         r-test's fixture without AeroDyn
 ``settled``                17          2         ``n17`` linearised at 60 s, not 1.1 s: the
-                                                 blades settled (three blades only)
-``settled_qs``             17          2         … its aerofoils quasi-steady (UA_Mod 0)
+                                                 blades settled (both fixtures)
+``settled_qs``             17          2         … its aerofoils quasi-steady (UA_Mod 0;
+                                                 the three-bladed fixture, as below)
 ``settled_qs_frozen``      17          2         … and its wake frozen (DBEMT_Mod −1)
 ``settled_qs_frozen_tip``  17          2         … and its last node's chord 1 mm
 =========================  ==========  ========  ======================================
@@ -76,7 +77,7 @@ def make(r_test: Path, out: Path, case: str, variant: str) -> Path:
             text = setv(text, key, "60.0")
         fst.write_text(text)
         ad = d / "AD.dat"
-        text = ad.read_text()
+        text = ad.read_text()  # the AeroDyn file's name is the same in both fixtures
         for key, value in SETTLED[variant].items():
             text = setv(text, key, value)
         ad.write_text(text)
@@ -106,3 +107,4 @@ if __name__ == "__main__":
             print(make(Path(sys.argv[1]), Path(sys.argv[2]), c, v))
     for v in SETTLED:
         print(make(Path(sys.argv[1]), Path(sys.argv[2]), CASES[0], v))
+    print(make(Path(sys.argv[1]), Path(sys.argv[2]), CASES[1], "settled"))
