@@ -893,21 +893,23 @@ def _platform_counted(text: str, platform: Mapping[str, int]) -> str:
 PAIRED = 1.6
 
 
-def modes(spec: Spec, isolated: Mapping[str, float] | None = None) -> list[Mode]:
+def modes(spec: Spec, isolated: Mapping[str, Mode] | None = None) -> list[Mode]:
     """Coupled modes (ids ``system.<name>``) with their fixed-frame curves over rotor speed;
-    ``isolated``: the isolated modes' frequencies by id (for :data:`PAIRED`).
+    ``isolated``: the isolated modes by id (their frequencies for :data:`PAIRED`).
 
-    Three or more blades: the rotating sweep in the spec's rotating condition; two blades:
-    the parked modes only (periodic system; the Floquet check covers rotation).
+    Three or more blades: the rotating sweep in the spec's rotating condition; one or two
+    blades: the parked modes (periodic system; the Floquet check covers rotation), a blade
+    mode among them stiffened over speed as its isolated blade mode (:func:`_turning`).
     """
     if not applies(spec):
         return []
     assert spec.coupled is not None
     cond = spec.coupled.rotating_condition
     model = build(spec, cond)
-    known = isolated or {}
+    given = isolated or {}
+    known = {k: m.frequency_hz for k, m in given.items()}
     if spec.rotor.blades < 3:
-        return _parked_modes(spec, model, cond, known)
+        return [_turning(m, cond, given) for m in _parked_modes(spec, model, cond, known)]
     return _rotating_modes(spec, model, cond, known)
 
 
@@ -1352,19 +1354,15 @@ def default_damping(spec: Spec) -> Damping:
 def build_modes(spec: Spec, built: Mapping[str, list[Mode]]) -> list[Mode]:
     if spec.results is not None:  # another tool's whole-turbine modes, in the model's place
         return imported.modes(spec, "fixed")
-    isolated = {m.id: m for ms in built.values() for m in ms}
-    found = modes(spec, {k: m.frequency_hz for k, m in isolated.items()})
-    if spec.rotor.blades >= 3:
-        return found
-    return [_turning(m, isolated) for m in found]
+    return modes(spec, {m.id: m for ms in built.values() for m in ms})
 
 
-def _turning(mode: Mode, isolated: Mapping[str, Mode]) -> Mode:
+def _turning(mode: Mode, condition: str, isolated: Mapping[str, Mode]) -> Mode:
     """A one- or two-bladed rotor's parked coupled blade mode over rotor speed: its parked
     frequency stiffened as the isolated blade mode of its family is (:class:`Stiffened`),
     said in its condition. Other modes (the tower's, the drive train's) stay as parked."""
     name = mode.id.removeprefix("system.")
-    base = isolated.get("blade." + name.split(".")[1]) if name.startswith("blade.") else None
+    base = isolated.get(isolated_id(name, condition)) if name.startswith("blade.") else None
     if base is None or base.curve is None:
         return mode
     return replace(
