@@ -308,13 +308,20 @@ def decks(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return root
 
 
-def _openfast(case: str, folder: Path) -> ol.PointModes:
+def _lins(pattern: str, folder: Path) -> list[ol.LinFile]:
+    """The stored ``.lin.gz`` files of tests/data matching ``pattern``, unpacked into
+    ``folder`` (made where missing) and read, in name order."""
+    folder.mkdir(exist_ok=True)
     files = []
-    for gz in sorted((DATA / "openfast_lin").glob(f"{case}.*.lin.gz")):
+    for gz in sorted(DATA.glob(pattern)):
         path = folder / gz.name.removesuffix(".gz")
         path.write_bytes(gzip.decompress(gz.read_bytes()))
         files.append(ol.read(path))
-    return ol.operating_point(files)[0]
+    return files
+
+
+def _openfast(case: str, folder: Path) -> ol.PointModes:
+    return ol.operating_point(_lins(f"openfast_lin/{case}.*.lin.gz", folder))[0]
 
 
 def _wtvib(report: audit.Report, rpm: float, wind: float | None) -> dict[str, float]:
@@ -390,12 +397,7 @@ SPAR = "5MW_OC3Spar_Linear"
 def _over_a_revolution(folder: Path) -> ol.PointModes:
     """OpenFAST's linearisation of r-test's spar deck at 12 azimuths over a revolution
     (tests/data/openfast_spar36, SOURCES.md there), through wtvib's MBC3."""
-    folder.mkdir()
-    files = []
-    for gz in sorted((DATA / "openfast_spar36").glob(f"{SPAR}.*.lin.gz")):
-        path = folder / gz.name.removesuffix(".gz")
-        path.write_bytes(gzip.decompress(gz.read_bytes()))
-        files.append(ol.read(path))
+    files = _lins(f"openfast_spar36/{SPAR}.*.lin.gz", folder)
     assert len(files) == 12
     return ol.operating_point(files)[0]
 
@@ -781,10 +783,10 @@ def test_the_fixtures_swing_moves_openfasts_damping_little(tmp_path):
     (tests/data/openfast_fixtures: 17 ElastoDyn nodes both), damps the flap modes within
     5 % of what it does at 1.1 s (measured +3.7, +4.0, +4.3 %): the swing moves OpenFAST's
     damping little, and the fixture's damping is a steady point's after all."""
-    early = _fixture("Fake5MW_AeroLin_B3_UA6_n17", tmp_path)
-    late = _fixture("Fake5MW_AeroLin_B3_UA6_settled", tmp_path)
+    points = {}
     for stem, swinging in (("n17", True), ("settled", False)):
-        lin = ol.read(tmp_path / f"Fake5MW_AeroLin_B3_UA6_{stem}.1.lin")
+        (lin,) = _lins(f"openfast_fixtures/Fake5MW_AeroLin_B3_UA6_{stem}.1.lin.gz", tmp_path)
+        points[stem] = ol.operating_point([lin])[0]
         lay = ol.layout(lin.states, lin.path, lin.rotor_speed, lin.a)
         assert lin.rates is not None
         flap = [float(lin.rates[i]) for i in lay.q if "DOF_BF" in lin.states[i].description]
@@ -793,8 +795,8 @@ def test_the_fixtures_swing_moves_openfasts_damping_little(tmp_path):
             assert all(-7.5 <= v <= -4.5 for v in flap), flap
         else:
             assert all(abs(v) <= 1.0 for v in flap), flap
-    then = dict(zip(early.names, early.damping_ratio, strict=True))
-    for name, zeta in zip(late.names, late.damping_ratio, strict=True):
+    then = dict(zip(points["n17"].names, points["n17"].damping_ratio, strict=True))
+    for name, zeta in zip(points["settled"].names, points["settled"].damping_ratio, strict=True):
         assert zeta == pytest.approx(then[name], rel=0.05), (name, zeta, then[name])
 
 
@@ -842,11 +844,7 @@ def test_aerodyn_loads_its_blades_last_node(decks, tmp_path):
         ("deck", "openfast_sweep/ED_16.*"),
         ("tip", "openfast_fixtures/ED_16_tip.*"),
     ):
-        files = []
-        for gz in sorted((DATA).glob(f"{glob}.lin.gz")):
-            path = tmp_path / f"{name}_{gz.name.removesuffix('.gz')}"
-            path.write_bytes(gzip.decompress(gz.read_bytes()))
-            files.append(ol.read(path))
+        files = _lins(f"{glob}.lin.gz", tmp_path / name)
         assert len(files) == 12
         point = ol.operating_point(files)[0]
         theirs[name] = dict(zip(point.names, point.damping_ratio, strict=True))
@@ -976,10 +974,7 @@ def test_openfasts_semi_pitch_is_in_its_structures_states(tmp_path):
     states (94 of its 138), once named as the cause; the eigenvalues of its A matrix on
     ElastoDyn's 44 states alone put the pitch and roll at 0.0472 / 0.0474 Hz, within 1 % of
     the whole system's 0.0469 / 0.0471 (measured)."""
-    gz = DATA / "openfast_lin" / "5MW_OC4Semi_Linear.1.lin.gz"
-    path = tmp_path / gz.name.removesuffix(".gz")
-    path.write_bytes(gzip.decompress(gz.read_bytes()))
-    lin = ol.read(path)
+    (lin,) = _lins("openfast_lin/5MW_OC4Semi_Linear.1.lin.gz", tmp_path)
     ed = [i for i, s in enumerate(lin.states) if s.description.startswith("ED ")]
     assert len(ed) == 44 and len(lin.states) == 138
 
@@ -1001,10 +996,7 @@ def test_openfast_5_pitches_the_semi_as_wtvib_does(decks, tmp_path):
     +0.3 %), where r-test's stored linearisation of the same deck has them 20 % higher
     (EXCEPTIONS) — but the tower's second pair, ElastoDyn's assumed shapes (_OC4, held as
     against r-test's: measured −6.0 % and −17.2 %)."""
-    gz = DATA / "openfast_oc4" / "5MW_OC4Semi_Linear.1.lin.gz"
-    path = tmp_path / gz.name.removesuffix(".gz")
-    path.write_bytes(gzip.decompress(gz.read_bytes()))
-    ref = ol.operating_point([ol.read(path)])[0]
+    ref = ol.operating_point(_lins("openfast_oc4/5MW_OC4Semi_Linear.1.lin.gz", tmp_path))[0]
     case = "5MW_OC4Semi_Linear"
     spec = importers.load(
         decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
@@ -1029,10 +1021,7 @@ def test_openfast_5_pitches_the_semi_as_wtvib_does(decks, tmp_path):
 def _fixture(name: str, folder: Path) -> ol.PointModes:
     """OpenFAST 5's linearisation of one AeroDyn fixture variant (tests/data/openfast_fixtures,
     SOURCES.md there), through wtvib's MBC3."""
-    gz = DATA / "openfast_fixtures" / f"{name}.1.lin.gz"
-    path = folder / gz.name.removesuffix(".gz")
-    path.write_bytes(gzip.decompress(gz.read_bytes()))
-    return ol.operating_point([ol.read(path)])[0]
+    return ol.operating_point(_lins(f"openfast_fixtures/{name}.1.lin.gz", folder))[0]
 
 
 def test_the_fixtures_flap_modes_are_elastodyns_three_blade_nodes(decks, tmp_path):
