@@ -16,6 +16,7 @@ stall-induced vibrations", Wind Energy 6 (2003) 179–195 (whirl naming).
 
 import math
 import re
+from collections import Counter
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any, Protocol
@@ -891,8 +892,10 @@ def sweep(model: "Model", speeds: Array, count: int = MODES_KEPT) -> Sweep:
     by_mode = tuple(tuple(row[j] for row in path.whirl) for j in range(path.kept))
     by_part = tuple(tuple(row[j] for row in path.parts) for j in range(path.kept))
     names = _in_operation(path.first.names, by_mode, by_part)
+    # the standstill description of the curve whose standstill name each now has
+    owner = {n: path.first.descriptions[i] for i, n in enumerate(path.first.names)}
     texts = tuple(
-        _described(a, b, n, n0, rpm)
+        _described(a, b, n, n0, rpm, owner.get(n, a))
         for a, b, n, n0 in zip(
             path.first.descriptions, path.last, names, path.first.names, strict=True
         )
@@ -917,15 +920,22 @@ _ORDINAL = re.compile(r"\b\d+(st|nd|rd|th) ")
 _SHARE = re.compile(r", \d+% .*$")
 
 
-def _described(standstill: str, top: str, name: str, first: str, rpm: str) -> str:
+def _described(
+    standstill: str, top: str, name: str, first: str, rpm: str, named: str | None = None
+) -> str:
     """A swept mode's description from what it is at standstill and at the top speed
     ``rpm``: one of them where they are the same mode; a cyclic mode named by its whirl in
     operation (``name`` ≠ its standstill name ``first``) says that whirl first, and what
-    it has become at the top speed where a veering gave it another's character."""
+    it has become at the top speed where a veering gave it another's character; a curve
+    that took a tower mode's name (:func:`_traded`) says that mode as it is at standstill
+    (``named``, the description of the curve whose name it was) first."""
     if _ORDINAL.sub("", standstill) == _ORDINAL.sub("", top):
         return f"{standstill} (coupled)"
     if name == first:
         return f"{standstill}; at {rpm}: {top} (coupled)"
+    if name.startswith("tower."):
+        lead = named if named is not None else name
+        return f"{lead}; at {rpm}: {top} (coupled; at standstill: {standstill})"
     family, _, coord = name.rpartition(".")
     whirl = coord.rstrip("0123456789")
     lead = re.sub(r"cyclic(\d*) \((tilt|yaw)\)", rf"cyclic\1, {whirl} whirl", standstill, count=1)
@@ -962,7 +972,12 @@ def _in_operation(
     5 rpm on, as OpenFAST names it at 12.1 rpm). So too a collective and a cyclic mode
     mixed at standstill (the windIO VolturnUS-S's first edgewise modes through the tower's
     side-side: its "collective" at 0.74 Hz is the forward whirl from 0.5 rpm on, its cyclic
-    (tilt) the collective). A pair both of one whirl keeps its names."""
+    (tilt) the collective). A pair both of one whirl keeps its names.
+
+    A tower mode and a blade mode can trade places so too (:func:`_traded`): the tower's
+    first fore-aft bending of the IEA-15 on its VolturnUS-S deck is, turning, the flap
+    backward whirl from 3 rpm on, and the curve that whirls backward at low speed is the
+    tower's bending at most speeds (OpenFAST 5 names them so at rated)."""
     out = list(names)
     wanted = {j: want for j in range(len(names)) if (want := _wanted(names[j], whirl[j], part[j]))}
     for _ in range(len(wanted)):  # a name one curve leaves may be the one another wants
@@ -972,7 +987,38 @@ def _in_operation(
                 out[j], moved = new, True
         if not moved:
             break
+    for j, k in _traded(out, whirl, part):
+        out[j], out[k] = out[k], out[j]
     return tuple(out)
+
+
+def _traded(
+    names: Sequence[str],
+    whirl: Sequence[Sequence[str | None]],
+    part: Sequence[Sequence[str]],
+) -> list[tuple[int, int]]:
+    """The tower and blade curves whose names are to be exchanged: a tower mode's curve
+    (``tower.fa1``) that is one blade mode's whirl (backward, forward or collective) at most
+    of the rotating speeds, where the curve holding that blade name is the tower's bending
+    in the same plane at most of them (no whirl: the tower holds more of its energy than
+    the rotor's pattern). Both must hold — one curve's change of character alone names
+    nothing anew."""
+    pairs = []
+    speeds = len(whirl[0]) - 1 if whirl else 0
+    for j, name in enumerate(names):
+        if not name.startswith("tower.") or speeds < 1:
+            continue
+        plane = name.rstrip("0123456789")
+        votes = [(p, w) for w, p in zip(whirl[j][1:], part[j][1:], strict=True) if w is not None]
+        for (family, kind), count in Counter(votes).items():
+            wanted = f"{family}.{kind}"
+            if count <= speeds / 2 or not family.startswith("blade.") or wanted not in names:
+                continue
+            k = names.index(wanted)
+            towered = [p for w, p in zip(whirl[k][1:], part[k][1:], strict=True) if w is None]
+            if len(towered) > speeds / 2 and plane in towered:
+                pairs.append((j, k))
+    return pairs
 
 
 def _wanted(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> str | None:
