@@ -927,7 +927,7 @@ def _described(
     ``rpm``: one of them where they are the same mode; a cyclic mode named by its whirl in
     operation (``name`` ≠ its standstill name ``first``) says that whirl first, and what
     it has become at the top speed where a veering gave it another's character; a curve
-    that took a tower mode's name (:func:`_traded`) says that mode as it is at standstill
+    that took a tower mode's name (:func:`_claims`) says that mode as it is at standstill
     (``named``, the description of the curve whose name it was) first."""
     if _ORDINAL.sub("", standstill) == _ORDINAL.sub("", top):
         return f"{standstill} (coupled)"
@@ -962,86 +962,96 @@ def _in_operation(
     """The sweep's curves named for what they are in operation: a cyclic rotor mode, named
     at standstill by the axis it turns the rotor about (``blade.flap1.cyclic_yaw``), is in
     the fixed frame a backward or a forward whirl once the rotor turns — named so
-    (``blade.flap1.backward``; ``backward2`` for the second cyclic harmonic) where that is
-    its whirl at most of the rotating speeds where it whirls at all (a speed where the
-    tower holds more of its energy than its cyclic pattern — a flap whirl coupled with the
-    tower's bending — does not vote), and after the blade mode (``part``) it is a whirl of
-    at those speeds: a veering that hands a curve from one blade mode to another at low
-    speed names it after what it is in operation (the OC3 decks with the nacelle free in
-    yaw: the first flap cyclic (yaw) mode at standstill is the edgewise backward whirl from
-    5 rpm on, as OpenFAST names it at 12.1 rpm). So too a collective and a cyclic mode
-    mixed at standstill (the windIO VolturnUS-S's first edgewise modes through the tower's
-    side-side: its "collective" at 0.74 Hz is the forward whirl from 0.5 rpm on, its cyclic
-    (tilt) the collective). A pair both of one whirl keeps its names.
+    (``blade.flap1.backward``; ``backward2`` for the second cyclic harmonic) — and a curve
+    that a veering hands from one mode to another is named after what it is at most of the
+    rotating speeds (:func:`_claims`): the OC3 decks with the nacelle free in yaw, whose
+    first flap cyclic (yaw) mode at standstill is the edgewise backward whirl from 5 rpm on,
+    as OpenFAST names it at 12.1 rpm; the windIO VolturnUS-S's first edgewise modes through
+    the tower's side-side (its "collective" at 0.74 Hz is the forward whirl from 0.5 rpm on,
+    its cyclic (tilt) the collective); the IEA-15 on its VolturnUS-S deck, whose tower
+    fore-aft bending at standstill is the flap backward whirl from 3 rpm on, and whose
+    curve that whirls backward at low speed is the tower's bending at most speeds (OpenFAST
+    5 names them so at rated). A pair both of one whirl keeps its names.
 
-    A tower mode and a blade mode can trade places so too (:func:`_traded`): the tower's
-    first fore-aft bending of the IEA-15 on its VolturnUS-S deck is, turning, the flap
-    backward whirl from 3 rpm on, and the curve that whirls backward at low speed is the
-    tower's bending at most speeds (OpenFAST 5 names them so at rated)."""
+    Each curve takes the first of its claims whose name is free, the first choices of all
+    curves before any second: a name one curve leaves may be the one another wants; a curve
+    that is the tower's bending in operation takes a tower name of that plane another curve
+    has left."""
     out = list(names)
-    wanted = {j: want for j in range(len(names)) if (want := _wanted(names[j], whirl[j], part[j]))}
-    for _ in range(len(wanted)):  # a name one curve leaves may be the one another wants
-        moved = False
-        for j, new in wanted.items():
-            if out[j] != new and new not in out:
-                out[j], moved = new, True
-        if not moved:
-            break
-    for j, k in _traded(out, whirl, part):
-        out[j], out[k] = out[k], out[j]
+    claims = [_claims(n, w, p) for n, w, p in zip(names, whirl, part, strict=True)]
+    for rank in range(max(map(len, claims), default=0)):
+        for _ in range(len(names)):
+            moved = False
+            for j, wanted in enumerate(claims):
+                if rank >= len(wanted) or any(_holds(c, out[j]) for c in wanted[:rank]):
+                    continue  # no such claim, or an earlier one holds
+                new = _free(wanted[rank], names, out)
+                if new is not None and new != out[j]:
+                    out[j], moved = new, True
+            if not moved:
+                break
     return tuple(out)
 
 
-def _traded(
-    names: Sequence[str],
-    whirl: Sequence[Sequence[str | None]],
-    part: Sequence[Sequence[str]],
-) -> list[tuple[int, int]]:
-    """The tower and blade curves whose names are to be exchanged: a tower mode's curve
-    (``tower.fa1``) that is one blade mode's whirl (backward, forward or collective) at most
-    of the rotating speeds, where the curve holding that blade name is the tower's bending
-    in the same plane at most of them (no whirl: the tower holds more of its energy than
-    the rotor's pattern). Both must hold — one curve's change of character alone names
-    nothing anew."""
-    pairs = []
-    speeds = len(whirl[0]) - 1 if whirl else 0
-    for j, name in enumerate(names):
-        if not name.startswith("tower.") or speeds < 1:
-            continue
-        plane = name.rstrip("0123456789")
-        votes = [(p, w) for w, p in zip(whirl[j][1:], part[j][1:], strict=True) if w is not None]
-        for (family, kind), count in Counter(votes).items():
-            wanted = f"{family}.{kind}"
-            if count <= speeds / 2 or not family.startswith("blade.") or wanted not in names:
-                continue
-            k = names.index(wanted)
-            towered = [p for w, p in zip(whirl[k][1:], part[k][1:], strict=True) if w is None]
-            if len(towered) > speeds / 2 and plane in towered:
-                pairs.append((j, k))
-    return pairs
+def _free(claim: str, names: Sequence[str], out: Sequence[str]) -> str | None:
+    """The name a claim may take now: the claimed name where no curve holds it; for a tower
+    plane (``tower.fa``), the first tower name of that plane a curve has left."""
+    if not claim.endswith(_PLANE):
+        return claim if claim not in out else None
+    left = [n for n in names if n.rstrip("0123456789") == claim and n not in out]
+    return left[0] if left else None
 
 
-def _wanted(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> str | None:
-    """The name a blade mode's curve has in operation (:func:`_in_operation`): the blade mode
-    and the kind — backward, forward, collective — it is at most of the rotating speeds
-    where it is a rotor mode; None where no kind holds most of them or it is not a blade
-    mode's."""
+#: A tower plane's claim (:func:`_claims`) ends so: ``tower.fa``, ``tower.ss``.
+_PLANE = (".fa", ".ss")
+
+
+def _holds(claim: str, name: str) -> bool:
+    """Whether a curve named ``name`` has what ``claim`` asks (a tower plane: any of its
+    names)."""
+    return claim == name or (claim.endswith(_PLANE) and name.rstrip("0123456789") == claim)
+
+
+def _claims(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> list[str]:
+    """What a curve named ``name`` at standstill is in operation, in order of preference
+    (:func:`_in_operation`): a blade mode's whirl (``blade.flap1.backward``) at most of the
+    rotating speeds; for a blade mode's curve, the tower's bending in one plane
+    (``tower.fa``, no whirl — the tower holds more of its energy than the rotor's pattern)
+    at most of them, then the whirl it has at most of the speeds where it whirls at all (a
+    flap whirl coupled with the tower's bending). None for a curve that stays what it is."""
+    speeds = len(whirl) - 1
     base, _, coord = name.rpartition(".")
-    if not base.startswith("blade.") or not coord.startswith(("cyclic", "collective")):
-        return None
+    blade = base.startswith("blade.") and coord.startswith(("cyclic", "collective"))
+    if speeds < 1 or not (blade or base == "tower"):
+        return []
     votes = [
         (p if p.startswith("blade.") else base, w)
         for w, p in zip(whirl[1:], part[1:], strict=True)
-        if w is not None
+        if w in ("backward", "forward", "collective")
     ]
-    for key in dict.fromkeys(votes):
-        family, kind = key
-        if kind in ("backward", "forward", "collective") and votes.count(key) > len(votes) / 2:
-            cyclic = coord.startswith("cyclic") and kind != "collective"
-            harmonic = coord.split("_")[0].removeprefix("cyclic") if cyclic else ""
-            new = f"{family}.{kind}{harmonic}"
-            return None if new == name else new
-    return None
+    out = []
+    for (family, kind), count in Counter(votes).most_common():
+        if count > speeds / 2 and family.startswith("blade."):
+            out.append(_whirl_name(family, kind, coord if blade else ""))
+    if not blade:
+        return [n for n in out if n != name]
+    towered = [p for w, p in zip(whirl[1:], part[1:], strict=True) if w is None]
+    planes = Counter(p for p in towered if p.startswith("tower.") and p.endswith(_PLANE))
+    if len(towered) > speeds / 2 and planes:
+        out.append(planes.most_common(1)[0][0])
+    whirling = sum(w is not None for w in whirl[1:])
+    for (family, kind), count in Counter(votes).most_common(1):
+        if count > whirling / 2:
+            out.append(_whirl_name(family, kind, coord))
+    return [n for n in dict.fromkeys(out) if n != name]
+
+
+def _whirl_name(family: str, kind: str, coord: str) -> str:
+    """``family``'s name as a ``kind`` whirl, the standstill coordinate ``coord``'s cyclic
+    harmonic kept (``cyclic2_yaw`` → ``backward2``)."""
+    cyclic = coord.startswith("cyclic") and kind != "collective"
+    harmonic = coord.split("_")[0].removeprefix("cyclic") if cyclic else ""
+    return f"{family}.{kind}{harmonic}"
 
 
 def at_speeds(model: "Model", sw: Sweep, omegas: Sequence[float], reduced: bool = True) -> "Path":
