@@ -935,6 +935,8 @@ def _described(
         return f"{standstill}; at {rpm}: {top} (coupled)"
     if name.startswith("tower."):
         lead = named if named is not None else name
+        if _ORDINAL.sub("", lead) == _SHARE.sub("", _ORDINAL.sub("", top)):
+            return f"{top} (coupled; at standstill: {standstill})"
         return f"{lead}; at {rpm}: {top} (coupled; at standstill: {standstill})"
     family, _, coord = name.rpartition(".")
     whirl = coord.rstrip("0123456789")
