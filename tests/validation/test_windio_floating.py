@@ -230,9 +230,9 @@ def test_the_volturnus_s_tower_bends_on_its_platform_s_added_inertia(tmp_path):
     fore-aft at 0.61 Hz coupled, its OpenFAST deck (IEAWindTask37/IEA-15-240-RWT,
     tests/data/openfast_decks/iea15_semi.tar.gz) at 0.47 Hz — OpenFAST 5's own linearisation
     of the deck too (0.4703: test_openfast_5_on_the_volturnus_s_deck_is_wtvib_s_model; Allen
-    et al. 2020, Table 8, has 0.496 for the tower before its 2021 redesign). Not the tower
-    nor the head: the deck's tower table put on the windIO turbine
-    moves it by under 1 %, the deck's head then by under 0.5 %. The platform: the windIO
+    et al. 2020, Table 8, has 0.496 for the tower before its 2021 redesign, the redesign's
+    target "around 0.49Hz"). Not the tower nor the head: the deck's tower table put on the
+    windIO turbine moves it by under 1 %, the deck's head then by under 0.5 %. The platform: the windIO
     file describes circular Ø 9.6 m pontoons, whose strip-theory added pitch inertia is
     7.2e9 kg·m² (RAFT's strip theory the same, test_hydrostatics_and_strip_theory_match_
     raft), where WAMIT's for the real flat pontoons (the deck) is 11.6e9; with the deck's
