@@ -232,12 +232,12 @@ def test_the_volturnus_s_tower_bends_on_its_platform_s_added_inertia(tmp_path):
     of the deck too (0.4703: test_openfast_5_on_the_volturnus_s_deck_is_wtvib_s_model; Allen
     et al. 2020, Table 8, has 0.496 for the tower before its 2021 redesign, the redesign's
     target "around 0.49Hz"). Not the tower nor the head: the deck's tower table put on the
-    windIO turbine moves it by under 1 %, the deck's head then by under 0.5 %. The platform: the windIO
-    file describes circular Ø 9.6 m pontoons, whose strip-theory added pitch inertia is
-    7.2e9 kg·m² (RAFT's strip theory the same, test_hydrostatics_and_strip_theory_match_
-    raft), where WAMIT's for the real flat pontoons (the deck) is 11.6e9; with the deck's
-    platform the windIO turbine's coupled fore-aft is the deck's within 3 % (measured
-    −2.5 %), its isolated tower within 0.5 %. The file's platform, not wtvib's reading of
+    windIO turbine moves it by under 1 %, the deck's head then by under 0.5 %. The platform:
+    the windIO file describes circular Ø 9.6 m pontoons, whose strip-theory added pitch
+    inertia is 7.2e9 kg·m² (RAFT's strip theory the same, test_hydrostatics_and_strip_
+    theory_match_raft), where WAMIT's for the real flat pontoons (the deck) is 11.6e9; with
+    the deck's platform the windIO turbine's coupled fore-aft is the deck's within 3 %
+    (measured −2.5 %), its isolated tower within 0.5 %. The file's platform, not wtvib's reading of
     it, keeps its tower from the deck's."""
     import tarfile
 

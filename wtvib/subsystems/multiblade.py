@@ -1020,7 +1020,7 @@ def _claims(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> list
     rotating speeds; for a blade mode's curve, the tower's bending in one plane
     (``tower.fa``, no whirl — the tower holds more of its energy than the rotor's pattern)
     at most of them, then the whirl it has at most of the speeds where it whirls at all (a
-    flap whirl coupled with the tower's bending). None for a curve that stays what it is."""
+    flap whirl coupled with the tower's bending). Empty for a curve that stays what it is."""
     speeds = len(whirl) - 1
     base, _, coord = name.rpartition(".")
     blade = base.startswith("blade.") and coord.startswith(("cyclic", "collective"))
