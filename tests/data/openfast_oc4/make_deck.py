@@ -3,7 +3,9 @@ r-test's ``5MW_OC4Semi_Linear`` (the NREL 5-MW on the OC4 DeepCwind semisubmersi
 ElastoDyn, ServoDyn, HydroDyn with WAMIT's matrices and state-space radiation, MAP++'s
 moorings, no AeroDyn) brought to OpenFAST 5.0's format and linearised as r-test does, once.
 
-    python tests/data/openfast_oc4/make_deck.py R_TEST/glue-codes/openfast OUT
+    python tests/data/openfast_oc4/make_deck.py R_TEST/glue-codes/openfast OUT [CASE]
+
+(``CASE``: ``5MW_OC4Semi_MD_Linear`` for the same turbine on MoorDyn's lines, made alike.)
 
 What changes from the r-test deck, and why:
 
@@ -56,20 +58,22 @@ def _fst(text: str) -> str:
     return text
 
 
-def make(r_test: Path, out: Path) -> Path:
-    case = out / "glue-codes" / "openfast" / CASE
-    shutil.copytree(r_test / CASE, case, dirs_exist_ok=True)
-    for name, change in (
-        (f"{CASE}.fst", _fst),
+def make(r_test: Path, out: Path, name: str = CASE) -> Path:
+    """The deck set ``name`` (r-test's ``5MW_OC4Semi_Linear``, or ``5MW_OC4Semi_MD_Linear``:
+    the same turbine on MoorDyn's lines, its MoorDyn file as r-test has it) in ``out``."""
+    case = out / "glue-codes" / "openfast" / name
+    shutil.copytree(r_test / name, case, dirs_exist_ok=True)
+    for file, change in (
+        (f"{name}.fst", _fst),
         (f"{STEM}_ElastoDyn.dat", _elastodyn5),
         (f"{STEM}_ServoDyn.dat", lambda t: _servodyn5(t, 0.0)),
         (f"{STEM}_HydroDyn.dat", _hydrodyn),
         ("SeaState.dat", _sea_state5),
     ):
-        path = case / name
+        path = case / file
         path.write_text(change(path.read_text()))
     return case
 
 
 if __name__ == "__main__":
-    print(make(Path(sys.argv[1]), Path(sys.argv[2])))
+    print(make(Path(sys.argv[1]), Path(sys.argv[2]), *sys.argv[3:4]))
