@@ -30,6 +30,34 @@ def test_free_is_the_operating_condition_without_a_grid_model(growian):
     assert "steady" in drivetrain.regimes(bare, "free")
 
 
+def test_a_generator_held_at_the_rotor_s_speed_is_locked_in_every_regime(tmp_path):
+    """A coupled model turning with its generator locked (an OpenFAST deck with ElastoDyn's
+    GenDOF off, read as OpenFAST models it): the clamped-end modes are the turbine's in
+    operation, judged in every regime, and the free-end modes no mode of it. (They were
+    judged the other way round: a deck's fixed-speed drive train judged at its idling
+    frequency, 1.81 Hz on r-test's BeamDyn 5-MW, where it turns at 0.62 Hz.) r-test's
+    5MW_Land_Linear_Aero deck (tests/data/openfast_decks/rtest_aero.tar.gz), its generator
+    free, then held."""
+    import tarfile
+
+    from tests.conftest import ROOT
+    from wtvib import importers
+
+    with tarfile.open(ROOT / "tests/data/openfast_decks/rtest_aero.tar.gz") as tar:
+        tar.extractall(tmp_path, filter="data")
+    case = "5MW_Land_Linear_Aero"
+    free = importers.load(tmp_path / "glue-codes/openfast" / case / f"{case}.fst")
+    assert free.coupled is not None and free.coupled.rotating_condition == "free"
+    assert drivetrain.regimes(free, "locked") == frozenset()
+    held = free.model_copy(
+        update={"coupled": free.coupled.model_copy(update={"rotating_condition": "locked"})}
+    )
+    assert drivetrain.regimes(held, "locked") == drivetrain.ALWAYS
+    assert drivetrain.regimes(held, "free") == frozenset()
+    judged = {m.id for m in audit.run(held).modes if m.judged and "drivetrain" in m.id}
+    assert "system.drivetrain1" in judged and not any(".free." in i for i in judged)
+
+
 def test_every_computed_mode_carries_its_condition(growian):
     modes = drivetrain.build_modes(growian, {"blade": []})
     assert {m.condition for m in modes} == set(drivetrain.CONDITIONS.values())

@@ -219,16 +219,33 @@ def fluid_coupling_damping(spec: Spec, shaft: ChainShaft) -> float:
     return float(torque / (shaft.fluid_coupling.rated_slip * omega))
 
 
+#: Every regime: the condition the turbine runs in throughout.
+ALWAYS = frozenset({"steady", "quick-pass", "overspeed", "start-up"})
+
+
+def held(spec: Spec) -> bool:
+    """Whether the generator is held at the rotor's speed while it turns — the coupled
+    model's rotating condition ``locked``, as an OpenFAST deck read as OpenFAST models it
+    with ElastoDyn's GenDOF off (a fixed-speed generator) has it: then the clamped-end
+    modes are the turning turbine's, in every regime, and the free-end modes are no mode of
+    it (its generator is never free)."""
+    return spec.coupled is not None and spec.coupled.rotating_condition == "locked"
+
+
 def regimes(spec: Spec, condition: str) -> frozenset[str]:
     """The operating regimes a generator condition exists in.
 
     With a grid (or converter) coupling the turbine runs on it and is free only while
     idling or after a grid loss (start-up, overspeed); without one, free *is* the operating
     condition (a torque-controlled generator the spec does not model), in every regime.
-    Locked (brake applied) exists in none: its modes are reported, never judged.
+    Locked (brake applied) exists in none: its modes are reported, never judged — but where
+    the generator is held at the rotor's speed (:func:`held`), locked is the condition in
+    every regime and free in none.
     """
+    if held(spec) and condition in ("free", "locked"):
+        return ALWAYS if condition == "locked" else frozenset()
     if condition == "free" and "grid" not in conditions(spec):
-        return frozenset({"steady", "quick-pass", "overspeed", "start-up"})
+        return ALWAYS
     return REGIMES[condition]
 
 
