@@ -50,7 +50,9 @@ class CoupledModel(_Strict):
     rotating_condition: Literal["locked", "free", "grid"] = Field(
         "free",
         description="Generator in the rotating sweep: free (converter, torque-controlled), "
-        "grid (the drivetrain.generator_model coupling), locked.",
+        "grid (the drivetrain.generator_model coupling), locked (held at the rotor's speed: "
+        "its clamped-end drive-train modes are the turning turbine's, judged in every "
+        "regime, and no free-end mode is).",
     )
 
 
