@@ -7,6 +7,11 @@ deck set OpenFAST linearised: the comparison is like for like. The decks are in
 ``tests/data/openfast_lin``, read by wtvib's MBC3 reader — which reproduces openfast_toolbox's
 independent MBC3 on every root of these files (test_openfast_lin.py) — and named by it.
 
+Where r-test's fetchable copy lacks a case's linearisation (5MW_OC4Semi_MD_Linear,
+5MW_Land_BD_Linear_Aero) or a reference needs another run (the fixtures' variants, the
+spar over a revolution, the IEA-15 VolturnUS-S deck), OpenFAST 5 linearised the deck for
+wtvib (tests/data/openfast_*, each with the script that made its deck and a SOURCES.md).
+
 Every OpenFAST mode below 10 Hz that wtvib's model has is held to 3 % (5 % above 2 Hz).
 Where wtvib and OpenFAST differ by more, the difference is traced to its physics, and a
 third, independent reference says which of the two is right (:data:`EXCEPTIONS`, each with
