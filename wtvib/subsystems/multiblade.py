@@ -920,9 +920,7 @@ _ORDINAL = re.compile(r"\b\d+(st|nd|rd|th) ")
 _SHARE = re.compile(r", \d+% .*$")
 
 
-def _described(
-    standstill: str, top: str, name: str, first: str, rpm: str, named: str | None = None
-) -> str:
+def _described(standstill: str, top: str, name: str, first: str, rpm: str, named: str) -> str:
     """A swept mode's description from what it is at standstill and at the top speed
     ``rpm``: one of them where they are the same mode; a cyclic mode named by its whirl in
     operation (``name`` ≠ its standstill name ``first``) says that whirl first, and what
@@ -934,10 +932,9 @@ def _described(
     if name == first:
         return f"{standstill}; at {rpm}: {top} (coupled)"
     if name.startswith("tower."):
-        lead = named if named is not None else name
-        if _ORDINAL.sub("", lead) == _SHARE.sub("", _ORDINAL.sub("", top)):
+        if _ORDINAL.sub("", named) == _SHARE.sub("", _ORDINAL.sub("", top)):
             return f"{top} (coupled; at standstill: {standstill})"
-        return f"{lead}; at {rpm}: {top} (coupled; at standstill: {standstill})"
+        return f"{named}; at {rpm}: {top} (coupled; at standstill: {standstill})"
     family, _, coord = name.rpartition(".")
     whirl = coord.rstrip("0123456789")
     lead = re.sub(r"cyclic(\d*) \((tilt|yaw)\)", rf"cyclic\1, {whirl} whirl", standstill, count=1)
@@ -1000,7 +997,7 @@ def _free(claim: str, names: Sequence[str], out: Sequence[str]) -> str | None:
     plane (``tower.fa``), the first tower name of that plane a curve has left."""
     if not claim.endswith(_PLANE):
         return claim if claim not in out else None
-    left = [n for n in names if n.rstrip("0123456789") == claim and n not in out]
+    left = [n for n in names if n not in out and _holds(claim, n)]
     return left[0] if left else None
 
 
@@ -1031,8 +1028,9 @@ def _claims(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> list
         for w, p in zip(whirl[1:], part[1:], strict=True)
         if w in ("backward", "forward", "collective")
     ]
+    tally = Counter(votes).most_common()
     out = []
-    for (family, kind), count in Counter(votes).most_common():
+    for (family, kind), count in tally:
         if count > speeds / 2 and family.startswith("blade."):
             out.append(_whirl_name(family, kind, coord if blade else ""))
     if not blade:
@@ -1042,7 +1040,7 @@ def _claims(name: str, whirl: Sequence[str | None], part: Sequence[str]) -> list
     if len(towered) > speeds / 2 and planes:
         out.append(planes.most_common(1)[0][0])
     whirling = sum(w is not None for w in whirl[1:])
-    for (family, kind), count in Counter(votes).most_common(1):
+    for (family, kind), count in tally[:1]:
         if count > whirling / 2:
             out.append(_whirl_name(family, kind, coord))
     return [n for n in dict.fromkeys(out) if n != name]
