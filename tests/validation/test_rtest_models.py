@@ -368,6 +368,48 @@ ALIASES.update(
 )
 
 
+#: The IEA-15 on its VolturnUS-S deck, linearised by OpenFAST 5 for wtvib (tests/data/
+#: openfast_iea15semi: the deck as it is, parked; with wtvib's polynomials, parked; and
+#: those turning at rated), its excused modes
+SEMI15_RUNS = {run: f"VolturnUS-S {run}" for run in ("deck", "shapes", "rated")}
+NOT_MODELLED.update(
+    {
+        (case, mode): why
+        for case in SEMI15_RUNS.values()
+        for mode, why in (
+            ("drivetrain1", "the free rotor's azimuth (GenDOF on, no torque): no oscillation"),
+            ("platform.heave", "the coupled model has no heave DOF: the platform model's"),
+            (
+                "platform.yaw",
+                "the coupled model turns the platform in yaw only where the "
+                "tower twists (no GJ here): the platform model's",
+            ),
+        )
+    }
+)
+EXCEPTIONS.update(
+    {
+        (SEMI15_RUNS["deck"], mode): (
+            lo,
+            hi,
+            "ElastoDyn's assumed shapes of the deck "
+            f"(wtvib shapes: {why}); OpenFAST with wtvib's polynomials in their place has "
+            f"wtvib's within 3 % (the shapes run). Measured {said}",
+        )
+        for mode, lo, hi, why, said in (
+            ("tower.fa2", -0.08, -0.04, "TwFAM2Sh implies −4.4 %", "−5.9 %"),
+            ("tower.ss2", -0.25, -0.20, "TwSSM2Sh implies +18.8 %", "−22.7 %"),
+            ("blade.edge1.collective", -0.04, -0.02, "BldEdgSh implies +2.1 %", "−3.2 %"),
+        )
+    }
+)
+# the third mode of the first flap family, 40–45 % tower fore-aft, parked: wtvib's flap
+# cyclic (tilt), OpenFAST's (by its largest share) the tower's fore-aft
+ALIASES.update(
+    {(SEMI15_RUNS[run], "tower.fa1_2"): "blade.flap1.cyclic_2" for run in ("deck", "shapes")}
+)
+
+
 @pytest.fixture(scope="module")
 def decks(tmp_path_factory: pytest.TempPathFactory) -> Path:
     root = tmp_path_factory.mktemp("rtest")
@@ -1164,37 +1206,28 @@ def semi15(tmp_path_factory: pytest.TempPathFactory) -> "importers.Spec":
     return importers.load(root / SEMI15, importers.ReadOptions(deck_dofs=True))
 
 
-def _semi15_openfast(name: str, folder: Path) -> dict[str, float]:
+def _semi15_openfast(name: str, folder: Path) -> tuple[dict[str, float], float]:
     """OpenFAST 5's linearisation ``name`` of the VolturnUS-S's structure
-    (tests/data/openfast_iea15semi, SOURCES.md there), its modes by wtvib's MBC3 names."""
+    (tests/data/openfast_iea15semi, SOURCES.md there): its natural frequencies by wtvib's
+    MBC3 names, and its rotor speed."""
     ref = ol.operating_point(_lins(f"openfast_iea15semi/{name}.*.lin.gz", folder))[0]
-    return {n: float(f) for n, f in zip(ref.names, ref.frequency_hz, strict=True) if f < 10}
+    return _natural(ref), ref.rpm
 
 
 def _semi15_parked(spec: "importers.Spec") -> dict[str, float]:
     """wtvib's parked coupled modes of the deck (the generator free, as the deck's GenDOF),
-    named as the .lin reader names OpenFAST's; the cyclic pairs as :func:`_pairs` has them.
-    The third mode of the first flap family, 40–45 % tower fore-aft, is wtvib's flap
-    cyclic (tilt) and OpenFAST's (by its largest share) ``tower.fa1_2``."""
+    named as the .lin reader names OpenFAST's."""
     from wtvib.subsystems import coupled
 
     parked = coupled.parked_named(coupled.build(spec, spec.coupled.rotating_condition))
-    ours = _pairs(dict(zip(parked.names, map(float, parked.frequency_hz), strict=True)))
-    ours["tower.fa1_2"] = ours.pop("blade.flap1.cyclic_2")
-    return ours
+    return dict(zip(parked.names, map(float, parked.frequency_hz), strict=True))
 
 
-def _semi15_held(ours: dict[str, float], theirs: dict[str, float], skip: tuple[str, ...]) -> int:
-    """Every OpenFAST mode but ``skip`` (and the rotor's azimuth) held to 3 % (5 % above
-    2 Hz); how many were."""
-    checked = 0
-    for name, f in theirs.items():
-        if name.startswith((*skip, "drivetrain", "platform.heave", "platform.yaw")):
-            continue  # the free rotor's azimuth; heave, yaw: the isolated platform's
-        diff = ours[name] / f - 1
-        assert abs(diff) <= (0.03 if f <= 2 else 0.05), (name, f, ours[name], f"{diff:+.1%}")
-        checked += 1
-    return checked
+def _still_listed(case: str, found: dict[str, float]) -> bool:
+    """Whether every mode the lists name for ``case`` is still one of OpenFAST's (``found``):
+    an excused difference that has gone fails (as test_every_exception_and_omission_is_
+    still_needed for r-test's own linearisations)."""
+    return {k[1] for k in (*EXCEPTIONS, *NOT_MODELLED, *ALIASES) if k[0] == case} <= set(found)
 
 
 def test_openfast_5_on_the_volturnus_s_deck_is_wtvib_s_model(semi15, tmp_path):
@@ -1221,11 +1254,9 @@ def test_openfast_5_on_the_volturnus_s_deck_is_wtvib_s_model(semi15, tmp_path):
     from wtvib.subsystems import tower
 
     ours = _semi15_parked(semi15)
-    deck = _semi15_openfast("deck", tmp_path)
-    assert _semi15_held(ours, deck, skip=("tower.fa2", "tower.ss2", "blade.edge1.coll")) == 14
-    # the deck's edgewise polynomial implies +2.1 % on the blade alone (wtvib shapes): its
-    # collective edge (with the free rotor) 1.758 Hz, wtvib 1.701, −3.2 %
-    assert -0.04 < ours["blade.edge1.collective"] / deck["blade.edge1.collective"] - 1 < -0.02
+    deck, rpm = _semi15_openfast("deck", tmp_path)
+    assert _held_to(SEMI15_RUNS["deck"], ours, deck, rpm) == 17
+    assert _still_listed(SEMI15_RUNS["deck"], deck)
     # heave and yaw, which the coupled model has not (no heave DOF, a tower without GJ),
     # from wtvib's platform model: OpenFAST 0.0504 / 0.0116 Hz
     isolated = {m.id: m.frequency_hz for m in tower.structural_modes(semi15)}
@@ -1233,9 +1264,9 @@ def test_openfast_5_on_the_volturnus_s_deck_is_wtvib_s_model(semi15, tmp_path):
         f = deck[f"platform.{motion}"]
         assert isolated[f"tower.platform.{motion}"] == pytest.approx(f, rel=0.03), motion
     assert deck["tower.fa1"] == pytest.approx(0.4703, rel=1e-3)  # OpenFAST's, as stored
-    assert deck["tower.ss2"] / ours["tower.ss2"] > 1.2  # the deck's second side-side shape
-    shapes = _semi15_openfast("shapes", tmp_path)
-    assert _semi15_held(ours, shapes, skip=()) == 17
+    shapes, rpm = _semi15_openfast("shapes", tmp_path)
+    assert _held_to(SEMI15_RUNS["shapes"], ours, shapes, rpm) == 17
+    assert _still_listed(SEMI15_RUNS["shapes"], shapes)
     for name in ("tower.fa2", "tower.ss2"):
         assert ours[name] == pytest.approx(shapes[name], rel=0.01), name
 
@@ -1253,17 +1284,18 @@ def test_the_volturnus_s_turning_is_openfasts_over_a_revolution(semi15, tmp_path
     the tower in each). The curve that is the tower's bending at standstill is the flap
     backward whirl from 3 rpm on, and the one that whirls backward at low speed is the
     tower's bending at most speeds: each is named for what it is in operation
-    (multiblade._traded), as OpenFAST names them at rated."""
+    (multiblade._claims), as OpenFAST names them at rated."""
     from wtvib.subsystems import coupled
 
-    theirs = _semi15_openfast("rated", tmp_path)
+    theirs, rpm = _semi15_openfast("rated", tmp_path)
     sweep = coupled.rotating_sweep(semi15)
     omega = 7.56 * math.pi / 30
     ours = {
         name: float(np.interp(omega, sweep.omega, sweep.frequency_hz[:, j]))
         for j, name in enumerate(sweep.names)
     }
-    assert _semi15_held(ours, theirs, skip=()) == 17
+    assert _held_to(SEMI15_RUNS["rated"], ours, theirs, rpm) == 17
+    assert _still_listed(SEMI15_RUNS["rated"], theirs)
     text = dict(zip(sweep.names, sweep.descriptions, strict=True))
     assert text["blade.flap1.backward"].endswith("(coupled; at standstill: 1st tower fore-aft)")
     assert theirs["blade.flap1.backward"] == pytest.approx(0.4186, rel=1e-3)  # as stored
@@ -1306,8 +1338,7 @@ def test_openfast_5_on_the_beamdyn_rotor_in_the_wind_is_wtvib_s_model(tmp_path):
     ours = _wtvib(report, rpm, wind)
     found = {name: f for name, (f, _) in theirs.items()}
     assert _held_to(BD_AERO, ours, found, rpm) == 17
-    listed = [k[1] for k in (*EXCEPTIONS, *NOT_MODELLED, *ALIASES) if k[0] == BD_AERO]
-    assert set(listed) <= set(found)  # every one still needed
+    assert _still_listed(BD_AERO, found)
     rigid, _, _ = _bd_aero("elastodyn")  # the third reference: ElastoDyn's blades
     assert ours["drivetrain1"] == pytest.approx(rigid["drivetrain1"][0], rel=0.01)
     for kind in ("backward", "collective", "forward"):
