@@ -410,6 +410,21 @@ ALIASES.update(
 )
 
 
+#: r-test's OC4 semisubmersible decks (MAP++'s and MoorDyn's lines) linearised by OpenFAST 5
+#: for wtvib (tests/data/openfast_oc4): the tower's second pair excused as against r-test's
+#: own linearisation (the same tower, ElastoDyn's assumed shapes: _OC4), nothing else
+OC4_RUNS = {
+    case: f"{case} (OpenFAST 5)" for case in ("5MW_OC4Semi_Linear", "5MW_OC4Semi_MD_Linear")
+}
+EXCEPTIONS.update(
+    {
+        (run, mode): EXCEPTIONS[("5MW_OC4Semi_Linear", mode)]
+        for run in OC4_RUNS.values()
+        for mode in ("tower.fa2", "tower.ss2")
+    }
+)
+
+
 @pytest.fixture(scope="module")
 def decks(tmp_path_factory: pytest.TempPathFactory) -> Path:
     root = tmp_path_factory.mktemp("rtest")
@@ -1127,18 +1142,8 @@ def test_openfast_5_pitches_the_semi_as_wtvib_does(decks, tmp_path, case, pitch_
         decks / GLUE / case / f"{case}.fst", importers.ReadOptions(deck_dofs=True)
     )
     ours = _wtvib(audit.run(spec), ref.rpm, ref.wind)
-    checked = 0
-    for name, f in zip(ref.names, ref.frequency_hz, strict=True):
-        if f >= 10:
-            continue
-        diff = ours[name] / f - 1
-        if name.startswith(("tower.fa2", "tower.ss2")):
-            lo, hi, why = EXCEPTIONS[("5MW_OC4Semi_Linear", name)]  # the same tower
-            assert lo <= diff <= hi, (name, f"{diff:+.1%}", why)
-        else:
-            assert abs(diff) <= (0.03 if f <= 2 else 0.05), (name, f, ours[name], f"{diff:+.1%}")
-        checked += 1
-    assert checked >= 18
+    assert _held_to(OC4_RUNS[case], ours, _natural(ref), ref.rpm) >= 18
+    assert _still_listed(OC4_RUNS[case], _natural(ref))
     pitch = dict(zip(ref.names, ref.frequency_hz, strict=True))["platform.pitch"]
     assert pitch == pytest.approx(pitch_hz, rel=0.01)
 
