@@ -175,8 +175,9 @@ from pathlib import Path
 import numpy as np
 from scipy.linalg import lapack
 from wtvib.importers import openfast_lin as ol
-from wtvib.cli import _reuse_freed_memory
-_reuse_freed_memory()  # as the command does
+from wtvib.workflows.ui import collect_old_objects_rarely, reuse_freed_memory
+reuse_freed_memory()  # as the command does
+collect_old_objects_rarely()
 paths = sorted(Path(sys.argv[1]).glob("*.lin"))
 read = parse = 0.0
 for p in paths:  # one file at a time, as the reader

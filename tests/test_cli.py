@@ -341,6 +341,24 @@ def test_the_cli_pins_blas_to_one_thread_unless_the_user_chose(given, expected):
     assert out.stdout.split() == [expected, "False"]
 
 
+def test_the_command_s_process_scans_its_long_lived_objects_rarely():
+    """The command's process (``ui.main``) collects its young objects as Python does and
+    the older ones after a thousand young collections, not ten (bench/RESULTS.md: 45–110 ms
+    of a check); wtvib imported as a library leaves the collector as it found it."""
+    import subprocess
+    import sys
+
+    code = (
+        "import gc; default = gc.get_threshold(); import wtvib.cli, wtvib.audit; "
+        "from wtvib.workflows import ui; assert gc.get_threshold() == default; "
+        "ui.main(lambda: print(default, gc.get_threshold()))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    default, command = out.stdout.strip().split(") (")
+    young, _, oldest = default.strip("()").split(", ")
+    assert command.strip("()").split(", ") == [young, "1000", oldest]
+
+
 def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_spec, tmp_path):
     """Files are written with the mode the umask gives (0644 under 022, not
     mkstemp's 0600); --version prints the version; the JSON report names wtvib's version and

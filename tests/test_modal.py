@@ -321,3 +321,47 @@ def test_a_large_free_chain_keeps_its_rigid_mode_and_a_buckling_one_is_refused()
     m[3, 3] = -1.0
     with pytest.raises(modal.ModalError, match="positive definite"):
         modal.solve(k, m, 4)
+
+
+@pytest.fixture
+def threads():
+    """modal.set_threads for one test, one thread again after it."""
+    yield modal.set_threads
+    modal.set_threads(1)
+
+
+def test_a_stack_shared_out_over_threads_is_solved_to_the_same_bits(threads, monkeypatch):
+    """A sweep's stack of damped problems with lag states (60 coordinates, 3 lag states,
+    13 points) and of undamped ones, shared out over three threads: each problem is solved
+    alone as in one call, so the roots, shapes and frequencies are the same bits — and the
+    eigen-solver did get the stack in parts (13 problems: 4, 4 and 5)."""
+    rng = np.random.default_rng(7)
+    n, p = 60, 13
+    k, m = _chain(n)
+    ks = k[None] * rng.uniform(0.8, 1.2, (p, 1, 1))
+    ds = 1e-3 * ks + 0.1 * np.eye(n)
+    lag = (
+        rng.standard_normal((p, n, 3)),
+        rng.standard_normal((p, 3, n)),
+        0.1 * rng.standard_normal((p, 3, n)),
+        np.broadcast_to(np.diag([-1.0, -2.0, -3.0]), (p, 3, 3)),
+    )
+
+    def both() -> tuple[list, list]:
+        return modal.oscillations_stacked(ks, m, ds, lag=lag), modal.solve_stacked(
+            ks, np.broadcast_to(m, ks.shape)
+        )
+
+    damped_one, undamped_one = both()
+    assert all(len(lam) > 10 for lam, _ in damped_one)
+    threads(3)
+    sizes: list[int] = []
+    eig = np.linalg.eig
+    monkeypatch.setattr(np.linalg, "eig", lambda a: sizes.append(len(a)) or eig(a))
+    damped_three, undamped_three = both()
+    assert sorted(sizes) == [4, 4, 5]
+    for (lam1, vec1), (lam3, vec3) in zip(damped_one, damped_three, strict=True):
+        assert np.array_equal(lam1, lam3) and np.array_equal(vec1, vec3)
+    for one, three in zip(undamped_one, undamped_three, strict=True):
+        assert np.array_equal(one.frequency_hz, three.frequency_hz)
+        assert np.array_equal(one.shapes, three.shapes)

@@ -30,6 +30,40 @@ class ModalError(WtvibError, ArithmeticError):
     """A structural model whose eigenproblem has no physical solution (e.g. not stable)."""
 
 
+#: Threads a stack of independent problems is shared out over (:func:`set_threads`): 1 for
+#: wtvib used as a library; a command that audits one turbine sets its cores.
+_threads = 1
+#: A stack is shared out only where each thread gets at least this many of its problems
+#: and they are at least this size: a thread's start costs what a 30 × 30 solve does.
+STACK_PER_THREAD, STACK_SIZE = 4, 40
+
+
+def set_threads(count: int) -> None:
+    """Share a stack of eigenproblems (a sweep's speeds, an operating schedule's points) out
+    over ``count`` threads. numpy's LAPACK calls let go of the interpreter, and each problem
+    is solved alone as before, one BLAS thread each: the same bits whatever the count (a
+    test) — only sooner where there are cores to spare (bench/RESULTS.md)."""
+    global _threads
+    _threads = max(1, int(count))
+
+
+def _each(solver: Any, stack: Any) -> Any:
+    """``solver`` (a numpy.linalg function of a stack) of ``stack``, shared out over the
+    threads :func:`set_threads` allows: its result as one call gives it."""
+    count, size = stack.shape[0], stack.shape[-1]
+    threads = min(_threads, count // STACK_PER_THREAD)
+    if threads <= 1 or size < STACK_SIZE:
+        return solver(stack)
+    from concurrent.futures import ThreadPoolExecutor
+
+    cuts = np.linspace(0, count, threads + 1).astype(int)
+    with ThreadPoolExecutor(threads) as pool:  # joined here: no thread outlives the call
+        parts = list(pool.map(lambda a, b: solver(stack[a:b]), cuts[:-1], cuts[1:]))
+    if isinstance(parts[0], tuple):  # eig, eigh: (values, vectors), each joined
+        return tuple(np.concatenate(found) for found in zip(*parts, strict=True))
+    return np.concatenate(parts)
+
+
 @dataclass(frozen=True)
 class Modes:
     """Natural frequencies [Hz] (ascending) and mass-normalised shapes (columns)."""
@@ -121,7 +155,7 @@ OUT_OF_RANGE = (
 def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     """:func:`solve` for a stack of same-sized problems, shape (p, n, n), in one call."""
     a, inv_t = _standard_form(k, m)
-    w2, y = np.linalg.eigh(a)
+    w2, y = _each(np.linalg.eigh, a)
     _check_stable(w2)
     top = w2.shape[-1] if count is None else min(count, w2.shape[-1])
     hz = np.sqrt(np.clip(w2[:, :top], 0.0, None)) / (2.0 * np.pi)
@@ -438,10 +472,10 @@ def oscillations_stacked(
     they take part more than the structure does (participation factors, :func:`state_modes`)
     are the lag's own, not modes of the structure, and are left out."""
     n = k.shape[-1]
-    lams, vecs = np.linalg.eig(state_matrix(k, m, d, lag))
+    lams, vecs = _each(np.linalg.eig, state_matrix(k, m, d, lag))
     if lag is not None:
         try:
-            left = np.linalg.inv(vecs)  # rows: the left eigenvectors
+            left = _each(np.linalg.inv, vecs)  # rows: the left eigenvectors
         except np.linalg.LinAlgError:
             raise ModalError(DEFECTIVE) from None
         structure = participation(vecs, np.swapaxes(left, -1, -2))[..., : 2 * n, :].sum(axis=-2)

@@ -49,6 +49,8 @@ def check(asked: Check) -> int:
     from .. import audit
     from ..outputs.plots.render import Drawer
 
+    ui.solve_on_every_core()
+
     uncertainty = asked.samples is not None
     with Drawer(enabled=asked.plots) as drawer:  # imports matplotlib beside the audit
         doing = f"auditing, {asked.samples:,} Monte Carlo samples" if uncertainty else "auditing"
@@ -117,6 +119,7 @@ def pdf(
     if samples is not None:
         options = dataclasses.replace(options, samples=samples, seed=seed)
     folder_exists(output)  # before the audit, not after it
+    ui.solve_on_every_core()
     # every figure, drawn beside the audit as check draws its own (plots.render); forked
     # before the spinner's thread starts (a fork copies no thread, but a lock one holds)
     with Drawer() as drawer, ui.working("auditing and drawing the figures"):

@@ -137,6 +137,33 @@ def reuse_freed_memory() -> None:
     mallopt(-1, (1 << 31) - 1)  # M_TRIM_THRESHOLD (a C int)
 
 
+def collect_old_objects_rarely() -> None:
+    """Let Python's cycle collector scan the objects that survived a young collection only
+    after a thousand young collections (its default: ten), the oldest as before. A
+    command's process creates some 110,000 long-lived objects importing numpy, pydantic,
+    the spec's models and wtvib; with the default thresholds the collector went over them
+    again and again, 45–110 ms of a check (the mod-2, the IEA-22 windIO file, the IEA-15
+    monopile deck set; bench/RESULTS.md), for no memory given back (the same peak). The
+    young collections still run as before, so cyclic garbage is still freed, and a batch
+    worker's or the Monte Carlo samples' long loops still reach the older generations. The
+    command's process only: wtvib used as a library leaves the collector alone."""
+    import gc
+
+    young, _, oldest = gc.get_threshold()
+    gc.set_threshold(young, 1000, oldest)
+
+
+def solve_on_every_core() -> None:
+    """This process audits one turbine: its stacks of eigenproblems (a sweep's speeds, the
+    operating points') are shared out over the cores it may run on
+    (:func:`wtvib.numerics.modal.set_threads`: the same bits, sooner). ``batch``'s workers,
+    several turbines at once on those cores, leave it at one thread."""
+    from ..numerics import modal
+    from ..outputs.plots.render import cores
+
+    modal.set_threads(cores())
+
+
 def main(command: Callable[[], object]) -> NoReturn:
     """Run the command line ``command`` as a process: the standard streams made safe first
     (:mod:`wtvib.outputs.streams`), and what is still buffered for the output flushed here,
@@ -146,6 +173,7 @@ def main(command: Callable[[], object]) -> NoReturn:
 
     streams.guard()
     reuse_freed_memory()
+    collect_old_objects_rarely()
     try:
         command()
         code: object = 0

@@ -21,6 +21,7 @@ def window(
     from ..studies import design
 
     turbine = options.load(spec_file)
+    ui.solve_on_every_core()
     report = audit.run(turbine, options.settings(turbine))
     found = design.all_windows(report)
     doc = design.windows_document(turbine, found, report.rule)
@@ -63,6 +64,7 @@ def size(
     from ..studies import design
 
     turbine = options.load(spec_file)  # a mistake in the input first
+    ui.solve_on_every_core()
     if (target is None) == (target_hz is None):
         from ..errors import OptionError
 
