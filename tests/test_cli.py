@@ -359,6 +359,46 @@ def test_the_command_s_process_scans_its_long_lived_objects_rarely():
     assert command.strip("()").split(", ") == [young, "1000", oldest]
 
 
+@pytest.mark.parametrize(
+    ("busy", "printed"), [(False, ["handlers ran"]), (True, ["torn down", "handlers ran"])]
+)
+def test_the_program_ends_at_once_only_where_nothing_is_left_to_finish(busy, printed):
+    """``wtvib`` ends its process without the interpreter's teardown (``ui.end``), its exit
+    handlers run and its output flushed first; with a thread still running it ends as Python
+    does (the ``finally`` below runs only then) — with the same exit code either way."""
+    import subprocess
+    import sys
+
+    code = (
+        "import atexit, sys, threading, time\n"
+        "from wtvib.workflows import ui\n"
+        "atexit.register(lambda: print('handlers ran'))\n"
+        "if sys.argv[1] == 'busy':\n"
+        "    threading.Thread(target=time.sleep, args=(0.2,)).start()\n"
+        "try:\n    ui.end(3)\nfinally:\n    print('torn down')\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code, "busy" if busy else "idle"], capture_output=True, text=True
+    )
+    assert done.returncode == 3 and done.stdout.split("\n")[:-1] == printed, done
+
+
+def test_the_program_s_output_is_whole_when_it_ends_at_once(tmp_path):
+    """``python -m wtvib check`` (the program, ended at once): the whole JSON report through
+    a pipe (it parses), and the exit code of its FAIL verdict."""
+    import subprocess
+    import sys
+
+    done = subprocess.run(
+        [sys.executable, "-m", "wtvib", "check", "wka-60", "--format", "json", "--no-plots"],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+    )
+    assert done.returncode == 1, done.stderr
+    assert json.loads(done.stdout)["verdict"] == "fail"
+
+
 def test_outputs_honour_the_umask_and_reports_say_who_made_them_from_what(write_spec, tmp_path):
     """Files are written with the mode the umask gives (0644 under 022, not
     mkstemp's 0600); --version prints the version; the JSON report names wtvib's version and

@@ -1,5 +1,5 @@
 """``python -m wtvib``: the same command as ``wtvib``."""
 
-from .cli import main
+from .cli import program
 
-main()
+program()

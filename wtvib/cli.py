@@ -18,7 +18,7 @@ import warnings
 from collections.abc import Callable
 from enum import StrEnum
 from pathlib import Path
-from typing import Annotated, Any, TypeVar
+from typing import Annotated, Any, NoReturn, TypeVar
 
 import click
 import typer
@@ -442,5 +442,15 @@ def schema(
 
 
 def main() -> None:
-    """Console entry point (:func:`wtvib.workflows.ui.main`)."""
+    """The command line (:func:`wtvib.workflows.ui.main`): ends in SystemExit."""
     ui.main(app)
+
+
+def program() -> NoReturn:
+    """The ``wtvib`` program (its console script, ``python -m wtvib``): :func:`main`, the
+    process then ended at once where nothing is left to finish (:func:`wtvib.workflows.ui.end`)."""
+    try:
+        main()
+    except SystemExit as exc:
+        ui.end(exc.code)
+    ui.end(0)

@@ -187,3 +187,33 @@ def main(command: Callable[[], object]) -> NoReturn:
         print(f"error: {lost}", file=sys.stderr)
         code = EXIT_INPUT
     raise SystemExit(code)
+
+
+def end(code: object) -> NoReturn:
+    """End the ``wtvib`` program's process with ``code`` (after :func:`main`): at once
+    where nothing is left to finish — its exit handlers run, the standard streams flushed,
+    then ``os._exit``, without the interpreter's teardown (every module and object freed
+    one by one: 50–60 ms of a check, bench/RESULTS.md) — else as Python ends (a thread or
+    a child process still running, a message as the code, coverage measuring the run, an
+    interpreter without ``atexit._run_exitfuncs``). The standard output was flushed by
+    :func:`main`; a caller of ``cli.main`` from Python gets its SystemExit as before."""
+    import atexit
+    import os
+    import threading
+
+    run_handlers = getattr(atexit, "_run_exitfuncs", None)
+    alone = threading.active_count() == 1 and not (
+        "multiprocessing" in sys.modules and sys.modules["multiprocessing"].active_children()
+    )
+    if (
+        (code is None or isinstance(code, int))
+        and alone
+        and run_handlers is not None
+        and "coverage" not in sys.modules
+    ):
+        run_handlers()
+        for stream in (sys.stdout, sys.stderr):
+            with contextlib.suppress(OSError, ValueError, AttributeError):
+                stream.flush()
+        os._exit(code or 0)
+    raise SystemExit(code)
