@@ -34,10 +34,9 @@ from .workflows.ui import EXIT_PASS
 for _threads in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_threads, "1")
 
-#: Old spellings of options, still understood but no longer shown (one spelling per idea:
-#: ``--out-dir`` is a folder, ``-o``/``--output`` a file, ``--no-plots`` writes no figures):
-#: command → {old token: today's (None: the old token is dropped, it only restated the
-#: default)}.
+#: Old spellings of options, understood but not shown (one spelling per idea: ``--out-dir``
+#: a folder, ``-o``/``--output`` a file, ``--no-plots`` no figures): command → {old token:
+#: today's (None: dropped, it only restated the default)}.
 _FOLDER_ALIASES: dict[str, str | None] = {"--out": "--out-dir", "-o": "--out-dir"}
 _PLOT_ALIASES: dict[str, str | None] = {"--no-plot": "--no-plots", "--plot": None, "--plots": None}
 ALIASES: dict[str, dict[str, str | None]] = {
@@ -447,10 +446,5 @@ def main() -> None:
 
 
 def program() -> NoReturn:
-    """The ``wtvib`` program (its console script, ``python -m wtvib``): :func:`main`, the
-    process then ended at once where nothing is left to finish (:func:`wtvib.workflows.ui.end`)."""
-    try:
-        main()
-    except SystemExit as exc:
-        ui.end(exc.code)
-    ui.end(0)
+    """The ``wtvib`` program: :func:`main`, then ``ui.end`` (console script, ``-m``)."""
+    ui.program(app)

@@ -189,6 +189,15 @@ def main(command: Callable[[], object]) -> NoReturn:
     raise SystemExit(code)
 
 
+def program(command: Callable[[], object]) -> NoReturn:
+    """The ``wtvib`` program (its console script, ``python -m wtvib``): :func:`main`, the
+    process then ended at once where nothing is left to finish (:func:`end`)."""
+    try:
+        main(command)
+    except SystemExit as exc:
+        end(exc.code)
+
+
 def end(code: object) -> NoReturn:
     """End the ``wtvib`` program's process with ``code`` (after :func:`main`): at once
     where nothing is left to finish — its exit handlers run, the standard streams flushed,
