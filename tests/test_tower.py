@@ -241,3 +241,33 @@ def test_rigid_share_is_one_for_the_whole_turbines_surge_and_tilt_and_below_for_
     bending = np.zeros(n)
     bending[0::2], bending[1::2] = 1 - np.cos(np.pi * z / 2), np.pi / 160 * np.sin(np.pi * z / 2)
     assert 0.9 < rigid_share(bending, np.eye(n), heights) < 0.99
+
+
+def test_the_class_is_decided_where_the_rule_says_at_the_highest_steady_speed():
+    """Hau 7.5.1 places f_T among 1P and N_b·P at the highest steady speed: on a rotor held
+    at 20 rpm (3P = 1.0 Hz, 1P = 0.333 Hz), a tower mode whose curve falls from 1.1 Hz at
+    standstill to 0.9 Hz at 20 rpm is soft in operation, not stiff as its standstill value
+    would make it — 10 % from 3P there, outside a 2 % margin, so no finding fails (by hand)
+    — and the check says both values, each with its condition; a mode whose curve stays
+    put keeps the one number."""
+    from wtvib.judge.excitation import Excitation, OperatingRange, harmonic_energy
+    from wtvib.results import Mode, Sampled
+    from wtvib.rules import MarginRule
+    from wtvib.subsystems.tower import class_check, classify
+    from wtvib.units import rpm_to_rad_s
+
+    top = float(rpm_to_rad_s(20.0))
+    op = OperatingRange(((top, top),), (), top * 1.1, False, (top,))
+    lines = [Excitation(f"{k}P", float(k), harmonic_energy(k, 3), "test") for k in (1, 2, 3)]
+    rule = MarginRule("band", 0.02, "Hau 7.5.1")
+    falling = Mode("tower.fa1", "tower", "t", 1.1, 0.01, Sampled((0.0, top), (1.1, 0.9)))
+    c = classify(falling, lines, 3, op, rule, 0.01)
+    assert (c.tower_class, c.frequency_hz, c.classified_hz) == ("soft", 1.1, 0.9)
+    check = class_check(c, 3, op, rule)
+    assert "first bending 0.9 Hz at 20 rpm (tower.fa1), 1.1 Hz at standstill" in check.message
+    assert "between 2P and 3P" in check.message
+    assert check.numbers["frequency_hz"] == 1.1 and check.numbers["frequency_hz_at_max"] == 0.9
+    flat = Mode("tower.fa1", "tower", "t", 1.1, 0.01, Sampled((0.0, top), (1.1, 1.1002)))
+    c = classify(flat, lines, 3, op, rule, 0.01)
+    assert c.tower_class == "stiff"
+    assert "first bending 1.1 Hz (tower.fa1) above 3P" in class_check(c, 3, op, rule).message

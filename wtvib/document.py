@@ -117,6 +117,13 @@ class CheckDoc(TypedDict):
     p1_hz_at_max: NotRequired[
         Annotated[float, "1P at the highest steady speed (tower class) [Hz]."]
     ]
+    frequency_hz_at_max: NotRequired[
+        Annotated[
+            float,
+            "The classifying mode's frequency at the highest steady speed, where the tower "
+            "class is decided (its curve's value there) [Hz].",
+        ]
+    ]
     hub: NotRequired[
         Annotated[
             str,

@@ -70,9 +70,17 @@ class Classification:
     """Where the first bending frequency sits among the rotor excitations."""
 
     tower_class: TowerClass
-    frequency_hz: float
+    frequency_hz: float  # the mode's own (standstill) frequency, as everywhere in the report
     findings: tuple[Finding, ...]
     mode_id: str = ""
+    #: the mode's frequency at the highest steady speed, where the class is decided (its
+    #: curve's value there; the standstill value for a mode without a curve)
+    operating_hz: float | None = None
+
+    @property
+    def classified_hz(self) -> float:
+        """The frequency the class was decided on."""
+        return self.frequency_hz if self.operating_hz is None else self.operating_hz
 
 
 def classify(
@@ -89,14 +97,17 @@ def classify(
     -----
     *resonant*: a dominant (1P, N_b·P) excitation violates the margin in steady operation,
     or a secondary one (kP, 1 < k < N_b) at a dwell speed. Otherwise, at the highest
-    steady speed: *stiff* above N_b·P, *soft-soft* below 1P, *soft* between them.
+    steady speed: *stiff* above N_b·P, *soft-soft* below 1P, *soft* between them — the
+    mode's frequency there too (its curve's: a coupled tower mode turning with the rotor,
+    or one that is a blade whirl at standstill and the tower's bending in operation, is
+    classified as it is in operation).
     """
     strong = [e for e in harmonics if e.energy != "minor" and e.order <= blades]
     # Judged with fixed severities so that a relaxed severity setting cannot hide a
     # resonance from the classification.
     judge: dict[str, Status] = {"dominant": "fail", "secondary": "fail", "minor": "info"}
     findings = tuple(assess(mode, e, op, rule, judge, default_damping) for e in strong)
-    f_t = mode.frequency_hz
+    f_t = float(mode.frequency_at(op.highest))
     top_1p = float(rad_s_to_hz(op.highest))
     if any(f.status == "fail" for f in findings):
         cls: TowerClass = "resonant"
@@ -106,7 +117,7 @@ def classify(
         cls = "soft-soft"
     else:
         cls = "soft"
-    return Classification(cls, f_t, findings, mode.id)
+    return Classification(cls, mode.frequency_hz, findings, mode.id, f_t)
 
 
 def _violated(f: Finding, headline_hz: float) -> str:
@@ -132,10 +143,15 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     top = float(rad_s_to_rpm(op.highest))
     p1 = float(rad_s_to_hz(op.highest))
     where = f"at {top:.3g} rpm: 1P = {p1:.3g} Hz, {blades}P = {blades * p1:.3g} Hz"
+    f_t = c.classified_hz
+    # where the class was decided at the highest speed and the curve's value there differs
+    # as printed (a resonant tower: where the margin fails, said with each violation)
+    moved = c.tower_class != "resonant" and f"{f_t:.3g}" != f"{c.frequency_hz:.3g}"
+    named = f" ({c.mode_id})" if c.mode_id else ""
     head = (
-        f"first bending {c.frequency_hz:.3g} Hz ({c.mode_id})"
-        if c.mode_id
-        else (f"first bending {c.frequency_hz:.3g} Hz")
+        f"first bending {f_t:.3g} Hz at {top:.3g} rpm{named}, {c.frequency_hz:.3g} Hz at standstill"
+        if moved
+        else f"first bending {c.frequency_hz:.3g} Hz{named}"
     )
     startup = sorted(
         {f.excitation.id for f in c.findings if f.violations["start-up"]},
@@ -149,7 +165,7 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     elif c.tower_class == "stiff":
         status, text = "pass", f"stiff: {head} above {blades}P ({where}); no start-up encounter"
     elif c.tower_class == "soft":
-        band = _between(c.frequency_hz, blades, p1)
+        band = _between(f_t, blades, p1)
         status = "pass"
         text = f"soft: {head} {band} ({where}){crossed} — the encounter of soft towers"
     else:
@@ -171,6 +187,7 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
         numbers={
             "tower_class": c.tower_class,
             "frequency_hz": c.frequency_hz,
+            "frequency_hz_at_max": round(f_t, 6),
             "p1_hz_at_max": round(p1, 6),
             "startup_crossings": startup,
         },
