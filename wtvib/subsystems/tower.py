@@ -147,12 +147,13 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     # where the class was decided at the highest speed and the curve's value there differs
     # as printed (a resonant tower: where the margin fails, said with each violation)
     moved = c.tower_class != "resonant" and f"{f_t:.3g}" != f"{c.frequency_hz:.3g}"
-    named = f" ({c.mode_id})" if c.mode_id else ""
-    head = (
-        f"first bending {f_t:.3g} Hz at {top:.3g} rpm{named}, {c.frequency_hz:.3g} Hz at standstill"
-        if moved
-        else f"first bending {c.frequency_hz:.3g} Hz{named}"
-    )
+    standstill = f"{c.frequency_hz:.3g} Hz at standstill"
+    if moved:
+        named = f"{c.mode_id}; {standstill}" if c.mode_id else standstill
+        head = f"first bending {f_t:.3g} Hz at {top:.3g} rpm ({named})"
+    else:
+        named = f" ({c.mode_id})" if c.mode_id else ""
+        head = f"first bending {c.frequency_hz:.3g} Hz{named}"
     startup = sorted(
         {f.excitation.id for f in c.findings if f.violations["start-up"]},
         key=lambda s: float(s.rstrip("P")),
