@@ -360,6 +360,8 @@ def test_a_stack_shared_out_over_threads_is_solved_to_the_same_bits(threads, mon
     monkeypatch.setattr(np.linalg, "eig", lambda a: sizes.append(len(a)) or eig(a))
     damped_three, undamped_three = both()
     assert sorted(sizes) == [4, 4, 5]
+    found = modal._each(np.linalg.eig, np.broadcast_to(k, (13, n, n)))  # as one call's
+    assert type(found) is type(np.linalg.eig(k[None])) and found.eigenvalues.shape == (13, n)
     for (lam1, vec1), (lam3, vec3) in zip(damped_one, damped_three, strict=True):
         assert np.array_equal(lam1, lam3) and np.array_equal(vec1, vec3)
     for one, three in zip(undamped_one, undamped_three, strict=True):

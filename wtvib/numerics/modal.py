@@ -60,7 +60,9 @@ def _each(solver: Any, stack: Any) -> Any:
     with ThreadPoolExecutor(threads) as pool:  # joined here: no thread outlives the call
         parts = list(pool.map(lambda a, b: solver(stack[a:b]), cuts[:-1], cuts[1:]))
     if isinstance(parts[0], tuple):  # eig, eigh: (values, vectors), each joined
-        return tuple(np.concatenate(found) for found in zip(*parts, strict=True))
+        joined = [np.concatenate(found) for found in zip(*parts, strict=True)]
+        kind = type(parts[0])  # numpy's EigResult, EighResult: named as one call's
+        return kind(*joined) if hasattr(kind, "_fields") else tuple(joined)
     return np.concatenate(parts)
 
 
