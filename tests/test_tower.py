@@ -262,7 +262,7 @@ def test_the_class_is_decided_where_the_rule_says_at_the_highest_steady_speed():
     rule = MarginRule("band", 0.02, "Hau 7.5.1")
     falling = Mode("tower.fa1", "tower", "t", 1.1, 0.01, Sampled((0.0, top), (1.1, 0.9)))
     c = classify(falling, lines, 3, op, rule, 0.01)
-    assert (c.tower_class, c.frequency_hz, c.classified_hz) == ("soft", 1.1, 0.9)
+    assert (c.tower_class, c.frequency_hz, c.operating_hz) == ("soft", 1.1, 0.9)
     check = class_check(c, 3, op, rule)
     assert "first bending 0.9 Hz at 20 rpm (tower.fa1; 1.1 Hz at standstill) between" in (
         check.message

@@ -71,16 +71,11 @@ class Classification:
 
     tower_class: TowerClass
     frequency_hz: float  # the mode's own (standstill) frequency, as everywhere in the report
-    findings: tuple[Finding, ...]
-    mode_id: str = ""
     #: the mode's frequency at the highest steady speed, where the class is decided (its
     #: curve's value there; the standstill value for a mode without a curve)
-    operating_hz: float | None = None
-
-    @property
-    def classified_hz(self) -> float:
-        """The frequency the class was decided on."""
-        return self.frequency_hz if self.operating_hz is None else self.operating_hz
+    operating_hz: float
+    findings: tuple[Finding, ...]
+    mode_id: str = ""
 
 
 def classify(
@@ -117,7 +112,7 @@ def classify(
         cls = "soft-soft"
     else:
         cls = "soft"
-    return Classification(cls, mode.frequency_hz, findings, mode.id, f_t)
+    return Classification(cls, mode.frequency_hz, f_t, findings, mode.id)
 
 
 def _violated(f: Finding, headline_hz: float) -> str:
@@ -143,7 +138,7 @@ def class_check(c: Classification, blades: int, op: OperatingRange, rule: Margin
     top = float(rad_s_to_rpm(op.highest))
     p1 = float(rad_s_to_hz(op.highest))
     where = f"at {top:.3g} rpm: 1P = {p1:.3g} Hz, {blades}P = {blades * p1:.3g} Hz"
-    f_t = c.classified_hz
+    f_t = c.operating_hz
     # where the class was decided at the highest speed and the curve's value there differs
     # as printed (a resonant tower: where the margin fails, said with each violation)
     moved = c.tower_class != "resonant" and f"{f_t:.3g}" != f"{c.frequency_hz:.3g}"
