@@ -513,3 +513,74 @@ def test_the_operational_data_file_is_the_one_the_model_names_else_one_that_turn
     spec = load(model)
     assert spec.rotor.speed.min_rpm > 0
     assert any("no operational data file where the rotor turns" in a for a in spec.assumptions)
+
+
+SEMI = "HAWC2/IEA-15-240-RWT-UMaineSemi/htc/IEA_15MW_RWT_UMaineSemi.htc"
+
+
+@pytest.fixture
+def semi(tmp_path: Path) -> Path:
+    """The IEA-15's HAWC2 model on its floater, with the WTG's files and the WAMIT results
+    its floater names (tests/validation/test_hawc2.py: the same three archives)."""
+    for archive in (
+        DATA / "iea15_onshore.tar.gz",
+        DATA / "iea15_umainesemi.tar.gz",
+        DATA.parent / "openfast_decks" / "iea15_semi.tar.gz",
+    ):
+        with tarfile.open(archive) as tar:
+            tar.extractall(tmp_path, filter="data")
+    return tmp_path / SEMI
+
+
+@pytest.mark.parametrize(
+    "where, old, new, words",
+    [
+        ("htc", "data    MASS    1.7838E+07 ;", "", "ext_sys floater: no data MASS"),
+        ("htc", "data    RIJ_COG 3 3 36.425 ;", "", "no RIJ_COG 3 3"),
+        ("htc", "HydroData/IEA-15-240-RWT-UMaineSemi'", "HydroData/gone'",
+         "WAMIT_FILE names '../../OpenFAST/IEA-15-240-RWT-UMaineSemi/HydroData/gone', which "
+         "does not exist"),
+        ("htc", "data    DENSITY 1025.0 ;", "data    DENSITY 1e9 ;", "density 1e+09 is outside"),
+        ("htc", "data    COG     0.0 0.0 -14.94 ;", "data    COG     0.0 0.0 abc ;",
+         "COG: value 3 must be a number"),
+        ("constraint", "esys_node  line1 1 ;", "esys_node  line1 3 ;",
+         "mooring line line1: no constraint fixes its first node to the ground"),
+        ("mooring", "data mass  6.850e+02  5.957e+02", "data mass  6.850e+02  7.957e+02",
+         "mass per length in water [kg/m] 795.7 is outside"),
+        ("mooring", "data axial_stiff  3.270e+09 ;", "data axial_stiff  nan ;",
+         "axial_stiff: value 1 must be a number"),
+        # a line laid 237 m long where its ends lie 790 m apart
+        ("mooring", "data end_pos -0.000e+00  1.240e+01", "data end_pos -0.000e+00  -6.000e+02",
+         "mooring line 1 is stretched 237% of its length"),
+    ],
+)  # fmt: skip
+def test_a_broken_floater_is_one_line_and_exit_2(semi, where, old, new, words):
+    data = semi.parents[1] / "data"
+    target = {
+        "htc": semi,
+        "constraint": data / "IEA_15MW_RWT_UMaineSemi_mooring_constraint.htc",
+        "mooring": data / "IEA_15MW_RWT_UMaineSemi_mooring_system.htc",
+    }[where]
+    _edit(target, old, new)
+    result = CliRunner().invoke(app, ["check", str(semi), "--no-plots"])
+    assert result.exit_code == 2, result.output
+    lines = [ln for ln in result.output.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: ") and words in lines[0], lines
+
+
+def test_the_floater_s_moorings_are_turned_into_the_platform_s_frame(semi):
+    """HAWC2's frame (x lateral, y downwind, z down) is the platform's turned: (X, Y, Z) =
+    (y, x, −z). The three chains at 120° stiffen surge and sway alike; the first alone,
+    anchored upwind (HAWC2's −y), stiffens surge (along X) and not sway."""
+    from wtvib import importers
+    from wtvib.importers.hawc2_floater import to_platform
+
+    assert to_platform(np.array([1.0, 2.0, 3.0])).tolist() == [2.0, 1.0, -3.0]
+    k = np.asarray(importers.load(semi).tower.foundation.platform.stiffness)
+    three = k[0, 0]  # the waterplane has no surge or sway stiffness: the chains' alone
+    assert three == pytest.approx(k[1, 1], rel=1e-3) and three > 5e4
+    mooring = semi.parents[1] / "data" / "IEA_15MW_RWT_UMaineSemi_mooring_system.htc"
+    text = mooring.read_text()
+    mooring.write_text(text[: text.index("begin ext_sys", text.index("name   line1"))])
+    k = np.asarray(importers.load(semi).tower.foundation.platform.stiffness)
+    assert k[0, 0] > 10 * k[1, 1] and k[0, 0] > 0.1 * three

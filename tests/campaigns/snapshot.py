@@ -58,6 +58,12 @@ def unpack() -> Path:
             with tarfile.open(archive) as tar:
                 tar.extractall(INPUTS / "hawc2", filter="data")
             marker.touch()
+    semi = INPUTS / "hawc2" / ".iea15_semi.hydrodata"  # the UMaineSemi floater's WAMIT files
+    if not semi.exists():
+        with tarfile.open(DATA / "openfast_decks" / "iea15_semi.tar.gz") as tar:
+            wamit = [m for m in tar.getmembers() if "/HydroData/" in m.name]
+            tar.extractall(INPUTS / "hawc2", members=wamit, filter="data")
+        semi.touch()
     done = INPUTS / ".unpacked"
     if done.exists():
         return INPUTS

@@ -155,6 +155,73 @@ def test_the_iea15_hawc2_model_against_hawcstab2(iea15, hs2_iea15):
     assert 0.03 <= diff <= 0.05, diff  # open, held to what it measures
 
 
+UMAINE = "HAWC2/IEA-15-240-RWT-UMaineSemi/htc/IEA_15MW_RWT_UMaineSemi.htc"
+SEMI_DECK = "OpenFAST/IEA-15-240-RWT-UMaineSemi/IEA-15-240-RWT-UMaineSemi.fst"
+
+
+@pytest.fixture(scope="module")
+def umaine(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The IEA-15's HAWC2 model on the UMaine VolturnUS-S (tests/data/hawc2/
+    iea15_umainesemi.tar.gz) beside the files it shares: the WTG's (iea15_onshore.tar.gz)
+    and the WAMIT results of the OpenFAST model its floater names
+    (../../OpenFAST/…/HydroData, in openfast_decks/iea15_semi.tar.gz with that deck set)."""
+    root = tmp_path_factory.mktemp("hawc2_semi")
+    for archive in (
+        DATA / "hawc2" / "iea15_onshore.tar.gz",
+        DATA / "hawc2" / "iea15_umainesemi.tar.gz",
+        DATA / "openfast_decks" / "iea15_semi.tar.gz",
+    ):
+        with tarfile.open(archive) as tar:
+            tar.extractall(root, filter="data")
+    return root / UMAINE
+
+
+def test_the_iea15_hawc2_floater_is_its_openfast_deck_s_platform(umaine):
+    """The HAWC2 model's floater (an ESYSWamit external system: mass, CM, radii of
+    gyration, the OpenFAST model's WAMIT files; three elasticBar chains) read as wtvib's
+    platform, against wtvib's reading of the same turbine's OpenFAST deck set (ElastoDyn's
+    platform, HydroDyn's WAMIT, MoorDyn's chains through MoorPy), which
+    test_floating.py holds to Allen et al. 2020 and test_rtest_models.py to OpenFAST 5's own
+    linearisation. The same WAMIT file at the same ρ: the added mass identical. The same
+    chains (850 m, EA 3.27e9 N, anchors and fairleads where MoorDyn has them once HAWC2's
+    frame — x lateral, y downwind, z down — is turned into the platform's): the stiffness
+    within 0.5 % on the diagonal and the surge–pitch coupling (measured ≤ 0.05 %: HAWC2
+    gives the chain's wet mass, 595.7 of 685 kg/m, where MoorDyn gives its 0.333 m
+    diameter). The mass and inertias as ElastoDyn's within 0.01 %; the CM 0.54 m lower
+    (−14.94 m against the deck's −14.4: the two models' own numbers)."""
+    h = importers.load(umaine).tower.foundation.platform
+    e = importers.load(umaine.parents[3] / SEMI_DECK).tower.foundation.platform
+    assert h is not None and e is not None
+    assert h.tower_base_m == e.tower_base_m == 15.0
+    assert h.mass_kg == pytest.approx(e.mass_kg, rel=1e-4)
+    for axis in ("roll", "pitch", "yaw"):
+        got, ref = getattr(h, f"inertia_{axis}_kgm2"), getattr(e, f"inertia_{axis}_kgm2")
+        assert got == pytest.approx(ref, rel=1e-4), axis
+    assert h.cm_m == -14.94 and e.cm_m == -14.4
+    np.testing.assert_allclose(h.added_mass, e.added_mass, rtol=1e-12)
+    k_h, k_e = np.asarray(h.stiffness), np.asarray(e.stiffness)
+    for i, j in [(0, 0), (1, 1), (2, 2), (3, 3), (4, 4), (5, 5), (0, 4), (1, 3)]:
+        assert k_h[i, j] == pytest.approx(k_e[i, j], rel=5e-3), (i, j)
+
+
+def test_the_iea15_hawc2_floater_s_modes_are_allen_2020_s(umaine):
+    """The IEA-15 on the VolturnUS-S audited from its HAWC2 model: the platform's rigid-body
+    modes against Allen et al. 2020 (NREL/TP-5000-76773, "Definition of the UMaine
+    VolturnUS-S Reference Platform", Table 8: surge 0.007, heave 0.049, pitch 0.036, yaw
+    0.011 Hz) within 10 %, as the deck's (test_floating.py; measured +5.6, −0.2, −0.5,
+    +2.9 %). The floater is said: its source, and what is left out."""
+    from wtvib.subsystems import tower
+
+    spec = importers.load(umaine)
+    found = {m.id: m.frequency_hz for m in tower.structural_modes(spec)}
+    published = {"surge": 0.007, "heave": 0.049, "pitch": 0.036, "yaw": 0.011}
+    for motion, f in published.items():
+        assert found[f"tower.platform.{motion}"] == pytest.approx(f, rel=0.10), motion
+    said = " ".join(spec.assumptions)
+    assert "ESYSWamit floater floater" in said and "3 elasticBar mooring lines" in said
+    assert "radiation damping, quadratic drag (QUADDRAG)" in said
+
+
 def test_the_iea15_onshore_model_tells_its_story(iea15):
     """The onshore variant stands the tower on the ground 15 m above the sea (the model's
     own note: "fixed at bottom of tower"), without the monopile that puts the real turbine's

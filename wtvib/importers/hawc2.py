@@ -7,7 +7,9 @@ What is read (htc syntax: :mod:`wtvib.importers.htc`):
   ``timoschenko_input`` (st file, classical or fully populated ``FPM 1``, set and subset),
   ``concentrated_mass`` and ``damping_posdef``/``damping_aniso``, ``copy_main_body`` — and
   the ``orientation`` (``base``; ``relative`` with its successive ``mbdy2_eulerang``
-  rotations) that places them; ``constraint`` for the tower's base (``fix0``).
+  rotations) that places them; ``constraint`` for the tower's base (``fix0``), or the
+  floater that holds it: an ``ESYSWamit`` external system with ``elasticBar`` moorings,
+  read as wtvib's floating platform (:mod:`wtvib.importers.hawc2_floater`).
 * The bodies are recognised by their place in the chain, not their names alone: the body
   fixed to the ground (``fix0``) with the one above it up to the towertop is the tower;
   the body whose last node carries the hubs is the shaft; the bodies attached to the
@@ -41,6 +43,9 @@ import numpy as np
 from ..errors import SpecError
 from ..numerics.rigid import Part, assembled
 from . import htc
+from .hawc2_floater import Floater
+from .hawc2_floater import find as find_floater
+from .hawc2_floater import platform as floating_platform
 from .htc import Block, Command
 
 #: The 19 columns of a classical st set and what they are.
@@ -223,6 +228,8 @@ class _Chain:
     shaft: Body
     hubs: list[Body]
     blades: list[Body]
+    #: the ESYSWamit floater holding the lowest body (skipped: the tower stands on it)
+    floater: "Floater | None" = None
 
 
 #: Words of the bodies that sit between a tower and its shaft (not the tower's own).
@@ -230,9 +237,9 @@ HEAD_WORDS = ("top", "connector", "nacelle", "yaw", "bedplate")
 
 
 def _unheld(base: str, structure: Block) -> None:
-    """Refuse a model whose lowest body no fix0 and no soil holds: a floater (HAWC2 holds
-    one with its hydrodynamics and moorings in external systems, which wtvib does not
-    read) — clamped, its tower's modes would be another turbine's."""
+    """Refuse a model whose lowest body no fix0, no soil and no ESYSWamit floater holds
+    (another floater's external systems, which wtvib does not read) — clamped, its tower's
+    modes would be another turbine's."""
     constraint = structure.block("constraint")
     where = constraint if constraint is not None else structure
     systems = []
@@ -244,9 +251,10 @@ def _unheld(base: str, structure: Block) -> None:
     held_by = f", held by the external systems {names}" if systems else ""
     raise SpecError(
         f"the lowest body, {base}, is fixed to the ground by no fix0 and held by no soil "
-        f"block{held_by}: a floating model — wtvib does not read HAWC2's floater (its "
-        "hydrodynamics and moorings), and clamped its tower would be another turbine's; "
-        "audit the same turbine's OpenFAST deck set or windIO file",
+        f"block{held_by}: a floating model whose floater wtvib does not read (it reads an "
+        "ESYSWamit ext_sys joined to the body by a constraint dll with esys_node), and "
+        "clamped its tower would be another turbine's; audit the same turbine's OpenFAST "
+        "deck set or windIO file",
         line=where.line,
         source=str(where.file),
     )
@@ -276,10 +284,15 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
         raise SpecError(
             "no body stands on the ground (no fix0, no base)", source=str(structure.file)
         )
+    floater = None
     if base not in fixed and base not in embedded:
-        _unheld(base, structure)
-    while base in embedded and len(children.get(base, [])) == 1:
-        base = children[base][0]  # a pile in the soil: the tower from the mudline up
+        floater = find_floater(structure, base)
+        if floater is None:
+            _unheld(base, structure)
+    while (base in embedded or (floater and base == floater.body)) and len(
+        children.get(base, [])
+    ) == 1:  # a pile in the soil: the tower from the mudline up; a floater's body: on it
+        base = children[base][0]
 
     # the shaft: the body with three (or two, one) hubs on its last node, each with a blade
     def leaves(name: str) -> list[str]:
@@ -305,7 +318,7 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
         run += 1
     tower = [bodies[n] for n in path[: max(run, 1)]]
     head = [bodies[n] for n in path[max(run, 1) : -1]]
-    return _Chain(tower, head, bodies[shaft_name], hubs, blades)
+    return _Chain(tower, head, bodies[shaft_name], hubs, blades, floater)
 
 
 # ------------------------------------------------------------------------------------------
@@ -408,7 +421,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     """wtvib spec data from a HAWC2 htc file and the files it names."""
     top = htc.parse(path)
     root = htc.root_folder(path)
-    chain, embedded = _model_chain(top, root, path)
+    chain, embedded, bodies = _model_chain(top, root, path)
     tower_table, tower_length, top_pos = _tower(chain)
     blade_structure, span, bmass, blade_length = _blade(chain)
     n_blades = len(chain.blades)
@@ -468,6 +481,14 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     added, hydro_left = _added_mass(top, chain)
     if added is not None:
         data["tower"]["added_mass"] = added
+    if chain.floater is not None:
+        structure = top.block("new_htc_structure")
+        assert structure is not None
+        block, notes = floating_platform(
+            structure, chain.floater, bodies, chain.tower[0].at("1"), root
+        )
+        data["tower"]["foundation"] = {"kind": "platform", "platform": block}
+        data["assumptions"] += notes
     warnings = _support_warnings(embedded, hydro_left)
     if warnings:
         data["warnings"] = warnings
@@ -478,9 +499,9 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     return out
 
 
-def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]]:
-    """The model's main bodies, placed by its orientation block and recognised by their
-    place in the chain, and the bodies its soil block embeds."""
+def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str], dict[str, Body]]:
+    """The model's main bodies recognised by their place in the chain, the bodies its soil
+    block embeds, and every main body, placed by the orientation block."""
     structure = top.block("new_htc_structure")
     if structure is None:
         raise SpecError("no new_htc_structure block: not a HAWC2 turbine model", source=str(path))
@@ -493,7 +514,7 @@ def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]
     embedded = {
         e.need("mbdy_name").values[0].lower() for e in (soil.each("soil_element") if soil else [])
     }
-    return _chain(bodies, structure, embedded), embedded
+    return _chain(bodies, structure, embedded), embedded, bodies
 
 
 #: A shaft whose torsion would put the generator against the hub above this frequency [Hz]
@@ -556,8 +577,9 @@ def _assembly_notes(path: Path, chain: "_Chain", downwind: float, above: float) 
         + ", ".join(b.name for b in (*chain.tower, *chain.head, chain.shaft))
         + f", {len(chain.hubs)} hubs and blades ({chain.blades[0].name}'s st set "
         f"{'fully populated (6×6, condensed)' if chain.blades[0].fpm else 'classical'}); "
-        f"the tower ({', '.join(b.name for b in chain.tower)}) clamped at "
-        f"{chain.tower[0].name}'s base; the rotor apex "
+        f"the tower ({', '.join(b.name for b in chain.tower)}) "
+        f"{'on the floater' if chain.floater else 'clamped'} at {chain.tower[0].name}'s base; "
+        "the rotor apex "
         f"{downwind:+.3g} m downwind of the tower top and {above:.3g} m above it; shaft "
         f"tilt {tilt:.3g}° and the blades' prebend and cone neglected.",
         "Tower head assembled from the bodies above the tower: their concentrated "

@@ -119,13 +119,15 @@ def root_folder(htc: Path) -> Path:
     return htc.parent
 
 
-def resolve(name: str, root: Path, beside: Path, cmd: Command) -> Path:
+def resolve(name: str, root: Path, beside: Path, cmd: Command, suffix: str = "") -> Path:
     """A file the model names: relative to the model's folder, else beside the file that
-    names it; SpecError naming the command where neither holds it."""
+    names it; SpecError naming the command where neither holds it. With ``suffix`` the
+    name is a stem (WAMIT's results: ``stem.1``, ``stem.hst``): the stem returned where the
+    file stem + suffix is."""
     path = Path(name.strip('"').replace("\\", "/"))
     for candidate in (path,) if path.is_absolute() else (root / path, beside / path):
         try:
-            if candidate.is_file():
+            if candidate.with_name(candidate.name + suffix).is_file():
                 return candidate
         except OSError:  # a name the file system cannot hold
             break

@@ -19,6 +19,7 @@ Manual v7, §4 (output file formats and their nondimensionalisation).
 """
 
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -69,8 +70,9 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
             source=str(hd.path),
         )
     root = hd.text("PotFile")
-    added, by_frequency = _wamit_added_mass(beside(hd.path, root + ".1"), rho, length, hd)
-    hydrostatic = _wamit_hydrostatic(beside(hd.path, root + ".hst"), rho, g, length, hd)
+    named = Naming("PotFile", hd.values.get("PotFile", ("", None))[1], hd.path)
+    added, by_frequency = wamit_added_mass(beside(hd.path, root + ".1"), rho, length, named)
+    hydrostatic = wamit_hydrostatic(beside(hd.path, root + ".hst"), rho, g, length, named)
     extra = _matrix(hd, "AddCLin")
     from .mooring import stiffness as mooring_stiffness
 
@@ -94,9 +96,9 @@ def platform(main: Deck, fst: Deck) -> tuple[dict[str, Any], list[str]] | str:
         "inertia_roll_kgm2": total.roll,
         "inertia_pitch_kgm2": total.pitch,
         "inertia_yaw_kgm2": total.yaw,
-        "added_mass": _list(added),
+        "added_mass": matrix_rows(added),
         "added_mass_by_frequency": by_frequency,
-        "stiffness": _list(hydrostatic + extra + moorings),
+        "stiffness": matrix_rows(hydrostatic + extra + moorings),
         "source": f"ElastoDyn {main.path.name}, HydroDyn {hd.path.name} (WAMIT {root}.1, "
         f".hst), {mooring_note}",
     }
@@ -240,12 +242,22 @@ def _exponent(i: int, j: int, base: int) -> int:
     return base + (i >= 3) + (j >= 3)
 
 
-def _wamit_rows(path: Path, hd: Deck, columns: int) -> list[tuple[list[float], int]]:
+@dataclass(frozen=True)
+class Naming:
+    """What names a WAMIT file: the key (HydroDyn's ``PotFile``, HAWC2's ``WAMIT_FILE``),
+    its line and its file — where a missing file is reported."""
+
+    key: str
+    line: int | None
+    source: Path
+
+
+def _wamit_rows(path: Path, named: Naming, columns: int) -> list[tuple[list[float], int]]:
     if not present(path):
         raise SpecError(
-            f"PotFile names {path.name!r}, which does not exist",
-            line=hd.values.get("PotFile", ("", None))[1],
-            source=str(hd.path),
+            f"{named.key} names {path.name!r}, which does not exist",
+            line=named.line,
+            source=str(named.source),
         )
     rows = []
     for number, line in enumerate(read_text(path).splitlines(), start=1):
@@ -276,13 +288,13 @@ def _index(value: float, number: int, path: Path) -> int:
 MAX_FREQUENCIES = 200
 
 
-def _wamit_added_mass(
-    path: Path, rho: float, length: float, hd: Deck
+def wamit_added_mass(
+    path: Path, rho: float, length: float, named: Naming
 ) -> tuple[np.ndarray, list[dict[str, Any]]]:
     """A∞ from a WAMIT .1 file (its rows of period 0) and A(f) at its other periods (period
     −1: the zero-frequency limit), dimensionalised and symmetrised."""
     by_period: dict[float, np.ndarray] = {}
-    for (period, i, j, a, *_), number in _wamit_rows(path, hd, 4):
+    for (period, i, j, a, *_), number in _wamit_rows(path, named, 4):
         p, q = _index(i, number, path), _index(j, number, path)
         if period < 0 and period != -1:
             raise SpecError(f"period {period:g}: WAMIT periods are −1, 0 or positive",
@@ -298,13 +310,14 @@ def _wamit_added_mass(
     if len(table) > MAX_FREQUENCIES:
         keep = np.unique(np.linspace(0, len(table) - 1, MAX_FREQUENCIES).round().astype(int))
         table = [table[k] for k in keep]
-    points = [{"frequency_hz": float(f"{f:.10g}"), "matrix": _list(a)} for f, a in table]
+    points = [{"frequency_hz": float(f"{f:.10g}"), "matrix": matrix_rows(a)} for f, a in table]
     return 0.5 * (infinite + infinite.T), points
 
 
-def _wamit_hydrostatic(path: Path, rho: float, g: float, length: float, hd: Deck) -> np.ndarray:
+def wamit_hydrostatic(path: Path, rho: float, g: float, length: float, named: Naming) -> np.ndarray:
+    """The hydrostatic restoring matrix of a WAMIT .hst file, dimensionalised, symmetrised."""
     out = np.zeros((6, 6))
-    for (i, j, c), number in _wamit_rows(path, hd, 3):
+    for (i, j, c), number in _wamit_rows(path, named, 3):
         p, q = _index(i, number, path), _index(j, number, path)
         out[p, q] = c * rho * g * length ** _exponent(p, q, 2)
     return 0.5 * (out + out.T)
@@ -327,5 +340,6 @@ def _matrix(hd: Deck, key: str) -> np.ndarray:
     return np.array(rows)
 
 
-def _list(a: np.ndarray) -> list[list[float]]:
+def matrix_rows(a: np.ndarray) -> list[list[float]]:
+    """A matrix as the spec's rows, each number to ten significant digits."""
     return [[float(f"{v:.10g}") for v in row] for row in a]

@@ -367,3 +367,32 @@ def windio_system(
     if not math.isfinite(force):
         raise SpecError("the moorings' pull on the platform is not finite", source=str(path))
     return k, force, len(lines), notes
+
+
+def lines_stiffness(
+    lines: list[tuple[np.ndarray, np.ndarray, float, float, float, float]],
+    depth: float,
+    rho: float,
+    g: float,
+    path: Path,
+) -> np.ndarray:
+    """The 6×6 stiffness at the PRP of single-segment lines, each (anchor, fairlead [m, the
+    PRP's frame: x downwind, z up], unstretched length [m], mass per length in air and in
+    water [kg/m], EA [N]): the wet weight from the two masses, as the volume-equivalent
+    diameter MoorPy takes (d² = 4(m − m_w)/(πρ))."""
+    import moorpy as mp
+
+    if not lines or len(lines) > MAX_LINES:
+        raise SpecError(f"{len(lines)} mooring lines (1 … {MAX_LINES})", source=str(path))
+    with contextlib.redirect_stdout(io.StringIO()):  # MoorPy prints its progress
+        system = mp.System(depth=depth, rho=rho, g=g)
+        system.addBody(-1, np.zeros(6))
+        for n, (anchor, fairlead, length, m_air, m_wet, ea) in enumerate(lines, start=1):
+            kind = f"line{n}"
+            d_vol = math.sqrt(4 * (m_air - m_wet) / (math.pi * rho))
+            given = {"name": kind, "d_vol": d_vol, "m": m_air, "EA": ea, "material": "custom"}
+            system.setLineType(name=kind, lineType=given)
+            a = _add_point(system, "anchor", anchor)
+            b = _add_point(system, "fairlead", fairlead)
+            system.addLine(length, kind, pointA=a, pointB=b)
+        return _body_stiffness(system, path)
