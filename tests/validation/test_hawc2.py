@@ -25,6 +25,7 @@ wtvib's bend only).
 
 import gzip
 import math
+import re
 import subprocess
 import sys
 import tarfile
@@ -35,6 +36,7 @@ import pytest
 
 from wtvib import audit, importers
 from wtvib.aero import aerodamping
+from wtvib.results import ordinal
 from wtvib.subsystems import blade
 
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -220,6 +222,30 @@ def test_the_iea15_hawc2_floater_s_modes_are_allen_2020_s(umaine):
     said = " ".join(spec.assumptions)
     assert "ESYSWamit floater floater" in said and "3 elasticBar mooring lines" in said
     assert "radiation damping, quadratic drag (QUADDRAG)" in said
+
+
+def test_a_floating_tower_mode_s_id_counts_as_its_description_does(umaine):
+    """On the HAWC2 model's floater the tower's first fore-aft bending (0.45 Hz at
+    standstill) is the coupled model's backward flap whirl in operation, named so; the next
+    fore-aft mode, 2.42 Hz, is the tower's second bending and says so — its id was
+    ``system.tower.fa1`` (counted among the tower modes the flap family had left) while its
+    text said "2nd tower fore-aft". Every tower id's ordinal is now its description's: the
+    platform's modes below it left out of both, the ordinal kept where another family took
+    a mode."""
+    report = audit.run(importers.load(umaine))
+    kinds = {"fa": "fore-aft", "ss": "side-side", "tor": "torsion"}
+    seen = 0
+    for m in report.modes:
+        found = re.fullmatch(r"(?:system\.)?tower\.(fa|ss|tor)(\d+)", m.id)
+        if found:
+            n = int(found.group(2))
+            assert m.description.startswith(f"{ordinal(n)} tower {kinds[found.group(1)]}"), m
+            seen += 1
+    assert seen >= 8
+    ids = {m.id: m for m in report.modes}
+    assert "system.tower.fa1" not in ids and ids["system.tower.fa2"].frequency_hz > 2.0
+    backward = ids["system.blade.flap1.backward"]
+    assert "at standstill: 1st tower fore-aft" in backward.description
 
 
 def test_the_iea15_onshore_model_tells_its_story(iea15):

@@ -831,10 +831,10 @@ def platform_named(
     m = model.standstill[0]
     lay = model.layout
     heights = tower.discretise(model.spec.tower).nodes + p.tower_base_m
-    counters: dict[str, int] = {}
     platform: dict[str, int] = {}  # the platform's modes among each kind's, by kind
     out_names: list[str] = []
     out_texts: list[str] = []
+    tower_modes: list[tuple[int, str]] = []  # the tower's own: where, and of which kind
     for j, (name, text) in enumerate(zip(names, descriptions, strict=True)):
         z = shapes[:, j]
         x = np.real(z * np.conj(z[np.argmax(np.abs(z))]))  # a standstill shape, real
@@ -858,12 +858,17 @@ def platform_named(
             out_texts.append(f"platform {motion} (coupled model, added mass A∞)")
             platform[kind] = platform.get(kind, 0) + 1
             continue
-        counters[kind] = counters.get(kind, 0) + 1
-        suffix = name[len(kind) :].lstrip("0123456789")
-        out_names.append(f"{kind}{counters[kind]}{suffix}")
+        tower_modes.append((j, kind))
+        out_names.append(name)
         out_texts.append(text)
-    # every tower ordinal of a description — the mode's own, and what it is at standstill
-    # or at the top speed — counted without the platform's modes below the tower's own
+    # every tower ordinal — the mode's id, its description, what it is at standstill or at
+    # the top speed — counted without the platform's modes below the tower's own: the id as
+    # its text (a tower mode named by another family, a blade whirl, leaves its ordinal out)
+    for j, kind in tower_modes:
+        rest = out_names[j][len(kind) :]
+        number = rest[: len(rest) - len(rest.lstrip("0123456789"))]
+        n = int(number) - platform.get(kind, 0) if number else 1
+        out_names[j] = f"{kind}{max(n, 1)}{rest[len(number) :]}"
     return tuple(out_names), tuple(_platform_counted(t, platform) for t in out_texts)
 
 
