@@ -584,3 +584,53 @@ def test_the_floater_s_moorings_are_turned_into_the_platform_s_frame(semi):
     mooring.write_text(text[: text.index("begin ext_sys", text.index("name   line1"))])
     k = np.asarray(importers.load(semi).tower.foundation.platform.stiffness)
     assert k[0, 0] > 10 * k[1, 1] and k[0, 0] > 0.1 * three
+
+
+MEMBER = """\
+  begin main_body;
+    name        column ;
+    type        timoschenko ;
+    nbodies       1 ;
+    node_distribution c2_def ;
+    begin  timoschenko_input ;
+      filename ../IEA-15-240-RWT/IEA_15MW_RWT_Dummy_st.dat;
+      set  1 1 ;
+    end  timoschenko_input ;
+    begin  c2_def ;
+      nsec 2 ;
+      sec  1  0.0e+00  0.0e+00 0.0e+00  0.0e+00 ;
+      sec  2  0.0e+00  0.0e+00 1.0e+00  0.0e+00 ;
+    end  c2_def ;{mass}
+  end main_body ;
+"""
+
+
+@pytest.mark.parametrize("mass", ["", "\n    concentrated_mass 1 0 0 0 5e5 0 0 0 ;"])
+def test_a_floater_s_members_stand_beside_the_turbine(semi, mass):
+    """A floater whose members are main bodies of their own (the IEA-22 semisubmersible's
+    columns and pontoons: placed by base blocks, joined by constraints, carrying the hydro
+    elements of Morison's drag) — listed before the floater's body, the turbine is still
+    found above the body that holds the rotor; their hydro elements are said as the
+    floater's, not as water missing from the tower; a member with mass is a warning (the
+    floater's MASS does not hold it)."""
+    from wtvib import importers
+
+    _edit(semi, "  begin main_body;\n    name        ifb ;",
+          MEMBER.format(mass=mass) + "  begin main_body;\n    name        ifb ;")  # fmt: skip
+    _edit(semi, "    begin base;\n\t  mbdy ifb ;",
+          "    begin base;\n      mbdy column ;\n      inipos 0 -60 0 ;\n    end base;\n"
+          "    begin base;\n\t  mbdy ifb ;")  # fmt: skip
+    _edit(semi, "\tbegin water_properties;",
+          "\tbegin hydro_element;\n\t  mbdy_name column;\n\t  hydrosections uniform 2;\n"
+          "\t  nsec 2;\n\t  sec 0.0 -1.0 1.0 100 100 10 0 0 0 0 100;\n"
+          "\t  sec 1.0 -1.0 1.0 100 100 10 0 0 0 0 100;\n\tend hydro_element;\n"
+          "\tbegin water_properties;")  # fmt: skip
+    spec = importers.load(semi)
+    assert spec.tower.foundation.platform is not None
+    said = " ".join(spec.assumptions)
+    assert "hydro elements on column (the floater's members" in said
+    warned = [w for w in spec.warnings if w.startswith("tower.")]
+    if mass:
+        assert len(warned) == 1 and "(column, ifb) carry 500,002 kg" in warned[0], warned
+    else:
+        assert warned == [], warned

@@ -278,8 +278,10 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
             (c.get("mbdy") or c.need("body")).values[0].lower() for c in constraint.each("fix0")
         ]
     base = next((n for n in fixed if n in bodies), None)
-    if base is None:
-        base = next((n for n in bodies if n not in parents), None)
+    if base is None:  # the first body with none below it and some above (a floater's
+        # members placed by base blocks of their own, joined by constraints: not the chain)
+        roots = [n for n in bodies if n not in parents]
+        base = next((n for n in roots if n in children), roots[0] if roots else None)
     if base is None:
         raise SpecError(
             "no body stands on the ground (no fix0, no base)", source=str(structure.file)
@@ -478,9 +480,28 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             *([drivetrain_note] if drivetrain_note else []),
         ],
     }
+    _support(data, top, root, (chain, embedded, bodies))
+    aerodynamics = _aerodynamics(top, root, chain, control)
+    if aerodynamics is not None:
+        data["aerodynamics"] = aerodynamics
+    out: dict[str, Any] = _plain(data)
+    return out
+
+
+def _support(
+    data: dict[str, Any],
+    top: Block,
+    root: Path,
+    model: tuple["_Chain", set[str], dict[str, Body]],
+) -> None:
+    """What the tower stands in or on, added to the spec's ``data``: the water a monopile
+    moves (the hydro block), the floater (its platform block and notes), and the warnings
+    of what of the support is not read."""
+    chain, embedded, bodies = model
     added, hydro_left = _added_mass(top, chain)
     if added is not None:
         data["tower"]["added_mass"] = added
+    beside: list[str] = []
     if chain.floater is not None:
         structure = top.block("new_htc_structure")
         assert structure is not None
@@ -489,14 +510,36 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
         )
         data["tower"]["foundation"] = {"kind": "platform", "platform": block}
         data["assumptions"] += notes
-    warnings = _support_warnings(embedded, hydro_left)
+        beside = _beside_the_chain(chain, bodies, block)
+        if hydro_left:  # the floater's members: WAMIT's is its added mass
+            data["assumptions"].append(
+                f"HAWC2's hydro elements on {', '.join(hydro_left)} (the floater's members: "
+                "Morison's drag and inertia beside WAMIT's potential flow) are left out: the "
+                "floater's added mass is WAMIT's, its viscous drag is not modelled."
+            )
+            hydro_left = []
+    warnings = _support_warnings(embedded, hydro_left) + beside
     if warnings:
         data["warnings"] = warnings
-    aerodynamics = _aerodynamics(top, root, chain, control)
-    if aerodynamics is not None:
-        data["aerodynamics"] = aerodynamics
-    out: dict[str, Any] = _plain(data)
-    return out
+
+
+def _beside_the_chain(
+    chain: "_Chain", bodies: dict[str, Body], platform: dict[str, Any]
+) -> list[str]:
+    """A floating model's bodies outside the turbine's chain (the floater's members, which
+    HAWC2 models write massless, carrying its hydro elements: ESYSWamit's MASS is the
+    floater's): where they carry mass, that mass is not in the platform — said."""
+    used = {id(b) for b in (*chain.tower, *chain.head, chain.shaft, *chain.hubs, *chain.blades)}
+    left = [b for b in bodies.values() if id(b) not in used]
+    mass = sum(_mass_of(b) + sum(float(m[3]) for _, m in b.masses) for b in left)
+    if not mass > 1e-3 * platform["mass_kg"]:
+        return []
+    names = ", ".join(b.name for b in left)
+    return [
+        f"tower.foundation: the model's bodies beside the turbine ({names}) carry "
+        f"{mass:,.0f} kg that the floater's MASS ({platform['mass_kg']:,.0f} kg) does not: "
+        "left out of the platform"
+    ]
 
 
 def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str], dict[str, Body]]:
