@@ -7,6 +7,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py floating  # r-test's OC4 semisubmersible
     .venv/bin/python tests/campaigns/exhaustive.py windio-floating  # windIO OC3/OC4 platforms
     .venv/bin/python tests/campaigns/exhaustive.py hawc2     # the IEA-15 onshore HAWC2 model
+    .venv/bin/python tests/campaigns/exhaustive.py hawc2-floating  # its UMaineSemi floater
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
@@ -21,7 +22,10 @@ every key path of the windIO OC3 spar and OC4 semisubmersible (tests/data/windio
 plus each number at 0, 1e-300 and 1e300; the platform read under the NREL 5-MW catalogue
 turbine's head on the OC3/OC4 tower (its modes computed on the platform) and audited. hawc2:
 as deck, on every file of the IEA-15 onshore HAWC2 model (tests/data/hawc2: the main htc,
-the htc files it continues in, the st, ae and opt files, the pc file's first 200 lines). The
+the htc files it continues in, the st, ae and opt files, the pc file's first 200 lines).
+hawc2-floating: as deck, on the IEA-15 UMaineSemi HAWC2 model's floater (its main htc's
+ext_sys floater and constraint blocks, the elasticBar mooring system and its constraints,
+WAMIT's .hst). The
 invariant, as the CLI's: a typed wtvib
 error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
 line per crash or slow case. tests/FUZZ.md records the campaigns run.
@@ -130,18 +134,41 @@ def hawc2_cases(source: Path, work: Path) -> Iterator[Case]:
         yield from _line_cases(source, work, H2_MAIN, name, first)
 
 
+#: The floating HAWC2 campaign's files and lines (1-based, inclusive): the floater's
+#: ext_sys and the constraint block of the main htc, the moorings, the hydrostatics.
+H2_SEMI = "HAWC2/IEA-15-240-RWT-UMaineSemi/htc/IEA_15MW_RWT_UMaineSemi.htc"
+H2_SEMI_DATA = "HAWC2/IEA-15-240-RWT-UMaineSemi/data/IEA_15MW_RWT_UMaineSemi_"
+HAWC2_FLOATING_FILES = (
+    (H2_SEMI, (73, 165)),
+    (H2_SEMI_DATA + "mooring_system.htc", None),
+    (H2_SEMI_DATA + "mooring_constraint.htc", None),
+    ("OpenFAST/IEA-15-240-RWT-UMaineSemi/HydroData/IEA-15-240-RWT-UMaineSemi.hst", None),
+)
+
+
+def hawc2_floating_cases(source: Path, work: Path) -> Iterator[Case]:
+    for name, span in HAWC2_FLOATING_FILES:
+        yield from _line_cases(source, work, H2_SEMI, name, span)
+
+
 def floating_cases(source: Path, work: Path) -> Iterator[Case]:
     for fst, name, first in FLOATING_FILES:
         yield from _line_cases(source, work, fst, name, first)
 
 
 def _line_cases(
-    source: Path, work: Path, fst: str, name: str, first: int | None = None
+    source: Path,
+    work: Path,
+    fst: str,
+    name: str,
+    first: int | tuple[int, int] | None = None,
 ) -> Iterator[Case]:
-    """Each line of ``name`` (of the first ``first``) deleted, cut, its first and last token
-    replaced by each of TOKENS; the deck set ``fst`` imported with it."""
+    """Each line of ``name`` (of the first ``first``, or lines ``first`` = (from, to), 1-based
+    and inclusive) deleted, cut, its first and last token replaced by each of TOKENS; the
+    deck set ``fst`` imported with it."""
     lines = (source / name).read_text(encoding="latin-1").splitlines(keepends=True)
-    for i, line in enumerate(lines[:first]):
+    start, stop = (first[0] - 1, first[1]) if isinstance(first, tuple) else (0, first)
+    for i, line in enumerate(lines[start:stop], start=start):
         edits = [("delete", [*lines[:i], *lines[i + 1 :]])]
         edits.append(("cut", [*lines[:i], line[: len(line) // 2]]))
         tokens = line.split()
@@ -313,7 +340,15 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument(
         "campaign",
-        choices=["deck", "windio", "extremes", "floating", "windio-floating", "hawc2"],
+        choices=[
+            "deck",
+            "windio",
+            "extremes",
+            "floating",
+            "windio-floating",
+            "hawc2",
+            "hawc2-floating",
+        ],
     )
     ap.add_argument("--part", type=int, default=0)
     ap.add_argument("--parts", type=int, default=1)
@@ -338,6 +373,19 @@ def main() -> None:
             tar.extractall(source, filter="data")
         shutil.copytree(source, work)
         cases = hawc2_cases(source, work)
+    elif args.campaign == "hawc2-floating":
+        import tarfile
+
+        source = work.parent / "source"
+        for archive in (
+            "hawc2/iea15_onshore",
+            "hawc2/iea15_umainesemi",
+            "openfast_decks/iea15_semi",
+        ):
+            with tarfile.open(ROOT / f"tests/data/{archive}.tar.gz") as tar:
+                tar.extractall(source, filter="data")
+        shutil.copytree(source, work)
+        cases = hawc2_floating_cases(source, work)
     elif args.campaign == "windio":
         work.mkdir(parents=True)
         cases = windio_cases(work)
