@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from wtvib import importers
+from wtvib.errors import SpecError
 from wtvib.importers import elastodyn, servodyn
 
 DECK = """------- ELASTODYN -------
@@ -250,3 +251,71 @@ def test_a_deck_set_whose_structure_is_a_beamdyn_beam_alone_is_audited(tmp_path,
     checks = {c["id"]: c for c in json.loads(result.stdout)["checks"]}
     assert checks["system.stability"]["status"] == "pass"
     assert "no mode negatively damped" in checks["system.stability"]["message"]
+
+
+LIN_AERO = "glue-codes/openfast/5MW_Land_Linear_Aero/5MW_Land_Linear_Aero.fst"
+INFLOW = "glue-codes/openfast/5MW_Baseline/NRELOffshrBsline5MW_InflowWind_Steady8mps.dat"
+
+
+@pytest.fixture
+def lin_aero(tmp_path: Path) -> Path:
+    """r-test's 5MW_Land_Linear_Aero (tests/data/openfast_decks/rtest_aero.tar.gz): a
+    linearisation deck set — Linearize on, no controller (the generator never switched on),
+    InflowWind's steady 8 m/s, RotSpeed 12.1 rpm, pitch 0°."""
+    import tarfile
+
+    data = Path(__file__).resolve().parent / "data" / "openfast_decks" / "rtest_aero.tar.gz"
+    with tarfile.open(data) as tar:
+        tar.extractall(tmp_path, filter="data")
+    return tmp_path / LIN_AERO
+
+
+def test_a_linearisation_deck_is_judged_at_its_own_operating_point(lin_aero):
+    """The deck describes one operating point, the one OpenFAST linearises: its damping is
+    judged there, not over a fixed-pitch schedule of 3–25 m/s the deck does not describe
+    (which stalled the rotor from 18 m/s and called the NREL 5-MW aeroelastically unstable);
+    said in the warning about the range. The range given (--rpm), the schedule as before."""
+    from wtvib import audit
+
+    spec = importers.load(lin_aero)
+    assert spec.aerodynamics is not None
+    pts = spec.aerodynamics.control.operating_points
+    assert pts is not None
+    assert (pts.wind_m_s, pts.rpm, pts.pitch_deg) == ([8.0], [12.1], [0.0])
+    assert any("its own operating point, 8 m/s at 12.1 rpm" in w for w in spec.warnings)
+    report = audit.run(spec)
+    stability = next(c for c in report.checks if c.id == "aerodynamics.stability")
+    assert stability.status == "pass", stability.message
+    ops = [m.operating for m in report.modes if m.judged and m.operating is not None]
+    assert ops and all(list(op.wind) == [8.0] for op in ops)
+    given = importers.load(lin_aero, importers.ReadOptions(rpm=(6.9, 12.1)))
+    assert given.aerodynamics is not None and given.aerodynamics.control.operating_points is None
+
+
+@pytest.mark.parametrize(
+    "old, new, expect",
+    [
+        ("1   WindType", "3   WindType", None),  # a turbulent field: no steady point
+        ("True          Linearize", "False         Linearize", None),  # not a linearisation
+        (
+            "          8   HWindSpeed",
+            "1e300   HWindSpeed",
+            r"Steady8mps.dat:14: HWindSpeed 1e\+300 m/s: a steady wind",
+        ),
+    ],
+)
+def test_only_a_linearisation_deck_s_steady_wind_is_its_operating_point(lin_aero, old, new, expect):
+    root = lin_aero.parents[3]
+    for path in (root / INFLOW, lin_aero):
+        text = path.read_text()
+        if old in text:
+            path.write_text(text.replace(old, new))
+            break
+    else:
+        raise AssertionError(old)
+    if expect is not None:
+        with pytest.raises(SpecError, match=expect):
+            importers.load(lin_aero)
+        return
+    spec = importers.load(lin_aero)
+    assert spec.aerodynamics is not None and spec.aerodynamics.control.operating_points is None

@@ -2,7 +2,7 @@
 
 import functools
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol, cast
 
@@ -308,6 +308,14 @@ class Check:
 def ordinal(k: int) -> str:
     """Ordinal words of mode descriptions: 1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
     return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"
+
+
+def operating_points(winds: Sequence[float], kind: str = "operating points") -> str:
+    """How many operating points, over which winds: ``26 operating points 3–25 m/s``, or
+    ``1 operating point at 8 m/s`` (a linearisation deck's own)."""
+    if len(winds) == 1:
+        return f"1 {kind.removesuffix('s')} at {winds[0]:g} m/s"
+    return f"{len(winds)} {kind} {winds[0]:g}–{winds[-1]:g} m/s"
 
 
 def dotted_lines(name: str, fits: Callable[[str], bool]) -> list[str]:

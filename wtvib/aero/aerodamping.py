@@ -66,7 +66,7 @@ from numpy.typing import NDArray
 
 from ..judge.analysis import Analysis, Context, Damping, Subsystem, no_modes
 from ..numerics import modal, unsteady
-from ..results import Check, Mode, OperatingDamping, Rule
+from ..results import Check, Mode, OperatingDamping, Rule, operating_points
 from ..rules import HEAVY_DAMPING, NEGATIVE
 from ..spec import Spec
 from ..subsystems import blade
@@ -1121,7 +1121,7 @@ def analyse(spec: Spec, ctx: Context) -> Analysis:
             if unsettled and sol.twist_unsettled is not None
             else ""
         )
-        + f"{len(sch.wind)} steady operating points {sch.wind[0]:g}–{sch.wind[-1]:g} m/s: "
+        + f"{operating_points(sch.wind.tolist(), 'steady operating points')}: "
         f"C_p up to {best:.3f} ({at}), thrust up to "
         f"{sol.thrust.max() / 1e3:,.0f} kN, {sch.rpm.min():.3g}–{sch.rpm.max():.3g} rpm, "
         f"pitch {sch.pitch_deg.min():.3g}–{sch.pitch_deg.max():.3g}°"

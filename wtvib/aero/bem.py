@@ -813,9 +813,14 @@ def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
     rated_kw = c.rated_power_kw or spec.turbine.rated_power_kw
     p_rated = rated_kw * 1e3 / c.generator_efficiency if rated_kw is not None else None
     where = pts.source or "aerodynamics.control.operating_points"
+    points = (
+        f"{len(winds)} operating points"
+        if len(winds) > 1
+        else f"one operating point, {winds[0]:g} m/s"
+    )
     notes.append(
-        f"at the model's {len(winds)} operating points ({where}): its rotor speed and "
-        "pitch, not a schedule computed here"
+        f"at the model's {points} ({where}): its rotor speed and pitch, not a schedule computed "
+        "here"
     )
     return Schedule(
         sol,

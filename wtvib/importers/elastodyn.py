@@ -24,7 +24,7 @@ from ..spec.base import SHAPE_SUM_TOLERANCE
 from . import beamdyn, stc
 from .deck import Deck, _file, beside, parse, present
 from .floating import refusal
-from .servodyn import Operation, operation
+from .servodyn import Operation, linearisation_point, operation
 from .subdyn import STEP_M, Monopile, monopile, water
 
 
@@ -325,6 +325,14 @@ def _operating(main: Deck, servo: Deck | None, fst: Deck | None, given: bool) ->
             f"{operating.note.removesuffix('.')}; give the operating range with --rpm MIN:MAX",
             source=str(main.path),
         )
+    found = linearisation_point(main, fst) if operating.initial and not given else None
+    if found is not None:  # the one point OpenFAST linearises, not a schedule invented
+        operating.control["operating_points"], said = found
+        operating.note += f" {said[0].upper()}{said[1:]}."
+        operating.warnings = [
+            w.replace("as a fixed-speed turbine;", f"as a fixed-speed turbine ({said});")
+            for w in operating.warnings
+        ]
     return operating
 
 

@@ -32,7 +32,7 @@ from typing import Any
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import _NUMBER, Deck, _file, beside, present
+from .deck import _NUMBER, Deck, _file, beside, parse, present
 
 #: OpenFAST's decks mark an input they do not use with 9999.9 (or 9998/9999).
 UNUSED = 9998.0
@@ -50,6 +50,8 @@ class Operation:
     control: dict[str, Any] = field(default_factory=dict)
     generator: dict[str, Any] = field(default_factory=dict)
     controller_file: str | None = None
+    #: the speed is the deck's initial RotSpeed, taken as fixed (no operating range given)
+    initial: bool = False
 
 
 def operation(main: Deck, servo: Deck | None, fst: Deck | None = None) -> Operation:
@@ -105,6 +107,7 @@ def _initial(main: Deck, why: str, control: dict[str, Any]) -> Operation:
             "(and --rated)"
         ],
         control=control,
+        initial=True,
     )
 
 
@@ -372,6 +375,48 @@ def discon(path: Path) -> dict[str, tuple[float, int]]:
             )
         out.setdefault(names[0], (float(parts[0].replace("D", "E")), number))
     return out
+
+
+#: The steadiest wind a linearisation deck's point may have [m/s] (InflowWind's HWindSpeed):
+#: above cut-out of any turbine, below which a steady BEM point is a wind turbine's.
+MAX_POINT_WIND = 50.0
+
+
+def linearisation_point(main: Deck, fst: Deck | None) -> tuple[dict[str, Any], str] | None:
+    """A linearisation deck set's own operating point, where it gives no operating range:
+    ``Linearize`` on in the .fst and InflowWind's steady wind (``WindType`` 1,
+    ``HWindSpeed``) — the one point OpenFAST linearises, at the initial RotSpeed and
+    BlPitch(1). The spec's ``operating_points`` of it and what it came from; None where the
+    deck set is not such a one (no InflowWind in the set, another wind type)."""
+    if fst is None or not fst.flag("Linearize") or "InflowFile" not in fst.values:
+        return None
+    if fst.num("CompInflow", default=0) != 1:
+        return None
+    path = beside(fst.path, fst.text("InflowFile"))
+    if not present(path):
+        return None
+    inflow = parse(path)
+    if "WindType" not in inflow.values or switch(inflow, "WindType") != 1:
+        return None
+    wind = inflow.num("HWindSpeed")
+    if not 0 < wind <= MAX_POINT_WIND:
+        raise SpecError(
+            f"HWindSpeed {wind:g} m/s: a steady wind of 0 … {MAX_POINT_WIND:g} m/s",
+            line=inflow.line("HWindSpeed"),
+            source=str(path),
+        )
+    rpm = main.num("RotSpeed")
+    pitch = main.num("BlPitch(1)", "BlPitch1", default=0.0)
+    source = (
+        f"the linearisation deck's own operating point: {path.name}'s HWindSpeed, "
+        f"{main.path.name}'s RotSpeed and BlPitch(1)"
+    )
+    point = {"wind_m_s": [wind], "rpm": [rpm], "pitch_deg": [pitch], "source": source}
+    return point, (
+        f"the deck set is a linearisation set (Linearize): its aerodynamics judged at its own "
+        f"operating point, {wind:g} m/s at {rpm:g} rpm and {pitch:g}° pitch, as OpenFAST "
+        "linearises it"
+    )
 
 
 def switch(deck: Deck, key: str, default: int | None = None) -> int:

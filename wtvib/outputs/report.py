@@ -17,6 +17,7 @@ from rich.text import Text
 
 from ..audit import Report
 from ..document import CheckDoc, ModeDoc, ReportDoc, ShareDoc, UncertaintyDoc
+from ..results import operating_points
 from . import words
 from .streams import shown
 
@@ -104,8 +105,7 @@ def _summary(data: ReportDoc, shed_wake: bool = True) -> Panel:
         lift = f"the {words.lift(shed_wake)}"
         grid.add_row(
             "Damping",
-            f"aeroelastic: {len(winds)} operating points {winds[0]:g}–{winds[-1]:g} m/s "
-            f"(aerodynamic + structural, {lift})",
+            f"aeroelastic: {operating_points(winds)} (aerodynamic + structural, {lift})",
         )
     elif data.get("damping") == "imported":
         grid.add_row("Damping", f"as computed by {data['results']['tool']} at its operating points")

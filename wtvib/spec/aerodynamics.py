@@ -126,14 +126,15 @@ class OperatingPoints(_Strict):
     controller's published schedule): the blade-element momentum solution is found at these
     winds, rotor speeds and pitches instead of at the controller's schedule."""
 
-    wind_m_s: list[float] = Field(min_length=2, max_length=400, description="Wind. [m/s]")
+    wind_m_s: list[float] = Field(min_length=1, max_length=400, description="Wind. [m/s]")
     rpm: list[float] = Field(description="Rotor speed. [rpm]")
     pitch_deg: list[float] = Field(description="Blade pitch, positive towards feather. [deg]")
     source: str | None = Field(None, description="Where the points come from.")
 
     @model_validator(mode="after")
     def _consistent(self) -> "OperatingPoints":
-        _increasing("wind_m_s", self.wind_m_s)
+        if len(self.wind_m_s) > 1:  # one point: a linearisation deck's own
+            _increasing("wind_m_s", self.wind_m_s)
         _same_length(self, "wind_m_s")
         if self.wind_m_s[0] <= 0 or self.wind_m_s[-1] > MAX_WIND_M_S:
             raise ValueError(f"wind_m_s must lie within 0 … {MAX_WIND_M_S:g} m/s")

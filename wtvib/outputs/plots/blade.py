@@ -219,8 +219,10 @@ def stall_damping_plot(
             lw=0,
             label="negative total damping",
         )
-        ax.plot(wind, total, color=colours[check.status], lw=2, label="total (aero + structural)")
-        ax.plot(wind, aero, color="#616161", lw=1.2, ls="--", label="aerodynamic")
+        dot = "o" if len(wind) == 1 else None  # one operating point: a dot, not a line
+        ax.plot(wind, total, color=colours[check.status], lw=2, marker=dot,
+                label="total (aero + structural)")  # fmt: skip
+        ax.plot(wind, aero, color="#616161", lw=1.2, ls="--", marker=dot, label="aerodynamic")
         ax.set_ylabel(f"{name}: ζ [%]")
         low = int(np.argmin(total))  # the title in the axis' unit (%), as the curves
         ax.set_title(

@@ -588,8 +588,8 @@ def damping_plot(report: Report) -> "Figure | None":
             lw=2.0 if ls == "-" else 1.2,
             ls=ls,
             label=mode.id,
-            marker="o" if tool else None,
-            ms=4,
+            marker="o" if tool or len(x) == 1 else None,  # one point: a dot, not a line
+            ms=4 if len(x) > 1 else 7,
         )
     aero = report.result(aerodamping.NAME, aerodamping.AerodynamicsResults)
     _damping_axes(ax, aero.schedule.rated_wind if aero is not None else None)
