@@ -302,6 +302,12 @@ def test_a_linearisation_deck_is_judged_at_its_own_operating_point(lin_aero):
             "1e300   HWindSpeed",
             r"Steady8mps.dat:14: HWindSpeed 1e\+300 m/s: a steady wind",
         ),
+        # a breath of wind overflowed the BEM, named as its fault and not the file's line
+        (
+            "          8   HWindSpeed",
+            "1e-300   HWindSpeed",
+            r"Steady8mps.dat:14: HWindSpeed 1e-300",
+        ),
     ],
 )
 def test_only_a_linearisation_deck_s_steady_wind_is_its_operating_point(lin_aero, old, new, expect):

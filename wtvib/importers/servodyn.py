@@ -377,9 +377,9 @@ def discon(path: Path) -> dict[str, tuple[float, int]]:
     return out
 
 
-#: The steadiest wind a linearisation deck's point may have [m/s] (InflowWind's HWindSpeed):
-#: above cut-out of any turbine, below which a steady BEM point is a wind turbine's.
-MAX_POINT_WIND = 50.0
+#: The winds a linearisation deck's point may have [m/s] (InflowWind's HWindSpeed): a
+#: breath to above any turbine's cut-out — a wind turbine's steady operating point.
+MIN_POINT_WIND, MAX_POINT_WIND = 0.1, 50.0
 
 
 def linearisation_point(main: Deck, fst: Deck | None) -> tuple[dict[str, Any], str] | None:
@@ -399,9 +399,10 @@ def linearisation_point(main: Deck, fst: Deck | None) -> tuple[dict[str, Any], s
     if "WindType" not in inflow.values or switch(inflow, "WindType") != 1:
         return None
     wind = inflow.num("HWindSpeed")
-    if not 0 < wind <= MAX_POINT_WIND:
+    if not MIN_POINT_WIND <= wind <= MAX_POINT_WIND:
         raise SpecError(
-            f"HWindSpeed {wind:g} m/s: a steady wind of 0 … {MAX_POINT_WIND:g} m/s",
+            f"HWindSpeed {wind:g} m/s: a steady wind of {MIN_POINT_WIND:g} … "
+            f"{MAX_POINT_WIND:g} m/s",
             line=inflow.line("HWindSpeed"),
             source=str(path),
         )
