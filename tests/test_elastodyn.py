@@ -251,6 +251,15 @@ def test_a_deck_set_whose_structure_is_a_beamdyn_beam_alone_is_audited(tmp_path,
     checks = {c["id"]: c for c in json.loads(result.stdout)["checks"]}
     assert checks["system.stability"]["status"] == "pass"
     assert "no mode negatively damped" in checks["system.stability"]["message"]
+    # ElastoDyn's polynomials: the clamped beam's computed, the free one's refused in a line
+    # (its free root's four coordinates broke the cantilever's basis: an internal error)
+    result = CliRunner().invoke(app, ["shapes", str(fst), "--no-plots"])
+    if root == "clamped":
+        assert result.exit_code == 0 and "BldFl1Sh" in result.stdout, result.output
+    else:
+        lines = [ln for ln in result.output.splitlines() if ln.strip()]
+        assert result.exit_code == 2 and len(lines) == 1, result.output
+        assert "a blade free at its root" in lines[0]
 
 
 LIN_AERO = "glue-codes/openfast/5MW_Land_Linear_Aero/5MW_Land_Linear_Aero.fst"

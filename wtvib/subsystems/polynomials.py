@@ -277,7 +277,8 @@ def _rpm(spec: Spec, rpm: float | None) -> float:
 
 def _sets(spec: Spec, rpm: float) -> list[_Set]:
     tower_sets = _tower_sets(spec) if spec.tower.has_structure else []
-    blade_sets = _blade_sets(spec, rpm) if spec.blade.structure is not None else []
+    s = spec.blade.structure  # ElastoDyn's blade is cantilevered: not a beam free at its root
+    blade_sets = _blade_sets(spec, rpm) if s is not None and s.root == "clamped" else []
     return [*tower_sets, *blade_sets]
 
 
@@ -564,8 +565,13 @@ def compute(spec: Spec, rpm: float | None = None) -> Shapes:
     rows_t = [r for r in rows if r.mode.startswith("tower.")]
     rows_b = [r for r in rows if r.mode.startswith("blade.")]
     if not rows:
+        free = spec.blade.structure is not None and spec.blade.structure.root == "free"
         raise SpecError(
-            "no tower structure and no blade table: nothing to compute mode shapes of",
+            "no tower structure, and a blade free at its root (a beam alone, as BeamDyn's "
+            "free-free test beams are): ElastoDyn's polynomials are a cantilevered blade's — "
+            "nothing to compute mode shapes of"
+            if free
+            else "no tower structure and no blade table: nothing to compute mode shapes of",
             source=spec.source_file,
         )
     head = tower.bending_head(spec)
