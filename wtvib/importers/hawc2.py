@@ -673,16 +673,7 @@ def _added_mass(top: Block, chain: "_Chain") -> tuple[dict[str, Any] | None, lis
 
     def setting(key: str, default: float, low: float, high: float) -> float:
         cmd = water.get(key) if water is not None else None
-        if cmd is None:
-            return default
-        value = cmd.number(0)
-        if not low <= value <= high:
-            raise SpecError(
-                f"water_properties {key} {value:g} is outside {low:g} … {high:g}",
-                line=cmd.line,
-                source=str(cmd.file),
-            )
-        return value
+        return default if cmd is None else cmd.within(0, low, high, f"water_properties {key}")
 
     rho = setting("rho", WATER_DENSITY, 500.0, 2000.0)  # kg/m³: water, fresh to brine
     mwl = setting("mwl", 0.0, -MAX_COORDINATE_M, MAX_COORDINATE_M)

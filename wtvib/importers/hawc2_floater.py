@@ -117,14 +117,7 @@ _NEEDED = {
 
 
 def _bounded(cmd: Command, i: int, low: float, high: float, what: str) -> float:
-    value = cmd.number(i)
-    if not low <= value <= high:
-        raise SpecError(
-            f"{cmd.key}: {what} {value:g} is outside {low:g} … {high:g}",
-            line=cmd.line,
-            source=str(cmd.file),
-        )
-    return value
+    return cmd.within(i, low, high, f"{cmd.key}: {what}")
 
 
 def to_platform(x: np.ndarray) -> np.ndarray:

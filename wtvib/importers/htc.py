@@ -65,6 +65,18 @@ class Command:
     def numbers(self, start: int = 0) -> list[float]:
         return [self.number(i) for i in range(start, len(self.values))]
 
+    def within(self, i: int, low: float, high: float, what: str) -> float:
+        """The ``i``-th value as a number from ``low`` to ``high``, else one line naming
+        ``what`` it is, its file and line."""
+        value = self.number(i)
+        if not low <= value <= high:
+            raise SpecError(
+                f"{what} {value:g} is outside {low:g} … {high:g}",
+                line=self.line,
+                source=str(self.file),
+            )
+        return value
+
 
 @dataclass
 class Block:
