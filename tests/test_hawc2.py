@@ -136,6 +136,16 @@ def _edit(path: Path, old: str, new: str) -> None:
         ("htc", "begin fix0;  tower fixed to ground\n      body tower;\n    end fix0;",
          "begin dll;\n      mbdy_node tower 0;\n      dll 'ESYSWamit_64.dll';\n    end dll;",
          "held by the external systems ESYSWamit_64.dll: a floating model"),
+        # a command's values dropped (the campaign's "bare" case, tests/FUZZ.md campaign
+        # 18): a position, Euler angles, a damping and a mass each short of their numbers
+        ("htc", "inipos        0.0 0.0 -15.0 ;", "inipos ;", "inipos: value 1 must be a number"),
+        ("htc", "body_eulerang 0.0 0.0   0.0 ;", "body_eulerang ;",
+         "body_eulerang: value 1 must be a number"),
+        ("bodies", "damping_posdef  0.0 0.0 0.0 4.65E-04  4.65E-04  5.971406e-04 ;",
+         "damping_posdef  0.0 0.0 ;", "damping_posdef: value 3 must be a number (got nothing"),
+        ("bodies", "concentrated_mass  1  0.00   0.00    0.00    28249   0.00          0.00"
+         "           0.00    ;", "concentrated_mass  1  0.00 ;",
+         "concentrated_mass: value 3 must be a number (got nothing: the"),
         # a load-case template's tag (the IEA-22's htc/_master DLB file)
         ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    [tz]     0    ;",
          "is a template's tag, [tz], not a number"),
@@ -148,6 +158,7 @@ def test_a_broken_model_is_one_line_and_exit_2(model, where, old, new, words):
         "orientation": shared / "IEA_15MW_RWT_WTG_orientation.htc",
         "pc": shared / "IEA_15MW_RWT_pc_OpenFASTpolars_3dcorr.dat",
         "st": shared / "IEA_15MW_RWT_Blade_st_noFPM.st",
+        "bodies": shared / "IEA_15MW_RWT_WTG_bodies_noFPM.htc",
     }[where]
     _one_line(model, target, old, new, words)
 
@@ -556,6 +567,10 @@ def semi(tmp_path: Path) -> Path:
          "mass per length in water [kg/m] 795.7 is outside"),
         ("mooring", "data axial_stiff  3.270e+09 ;", "data axial_stiff  nan ;",
          "axial_stiff: value 1 must be a number"),
+        ("mooring", "data start_pos  0.000e+00 -8.376e+02  2.000e+02 ;",
+         "data start_pos  0.000e+00 -8.376e+02 ;", "start_pos: value 3 must be a number"),
+        ("constraint", "mbdy_node  ifb 1 ;", "mbdy_node ;", "its fairlead's body '' does not"),
+        ("htc", "mbdy_node ifb  0                   ;", "mbdy_node ;", "a floating model whose"),
         # a line laid 237 m long where its ends lie 790 m apart
         ("mooring", "data end_pos -0.000e+00  1.240e+01", "data end_pos -0.000e+00  -6.000e+02",
          "mooring line 1 is stretched 237% of its length"),

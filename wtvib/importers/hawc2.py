@@ -100,7 +100,7 @@ def _bodies(structure: Block, root: Path) -> dict[str, Body]:
     by_name = {}
     for b in blocks:
         name_cmd = b.need("name")
-        by_name[name_cmd.values[0].lower()] = b
+        by_name[name_cmd.text(0).lower()] = b
     out: dict[str, Body] = {}
     for name, b in by_name.items():
         source = b
@@ -151,14 +151,14 @@ def _body(name: str, b: Block, root: Path) -> Body:
             f"main body {name}: no timoschenko_input block", line=b.line, source=str(b.file)
         )
     file_cmd = timo.need("filename")
-    path = htc.resolve(file_cmd.values[0], root, file_cmd.file.parent, file_cmd)
+    path = htc.resolve(file_cmd.text(0), root, file_cmd.file.parent, file_cmd)
     fpm_cmd = timo.get("fpm")
     fpm = fpm_cmd is not None and fpm_cmd.number(0) == 1
     set_cmd = timo.need("set")
     st = htc.read_st(path, int(set_cmd.number(0)), int(set_cmd.number(1)), 30 if fpm else len(ST))
-    masses = [(int(c.number(0)), np.array(c.numbers(1)[:7])) for c in b.all("concentrated_mass")]
+    masses = [(int(c.number(0)), np.array(c.first(7, 1))) for c in b.all("concentrated_mass")]
     damp = b.get("damping_posdef") or b.get("damping_aniso")
-    damping = tuple(damp.numbers()) if damp is not None else (0.0,) * 6
+    damping = tuple(damp.first(6)) if damp is not None else (0.0,) * 6
     return Body(name, b, c2, st, fpm, masses, damping)
 
 
@@ -168,11 +168,11 @@ def _place(bodies: dict[str, Body], orientation: Block) -> None:
         cmd = base.get("mbdy") or base.need("body")
         body = _named(bodies, cmd)
         ini = base.get("inipos")
-        body.origin = np.array(ini.numbers()[:3]) if ini is not None else np.zeros(3)
+        body.origin = np.array(ini.first(3)) if ini is not None else np.zeros(3)
         angles = base.all("mbdy_eulerang") + base.all("body_eulerang")
         frame = np.eye(3)
         for a in angles:
-            frame = frame @ _rotation(a.numbers()[:3])
+            frame = frame @ _rotation(a.first(3))
         body.frame, body.placed = frame, True
     relatives = orientation.each("relative")
     for _ in range(len(relatives) + 1):  # in order, each after its parent
@@ -184,7 +184,7 @@ def _place(bodies: dict[str, Body], orientation: Block) -> None:
                 continue
             frame = parent.frame.copy()
             for a in rel.all("mbdy2_eulerang") + rel.all("body2_eulerang"):
-                frame = frame @ _rotation(a.numbers()[:3])
+                frame = frame @ _rotation(a.first(3))
             child.origin = parent.at(_node_ref(first, "last")) - frame @ child.node(
                 _node_ref(second, "1")
             )
@@ -245,7 +245,7 @@ def _unheld(base: str, structure: Block) -> None:
     systems = []
     for dll in constraint.each("dll") if constraint is not None else []:
         node, name = dll.get("mbdy_node"), dll.get("dll")
-        if node is not None and node.values[0].lower() == base and name is not None:
+        if node is not None and node.values[:1] == (base,) and name is not None and name.values:
             systems.append(name.values[0].strip("'\""))
     names = ", ".join(dict.fromkeys(systems))
     held_by = f", held by the external systems {names}" if systems else ""
@@ -268,15 +268,13 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
     for rel in orientation.each("relative"):
         first = rel.get("mbdy1") or rel.need("body1")
         second = rel.get("mbdy2") or rel.need("body2")
-        parents[second.values[0].lower()] = first.values[0].lower()
+        parents[second.text(0).lower()] = first.text(0).lower()
     children: dict[str, list[str]] = {}
     for child, parent in parents.items():
         children.setdefault(parent, []).append(child)
     fixed = []
     if constraint is not None:
-        fixed = [
-            (c.get("mbdy") or c.need("body")).values[0].lower() for c in constraint.each("fix0")
-        ]
+        fixed = [(c.get("mbdy") or c.need("body")).text(0).lower() for c in constraint.each("fix0")]
     base = next((n for n in fixed if n in bodies), None)
     if base is None:  # the first body with none below it and some above (a floater's
         # members placed by base blocks of their own, joined by constraints: not the chain)
@@ -555,7 +553,7 @@ def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]
     _place(bodies, orientation)
     soil = top.block("soil")
     embedded = {
-        e.need("mbdy_name").values[0].lower() for e in (soil.each("soil_element") if soil else [])
+        e.need("mbdy_name").text(0).lower() for e in (soil.each("soil_element") if soil else [])
     }
     return _chain(bodies, structure, embedded), embedded, bodies
 
@@ -853,7 +851,7 @@ def _operational_data(top: Block, root: Path) -> tuple[Path, np.ndarray, str] | 
     hs2 = top.block("hawcstab2")
     named = hs2.get("operational_data_filename") if hs2 is not None else None
     if named is not None and named.values:
-        path = htc.resolve(named.values[0], root, named.file.parent, named)
+        path = htc.resolve(named.text(0), root, named.file.parent, named)
         table = _turning(htc.read_opt(path))
         how = f"named by the htc's hawcstab2 block (line {named.line})"
         return (path, table, how) if len(table) else None
@@ -959,8 +957,8 @@ def _aerodynamics(
         return None
     ae_sets = aero.get("ae_sets")
     set_no = int(ae_sets.number(0)) if ae_sets is not None else 1
-    ae = htc.read_ae(htc.resolve(ae_cmd.values[0], root, ae_cmd.file.parent, ae_cmd), set_no)
-    profiles = htc.read_pc(htc.resolve(pc_cmd.values[0], root, pc_cmd.file.parent, pc_cmd))
+    ae = htc.read_ae(htc.resolve(ae_cmd.text(0), root, ae_cmd.file.parent, ae_cmd), set_no)
+    profiles = htc.read_pc(htc.resolve(pc_cmd.text(0), root, pc_cmd.file.parent, pc_cmd))
     body = chain.blades[0]
     c2 = body.c2
     z_c2 = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1))])

@@ -73,9 +73,9 @@ def find(structure: Block, base: str) -> Floater | None:
     }
     for dll in constraint.each("dll") if constraint is not None else []:
         node, esys = dll.get("mbdy_node"), dll.get("esys_node")
-        if node is None or esys is None or node.values[0].lower() != base:
+        if node is None or esys is None or _word(node) != base:
             continue
-        system = systems.get(esys.values[0].lower())
+        system = systems.get(_word(esys))
         if system is not None:
             return Floater(system, base, dll)
     return None
@@ -144,13 +144,12 @@ def platform(
     cm = [_bounded(cog, i, -1000, 1000, "CM coordinate [m]") for i in range(3)]
     radii = _radii(data, system)
     stem = _one(data, "WAMIT_FILE", system)
-    base = htc.resolve(stem.values[0].strip("'\""), root, stem.file.parent, stem, ".1")
+    base = htc.resolve(stem.text(0).strip("'\""), root, stem.file.parent, stem, ".1")
     named = Naming("WAMIT_FILE", stem.line, stem.file)
     added, by_frequency = wamit_added_mass(base.with_name(base.name + ".1"), rho, 1.0, named)
     hydrostatic = wamit_hydrostatic(base.with_name(base.name + ".hst"), rho, g, 1.0, named)
-    offset = floater.constraint.get("id")
     held = bodies[floater.body]
-    prp = held.origin + held.frame @ (np.array(offset.numbers()[:3]) if offset else np.zeros(3))
+    prp = held.origin + held.frame @ _point(floater.constraint.get("id"))
     moorings, mooring_note = _moorings(structure, floater, bodies, prp, (rho, g))
     block = {
         "tower_base_m": float(prp[2] - tower_base[2]),  # HAWC2's z points down
@@ -230,8 +229,8 @@ def _moorings(
         m_air = _bounded(mass, 0, 1e-3, 1e5, "mass per length in air [kg/m]")
         m_wet = _bounded(mass, 1, 1e-6, m_air, "mass per length in water [kg/m]")
         ea = _bounded(_one_line(data, "AXIAL_STIFF", bar), 0, 1.0, 1e13, "EA [N]")
-        start = np.array(_one_line(data, "START_POS", bar).numbers()[:3])
-        end = np.array(_one_line(data, "END_POS", bar).numbers()[:3])
+        start = _point(_one_line(data, "START_POS", bar))
+        end = _point(_one_line(data, "END_POS", bar))
         length = float(np.linalg.norm(end - start))
         fairlead = ends.get(name)
         if fairlead is None:
@@ -257,6 +256,14 @@ def _moorings(
         f"{len(lines)} elasticBar mooring lines (MoorPy at the undisplaced position, depth "
         f"{depth:g} m; each laid from start_pos to end_pos: {lines[0][2]:g} m long)"
     )
+
+
+def _point(cmd: Command | None) -> np.ndarray:
+    """A command's first three values as a point [m] (none: the origin); fewer, or not
+    numbers, one line naming the command."""
+    if cmd is None:
+        return np.zeros(3)
+    return np.array([cmd.within(i, -1e4, 1e4, f"{cmd.key}: coordinate [m]") for i in range(3)])
 
 
 def _one_line(data: dict[str, list[Command]], key: str, bar: Block) -> Command:
@@ -285,10 +292,9 @@ def _line_ends(structure: Block, names: set[str]) -> dict[str, tuple[str, str, n
             anchored.add(line)
         elif "fixedtobody" in init:
             body = dll.need("mbdy_node")
-            offset = dll.get("id")
             held[line] = (
-                body.values[0].lower(),
+                _word(body),
                 body.values[1] if len(body.values) > 1 else "1",
-                np.array(offset.numbers()[:3]) if offset else np.zeros(3),
+                _point(dll.get("id")),
             )
     return {k: v for k, v in held.items() if k in anchored}

@@ -49,8 +49,9 @@ class Command:
                     line=self.line,
                     source=str(self.file),
                 ) from None
+            said = repr(got) if i < len(self.values) else "nothing: the command ends before it"
             raise SpecError(
-                f"{self.key}: value {i + 1} must be a number (got {got!r})",
+                f"{self.key}: value {i + 1} must be a number (got {said})",
                 line=self.line,
                 source=str(self.file),
             ) from None
@@ -61,6 +62,20 @@ class Command:
                 source=str(self.file),
             )
         return value
+
+    def text(self, i: int = 0) -> str:
+        """The ``i``-th value as it stands (a name, a file), or one line naming the command
+        that lacks it."""
+        if i >= len(self.values):
+            raise SpecError(
+                f"{self.key}: value {i + 1} is missing", line=self.line, source=str(self.file)
+            )
+        return self.values[i]
+
+    def first(self, count: int, start: int = 0) -> list[float]:
+        """``count`` numbers from the ``start``-th value on (a position's three, a damping's
+        six): one missing or not a number is one line naming the command."""
+        return [self.number(i) for i in range(start, start + count)]
 
     def numbers(self, start: int = 0) -> list[float]:
         return [self.number(i) for i in range(start, len(self.values))]
