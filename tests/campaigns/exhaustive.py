@@ -10,26 +10,26 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py hawc2-floating  # its UMaineSemi floater
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
-deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn, AeroDyn
-blade, ROSCO, an aerofoil) deleted, cut in half, its first and last token replaced by
-abc, nan, -1, 0, 1e300, 1e-300, 2.7 (and, in an htc file, each command's values dropped:
-``bare``). windio: each key path (list items: the first two)
-deleted, emptied, made text, negated, true, null. extremes: each numeric leaf of every
-turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. floating: as deck, on the files of r-test's
-OC4 semisubmersible deck sets that make its platform (the .fst, ElastoDyn, HydroDyn,
-SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120 lines of its .1; the
-archive tests/data/openfast_decks/rtest_floating.tar.gz). windio-floating: as windio, on
-every key path of the windIO OC3 spar and OC4 semisubmersible (tests/data/windio_floating),
-plus each number at 0, 1e-300 and 1e300; the platform read under the NREL 5-MW catalogue
-turbine's head on the OC3/OC4 tower (its modes computed on the platform) and audited. hawc2:
-as deck, on every file of the IEA-15 onshore HAWC2 model (tests/data/hawc2: the main htc,
-the htc files it continues in, the st, ae and opt files, the pc file's first 200 lines).
-hawc2-floating: as deck, on the IEA-15 UMaineSemi HAWC2 model's floater (its main htc's
-ext_sys floater and constraint blocks, the elasticBar mooring system and its constraints,
-WAMIT's .hst). The
-invariant, as the CLI's: a typed wtvib
-error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then one
-line per crash or slow case. tests/FUZZ.md records the campaigns run.
+deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn,
+AeroDyn blade, ROSCO, an aerofoil) deleted, cut in half, its first and last token replaced
+by abc, nan, -1, 0, 1e300, 1e-300, 2.7 (and each line's first token dropped: a deck's
+value, ``dropped``; in an htc file each command's values: ``bare``). windio: each key path
+(list items: the first two) deleted, emptied, made text, negated, true, null. extremes:
+each numeric leaf of every turbines/*.yaml at 1e-300, 1e-15, 1e9, 1e300. floating: as deck,
+on the files of r-test's OC4 semisubmersible deck sets that make its platform (the .fst,
+ElastoDyn, HydroDyn, SeaState, MAP++ and MoorDyn moorings, WAMIT's .hst and the first 120
+lines of its .1; the archive tests/data/openfast_decks/rtest_floating.tar.gz). windio-
+floating: as windio, on every key path of the windIO OC3 spar and OC4 semisubmersible
+(tests/data/windio_floating), plus each number at 0, 1e-300 and 1e300; the platform read
+under the NREL 5-MW catalogue turbine's head on the OC3/OC4 tower (its modes computed on
+the platform) and audited. hawc2: as deck, on every file of the IEA-15 onshore HAWC2 model
+(tests/data/hawc2: the main htc, the htc files it continues in, the st, ae and opt files,
+the pc file's first 200 lines). hawc2-floating: as deck, on the IEA-15 UMaineSemi HAWC2
+model's floater (its main htc's ext_sys floater and constraint blocks, the elasticBar
+mooring system and its constraints, WAMIT's .hst). The invariant, as the CLI's: a typed
+wtvib error, or a report whose JSON is strict, within 20 s. Prints the counts as JSON, then
+one line per crash or slow case.
+tests/FUZZ.md records the campaigns run.
 """
 
 import argparse
@@ -180,6 +180,9 @@ def _line_cases(
         if name.endswith(".htc") and ";" in line and len(tokens) > 1:  # its values dropped
             bare = line[: len(line) - len(line.lstrip())] + tokens[0] + " ;\n"
             edits.append(("bare", [*lines[:i], bare, *lines[i + 1 :]]))
+        elif not name.endswith(".htc") and len(tokens) > 1:  # a deck's value dropped
+            dropped = " ".join(tokens[1:]) + "\n"
+            edits.append(("dropped", [*lines[:i], dropped, *lines[i + 1 :]]))
         for label, text in edits:
             run = _deck_import(source, work, fst, name, "".join(text))
             yield f"{name}:{i + 1} {label}", run
