@@ -224,6 +224,41 @@ def test_the_iea15_hawc2_floater_s_modes_are_allen_2020_s(umaine):
     assert "radiation damping, quadratic drag (QUADDRAG)" in said
 
 
+def test_the_iea22_semi_hawc2_floater_is_its_openfast_deck_s_platform(tmp_path):
+    """The IEA-22 on its semisubmersible (IEAWindSystems/IEA-22-280-RWT: the HAWC2 model
+    ``iea_22mw_rwt_floater_steps.htc`` — its ESYSWamit floater with ``ESYSWamit_64.dll``,
+    the columns and pontoons main bodies of their own, joined by constraints, carrying
+    Morison elements — and the OpenFAST deck set of the same floater, with the same WAMIT
+    files; tests/data/hawc2/iea22_semi.tar.gz beside openfast_decks/iea22.tar.gz). Two
+    descriptions of one platform, read by two of wtvib's importers: the added mass identical,
+    the stiffness within 0.1 % (measured 3·10⁻⁵: the same chains, 837 m, EA 4.32·10⁹ N), the
+    mass, CM and inertias within 0.5 % (HAWC2's floater 21,166 t, ElastoDyn's 21,193 t with
+    its CM 5 cm lower: the models' own numbers), the platform's modes within 1 % (measured
+    ≤ 0.63 %: pitch and roll, where the inertias differ most)."""
+    from wtvib.subsystems import tower
+
+    for archive in ("openfast_decks/iea22.tar.gz", "hawc2/iea22_semi.tar.gz"):
+        with tarfile.open(DATA / archive) as tar:
+            tar.extractall(tmp_path, filter="data")
+    h = importers.load(tmp_path / "HAWC2/IEA-22-280-RWT-Semi/htc/iea_22mw_rwt_floater_steps.htc")
+    e = importers.load(tmp_path / "OpenFAST/IEA-22-280-RWT-Semi/IEA-22-280-RWT-Semi.fst")
+    ph, pe = h.tower.foundation.platform, e.tower.foundation.platform
+    assert ph is not None and pe is not None
+    assert ph.tower_base_m == pe.tower_base_m == 15.0
+    for key in ("mass_kg", "cm_m", "inertia_roll_kgm2", "inertia_pitch_kgm2", "inertia_yaw_kgm2"):
+        assert getattr(ph, key) == pytest.approx(getattr(pe, key), rel=5e-3), key
+    np.testing.assert_allclose(ph.added_mass, pe.added_mass, rtol=1e-12)
+    np.testing.assert_allclose(ph.stiffness, pe.stiffness, rtol=1e-3, atol=1.0)
+    said = " ".join(h.assumptions)
+    assert "hydro elements on ifb, vc_00" in said and not h.warnings
+    fh = {m.id: m.frequency_hz for m in tower.structural_modes(h)}
+    fe = {m.id: m.frequency_hz for m in tower.structural_modes(e)}
+    platform = [k for k in fh if k.startswith("tower.platform.")]
+    assert len(platform) == 6
+    for k in platform:
+        assert fh[k] == pytest.approx(fe[k], rel=0.01), k
+
+
 def test_a_floating_tower_mode_s_id_counts_as_its_description_does(umaine):
     """On the HAWC2 model's floater the tower's first fore-aft bending (0.45 Hz at
     standstill) is the coupled model's backward flap whirl in operation, named so; the next
