@@ -570,6 +570,7 @@ def semi(tmp_path: Path) -> Path:
         ("mooring", "data start_pos  0.000e+00 -8.376e+02  2.000e+02 ;",
          "data start_pos  0.000e+00 -8.376e+02 ;", "start_pos: value 3 must be a number"),
         ("constraint", "mbdy_node  ifb 1 ;", "mbdy_node ;", "its fairlead's body '' does not"),
+        ("constraint", "mbdy_node  ifb 1 ;", "mbdy_node  ifb abc ;", "node 'abc' is not 'last'"),
         ("htc", "mbdy_node ifb  0                   ;", "mbdy_node ;", "a floating model whose"),
         # a line laid 237 m long where its ends lie 790 m apart
         ("mooring", "data end_pos -0.000e+00  1.240e+01", "data end_pos -0.000e+00  -6.000e+02",

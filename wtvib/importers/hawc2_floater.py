@@ -184,14 +184,15 @@ def platform(
 
 
 def _radii(data: dict[str, list[Command]], system: Block) -> list[float]:
-    """The radii of gyration about x, y, z (``RIJ_COG i i r``), in the platform's axes:
-    HAWC2's x and y trade places (roll about the downwind axis)."""
+    """The radii of gyration about the CM (``RIJ_COG i i r``) about x, y, z of WAMIT's
+    frame, which is the platform's as OpenFAST takes the same files (x downwind: 1 1 is
+    roll); the products (``i ≠ j``) are not read."""
     _one(data, "RIJ_COG", system)
     found: dict[int, float] = {}
     for cmd in data["RIJ_COG"]:
-        i, j = int(cmd.number(0)), int(cmd.number(1))
-        if i == j and 1 <= i <= 3:
-            found[i] = _bounded(cmd, 2, 0, 1000, "radius of gyration [m]")
+        i, j = cmd.number(0), cmd.number(1)
+        if i == j and i in (1.0, 2.0, 3.0):
+            found[int(i)] = _bounded(cmd, 2, 0, 1000, "radius of gyration [m]")
     missing = [i for i in (1, 2, 3) if i not in found]
     if missing:
         raise SpecError(
@@ -292,9 +293,12 @@ def _line_ends(structure: Block, names: set[str]) -> dict[str, tuple[str, str, n
             anchored.add(line)
         elif "fixedtobody" in init:
             body = dll.need("mbdy_node")
-            held[line] = (
-                _word(body),
-                body.values[1] if len(body.values) > 1 else "1",
-                _point(dll.get("id")),
-            )
+            at = body.values[1] if len(body.values) > 1 else "1"
+            if at.lower() != "last" and not (at.isascii() and at.isdigit() and int(at) > 0):
+                raise SpecError(
+                    f"mbdy_node: node {at!r} is not 'last' or a node number (1, 2, …)",
+                    line=body.line,
+                    source=str(body.file),
+                )
+            held[line] = (_word(body), at.lower(), _point(dll.get("id")))
     return {k: v for k, v in held.items() if k in anchored}
