@@ -293,3 +293,27 @@ def test_wisdem_s_options_files_are_left_out_of_a_batch_and_said(tmp_path):
     # a spec that merely has a 'general' block is not taken for one
     (tmp_path / "other.yaml").write_text("general:\n  note: mine\n")
     assert "other.yaml" in [p.name for p in batch.discover_all([tmp_path])[0]]
+
+
+def test_a_deck_set_s_elastodyn_file_is_audited_with_it_not_again_alone(tmp_path):
+    """A folder of OpenFAST cases (r-test's 5MW_Land_Linear_Aero, with the 5MW_Baseline
+    files it names; tests/data/openfast_decks/rtest_aero.tar.gz) holds the .fst and the
+    ElastoDyn file it names: both were audited, the ElastoDyn file alone without the deck
+    set's AeroDyn and ServoDyn — two stories of one turbine in one summary. The .fst is
+    audited; its ElastoDyn file is left out, named with why. Given by name, a file is
+    audited as asked."""
+    import tarfile
+
+    data = Path(__file__).resolve().parent / "data" / "openfast_decks" / "rtest_aero.tar.gz"
+    with tarfile.open(data) as tar:
+        tar.extractall(tmp_path, filter="data")
+    case = tmp_path / "glue-codes" / "openfast" / "5MW_Land_Linear_Aero"
+    ed = case / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat"
+    found, skipped = batch.discover_all([case])
+    assert [p.name for p in found] == ["5MW_Land_Linear_Aero.fst"]
+    why = dict(skipped)
+    assert (
+        why[str(ed)].startswith("the ElastoDyn file of ")
+        and "5MW_Land_Linear_Aero.fst" in why[str(ed)]
+    )
+    assert [p.name for p in batch.discover_all([ed])[0]] == [ed.name]

@@ -176,7 +176,32 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
                 left.append(
                     (str(q), "a part of a HAWC2 model, read where the model continues in it")
                 )
+    named = _named_by_decks(out)
+    for q in [q for q in out if _resolved(q) in named]:
+        out.remove(q)
+        left.append((str(q), f"the ElastoDyn file of {named[_resolved(q)]}, audited with its "
+                     "deck set"))  # fmt: skip
     return sorted(out) + unreadable, left
+
+
+def _named_by_decks(found: Sequence[Path]) -> dict[Path, Path]:
+    """The ElastoDyn files the .fst files among ``found`` name (``EDFile``), each with the
+    .fst: audited with its deck set, not again alone (without its AeroDyn and ServoDyn: a
+    second story of one turbine). An .fst that cannot be read names none (its own audit
+    says why)."""
+    from ..importers.deck import beside, parse
+
+    named: dict[Path, Path] = {}
+    for fst in found:
+        if fst.suffix.lower() != ".fst":
+            continue
+        try:
+            ed = beside(fst, parse(fst).text("EDFile"))
+        except (WtvibError, OSError):
+            continue
+        if _resolved(ed) != _resolved(fst):
+            named[_resolved(ed)] = fst
+    return named
 
 
 def _resolved(p: Path) -> Path:
