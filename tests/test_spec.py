@@ -109,6 +109,16 @@ def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
         (b"wtvib: 1\nturbine: {name: \xff\xfe}\n", "not UTF-8"),
         (b"- just\n- a list\n", "expected a mapping"),
         (b"turbine: {name: x}\n", "not a wtvib spec"),
+        # files that sit beside turbines in their repositories (IEAWindSystems/IEA-22-280-
+        # RWT): said for what they are, not only for what they are not
+        (
+            b"path_params: {FAST_InputFile: x.fst}\ncontroller_params: {flag: true}\n",
+            r"a ROSCO controller tuning file, not a turbine: .* \(x.fst\)",
+        ),
+        (
+            b"cases:\n  - configuration: {wind_speed: 3.0}\n    outputs: {Damping_ratio: [0.1]}\n",
+            "another tool's results in the IEA Wind systems' format",
+        ),
         (b"wtvib: 7\n", "unsupported spec format version 7"),
     ],
 )

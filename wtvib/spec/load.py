@@ -187,6 +187,30 @@ def _options_file(data: dict[str, Any]) -> bool:
     return _options_keys(set(data), isinstance(general, dict) and "folder_output" in general)
 
 
+def _another_yaml(data: dict[str, Any]) -> str | None:
+    """What a YAML file that is not a turbine is, where wtvib knows its kind: a ROSCO
+    tuning file (``path_params``, ``controller_params``: it names the OpenFAST deck set it
+    tunes), another tool's results in the IEA Wind systems' format (``cases`` of
+    ``configuration`` and ``outputs``: the IEA-22's stability and steady states)."""
+    if {"path_params", "controller_params"} <= set(data):
+        params = data.get("path_params")
+        deck = params.get("FAST_InputFile") if isinstance(params, dict) else None
+        named = f" ({deck})" if isinstance(deck, str) else ""
+        return (
+            "a ROSCO controller tuning file, not a turbine: audit the OpenFAST deck set it "
+            f"tunes{named}"
+        )
+    cases = data.get("cases")
+    first = cases[0] if isinstance(cases, list) and cases else None
+    if isinstance(first, dict) and {"configuration", "outputs"} <= set(first):
+        return (
+            "another tool's results in the IEA Wind systems' format (cases of configuration "
+            "and outputs), not a turbine: wtvib audits a turbine's description, or Campbell "
+            "results as HAWCStab2's .cmb, OpenFAST's .lin files or a table (.csv)"
+        )
+    return None
+
+
 _TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
 
 
@@ -218,8 +242,11 @@ def from_document(doc: Document) -> Spec:
                 line=1,
                 source=doc.source,
             )
+        other = _another_yaml(doc.data)
         raise SpecError(
-            "not a wtvib spec: the version key 'wtvib: 1' is missing", line=1, source=doc.source
+            other or "not a wtvib spec: the version key 'wtvib: 1' is missing",
+            line=1,
+            source=doc.source,
         )
     if version != FORMAT_VERSION:
         raise SpecError(
