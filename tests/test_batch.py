@@ -317,3 +317,22 @@ def test_a_deck_set_s_elastodyn_file_is_audited_with_it_not_again_alone(tmp_path
         and "5MW_Land_Linear_Aero.fst" in why[str(ed)]
     )
     assert [p.name for p in batch.discover_all([ed])[0]] == [ed.name]
+
+
+def test_a_controller_tuning_or_results_yaml_beside_turbines_is_left_out_with_why(tmp_path):
+    """The IEA-22's repository keeps YAML files beside its turbines that are none: its
+    ROSCO tuning files, HAWC2's and OpenFAST's stability and steady-state results in the IEA
+    Wind systems' format. A batch over it leaves them out, each named with what it is."""
+    shutil.copy(TURBINES / "mod-2.yaml", tmp_path / "turbine.yaml")
+    (tmp_path / "rosco.yaml").write_text(
+        "path_params: {FAST_InputFile: x.fst}\ncontroller_params:\n  flag: true\n"
+    )
+    (tmp_path / "hawc2.yaml").write_text(
+        "cases:\n  -\n    configuration:\n      wind_speed: 3.0\n    outputs:\n"
+        "      Damping_ratio: [0.1]\n"
+    )
+    found, skipped = batch.discover_all([tmp_path])
+    assert [p.name for p in found] == ["turbine.yaml"]
+    why = {Path(p).name: w for p, w in skipped}
+    assert why["rosco.yaml"] == "a ROSCO controller tuning file, not a turbine"
+    assert why["hawc2.yaml"].startswith("another tool's results in the IEA Wind systems'")

@@ -214,6 +214,22 @@ def _another_yaml(data: dict[str, Any]) -> str | None:
 _TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
 
 
+def other_kind(path: FsPath) -> str | None:
+    """What a YAML file that sits beside turbines but is none is (:func:`_another_yaml`),
+    from its top-level keys in its first 200 kB (a batch's discovery stays cheap)."""
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(200_000).decode("utf-8", "replace")
+    except OSError:
+        return None
+    keys = set(_TOP_KEY.findall(head))
+    if {"path_params", "controller_params"} <= keys:
+        return "a ROSCO controller tuning file, not a turbine"
+    if keys == {"cases"} and "configuration:" in head and "outputs:" in head:
+        return "another tool's results in the IEA Wind systems' format, not a turbine"
+    return None
+
+
 def is_options_file(path: FsPath) -> bool:
     """Whether a YAML file is a WISDEM/WEIS options file (its top-level keys, read from its
     first 200 kB without parsing it: a batch's discovery must stay cheap)."""
