@@ -187,26 +187,39 @@ def _options_file(data: dict[str, Any]) -> bool:
     return _options_keys(set(data), isinstance(general, dict) and "folder_output" in general)
 
 
+#: YAML files that sit beside turbines and are none, by what they are
+ROSCO_TUNING = "a ROSCO controller tuning file, not a turbine"
+IEA_RESULTS = "another tool's results in the IEA Wind systems' format, not a turbine"
+
+
+def _kind(keys: set[str], results: bool) -> str | None:
+    """The kind of a YAML file that is not a turbine from its top-level ``keys``: a ROSCO
+    tuning file (``path_params``, ``controller_params``), another tool's results in the IEA
+    Wind systems' format (``cases`` alone, each of ``configuration`` and ``outputs``:
+    ``results``) — the IEA-22's repository keeps both beside its turbines."""
+    if {"path_params", "controller_params"} <= keys:
+        return ROSCO_TUNING
+    if keys == {"cases"} and results:
+        return IEA_RESULTS
+    return None
+
+
 def _another_yaml(data: dict[str, Any]) -> str | None:
-    """What a YAML file that is not a turbine is, where wtvib knows its kind: a ROSCO
-    tuning file (``path_params``, ``controller_params``: it names the OpenFAST deck set it
-    tunes), another tool's results in the IEA Wind systems' format (``cases`` of
-    ``configuration`` and ``outputs``: the IEA-22's stability and steady states)."""
-    if {"path_params", "controller_params"} <= set(data):
+    """What a parsed YAML file that is not a turbine is (:func:`_kind`), and what to give
+    wtvib instead: the deck set a tuning file tunes, the results wtvib reads."""
+    cases = data.get("cases")
+    first = cases[0] if isinstance(cases, list) and cases else None
+    kind = _kind(set(data), isinstance(first, dict) and {"configuration", "outputs"} <= set(first))
+    if kind == ROSCO_TUNING:
         params = data.get("path_params")
         deck = params.get("FAST_InputFile") if isinstance(params, dict) else None
         named = f" ({deck})" if isinstance(deck, str) else ""
+        return f"{kind}: audit the OpenFAST deck set it tunes{named}"
+    if kind == IEA_RESULTS:
         return (
-            "a ROSCO controller tuning file, not a turbine: audit the OpenFAST deck set it "
-            f"tunes{named}"
-        )
-    cases = data.get("cases")
-    first = cases[0] if isinstance(cases, list) and cases else None
-    if isinstance(first, dict) and {"configuration", "outputs"} <= set(first):
-        return (
-            "another tool's results in the IEA Wind systems' format (cases of configuration "
-            "and outputs), not a turbine: wtvib audits a turbine's description, or Campbell "
-            "results as HAWCStab2's .cmb, OpenFAST's .lin files or a table (.csv)"
+            f"{kind} (cases of configuration and outputs): wtvib audits a turbine's "
+            "description, or Campbell results as HAWCStab2's .cmb, OpenFAST's .lin files or a "
+            "table (.csv)"
         )
     return None
 
@@ -215,19 +228,14 @@ _TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
 
 
 def other_kind(path: FsPath) -> str | None:
-    """What a YAML file that sits beside turbines but is none is (:func:`_another_yaml`),
-    from its top-level keys in its first 200 kB (a batch's discovery stays cheap)."""
+    """What a YAML file that sits beside turbines but is none is (:func:`_kind`), from its
+    top-level keys in its first 200 kB (a batch's discovery stays cheap)."""
     try:
         with open(path, "rb") as fh:
             head = fh.read(200_000).decode("utf-8", "replace")
     except OSError:
         return None
-    keys = set(_TOP_KEY.findall(head))
-    if {"path_params", "controller_params"} <= keys:
-        return "a ROSCO controller tuning file, not a turbine"
-    if keys == {"cases"} and "configuration:" in head and "outputs:" in head:
-        return "another tool's results in the IEA Wind systems' format, not a turbine"
-    return None
+    return _kind(set(_TOP_KEY.findall(head)), "configuration:" in head and "outputs:" in head)
 
 
 def is_options_file(path: FsPath) -> bool:
