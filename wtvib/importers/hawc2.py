@@ -245,7 +245,13 @@ def _unheld(base: str, structure: Block) -> None:
     systems = []
     for dll in constraint.each("dll") if constraint is not None else []:
         node, name = dll.get("mbdy_node"), dll.get("dll")
-        if node is not None and node.values[:1] == (base,) and name is not None and name.values:
+        if (
+            node is not None
+            and node.values
+            and node.values[0].lower() == base
+            and name
+            and name.values
+        ):
             systems.append(name.values[0].strip("'\""))
     names = ", ".join(dict.fromkeys(systems))
     held_by = f", held by the external systems {names}" if systems else ""

@@ -97,14 +97,17 @@ def _data(system: Block) -> dict[str, list[Command]]:
 
 
 def _one(data: dict[str, list[Command]], key: str, system: Block) -> Command:
+    """The floater's first ``data KEY`` command, or one line saying what it gives."""
+    name = _word(system.get("name"))
+    return _first(data, key, system, f"ext_sys {name}: no data {key} — the floater's "
+                  f"{_NEEDED[key]} is needed")  # fmt: skip
+
+
+def _first(data: dict[str, list[Command]], key: str, block: Block, missing: str) -> Command:
+    """The first ``data KEY`` command of an ext_sys block, else ``missing`` on its line."""
     found = data.get(key)
     if not found:
-        raise SpecError(
-            f"ext_sys {_word(system.get('name'))}: no data {key} — the floater's "
-            f"{_NEEDED[key]} is needed",
-            line=system.line,
-            source=str(system.file),
-        )
+        raise SpecError(missing, line=block.line, source=str(block.file))
     return found[0]
 
 
@@ -268,14 +271,8 @@ def _point(cmd: Command | None) -> np.ndarray:
 
 
 def _one_line(data: dict[str, list[Command]], key: str, bar: Block) -> Command:
-    found = data.get(key)
-    if not found:
-        raise SpecError(
-            f"mooring line {_word(bar.get('name'))}: no data {key.lower()}",
-            line=bar.line,
-            source=str(bar.file),
-        )
-    return found[0]
+    """A mooring line's first ``data KEY`` command, or one line naming the line."""
+    return _first(data, key, bar, f"mooring line {_word(bar.get('name'))}: no data {key.lower()}")
 
 
 def _line_ends(structure: Block, names: set[str]) -> dict[str, tuple[str, str, np.ndarray]]:

@@ -228,25 +228,19 @@ _TOP_KEY = re.compile(r"^([A-Za-z_][\w-]*)\s*:", re.MULTILINE)
 
 
 def other_kind(path: FsPath) -> str | None:
-    """What a YAML file that sits beside turbines but is none is (:func:`_kind`), from its
-    top-level keys in its first 200 kB (a batch's discovery stays cheap)."""
+    """What a YAML file that sits beside turbines but is none is — a WISDEM/WEIS options
+    file (:data:`OPTIONS_FILE`), a ROSCO tuning file, another tool's results
+    (:func:`_kind`) — from its top-level keys in its first 200 kB, read once without parsing
+    it (a batch's discovery stays cheap); None: a turbine, as far as the keys say."""
     try:
         with open(path, "rb") as fh:
             head = fh.read(200_000).decode("utf-8", "replace")
     except OSError:
         return None
-    return _kind(set(_TOP_KEY.findall(head)), "configuration:" in head and "outputs:" in head)
-
-
-def is_options_file(path: FsPath) -> bool:
-    """Whether a YAML file is a WISDEM/WEIS options file (its top-level keys, read from its
-    first 200 kB without parsing it: a batch's discovery must stay cheap)."""
-    try:
-        with open(path, "rb") as fh:
-            head = fh.read(200_000).decode("utf-8", "replace")
-    except OSError:
-        return False
-    return _options_keys(set(_TOP_KEY.findall(head)), "folder_output" in head)
+    keys = set(_TOP_KEY.findall(head))
+    if _options_keys(keys, "folder_output" in head):
+        return OPTIONS_FILE
+    return _kind(keys, "configuration:" in head and "outputs:" in head)
 
 
 def from_document(doc: Document) -> Spec:

@@ -150,7 +150,7 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
     """The main inputs in a folder and its subfolders; a subfolder that cannot be searched
     (no permission) is itself an input, whose audit says why — never skipped silently."""
     from ..importers import is_main_input
-    from ..spec.load import is_options_file, other_kind
+    from ..spec.load import other_kind
 
     out: list[Path] = []
     unreadable: list[Path] = []
@@ -167,9 +167,7 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
             except OSError:
                 regular = False
             yaml = regular and q.suffix.lower() in (".yaml", ".yml")
-            if yaml and is_options_file(q):
-                left.append((str(q), OPTIONS))
-            elif yaml and (kind := other_kind(q)) is not None:
+            if yaml and (kind := other_kind(q)) is not None:
                 left.append((str(q), kind))
             elif regular and is_main_input(q):
                 out.append(q)
