@@ -578,13 +578,13 @@ _SPARSE: tuple[Array, Any] | None = None
 
 
 def _mass_times(m: Array, x: Array) -> Array:
-    """M·X. A model of modal.PARTIAL_STATES coordinates or more (a tower on its monopile:
+    """M·X. A model of modal.LARGE_STATES coordinates or more (a tower on its monopile:
     its beam's band and a few dense blocks, under 1 % of M filled) multiplies through M's
     sparse form — 15 times faster at the IEA-15 monopile's 815 coordinates, the same sums to
     rounding (1e-16); the form is made once per matrix (the last one kept: a sweep asks
     with the same M at every speed)."""
     global _SPARSE
-    if m.shape[0] < modal.PARTIAL_STATES:
+    if m.shape[0] < modal.LARGE_STATES:
         return np.asarray(m @ x)
     held = _SPARSE  # one read: the pair stays consistent whatever else runs
     if held is None or held[0] is not m:
