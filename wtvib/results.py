@@ -305,6 +305,14 @@ class Check:
         return cast(CheckDoc, doc)  # the numbers' keys: CheckDoc's optional fields
 
 
+def by_frequency(mode: Mode) -> tuple[float, str]:
+    """The order modes are listed in: by frequency, and modes the arithmetic cannot tell
+    apart (equal to nine significant digits: a symmetric floater's surge and sway, a round
+    beam's flap and edge) by id — the same order on every machine, where rounding's last
+    bits had decided it."""
+    return (float(f"{mode.frequency_hz:.9g}"), mode.id)
+
+
 def ordinal(k: int) -> str:
     """Ordinal words of mode descriptions: 1 → '1st', 2 → '2nd', 3 → '3rd', 4 → '4th'."""
     return f"{k}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(k if k < 20 else k % 10, 'th') }"

@@ -8,7 +8,7 @@ from numpy.typing import NDArray
 
 from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damping
 from ..numerics import beam, modal
-from ..results import Mode, Sampled, Shape, Southwell, SpeedCurve, ordinal
+from ..results import Mode, Sampled, Shape, Southwell, SpeedCurve, by_frequency, ordinal
 from ..spec import BladeStructure, ModeSpec, Spec
 from ..units import rpm_to_rad_s
 from .given import given_modes
@@ -41,7 +41,7 @@ def modes(spec: Spec) -> list[Mode]:
     if spec.blade.dofs is not None:  # a deck's switches: only its degrees of freedom
         computed = [m for m in computed if m.id.removeprefix("blade.") in spec.blade.dofs]
     ids = {m.id for m in computed}
-    return sorted(computed + [m for m in given if m.id not in ids], key=lambda m: m.frequency_hz)
+    return sorted(computed + [m for m in given if m.id not in ids], key=by_frequency)
 
 
 def _given(spec: Spec) -> list[Mode]:

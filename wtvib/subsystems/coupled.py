@@ -88,7 +88,7 @@ from ..numerics.kinematics import (
     spin,
 )
 from ..numerics.rigid import Rigid, nacelle, rotor_points
-from ..results import Check, Mode, Rule, Sampled, Stiffened, Whirl, ordinal
+from ..results import Check, Mode, Rule, Sampled, Stiffened, Whirl, by_frequency, ordinal
 from ..spec import BladeStructure, Spec
 from ..spec.base import StiffnessDamping
 from ..units import rpm_to_rad_s
@@ -1014,7 +1014,7 @@ def _rotating_modes(spec: Spec, model: Model, cond: str, known: Mapping[str, flo
                 replaces=at.stands_for(j, name, float(sw.frequency_hz[0, j])),
             )
         )
-    return sorted(out, key=lambda m: m.frequency_hz)
+    return sorted(out, key=by_frequency)
 
 
 #: A coupled mode whose eigenvalue damping at standstill (the drive train's dampers) is below

@@ -24,7 +24,7 @@ from ..judge.analysis import Analysis, Context, Damping, Subsystem, section_damp
 from ..judge.excitation import Excitation, OperatingRange
 from ..judge.resonance import lines_met
 from ..numerics import modal
-from ..results import Check, Mode, Rule, Shape, ordinal
+from ..results import Check, Mode, Rule, Shape, by_frequency, ordinal
 from ..rules import MarginRule
 from ..spec import ChainShaft, Spec
 from ..units import rpm_to_rad_s
@@ -694,9 +694,7 @@ def induction_check(spec: Spec, chain: Chain, modes: Sequence[Mode]) -> Check | 
         return None
     d_m = induction_damping(g.rated_power_kw * 1e3, g.rated_slip, g.pole_pairs, g.grid_frequency_hz)
     tau = float(chain.inertia.sum()) / (d_m * chain.generator_factor)
-    grid = sorted(
-        (m for m in modes if m.id.startswith(f"{NAME}.grid.")), key=lambda m: m.frequency_hz
-    )
+    grid = sorted((m for m in modes if m.id.startswith(f"{NAME}.grid.")), key=by_frequency)
     listed = ", ".join(f"{m.id} {m.frequency_hz:.3g} Hz" for m in grid) or "none computed"
     return Check(
         id="drivetrain.grid.induction",

@@ -3,7 +3,7 @@
 import math
 from collections.abc import Callable, Mapping
 
-from ..results import Mode, Sampled, SpeedCurve
+from ..results import Mode, Sampled, SpeedCurve, by_frequency
 from ..spec import ModeEntry, ModeSpec
 
 
@@ -44,7 +44,7 @@ def given_modes(
                 else (curve(name, f0, full) if curve else None),
             )
         )
-    return sorted(modes, key=lambda m: m.frequency_hz)
+    return sorted(modes, key=by_frequency)
 
 
 def table(entry: ModeSpec) -> Sampled:

@@ -14,7 +14,7 @@ import math
 
 from ..judge.analysis import Analysis, Context
 from ..judge.resonance import standstill
-from ..results import Check, Mode, OperatingDamping, Rule, Sampled, Whirl
+from ..results import Check, Mode, OperatingDamping, Rule, Sampled, Whirl, by_frequency
 from ..rules import NEGATIVE
 from ..spec import Spec
 from ..spec.results import ResultMode
@@ -31,7 +31,7 @@ def modes(spec: Spec, frame: str) -> list[Mode]:
     sub = SUBSYSTEM[frame]
     return sorted(
         (_mode(f"{sub}.{name}", sub, m, r.tool) for name, m in r.modes.items() if m.frame == frame),
-        key=lambda m: m.frequency_hz,
+        key=by_frequency,
     )
 
 

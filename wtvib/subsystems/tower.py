@@ -19,9 +19,10 @@ from ..judge.excitation import Excitation, OperatingRange
 from ..judge.resonance import Finding, assess, speed_span, standstill
 from ..numerics import beam, modal, rigid
 from ..numerics.modal import ModalError
-from ..results import Check, Mode, Rule, Shape, ordinal
+from ..results import Check, Mode, Rule, Shape, by_frequency, ordinal
 from ..rules import MarginRule, Status
 from ..spec import Spec
+from ..spec.tower import AddedMass
 from ..units import STANDARD_GRAVITY, rad_s_to_hz, rad_s_to_rpm
 from . import drivetrain, mass_damper, platform, soil
 from .given import given_modes
@@ -44,9 +45,7 @@ def modes(spec: Spec) -> list[Mode]:
     if spec.tower.has_structure:
         computed = structural_modes(spec)
         ids = {m.id for m in computed}
-        return sorted(
-            computed + [m for m in _given(spec) if m.id not in ids], key=lambda m: m.frequency_hz
-        )
+        return sorted(computed + [m for m in _given(spec) if m.id not in ids], key=by_frequency)
     return _given(spec)
 
 
@@ -252,17 +251,11 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
     Tubes: A = π/4·(D² − d²), I = π/64·(D⁴ − d⁴), J = 2I with d = D − 2t, D and t linear
     between stations; mass per length ρ·A·(outfitting factor), polar mass inertia ρ·J·factor.
     """
-    extra = np.array(
-        [pm.height_m for pm in t.point_masses] + [d.height_m for d in t.dampers if d.on == "tower"],
-        dtype=float,
-    )
-    if t.added_mass is not None:
-        extra = np.concatenate([extra, t.added_mass.height_m])
     if t.sections is not None:
         sec, mat = t.sections, t.material
         assert mat is not None
         stations = np.asarray(sec.height_m, dtype=float)
-        nodes = beam.mesh(np.union1d(stations, extra), elements)
+        nodes = _nodes(t, stations, elements)
         x, _ = beam.gauss_points(nodes)
         d = beam.interpolate(x, stations, np.asarray(sec.outer_diameter_m))
         w = beam.interpolate(x, stations, np.asarray(sec.wall_thickness_m))
@@ -281,7 +274,7 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
     dist = t.distributed
     assert dist is not None
     stations = np.asarray(dist.height_m, dtype=float)
-    nodes = beam.mesh(np.union1d(stations, extra), elements)
+    nodes = _nodes(t, stations, elements)
     x, _ = beam.gauss_points(nodes)
 
     def at(values: list[float]) -> Array:
@@ -296,6 +289,37 @@ def discretise(t: "spec_mod.Tower", elements: int = DEFAULT_ELEMENTS) -> Beam:
         at(dist.polar_inertia_kgm) if dist.polar_inertia_kgm is not None else None,
         _added(t, x),
     )
+
+
+def _nodes(t: "spec_mod.Tower", stations: Array, elements: int) -> Array:
+    """The mesh: the tower's stations, its point masses' and dampers' heights and where its
+    added mass breaks (:func:`added_mass_breaks`), ``elements`` divisions between them."""
+    extra = [pm.height_m for pm in t.point_masses]
+    extra += [d.height_m for d in t.dampers if d.on == "tower"]
+    if t.added_mass is not None:
+        extra += added_mass_breaks(t.added_mass).tolist()
+    return beam.mesh(np.union1d(stations, np.asarray(extra, dtype=float)), elements)
+
+
+#: A step of the added mass between two of its stations: a change of more than this share of
+#: its largest value (the still-water line, where the water around a pile ends).
+ADDED_MASS_STEP = 0.25
+
+
+def added_mass_breaks(a: AddedMass) -> Array:
+    """The heights the mesh needs a node at for the added mass: the ends of its table
+    (outside them it is zero) and the two stations that bound each of its steps (between
+    them the table is a ramp the elements' Gauss points then integrate whole).
+    Not its every station: the table is interpolated at the elements' Gauss points like the
+    tower's own properties, and a table sampled finely (HydroDyn's water along the IEA-15
+    monopile: 401 heights) made more than :data:`wtvib.numerics.beam.MAX_STATION_NODES`
+    stations, meshed uniformly — the tower's own steps smeared over an element (its second
+    bending modes 4·10⁻⁴ off, tests/validation/test_tower.py) and 815 coordinates to solve in
+    the coupled model where 99 do."""
+    h = np.asarray(a.height_m, dtype=float)
+    v = np.asarray(a.mass_per_length_kg_m, dtype=float)
+    steps = np.flatnonzero(np.abs(np.diff(v)) > ADDED_MASS_STEP * max(float(v.max()), 0.0))
+    return np.concatenate([h[[0, -1]], h[steps], h[steps + 1]])
 
 
 def _added(t: "spec_mod.Tower", x: Array) -> Array | None:
@@ -490,7 +514,7 @@ def structural_modes(spec: Spec, elements: int = DEFAULT_ELEMENTS) -> list[Mode]
     if b.gj is not None:
         res = torsion_modes(b, spec.tower_head, t.foundation)
         out.append(_computed(spec, "tor1", float(res.frequency_hz[0]), b.nodes, res.shapes[:, 0]))
-    out.sort(key=lambda m: m.frequency_hz)
+    out.sort(key=by_frequency)
     if out[0].frequency_hz < NOT_HELD_HZ:
         raise modal.ModalError(
             f"{out[0].id} comes out at {out[0].frequency_hz:.3g} Hz — the tower "

@@ -13,7 +13,7 @@ import numpy as np
 from ...aero import aerodamping
 from ...audit import SUBSYSTEMS, Report
 from ...judge.analysis import DIAGRAMS as DIAGRAM_NAMES
-from ...results import Mode, Sampled
+from ...results import Mode, Sampled, by_frequency
 from ...rules import NEGATIVE, STATUS_ORDER
 from ...subsystems import tower as tower_model
 from ...units import rad_s_to_rpm, rpm_to_rad_s
@@ -642,7 +642,7 @@ def standstill_plot(report: Report) -> "Figure | None":
 
     if not report.spec.rotor.speed.parked:
         return None
-    modes = sorted((m for m in report.modes if m.judged), key=lambda m: m.frequency_hz)
+    modes = sorted((m for m in report.modes if m.judged), key=by_frequency)
     shown, rest = modes[:STANDSTILL_MODES], modes[STANDSTILL_MODES:]
     if not shown:
         return None
