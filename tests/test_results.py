@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from wtvib.results import Mode, Sampled, Southwell, Whirl, ordinal
+from wtvib.results import Mode, Sampled, Southwell, Whirl, by_frequency, ordinal
 
 
 def test_southwell_curve_is_f0_at_standstill_and_grows_with_speed():
@@ -32,6 +32,17 @@ def test_mode_json_and_judged():
     shown = Mode("tower.fa1", "tower", "fa", 0.3, superseded_by="system.tower.fa1")
     assert not shown.judged and shown.to_dict()["superseded_by"] == "system.tower.fa1"
     assert Mode("tower.fa1", "tower", "fa", 0.3).judged
+
+
+def test_modes_the_arithmetic_cannot_tell_apart_are_listed_by_id():
+    """A symmetric floater's surge and sway, a round beam's flap and edge: equal but for
+    rounding's last bits, which decided their order (and swapped it on another machine or
+    solver) — listed by id; a difference in the eighth digit still orders by frequency."""
+    sway = Mode("tower.platform.sway", "tower", "sway", 0.1 * (1 - 2e-16))
+    surge = Mode("tower.platform.surge", "tower", "surge", 0.1 * (1 + 2e-16))
+    assert sorted([sway, surge], key=by_frequency) == [surge, sway]
+    sway = Mode("tower.platform.sway", "tower", "sway", 0.1 * (1 - 1e-8))
+    assert sorted([surge, sway], key=by_frequency) == [sway, surge]
 
 
 def test_ordinal():
