@@ -150,6 +150,13 @@ SPEC_GEOMETRY = [
         ("hub_height_m: {value: 90,", "hub_height_m: {value: 30,"),
         "the blade tips would strike the ground",
     ),
+    # a point mass or a water table beyond the tower's stations made the tower that much
+    # longer (the mesh took their heights as nodes, the last properties carried on)
+    (
+        "iea-15mw-monopile.yaml",
+        ("height_m: {value: 45, provenance", "height_m: {value: 450, provenance"),
+        "point_masses[0] at 450 m is not on the tower",
+    ),
 ]
 
 

@@ -273,3 +273,41 @@ def test_the_class_is_decided_where_the_rule_says_at_the_highest_steady_speed():
     c = classify(flat, lines, 3, op, rule, 0.01)
     assert c.tower_class == "stiff"
     assert "first bending 1.1 Hz (tower.fa1) above 3P" in class_check(c, 3, op, rule).message
+
+
+@pytest.mark.parametrize(
+    ("extra", "words"),
+    [
+        ({"added_mass": {"height_m": [0, 30], "mass_per_length_kg_m": [1e3, 1e3]}}, "added_mass"),
+        ({"point_masses": [{"height_m": -1, "mass_kg": 1e3}]}, "point_masses[0] at -1 m"),
+        (
+            {
+                "dampers": [
+                    {
+                        "name": "d",
+                        "on": "tower",
+                        "height_m": 25,
+                        "mass_kg": 1e3,
+                        "stiffness_n_m": 4e3,
+                        "direction": "fore-aft",
+                    }
+                ]
+            },
+            "dampers[0] (d) at 25 m",
+        ),
+    ],
+    ids=["water-above-the-top", "mass-below-the-base", "damper-above-the-top"],
+)
+def test_what_the_mesh_takes_as_nodes_lies_on_the_tower(extra, words):
+    """The mesh takes point masses', dampers' and the added mass's heights as nodes: one
+    beyond the tower's stations made the tower longer than its table (its last properties
+    carried on) — refused, naming the field."""
+    table = {
+        "height_m": [0, 20],
+        "mass_per_length_kg_m": [300, 300],
+        "ei_fa_nm2": [2e9, 2e9],
+        "ei_ss_nm2": [2e9, 2e9],
+    }
+    with pytest.raises(ValueError, match="is not on the tower") as raised:
+        spec.Tower(distributed=table, **extra)
+    assert words in str(raised.value)

@@ -495,21 +495,38 @@ class Tower(_Strict):
                 "dampers act on the tower's structure (sections or distributed properties), "
                 "or on a rigid tower"
             )
-        table = self.sections or self.distributed
-        for i, d in enumerate(self.dampers):
-            if d.on == "tower" and table is not None:
-                low, high = table.height_m[0], table.height_m[-1]
-                if not low <= d.height_m <= high:
-                    raise ValueError(
-                        f"dampers[{i}] ({d.name}) at {d.height_m:g} m is not on the tower "
-                        f"({low:g} … {high:g} m above its base)"
-                    )
+        self._on_the_tower()
         if self.damping_by_mode and not self.has_structure:
             raise ValueError(
                 "damping_by_mode damps modes the tower's structure computes; with given "
                 "frequencies, give each mode's damping_ratio in tower.modes"
             )
         return self
+
+    def _on_the_tower(self) -> None:
+        """Dampers, point masses and added mass within the tower's stations: the mesh takes
+        their heights as nodes, and one beyond the top or below the base made the tower
+        longer than its table (its last properties carried on)."""
+        table = self.sections or self.distributed
+        if table is None:
+            return
+        low, high = table.height_m[0], table.height_m[-1]
+        slack = 1e-6 * (high - low)  # a table's heights rounded by an importer
+
+        def off(h: float) -> bool:
+            return not low - slack <= h <= high + slack
+
+        where = f"not on the tower ({low:g} … {high:g} m above its base)"
+        for i, d in enumerate(self.dampers):
+            if d.on == "tower" and off(d.height_m):
+                raise ValueError(f"dampers[{i}] ({d.name}) at {d.height_m:g} m is {where}")
+        for i, pm in enumerate(self.point_masses):
+            if off(pm.height_m):
+                raise ValueError(f"point_masses[{i}] at {pm.height_m:g} m is {where}")
+        if self.added_mass is not None:
+            a, b = self.added_mass.height_m[0], self.added_mass.height_m[-1]
+            if off(a) or off(b):
+                raise ValueError(f"added_mass, from {a:g} to {b:g} m, is {where}")
 
     @property
     def has_structure(self) -> bool:
