@@ -1114,7 +1114,8 @@ def check(spec: Spec, isolated: list[Mode]) -> Check | None:
                 "coupled_hz": round(float(f), 6),
                 "isolated_id": iso if f_iso is not None else None,
                 "isolated_hz": round(f_iso, 6) if f_iso is not None else None,
-                "change": round(float(f) / f_iso - 1.0, 6) if f_iso else None,
+                # + 0.0: a change rounded to nothing is 0, not −0 (its sign was rounding's)
+                "change": round(float(f) / f_iso - 1.0, 6) + 0.0 if f_iso else None,
                 "energy": {g: round(v, 4) for g, v in res.energy[j].items() if v >= 0.005},
             }
         )
