@@ -355,3 +355,36 @@ def test_a_stack_shared_out_over_threads_is_solved_to_the_same_bits(threads, mon
     for one, three in zip(undamped_one, undamped_three, strict=True):
         assert np.array_equal(one.frequency_hz, three.frequency_hz)
         assert np.array_equal(one.shapes, three.shapes)
+
+
+def test_a_repeated_eigenvalues_shapes_are_one_basis_whatever_the_rounding():
+    """An eigenvalue that repeats (a symmetric floater's surge and sway, a round beam's
+    flap and edge) has a space of shapes, and LAPACK returns whichever basis of it its
+    rounding leads to — another ordering of the same problem, another basis. solve gives
+    the one basis the space has (aligned with the coordinates it moves most): the problem
+    solved with its coordinates in reverse order gives the same shapes, reordered back."""
+    rng = np.random.default_rng(7)
+    q, _ = np.linalg.qr(rng.standard_normal((6, 6)))  # a frame that mixes every coordinate
+    k = q @ np.diag([2.0, 2.0, 2.0, 5.0, 7.0, 9.0]) @ q.T
+    m = np.eye(6)
+    ahead = modal.solve(k, m, 4)
+    back = modal.solve(k[::-1, ::-1], m, 4)
+    assert np.allclose(ahead.frequency_hz, back.frequency_hz, rtol=1e-12)
+    np.testing.assert_allclose(back.shapes[::-1], ahead.shapes, atol=1e-9)
+    np.testing.assert_allclose(ahead.shapes.T @ m @ ahead.shapes, np.eye(4), atol=1e-12)
+    # the three shapes of the repeated one span what K's own do: K φ = 2 φ for each
+    np.testing.assert_allclose(k @ ahead.shapes[:, :3], 2.0 * ahead.shapes[:, :3], atol=1e-9)
+
+
+def test_a_free_chain_with_a_far_stiffer_link_keeps_its_soft_mode():
+    """Three free masses, the first two joined by a spring 10¹⁴ times stiffer than the one
+    to the third (a rigid shaft typed as a stiff one, on a free rotor): the soft mode is the
+    two-mass closed form, ω² = k(M₁₂ + m₃)/(M₁₂·m₃) with M₁₂ = m₁ + m₂, to within
+    k/k_stiff. K is singular (the chain is free: σ shifts it), and a reduction with M's
+    factor rounds ω² to ε·10¹⁴ — the soft mode 1 % off."""
+    m1, m2, m3, stiff, soft = 1.0, 2.0, 3.0, 1e14, 1.0
+    k = np.array([[stiff, -stiff, 0.0], [-stiff, stiff + soft, -soft], [0.0, -soft, soft]])
+    found = modal.solve(k, np.diag([m1, m2, m3]), 2)
+    expected = math.sqrt(soft * (m1 + m2 + m3) / ((m1 + m2) * m3)) / (2 * math.pi)
+    assert found.frequency_hz[1] == pytest.approx(expected, rel=1e-9)
+    assert found.frequency_hz[0] < 1e-6

@@ -132,7 +132,67 @@ def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     _check_stable(w2)
     top = w2.shape[-1] if count is None else min(count, w2.shape[-1])
     hz = np.sqrt(np.clip(w2[:, :top], 0.0, None)) / (2.0 * np.pi)
-    return [Modes(hz[i], shapes) for i, shapes in enumerate(_normalised(inv_t @ y[:, :, :top], m))]
+    shared = _repeated(w2)  # a repeated eigenvalue's shapes: one basis, not rounding's
+    wide = top if not shared[:, top - 1 : top].any() else _cluster_end(shared, top)
+    shapes = _normalised(inv_t @ y[:, :, :wide], m)
+    for i in np.flatnonzero(shared[:, : wide - 1].any(axis=1)):
+        shapes[i] = _one_basis(shapes[i], m[i], shared[i, : wide - 1])
+    return [Modes(hz[i], shapes[i, :, :top]) for i in range(len(w2))]
+
+
+#: Eigenvalues closer than this share of their size (and of σ) are one to the solve's
+#: rounding (ε·(ω² + σ)²/(σ·ω²), 10⁻¹³–10⁻¹¹ where shapes matter): their shapes are any
+#: basis of the space they span, and rounding picked one — another machine another.
+REPEATED = 1e-10
+
+
+def _repeated(w2: Array) -> NDArray[np.bool_]:
+    """For a stack's ascending ω² (p, n): whether each one and the next are one (p, n)."""
+    close = np.zeros(w2.shape, dtype=bool)
+    close[:, :-1] = np.diff(w2, axis=1) <= REPEATED * (np.abs(w2[:, 1:]) + SHIFT)
+    return close
+
+
+def _cluster_end(shared: NDArray[np.bool_], top: int) -> int:
+    """Past the last mode of every stack's cluster that holds mode ``top`` − 1."""
+    end = top
+    while end < shared.shape[1] and shared[:, end - 1].any():
+        end += 1
+    return end
+
+
+def _one_basis(phi: Array, m: Array, shared: NDArray[np.bool_]) -> Array:
+    """``phi`` (n, k: M-normalised shapes) with each run of repeated eigenvalues (``shared``
+    (k − 1,): each with the next) given the one basis its space has whatever the rounding:
+    the coordinates the space moves most picked by column-pivoted QR of its rows (their
+    norms are the same for every basis of it), each shape 1 at its own and 0 at the
+    others', then M-orthonormalised in the order they were picked — a symmetric floater's
+    surge and sway each along its axis, a round blade's flap and edge each in its plane.
+    (Coordinates the space moves exactly alike are taken in their order.)"""
+    out = phi.copy()
+    start = 0
+    for j in range(len(shared) + 1):
+        if j < len(shared) and shared[j]:
+            continue
+        if j > start:
+            out[:, start : j + 1] = _aligned(phi[:, start : j + 1], m)
+        start = j + 1
+    return out
+
+
+def _aligned(v: Array, m: Array) -> Array:
+    """:func:`_one_basis` of one space (the columns of ``v``)."""
+    k = v.shape[1]
+    rest, pivots = v.copy(), []
+    for _ in range(k):
+        norms = np.einsum("ij,ij->i", rest, rest)
+        p = int(np.flatnonzero(norms >= (1.0 - 1e-8) * norms.max())[0])  # a tie: the first
+        pivots.append(p)
+        q = rest[p] / np.linalg.norm(rest[p])
+        rest = rest - np.outer(rest @ q, q)
+    w = v @ np.linalg.inv(v[pivots, :])  # 1 at its own coordinate, 0 at the others'
+    lower = np.linalg.cholesky(w.T @ m @ w)
+    return np.asarray(w @ np.linalg.inv(lower).T)
 
 
 def frequencies_stacked(k: Array, m: Array, count: int, *, unstable_as_nan: bool = False) -> Array:
