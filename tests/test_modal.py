@@ -360,20 +360,25 @@ def test_a_stack_shared_out_over_threads_is_solved_to_the_same_bits(threads, mon
 def test_a_repeated_eigenvalues_shapes_are_one_basis_whatever_the_rounding():
     """An eigenvalue that repeats (a symmetric floater's surge and sway, a round beam's
     flap and edge) has a space of shapes, and LAPACK returns whichever basis of it its
-    rounding leads to — another ordering of the same problem, another basis. solve gives
-    the one basis the space has (aligned with the coordinates it moves most): the problem
-    solved with its coordinates in reverse order gives the same shapes, reordered back."""
+    rounding leads to. solve gives the one basis the space has: any other basis of it —
+    turned by a random rotation — comes back the same; the shapes M-orthonormal and each
+    an eigenvector; a space of coordinates (a diagonal problem) comes back as its
+    coordinates, in their order."""
     rng = np.random.default_rng(7)
     q, _ = np.linalg.qr(rng.standard_normal((6, 6)))  # a frame that mixes every coordinate
     k = q @ np.diag([2.0, 2.0, 2.0, 5.0, 7.0, 9.0]) @ q.T
-    m = np.eye(6)
-    ahead = modal.solve(k, m, 4)
-    back = modal.solve(k[::-1, ::-1], m, 4)
-    assert np.allclose(ahead.frequency_hz, back.frequency_hz, rtol=1e-12)
-    np.testing.assert_allclose(back.shapes[::-1], ahead.shapes, atol=1e-9)
-    np.testing.assert_allclose(ahead.shapes.T @ m @ ahead.shapes, np.eye(4), atol=1e-12)
-    # the three shapes of the repeated one span what K's own do: K φ = 2 φ for each
-    np.testing.assert_allclose(k @ ahead.shapes[:, :3], 2.0 * ahead.shapes[:, :3], atol=1e-9)
+    m = np.diag(np.linspace(1.0, 2.0, 6))
+    k = np.sqrt(m) @ k @ np.sqrt(m)  # K φ = 2 M φ on a three-dimensional space
+    found = modal.solve(k, m, 4)
+    turn, _ = np.linalg.qr(rng.standard_normal((3, 3)))
+    shared = np.array([True, True, False])
+    again = modal._one_basis(found.shapes[:, :3] @ turn, m, shared[:2])
+    np.testing.assert_allclose(again, found.shapes[:, :3], atol=1e-12)
+    np.testing.assert_allclose(found.shapes.T @ m @ found.shapes, np.eye(4), atol=1e-12)
+    np.testing.assert_allclose(k @ found.shapes[:, :3], 2.0 * m @ found.shapes[:, :3], atol=1e-9)
+    flat = modal.solve(np.diag([2.0, 4.0, 6.0]), np.diag([1.0, 2.0, 3.0]), 3)
+    assert list(np.argmax(np.abs(flat.shapes), axis=0)) == [0, 1, 2]
+    assert np.allclose(np.abs(flat.shapes), np.diag(1 / np.sqrt([1.0, 2.0, 3.0])), atol=1e-12)
 
 
 def test_a_free_chain_with_a_far_stiffer_link_keeps_its_soft_mode():

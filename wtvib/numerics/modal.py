@@ -166,9 +166,9 @@ def _one_basis(phi: Array, m: Array, shared: NDArray[np.bool_]) -> Array:
     (k − 1,): each with the next) given the one basis its space has whatever the rounding:
     the coordinates the space moves most picked by column-pivoted QR of its rows (their
     norms are the same for every basis of it), each shape 1 at its own and 0 at the
-    others', then M-orthonormalised in the order they were picked — a symmetric floater's
-    surge and sway each along its axis, a round blade's flap and edge each in its plane.
-    (Coordinates the space moves exactly alike are taken in their order.)"""
+    others', then M-orthonormalised in the coordinates' order — a symmetric floater's surge
+    and sway each along its axis, a round blade's flap and edge each in its plane, a rigid
+    rotor's collective and cyclic flap each its own coordinate, in their order."""
     out = phi.copy()
     start = 0
     for j in range(len(shared) + 1):
@@ -190,6 +190,7 @@ def _aligned(v: Array, m: Array) -> Array:
         pivots.append(p)
         q = rest[p] / np.linalg.norm(rest[p])
         rest = rest - np.outer(rest @ q, q)
+    pivots.sort()  # in the coordinates' order: a space of coordinates comes back as they are
     w = v @ np.linalg.inv(v[pivots, :])  # 1 at its own coordinate, 0 at the others'
     lower = np.linalg.cholesky(w.T @ m @ w)
     return np.asarray(w @ np.linalg.inv(lower).T)
