@@ -133,9 +133,9 @@ def solve_stacked(k: Array, m: Array, count: int | None = None) -> list[Modes]:
     top = w2.shape[-1] if count is None else min(count, w2.shape[-1])
     hz = np.sqrt(np.clip(w2[:, :top], 0.0, None)) / (2.0 * np.pi)
     shared = _repeated(w2)  # a repeated eigenvalue's shapes: one basis, not rounding's
-    wide = top if not shared[:, top - 1 : top].any() else _cluster_end(shared, top)
+    wide = _cluster_end(shared, top) if top else 0
     shapes = _normalised(inv_t @ y[:, :, :wide], m)
-    for i in np.flatnonzero(shared[:, : wide - 1].any(axis=1)):
+    for i in np.flatnonzero(shared[:, : max(wide - 1, 0)].any(axis=1)):
         shapes[i] = _one_basis(shapes[i], m[i], shared[i, : wide - 1])
     return [Modes(hz[i], shapes[i, :, :top]) for i in range(len(w2))]
 
