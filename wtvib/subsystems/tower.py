@@ -314,8 +314,8 @@ def added_mass_breaks(a: AddedMass) -> Array:
     tower's own properties, and a table sampled finely (HydroDyn's water along the IEA-15
     monopile: 401 heights) made more than :data:`wtvib.numerics.beam.MAX_STATION_NODES`
     stations, meshed uniformly — the tower's own steps smeared over an element (its second
-    bending modes 4·10⁻⁴ off, tests/validation/test_tower.py) and 815 coordinates to solve in
-    the coupled model where 99 do."""
+    bending modes 4–5·10⁻⁴ off, tests/validation/test_openfast_decks.py) and 815 coordinates
+    to solve in the coupled model where 111 do."""
     h = np.asarray(a.height_m, dtype=float)
     v = np.asarray(a.mass_per_length_kg_m, dtype=float)
     steps = np.flatnonzero(np.abs(np.diff(v)) > ADDED_MASS_STEP * max(float(v.max()), 0.0))
