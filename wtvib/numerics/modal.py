@@ -175,7 +175,10 @@ def _one_basis(phi: Array, m: Array, shared: NDArray[np.bool_]) -> Array:
         if j < len(shared) and shared[j]:
             continue
         if j > start:
-            out[:, start : j + 1] = _aligned(phi[:, start : j + 1], m)
+            try:
+                out[:, start : j + 1] = _aligned(phi[:, start : j + 1], m)
+            except np.linalg.LinAlgError:  # shapes rounding cannot resolve: left as found
+                pass
         start = j + 1
     return out
 
