@@ -13,6 +13,7 @@ R. J. Allemang, "The modal assurance criterion — twenty years of use and abuse
 Vibration 37(8), 2003 (MAC).
 """
 
+import contextlib
 import itertools
 import math
 from dataclasses import dataclass
@@ -175,10 +176,9 @@ def _one_basis(phi: Array, m: Array, shared: NDArray[np.bool_]) -> Array:
         if j < len(shared) and shared[j]:
             continue
         if j > start:
-            try:
+            # shapes rounding cannot resolve (no pivot block to invert): left as found
+            with contextlib.suppress(np.linalg.LinAlgError):
                 out[:, start : j + 1] = _aligned(phi[:, start : j + 1], m)
-            except np.linalg.LinAlgError:  # shapes rounding cannot resolve: left as found
-                pass
         start = j + 1
     return out
 
