@@ -347,3 +347,23 @@ def test_the_locked_train_is_the_free_one_clamped_at_the_generator():
     for full, held in zip(free, locked, strict=True):
         np.testing.assert_array_equal(held, full[:-1, :-1])
     assert locked[2].shape == (2, 2) and locked[2][0, 1] != 0.0
+
+
+@pytest.mark.parametrize("hz", ["1.0e+300", "1.0e-300"])
+def test_a_grid_frequency_no_grid_has_is_refused_with_the_field(tmp_path, hz):
+    """A grid frequency of 1e300 Hz made the induction generator's magnetic damping 0 and
+    the grid check divided by it (exhaustive.py extremes, tests/FUZZ.md campaign 20): the
+    spec keeps it within 1–1,000 Hz (16.7 Hz railways … 400 Hz on board)."""
+    from tests.conftest import TURBINES
+    from wtvib import spec
+    from wtvib.errors import SpecError
+
+    text = (TURBINES / "aeroman.yaml").read_text()
+    assert "grid_frequency_hz: {value: 50," in text
+    path = tmp_path / "g.yaml"
+    path.write_text(
+        text.replace("grid_frequency_hz: {value: 50,", f"grid_frequency_hz: {{value: {hz},")
+    )
+    with pytest.raises(SpecError, match="grid_frequency_hz") as err:
+        spec.load(path)
+    assert err.value.line is not None

@@ -1,6 +1,6 @@
 """The drive train: gear stages, the chain of inertias and shafts, the generator."""
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -101,7 +101,9 @@ class GeneratorModel(_Strict):
 
     rated_power_kw: Positive = Field(description="Rated (electrical) power. [kW]")
     pole_pairs: int = Field(ge=1, le=200, description="Pole pairs p. [-]")
-    grid_frequency_hz: Positive = Field(50.0, description="Grid frequency. [Hz]")
+    grid_frequency_hz: Annotated[float, Field(ge=1.0, le=1000.0)] = Field(
+        50.0, description="Grid frequency: 50 or 60 Hz, 16.7 on a railway's, 400 on board. [Hz]"
+    )
     pull_out_power_kw: Positive | None = Field(
         None, description="Synchronous: pull-out (maximum) power P_max. [kW]"
     )
