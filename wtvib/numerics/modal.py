@@ -101,12 +101,6 @@ def solve(k: Array, m: Array, count: int | None = None) -> Modes:
     return solve_stacked(k[None], m[None], count)[0]
 
 
-#: A model this large (a tower on its monopile meshed finely) is stored as a band and a few
-#: dense blocks: products with its mass matrix go through its sparse form
-#: (:func:`wtvib.subsystems.multiblade._mass_times`).
-LARGE_STATES = 700
-
-
 def lowest(modes: Modes, count: int) -> Modes:
     """The lowest ``count`` of solved modes (all of them, if fewer): what :func:`solve` with
     that count gives (it solves the whole problem and keeps the first)."""

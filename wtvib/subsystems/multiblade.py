@@ -573,18 +573,23 @@ def _energy(m: Array, shapes: NDArray[np.complex128]) -> Array:
     return np.asarray(np.abs(shapes.real * both[:, :modes] + shapes.imag * both[:, modes:]))
 
 
+#: A model this large (a tower of more than 200 stations, meshed at 200 elements) is a band
+#: and a few dense blocks: products with its mass matrix go through its sparse form.
+LARGE_STATES = 700
+
 #: The last large mass matrix :func:`_mass_times` made sparse, with its sparse form.
 _SPARSE: tuple[Array, Any] | None = None
 
 
 def _mass_times(m: Array, x: Array) -> Array:
-    """M·X. A model of modal.LARGE_STATES coordinates or more (a tower on its monopile:
-    its beam's band and a few dense blocks, under 1 % of M filled) multiplies through M's
-    sparse form — 15 times faster at the IEA-15 monopile's 815 coordinates, the same sums to
+    """M·X. A model of LARGE_STATES coordinates or more (a tower of 200 elements: its
+    beam's band and a few dense blocks, under 1 % of M filled) multiplies through M's
+    sparse form — 15 times faster at 815 coordinates (the IEA-15 monopile's before its mesh
+    took its stations), the same sums to
     rounding (1e-16); the form is made once per matrix (the last one kept: a sweep asks
     with the same M at every speed)."""
     global _SPARSE
-    if m.shape[0] < modal.LARGE_STATES:
+    if m.shape[0] < LARGE_STATES:
         return np.asarray(m @ x)
     held = _SPARSE  # one read: the pair stays consistent whatever else runs
     if held is None or held[0] is not m:
