@@ -178,11 +178,14 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
                     (str(q), "a part of a HAWC2 model, read where the model continues in it")
                 )
     named = _named_by_decks(out)
-    for q in [q for q in out if _resolved(q) in named]:
-        out.remove(q)
-        left.append((str(q), f"the ElastoDyn file of {named[_resolved(q)]}, audited with its "
-                     "deck set"))  # fmt: skip
-    return sorted(out) + unreadable, left
+    alone = []
+    for q in out:  # each resolved once; a list's remove() made a large batch quadratic
+        deck = named.get(_resolved(q))
+        if deck is None:
+            alone.append(q)
+        else:
+            left.append((str(q), f"the ElastoDyn file of {deck}, audited with its deck set"))
+    return sorted(alone) + unreadable, left
 
 
 def _named_by_decks(found: Sequence[Path]) -> dict[Path, Path]:
