@@ -89,3 +89,19 @@ def test_prebent_key_points_are_said(files):
     b = beamdyn.blade(deck.parse(files / CASE))
     assert any("modelled straight" in n and "4 m" in n for n in b.notes)
     assert math.isclose(b.length_m, 61.5)
+
+
+@pytest.mark.parametrize("name", ["kp_xr", "kp_yr"])
+def test_a_key_point_table_without_its_offsets_is_one_line(files, name):
+    """The key points' table header without kp_xr or kp_yr (exhaustive.py beam, FUZZ.md
+    campaign 21: its first word replaced was an internal ValueError): one line naming the
+    column, the BeamDyn file and the header's line."""
+    path = files / BASE / "NRELOffshrBsline5MW_BeamDyn.dat"
+    lines = path.read_text().splitlines()
+    head = next(i for i, line in enumerate(lines) if "kp_zr" in line.split())
+    lines[head] = lines[head].replace(name, "abc")
+    path.write_text("\n".join(lines))
+    with pytest.raises(SpecError, match=f"names no {name} column") as err:
+        beamdyn.blade(deck.parse(files / CASE))
+    assert str(err.value.source).endswith("NRELOffshrBsline5MW_BeamDyn.dat")
+    assert err.value.line == head + 1

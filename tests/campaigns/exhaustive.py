@@ -8,6 +8,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py windio-floating  # windIO OC3/OC4 platforms
     .venv/bin/python tests/campaigns/exhaustive.py hawc2     # the IEA-15 onshore HAWC2 model
     .venv/bin/python tests/campaigns/exhaustive.py hawc2-floating  # its UMaineSemi floater
+    .venv/bin/python tests/campaigns/exhaustive.py beam      # r-test's BeamDyn, SubDyn, StC decks
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn,
@@ -150,6 +151,47 @@ HAWC2_FLOATING_FILES = (
 def hawc2_floating_cases(source: Path, work: Path) -> Iterator[Case]:
     for name, span in HAWC2_FLOATING_FILES:
         yield from _line_cases(source, work, H2_SEMI, name, span)
+
+
+#: The BeamDyn, SubDyn and structural-control campaign's files (r-test's deck sets in
+#: tests/data/openfast_decks rtest and rtest_special), each with the deck set that reads
+#: it and how many of its lines are mutated (the BeamDyn blade's 756: its first 160 — the
+#: header, the first stations' 6×6 matrices). The .fst of one of them (the others' are
+#: read by the same code).
+R = "glue-codes/openfast/"
+BEAM_FILES = (
+    (R + "5MW_OC3Mnpl_Linear/5MW_OC3Mnpl_Linear.fst", "", None),
+    (R + "5MW_OC3Mnpl_Linear/5MW_OC3Mnpl_Linear.fst", "_SubDyn.dat", None),
+    (R + "5MW_Land_BD_Linear/5MW_Land_BD_Linear.fst", "_BDoutputs.dat", None),
+    (
+        R + "5MW_Land_BD_Linear/5MW_Land_BD_Linear.fst",
+        R + "5MW_Baseline/NRELOffshrBsline5MW_BeamDyn.dat",
+        None,
+    ),
+    (
+        R + "5MW_Land_BD_Linear/5MW_Land_BD_Linear.fst",
+        R + "5MW_Baseline/NRELOffshrBsline5MW_BeamDyn_Blade.dat",
+        160,
+    ),
+    (R + "StC_test_OC4Semi_Linear_Tow/StC_test_OC4Semi_Linear_Tow.fst", "SrvD_StC-Tow.dat", None),
+    (R + "StC_test_OC4Semi_Linear_Tow/StC_test_OC4Semi_Linear_Tow.fst", "StC-Tow-XDir.dat", None),
+    (
+        R + "Ideal_Beam_Fixed_Free_Linear/Ideal_Beam_Fixed_Free_Linear.fst",
+        R + "Ideal_Beam/BeamDyn_Blade.dat",
+        None,
+    ),
+)
+
+
+def beam_cases(source: Path, work: Path) -> Iterator[Case]:
+    """BEAM_FILES: a name beginning with glue-codes/ is the file; "" the .fst itself; any
+    other the one file beside the .fst whose name ends so."""
+    for fst, name, first in BEAM_FILES:
+        if not name.startswith(R):  # the file beside the .fst whose name ends so
+            ends = name or Path(fst).name
+            found = sorted((source / Path(fst).parent).iterdir())
+            name = str(next(p for p in found if p.name.endswith(ends)).relative_to(source))
+        yield from _line_cases(source, work, fst, name, first)
 
 
 def floating_cases(source: Path, work: Path) -> Iterator[Case]:
@@ -355,6 +397,7 @@ def main() -> None:
             "windio-floating",
             "hawc2",
             "hawc2-floating",
+            "beam",
         ],
     )
     ap.add_argument("--part", type=int, default=0)
@@ -373,6 +416,15 @@ def main() -> None:
             tar.extractall(source, filter="data")
         shutil.copytree(source, work)
         cases = floating_cases(source, work)
+    elif args.campaign == "beam":
+        import tarfile
+
+        source = work.parent / "source"
+        for archive in ("rtest", "rtest_special"):
+            with tarfile.open(ROOT / f"tests/data/openfast_decks/{archive}.tar.gz") as tar:
+                tar.extractall(source, filter="data")
+        shutil.copytree(source, work)
+        cases = beam_cases(source, work)
     elif args.campaign == "hawc2":
         import tarfile
 

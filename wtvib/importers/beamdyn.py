@@ -103,6 +103,14 @@ def _key_points(main: Deck) -> tuple[np.ndarray, np.ndarray, float]:
     if head is None:
         raise SpecError("BeamDyn file of an unknown layout: no kp_zr table", source=str(main.path))
     header = lines[head].split()
+    missing = [name for name in ("kp_xr", "kp_yr") if name not in header]
+    if missing:
+        raise SpecError(
+            f"the key points' table names no {' or '.join(missing)} column (its header: "
+            "kp_xr kp_yr kp_zr initial_twist)",
+            line=head + 1,
+            source=str(main.path),
+        )
     rows = []
     j = head + 1
     while j < len(lines) and lines[j].strip().startswith("("):
