@@ -1,6 +1,7 @@
 """HAWC2 files at unit level (wtvib.importers.htc, .hawc2): the htc block syntax, st sets,
 and a broken model's one line with file, line and block."""
 
+import math
 import re
 import tarfile
 from pathlib import Path
@@ -653,3 +654,40 @@ def test_a_floater_s_members_stand_beside_the_turbine(semi, mass):
         assert len(warned) == 1 and "(column, ifb) carry 500,002 kg" in warned[0], warned
     else:
         assert warned == [], warned
+
+
+def test_the_blades_damping_aniso_v2_is_read_as_damping_aniso(model22):
+    """The IEA-22's blades give their damping with HAWC2's damping_aniso_v2 (the same six
+    values Mx My Mz Kx Ky Kz as damping_aniso; its comment: "tuned to 0.5 % critical
+    damping on first flap/edge modes and 2 % on first torsion"): read as the blade's
+    stiffness-proportional damping, ζ = π·β·f — not a ratio assumed for want of one. Which
+    direction each damps, as damping_posdef (Kx along the chord, edgewise; Ky flapwise): so
+    the first flap and edge modes have the comment's 0.5 % (measured 0.51 %, 0.47 %); with
+    Kx flapwise, as damping_aniso's, they would be 0.34 % and 0.70 %."""
+    from wtvib import audit, importers
+
+    spec = importers.load(model22)
+    beta = spec.blade.stiffness_damping_s
+    assert beta is not None
+    assert (beta.bending_1, beta.bending_2, beta.torsion) == (0.004251, 0.002846, 0.001194)
+    report = audit.run(spec)
+    assert not any(a.startswith("blade: damping ratio") for a in report.assumptions)
+    ratios = {m.id: m.damping_ratio for m in report.modes if m.subsystem == "blade"}
+    for name in ("blade.flap1", "blade.edge1"):
+        assert ratios[name] == pytest.approx(0.005, rel=0.1), name
+    _edit(model22, "damping_aniso_v2", "damping_aniso_v3")  # a command HAWC2 has not
+    assert importers.load(model22).blade.stiffness_damping_s is None
+
+
+def test_the_blades_damping_aniso_damps_their_bending_about_x_flapwise(model):
+    """The IEA-15's blades give damping_aniso (Kx 3.038e-3, Ky 2.167e-3 s; its comment:
+    "blade damping tuned to 3 % log dec flap/edge"): damping_aniso damps the bending about
+    the body's x — flapwise — with Kx, so the first flap and edge modes both have the 3 %
+    logarithmic decrement, ζ = 0.03/2π = 0.477 % (measured 0.484 %, 0.477 %); with Kx
+    edgewise, as damping_posdef's, 0.35 % and 0.67 %."""
+    from wtvib import audit, importers
+
+    report = audit.run(importers.load(model))
+    ratios = {m.id: m.damping_ratio for m in report.modes if m.subsystem == "blade"}
+    for name in ("blade.flap1", "blade.edge1"):
+        assert ratios[name] == pytest.approx(0.03 / (2 * math.pi), rel=0.05), name

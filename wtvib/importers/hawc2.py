@@ -5,7 +5,7 @@ What is read (htc syntax: :mod:`wtvib.importers.htc`):
 
 * ``new_htc_structure``: the main bodies — their ``c2_def`` centre lines and twist,
   ``timoschenko_input`` (st file, classical or fully populated ``FPM 1``, set and subset),
-  ``concentrated_mass`` and ``damping_posdef``/``damping_aniso``, ``copy_main_body`` — and
+  ``concentrated_mass`` and ``damping_posdef``/``damping_aniso``/``_v2``, ``copy_main_body`` — and
   the ``orientation`` (``base``; ``relative`` with its successive ``mbdy2_eulerang``
   rotations) that places them; ``constraint`` for the tower's base (``fix0``), or the
   floater that holds it: an ``ESYSWamit`` external system with ``elasticBar`` moorings,
@@ -26,7 +26,8 @@ The structural pitch of the principal axes adds to the centre line's twist; HAWC
 positive about the blade's z (root to tip), the opposite sense of wtvib's (towards
 feather), so both are negated. Prebend and sweep, shaft tilt and cone are said and
 neglected, as for the other importers; damping is stiffness-proportional as HAWC2 gives it
-(ζ = π·β·f, the K coefficients of ``damping_posdef``). The blades are Timoshenko beams as
+(ζ = π·β·f, the K coefficients of ``damping_posdef``, ``_aniso`` or ``_aniso_v2``: which
+direction each damps, :func:`_tower_damping`). The blades are Timoshenko beams as
 HAWC2's are: the shear deflecting along y, k_y·G·A, goes with E·I_x (flapwise), k_x·G·A
 with E·I_y (a fully populated set: K22 with K44, K11 with K55); the tower stays an
 Euler–Bernoulli beam (a tube, whose shear deformation is negligible).
@@ -67,6 +68,7 @@ class Body:
     fpm: bool
     masses: list[tuple[int, np.ndarray]]  # (node, x y z m Ixx Iyy Izz)
     damping: tuple[float, ...]  # damping_posdef or _aniso: Mx My Mz Kx Ky Kz
+    damping_by: str = "damping_posdef"  # the command that gave them
     origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
     frame: np.ndarray = field(default_factory=lambda: np.eye(3))
     placed: bool = False
@@ -157,9 +159,10 @@ def _body(name: str, b: Block, root: Path) -> Body:
     set_cmd = timo.need("set")
     st = htc.read_st(path, int(set_cmd.number(0)), int(set_cmd.number(1)), 30 if fpm else len(ST))
     masses = [(int(c.number(0)), np.array(c.first(7, 1))) for c in b.all("concentrated_mass")]
-    damp = b.get("damping_posdef") or b.get("damping_aniso")
+    damp = next((b.get(c) for c in DAMPING if b.get(c) is not None), None)
     damping = tuple(damp.first(6)) if damp is not None else (0.0,) * 6
-    return Body(name, b, c2, st, fpm, masses, damping)
+    by = damp.key if damp is not None else DAMPING[0]
+    return Body(name, b, c2, st, fpm, masses, damping, by)
 
 
 def _place(bodies: dict[str, Body], orientation: Block) -> None:
@@ -837,15 +840,29 @@ def _shaft_stiffness(shaft: Body) -> float:
     return float(1.0 / np.trapezoid(1.0 / gj, np.linspace(0, length, len(gj))))
 
 
+#: A main body's damping commands, each with Mx My Mz Kx Ky Kz (HAWC2 reads the first).
+DAMPING = ("damping_posdef", "damping_aniso", "damping_aniso_v2")
+
+
 def _tower_damping(body: Body) -> dict[str, Any]:
+    """A body's K coefficients as wtvib's (fore-aft or flapwise, side-side or edgewise,
+    torsion). damping_posdef and damping_aniso_v2 damp the deflection along the body's x
+    and y — x the blade's chord (edgewise), the tower's lateral (side-side) — damping_aniso
+    the bending about them (x: flapwise, fore-aft). Measured on the models: HAWCStab2's
+    DTU 10 MW blade (damping_posdef Kx 1.53e-3, Ky 2.55e-3) damps its first flap mode at
+    ζ = π·2.54e-3·f and its first edge mode at π·1.62e-3·f; the IEA-15's damping_aniso
+    (3.038e-3, 2.167e-3) gives its flap and edge modes its note's 3 % logarithmic decrement
+    with Kx flapwise, the IEA-22's damping_aniso_v2 (2.846e-3, 4.251e-3) its note's 0.5 %
+    with Kx edgewise (tests/validation/test_hawc2.py, tests/test_hawc2.py)."""
     _, _, _, kx, ky, kz = (list(body.damping) + [0.0] * 6)[:6]
     if kx <= 0 and ky <= 0:
         return {}
-    return {"stiffness_damping_s": {"bending_1": kx, "bending_2": ky, "torsion": kz}}
+    first, second = (kx, ky) if body.damping_by == "damping_aniso" else (ky, kx)
+    return {"stiffness_damping_s": {"bending_1": first, "bending_2": second, "torsion": kz}}
 
 
 def _blade_damping(body: Body) -> dict[str, Any]:
-    return _tower_damping(body)  # Kx flapwise (about x), Ky edgewise, Kz torsion
+    return _tower_damping(body)
 
 
 def _operational_data(top: Block, root: Path) -> tuple[Path, np.ndarray, str] | None:
