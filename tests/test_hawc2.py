@@ -663,7 +663,10 @@ def test_the_blades_damping_aniso_v2_is_read_as_damping_aniso(model22):
     stiffness-proportional damping, ζ = π·β·f — not a ratio assumed for want of one. Which
     direction each damps, as damping_posdef (Kx along the chord, edgewise; Ky flapwise): so
     the first flap and edge modes have the comment's 0.5 % (measured 0.51 %, 0.47 %); with
-    Kx flapwise, as damping_aniso's, they would be 0.34 % and 0.70 %."""
+    Kx flapwise, as damping_aniso's, they would be 0.34 % and 0.70 %. A third witness: the
+    same repository's BeamDyn blade of this turbine (tests/data/openfast_decks/iea22.tar.gz)
+    damps flapwise with μ5 = 0.004048 s and edgewise with μ4 = 0.003153 s — Ky's and Kx's
+    neighbours, not the other way round."""
     from wtvib import audit, importers
 
     spec = importers.load(model22)

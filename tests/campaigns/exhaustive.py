@@ -9,6 +9,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py hawc2     # the IEA-15 onshore HAWC2 model
     .venv/bin/python tests/campaigns/exhaustive.py hawc2-floating  # its UMaineSemi floater
     .venv/bin/python tests/campaigns/exhaustive.py beam      # r-test's BeamDyn, SubDyn, StC decks
+    .venv/bin/python tests/campaigns/exhaustive.py monopile  # the IEA-22 monopile deck set
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn,
@@ -181,6 +182,26 @@ BEAM_FILES = (
         None,
     ),
 )
+
+
+#: The monopile campaign's files: the IEA-22 monopile deck set (tests/data/openfast_decks/
+#: iea22.tar.gz) — its structure and sea: SubDyn, HydroDyn, SeaState, ElastoDyn and its
+#: tower, BeamDyn and the first 120 lines of its blade.
+I22 = "OpenFAST/IEA-22-280-RWT-Monopile/"
+MONOPILE_FILES = (
+    (I22 + "IEA-22-280-RWT_SubDyn.dat", None),
+    (I22 + "IEA-22-280-RWT_HydroDyn.dat", None),
+    (I22 + "IEA-22-280-RWT_SeaState.dat", None),
+    (I22 + "IEA-22-280-RWT_ElastoDyn.dat", None),
+    (I22 + "IEA-22-280-RWT_ElastoDyn_tower.dat", None),
+    ("OpenFAST/IEA-22-280-RWT/IEA-22-280-RWT_BeamDyn.dat", None),
+    ("OpenFAST/IEA-22-280-RWT/IEA-22-280-RWT_BeamDyn_Blade.dat", 120),
+)
+
+
+def monopile_cases(source: Path, work: Path) -> Iterator[Case]:
+    for name, first in MONOPILE_FILES:
+        yield from _line_cases(source, work, I22 + "IEA-22-280-RWT-Monopile.fst", name, first)
 
 
 def beam_cases(source: Path, work: Path) -> Iterator[Case]:
@@ -398,6 +419,7 @@ def main() -> None:
             "hawc2",
             "hawc2-floating",
             "beam",
+            "monopile",
         ],
     )
     ap.add_argument("--part", type=int, default=0)
@@ -425,6 +447,14 @@ def main() -> None:
                 tar.extractall(source, filter="data")
         shutil.copytree(source, work)
         cases = beam_cases(source, work)
+    elif args.campaign == "monopile":
+        import tarfile
+
+        source = work.parent / "source"
+        with tarfile.open(ROOT / "tests/data/openfast_decks/iea22.tar.gz") as tar:
+            tar.extractall(source, filter="data")
+        shutil.copytree(source, work)
+        cases = monopile_cases(source, work)
     elif args.campaign == "hawc2":
         import tarfile
 
