@@ -10,6 +10,7 @@ place of a reference input mutated in turn, not a random sample of them.
     .venv/bin/python tests/campaigns/exhaustive.py hawc2-floating  # its UMaineSemi floater
     .venv/bin/python tests/campaigns/exhaustive.py beam      # r-test's BeamDyn, SubDyn, StC decks
     .venv/bin/python tests/campaigns/exhaustive.py monopile  # the IEA-22 monopile deck set
+    .venv/bin/python tests/campaigns/exhaustive.py hawc2-fpm # its blades' 6×6 st set
     ... [--part I --parts N]  (run N processes, I = 0 … N-1, and add the counts)
 
 deck: each line of the deck set's files (ElastoDyn, tower, blade, ServoDyn, AeroDyn,
@@ -135,6 +136,27 @@ HAWC2_FILES = (
 def hawc2_cases(source: Path, work: Path) -> Iterator[Case]:
     for name, first in HAWC2_FILES:
         yield from _line_cases(source, work, H2_MAIN, name, first)
+
+
+#: The fully populated st set (tests/data/hawc2/IEA_15MW_RWT_Blade_st_FPM.st.gz, the same
+#: blade's BECAS 6×6 matrices) and the row of it whose every value is also mutated.
+H2_FPM = H2_SHARED + "IEA_15MW_RWT_Blade_st_FPM.st"
+FPM_ROW = 6
+
+
+def hawc2_fpm_cases(source: Path, work: Path) -> Iterator[Case]:
+    """The onshore model with its blades' fully populated set (``FPM 1``): each line of the
+    st file as :func:`_line_cases`, and each value of its first station replaced by each
+    of TOKENS."""
+    yield from _line_cases(source, work, H2_MAIN, H2_FPM)
+    lines = (source / H2_FPM).read_text(encoding="latin-1").splitlines(keepends=True)
+    tokens = lines[FPM_ROW - 1].split()
+    for j in range(1, len(tokens) - 1):  # the first and last: _line_cases's
+        for junk in TOKENS:
+            row = " ".join([*tokens[:j], junk, *tokens[j + 1 :]]) + "\n"
+            text = "".join([*lines[: FPM_ROW - 1], row, *lines[FPM_ROW:]])
+            label = f"{H2_FPM}:{FPM_ROW} token{j}={junk}"
+            yield label, _deck_import(source, work, H2_MAIN, H2_FPM, text)
 
 
 #: The floating HAWC2 campaign's files and lines (1-based, inclusive): the floater's
@@ -420,6 +442,7 @@ def main() -> None:
             "hawc2-floating",
             "beam",
             "monopile",
+            "hawc2-fpm",
         ],
     )
     ap.add_argument("--part", type=int, default=0)
@@ -455,6 +478,21 @@ def main() -> None:
             tar.extractall(source, filter="data")
         shutil.copytree(source, work)
         cases = monopile_cases(source, work)
+    elif args.campaign == "hawc2-fpm":
+        import gzip
+        import tarfile
+
+        source = work.parent / "source"
+        with tarfile.open(ROOT / "tests/data/hawc2/iea15_onshore.tar.gz") as tar:
+            tar.extractall(source, filter="data")
+        fpm = (ROOT / "tests/data/hawc2/IEA_15MW_RWT_Blade_st_FPM.st.gz").read_bytes()
+        (source / H2_FPM).write_bytes(gzip.decompress(fpm))
+        bodies = source / H2_SHARED / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
+        text = bodies.read_text(encoding="latin-1")
+        text = text.replace("IEA_15MW_RWT_Blade_st_noFPM.st;", "IEA_15MW_RWT_Blade_st_FPM.st;")
+        bodies.write_text(text.replace("FPM 0;", "FPM 1;"), encoding="latin-1")
+        shutil.copytree(source, work)
+        cases = hawc2_fpm_cases(source, work)
     elif args.campaign == "hawc2":
         import tarfile
 
