@@ -428,6 +428,42 @@ def _numbers(node: Any, path: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]
         yield path
 
 
+#: The campaigns on archived inputs (tests/data/…tar.gz): their archives and their cases.
+ARCHIVES: dict[str, tuple[tuple[str, ...], Callable[[Path, Path], Iterator[Case]]]] = {
+    "floating": (("openfast_decks/rtest_floating",), floating_cases),
+    "beam": (("openfast_decks/rtest", "openfast_decks/rtest_special"), beam_cases),
+    "monopile": (("openfast_decks/iea22",), monopile_cases),
+    "hawc2": (("hawc2/iea15_onshore",), hawc2_cases),
+    "hawc2-fpm": (("hawc2/iea15_onshore",), hawc2_fpm_cases),
+    "hawc2-floating": (
+        ("hawc2/iea15_onshore", "hawc2/iea15_umainesemi", "openfast_decks/iea15_semi"),
+        hawc2_floating_cases,
+    ),
+}
+
+
+def _unpacked(work: Path, archives: tuple[str, ...], fpm: bool) -> Path:
+    """The archives unpacked beside ``work`` (the source the cases restore each file from)
+    and copied to ``work``; ``fpm``: the IEA-15 onshore model's blades on their fully
+    populated st set (``FPM 1``)."""
+    import gzip
+    import tarfile
+
+    source = work.parent / "source"
+    for archive in archives:
+        with tarfile.open(ROOT / f"tests/data/{archive}.tar.gz") as tar:
+            tar.extractall(source, filter="data")
+    if fpm:
+        packed = (ROOT / "tests/data/hawc2/IEA_15MW_RWT_Blade_st_FPM.st.gz").read_bytes()
+        (source / H2_FPM).write_bytes(gzip.decompress(packed))
+        bodies = source / H2_SHARED / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
+        text = bodies.read_text(encoding="latin-1")
+        text = text.replace("IEA_15MW_RWT_Blade_st_noFPM.st;", "IEA_15MW_RWT_Blade_st_FPM.st;")
+        bodies.write_text(text.replace("FPM 0;", "FPM 1;"), encoding="latin-1")
+    shutil.copytree(source, work)
+    return source
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument(
@@ -453,67 +489,10 @@ def main() -> None:
     if args.campaign == "deck":
         shutil.copytree(NREL, work)
         cases = deck_cases(work)
-    elif args.campaign == "floating":
-        import tarfile
-
-        source = work.parent / "source"
-        with tarfile.open(ROOT / "tests/data/openfast_decks/rtest_floating.tar.gz") as tar:
-            tar.extractall(source, filter="data")
-        shutil.copytree(source, work)
-        cases = floating_cases(source, work)
-    elif args.campaign == "beam":
-        import tarfile
-
-        source = work.parent / "source"
-        for archive in ("rtest", "rtest_special"):
-            with tarfile.open(ROOT / f"tests/data/openfast_decks/{archive}.tar.gz") as tar:
-                tar.extractall(source, filter="data")
-        shutil.copytree(source, work)
-        cases = beam_cases(source, work)
-    elif args.campaign == "monopile":
-        import tarfile
-
-        source = work.parent / "source"
-        with tarfile.open(ROOT / "tests/data/openfast_decks/iea22.tar.gz") as tar:
-            tar.extractall(source, filter="data")
-        shutil.copytree(source, work)
-        cases = monopile_cases(source, work)
-    elif args.campaign == "hawc2-fpm":
-        import gzip
-        import tarfile
-
-        source = work.parent / "source"
-        with tarfile.open(ROOT / "tests/data/hawc2/iea15_onshore.tar.gz") as tar:
-            tar.extractall(source, filter="data")
-        fpm = (ROOT / "tests/data/hawc2/IEA_15MW_RWT_Blade_st_FPM.st.gz").read_bytes()
-        (source / H2_FPM).write_bytes(gzip.decompress(fpm))
-        bodies = source / H2_SHARED / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
-        text = bodies.read_text(encoding="latin-1")
-        text = text.replace("IEA_15MW_RWT_Blade_st_noFPM.st;", "IEA_15MW_RWT_Blade_st_FPM.st;")
-        bodies.write_text(text.replace("FPM 0;", "FPM 1;"), encoding="latin-1")
-        shutil.copytree(source, work)
-        cases = hawc2_fpm_cases(source, work)
-    elif args.campaign == "hawc2":
-        import tarfile
-
-        source = work.parent / "source"
-        with tarfile.open(ROOT / "tests/data/hawc2/iea15_onshore.tar.gz") as tar:
-            tar.extractall(source, filter="data")
-        shutil.copytree(source, work)
-        cases = hawc2_cases(source, work)
-    elif args.campaign == "hawc2-floating":
-        import tarfile
-
-        source = work.parent / "source"
-        for archive in (
-            "hawc2/iea15_onshore",
-            "hawc2/iea15_umainesemi",
-            "openfast_decks/iea15_semi",
-        ):
-            with tarfile.open(ROOT / f"tests/data/{archive}.tar.gz") as tar:
-                tar.extractall(source, filter="data")
-        shutil.copytree(source, work)
-        cases = hawc2_floating_cases(source, work)
+    elif args.campaign in ARCHIVES:
+        archives, make = ARCHIVES[args.campaign]
+        source = _unpacked(work, archives, args.campaign == "hawc2-fpm")
+        cases = make(source, work)
     elif args.campaign == "windio":
         work.mkdir(parents=True)
         cases = windio_cases(work)
