@@ -67,7 +67,7 @@ class Body:
     st: np.ndarray  # rows of the st set
     fpm: bool
     masses: list[tuple[int, np.ndarray]]  # (node, x y z m Ixx Iyy Izz)
-    damping: tuple[float, ...]  # damping_posdef or _aniso: Mx My Mz Kx Ky Kz
+    damping: tuple[float, ...]  # one of DAMPING's commands: Mx My Mz Kx Ky Kz
     damping_by: str = "damping_posdef"  # the command that gave them
     origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
     frame: np.ndarray = field(default_factory=lambda: np.eye(3))
@@ -159,7 +159,7 @@ def _body(name: str, b: Block, root: Path) -> Body:
     set_cmd = timo.need("set")
     st = htc.read_st(path, int(set_cmd.number(0)), int(set_cmd.number(1)), 30 if fpm else len(ST))
     masses = [(int(c.number(0)), np.array(c.first(7, 1))) for c in b.all("concentrated_mass")]
-    damp = next((b.get(c) for c in DAMPING if b.get(c) is not None), None)
+    damp = next((cmd for cmd in map(b.get, DAMPING) if cmd is not None), None)
     damping = tuple(damp.first(6)) if damp is not None else (0.0,) * 6
     by = damp.key if damp is not None else DAMPING[0]
     return Body(name, b, c2, st, fpm, masses, damping, by)
@@ -840,7 +840,7 @@ def _shaft_stiffness(shaft: Body) -> float:
     return float(1.0 / np.trapezoid(1.0 / gj, np.linspace(0, length, len(gj))))
 
 
-#: A main body's damping commands, each with Mx My Mz Kx Ky Kz (HAWC2 reads the first).
+#: A main body's damping commands, each with Mx My Mz Kx Ky Kz (the first given is read).
 DAMPING = ("damping_posdef", "damping_aniso", "damping_aniso_v2")
 
 
@@ -850,7 +850,7 @@ def _tower_damping(body: Body) -> dict[str, Any]:
     and y — x the blade's chord (edgewise), the tower's lateral (side-side) — damping_aniso
     the bending about them (x: flapwise, fore-aft). Measured on the models: HAWCStab2's
     DTU 10 MW blade (damping_posdef Kx 1.53e-3, Ky 2.55e-3) damps its first flap mode at
-    ζ = π·2.54e-3·f and its first edge mode at π·1.62e-3·f; the IEA-15's damping_aniso
+    ζ = π·2.53e-3·f and its first edge mode at π·1.62e-3·f; the IEA-15's damping_aniso
     (3.038e-3, 2.167e-3) gives its flap and edge modes its note's 3 % logarithmic decrement
     with Kx flapwise, the IEA-22's damping_aniso_v2 (2.846e-3, 4.251e-3) its note's 0.5 %
     with Kx edgewise (tests/validation/test_hawc2.py, tests/test_hawc2.py)."""
