@@ -18,7 +18,7 @@ edgewise whirls: 0.016 / 0.016, 0.014 / 0.014 at 8 m/s; 0.021 / 0.020, 0.017 / 0
 — with AeroDyn's last blade node loaded as AeroDyn loads it (before, left unloaded: 0.010
 / 0.013 at 16 m/s, 0.010 / 0.008 at 20 m/s). The flap family (ζ 0.46–0.82) within
 −3 … +5 %. The first tower pair in operation: the fore-aft, which the rotor's thrust damps,
-+6.0 … +9.5 % (ζ 0.065–0.079), the side-side −23 … −5 % (ζ 0.006–0.013: OPEN — wtvib's
++6.1 … +9.6 % (ζ 0.065–0.079), the side-side −19 … −4 % (ζ 0.006–0.013: OPEN — wtvib's
 side-side aerodynamic damping is below OpenFAST's, and below HAWCStab2's on the IEA-15,
 test_hawc2.test_the_iea15_aeroelastic_damping_against_hawcstab2; not yet traced, not the
 tower's drag, which neither model here has). This is the third code for the near-rated
@@ -126,9 +126,9 @@ def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
             # whirls damp 1.13 times as much without it, test_rtest_models.
             # test_aerodyn_loads_its_blades_last_node), the forward at 20 m/s +12 % (+23 %)
             assert 0.65 <= zeta / z <= 1.2, (case, name, zeta, z)
-        elif name == "tower.fa1":  # ζ 0.065–0.079: measured +6.0 … +9.5 %
+        elif name == "tower.fa1":  # ζ 0.065–0.079: measured +6.1 … +9.6 %
             assert 1.0 <= zeta / z <= 1.15, (case, name, zeta, z)
-        elif name == "tower.ss1":  # ζ 0.006–0.013: OPEN, held as measured, −23 … −5 %
+        elif name == "tower.ss1":  # ζ 0.006–0.013: OPEN, held as measured, −19 … −4 %
             assert 0.7 <= zeta / z <= 1.0, (case, name, zeta, z)
     assert checked >= 10, checked
 

@@ -747,10 +747,14 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
     and second fore-aft, where its ElastoDyn discretisation gives 0.947 and 3.088). The
     second modes' shapes, which the head pins near the top, imply far less than the bare
     tower's own second modes (4.38 Hz): at those, wtvib's second-mode damping was 30 %
-    low. OpenFAST's first pair: 0.357/0.377 % on 5MW_Land_BD_Linear (BeamDyn's blades add
-    their damping), 1.30/1.31 % on the parked WindPACT; its second: 1.12 % (5-MW fore-aft),
-    3.24/3.43 % (WindPACT). wtvib's within 10 % (measured −7.3/−9.1 %, −1.8/−2.8 %; −3.3 %,
-    −3.0/−9.3 %). The 5-MW's second side-side is the third of wtvib's (ALIASES)."""
+    low. The damping acts on the tower's material stiffness (KTFA), not on the softening the
+    head's weight adds: a mode carries ζ·(f/f_alone)·E_el/E (coupled._material_share) —
+    taken on the whole stiffness, wtvib's first pair was −7.3/−9.1 % (5-MW) and −1.8/−2.8 %
+    (WindPACT). OpenFAST's first pair: 0.357/0.377 % on 5MW_Land_BD_Linear (BeamDyn's blades
+    add their damping), 1.30/1.31 % on the parked WindPACT; its second: 1.12 % (5-MW
+    fore-aft), 3.24/3.43 % (WindPACT). wtvib's within 5 % (measured −3.0/−0.9 %,
+    −0.7/−0.6 %; −2.5 %, +0.8/+1.4 %). The 5-MW's second side-side is the third of wtvib's
+    (ALIASES)."""
     for case, names in (
         ("5MW_Land_BD_Linear", ("tower.fa1", "tower.ss1", "tower.fa2")),
         ("WP_Stationary_Linear", ("tower.fa1", "tower.ss1", "tower.fa2", "tower.ss2")),
@@ -761,7 +765,7 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
         report = audit.run(importers.load(deck, importers.ReadOptions(deck_dofs=True)))
         ours = {m.id.removeprefix("system."): m.damping_ratio for m in report.modes if m.judged}
         for name in names:
-            assert ours[name] == pytest.approx(zeta[name], rel=0.10), (case, name)
+            assert ours[name] == pytest.approx(zeta[name], rel=0.05), (case, name)
 
 
 @pytest.mark.parametrize("case", ["StC_test_OC4Semi_Linear_Tow", "StC_test_OC4Semi_Linear_Nac"])
