@@ -1285,7 +1285,7 @@ def _material_share(model: Model, shapes: NDArray[np.complex128]) -> Array:
     material stiffness (CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)), KTFA without the
     weight's softening, which it adds apart), so a mode is damped at ζ·(f/f_alone)·E_el/E:
     the weight that lowers the tower's frequency does not lower its damping force (the
-    NREL 5-MW's first tower pair under its head +6 … +9 %, as OpenFAST damps it,
+    NREL 5-MW's first tower pair under its head +4.5 … +8 %, as OpenFAST damps it,
     tests/validation/test_rtest_models.py). HAWC2's stiffness-proportional damping is
     taken as HAWCStab2 damps it, π·β·f (test_hawc2.py: within 2 % without this share, +7 %
     with it)."""
