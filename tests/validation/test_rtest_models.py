@@ -768,6 +768,26 @@ def test_the_tower_damping_is_openfasts_where_nothing_else_damps_it(decks, tmp_p
             assert ours[name] == pytest.approx(zeta[name], rel=0.05), (case, name)
 
 
+def test_the_weight_s_share_is_the_standing_tower_s_alone(decks):
+    """coupled._material_share: on the ground the weight softens the tower's bending — the
+    onshore 5-MW's first tower pair carries 1.03–1.05 of its tower strain energy in the
+    material stiffness (measured 1.037) — on a floater the weight's moment is the whole
+    turbine's tilt, which the floater's restoring holds, and no share is taken (the OC4
+    semi's pitch and roll took 1.4 while it was: its tower hardly bends in them)."""
+    from wtvib.numerics import modal
+    from wtvib.subsystems import coupled
+
+    for case, land in (("5MW_Land_BD_Linear", True), ("5MW_OC4Semi_Linear", False)):
+        deck = decks / GLUE / case / f"{case}.fst"
+        model = coupled.build(importers.load(deck, importers.ReadOptions(deck_dofs=True)), "locked")
+        m, _, _, k, _ = model.multiblade
+        share = coupled._material_share(model, modal.solve(k, m, 6).shapes.astype(complex))
+        if land:  # its first tower pair, the lowest two modes
+            assert np.all((share[:2] > 1.03) & (share[:2] < 1.05)), share[:2]
+        else:
+            assert model.k_gravity is None and np.all(share == 1.0)
+
+
 @pytest.mark.parametrize("case", ["StC_test_OC4Semi_Linear_Tow", "StC_test_OC4Semi_Linear_Nac"])
 def test_a_tuned_mass_damper_is_openfasts(decks, tmp_path, case):
     """ServoDyn's structural control as the mass, spring and dashpot it is

@@ -601,8 +601,8 @@ def _tower_blocks(parts: Sequence[Array], lay: Layout) -> Array:
 
 def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array], list[Array]]:
     """The tower's stiffness and mass in fore-aft and side-side bending and, where it has a
-    GJ, torsion — on its foundation, the head left to the coupled model — and the head's
-    weight's part of the bending stiffness (none without gravity)."""
+    GJ, torsion — on its foundation, the head left to the coupled model — and the weight's
+    part of the tower's bending stiffness (none without gravity, or on a floater)."""
     t = spec.tower
     b = tower.discretise(t)
     parts_k: list[Array] = []
@@ -619,7 +619,11 @@ def _tower_parts(spec: Spec, notes: list[str]) -> tuple[list[Array], list[Array]
         )
         parts_k.append(k)
         parts_m.append(m)
-        if t.gravity:
+        # the weight's softening of a tower that stands on the ground; on a floater it is
+        # mostly the whole turbine's tilt, which the floater's restoring holds — not the
+        # tower's bending (its share taken there: 1.3–1.4 on the OC3 spar's and OC4 semi's
+        # pitch and roll, where the tower hardly bends), so none is separated
+        if t.gravity and t.foundation.kind != "platform":
             k_elastic, _ = tower.bending_system(
                 b, spec.tower_head, t.point_masses, t.foundation, direction, False, False
             )
@@ -1280,10 +1284,11 @@ def strain_weighted(
 
 def _material_share(model: Model, shapes: NDArray[np.complex128]) -> Array:
     """Each mode's tower strain energy in its material stiffness over that in its whole
-    stiffness, the head's weight's (geometric, softening) part included — (modes,), 1
-    without gravity. ElastoDyn damps the tower's degrees of freedom in proportion to their
-    material stiffness (CTFA = 0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)), KTFA without the
-    weight's softening, which it adds apart), so a mode is damped at ζ·(f/f_alone)·E_el/E:
+    stiffness, the weight's (geometric, softening) part included — (modes,), 1 without
+    gravity or on a floater (:func:`_tower_parts`). ElastoDyn damps the tower's degrees of
+    freedom in proportion to their material stiffness (CTFA =
+    0.01·TwrFADmp·KTFA/(π·FreqTFA(:,1)), KTFA without the weight's softening, which it
+    adds apart), so a mode is damped at ζ·(f/f_alone)·E_el/E:
     the weight that lowers the tower's frequency does not lower its damping force (the
     NREL 5-MW's first tower pair under its head +4.5 … +8 %, as OpenFAST damps it,
     tests/validation/test_rtest_models.py). HAWC2's stiffness-proportional damping is
