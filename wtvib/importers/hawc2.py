@@ -27,7 +27,7 @@ positive about the blade's z (root to tip), the opposite sense of wtvib's (towar
 feather), so both are negated. Prebend and sweep, shaft tilt and cone are said and
 neglected, as for the other importers; damping is stiffness-proportional as HAWC2 gives it
 (ζ = π·β·f, the K coefficients of ``damping_posdef``, ``_aniso`` or ``_aniso_v2``: which
-direction each damps, :func:`_tower_damping`). The blades are Timoshenko beams as
+direction each damps, :func:`_stiffness_damping`). The blades are Timoshenko beams as
 HAWC2's are: the shear deflecting along y, k_y·G·A, goes with E·I_x (flapwise), k_x·G·A
 with E·I_y (a fully populated set: K22 with K44, K11 with K55); the tower stays an
 Euler–Bernoulli beam (a tube, whose shear deformation is negligible).
@@ -464,14 +464,14 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
         },
         "tower": {
             "height_m": round(tower_length, 6),
-            **_tower_damping(chain.tower[0]),
+            **_stiffness_damping(chain.tower[0]),
             "distributed": tower_table,
         },
         "tower_head": assembled(parts).as_head(),
         "blade": {
             "length_m": round(blade_length, 6),
             "mass_kg": round(blade_mass, 3),
-            **_blade_damping(chain.blades[0]),
+            **_stiffness_damping(chain.blades[0]),
             "structure": {"hub_radius_m": round(hub_radius, 6), **blade_structure},
         },
         "drivetrain": drivetrain,
@@ -844,7 +844,7 @@ def _shaft_stiffness(shaft: Body) -> float:
 DAMPING = ("damping_posdef", "damping_aniso", "damping_aniso_v2")
 
 
-def _tower_damping(body: Body) -> dict[str, Any]:
+def _stiffness_damping(body: Body) -> dict[str, Any]:
     """A body's K coefficients as wtvib's (fore-aft or flapwise, side-side or edgewise,
     torsion). damping_posdef and damping_aniso_v2 damp the deflection along the body's x
     and y — x the blade's chord (edgewise), the tower's lateral (side-side) — damping_aniso
@@ -859,10 +859,6 @@ def _tower_damping(body: Body) -> dict[str, Any]:
         return {}
     first, second = (kx, ky) if body.damping_by == "damping_aniso" else (ky, kx)
     return {"stiffness_damping_s": {"bending_1": first, "bending_2": second, "torsion": kz}}
-
-
-def _blade_damping(body: Body) -> dict[str, Any]:
-    return _tower_damping(body)
 
 
 def _operational_data(top: Block, root: Path) -> tuple[Path, np.ndarray, str] | None:
