@@ -165,3 +165,16 @@ def test_azimuths_too_few_or_uneven_for_mbc3_are_a_warning(tmp_path):
     one.mkdir()
     (one / files[0].name).write_text(files[0].read_text())
     assert len(warnings(one)) == 1
+
+
+def test_a_cmb_among_several_opt_files_is_told_which_to_name(tmp_path):
+    """wetb's test data (PyPI wetb 0.1.33, prepost/tests/data) keep campbell_diagram.cmb
+    beside dtu10mw.opt and kb6.opt: which one HAWCStab2 ran is not for wtvib to guess —
+    the line says how to tell it."""
+    (tmp_path / "a.opt").write_text((DATA / "hawcstab2" / "steady.pwr").read_text())
+    (tmp_path / "b.opt").write_text((DATA / "hawcstab2" / "steady.pwr").read_text())
+    cmb = write(tmp_path, (DATA / "hawcstab2" / "steady.cmb").read_text(), "run.cmb")
+    result = runner.invoke(app, ["check", str(cmb), "--blades", "3", "--no-plot"])
+    assert result.exit_code == 2
+    assert "the folder has 2 .opt files (a.opt, b.opt): copy or link" in result.output
+    assert "to run.opt" in result.output

@@ -218,10 +218,21 @@ def rotor_speeds(
                     source=str(side),
                 )
             return rpm, points, [str(side)]
+    try:
+        others = sorted(p.name for p in cmb.parent.iterdir() if p.suffix.lower() == ".opt")
+    except OSError:
+        others = []
+    which = (
+        f"; the folder has {len(others)} .opt files ({', '.join(others[:4])}"
+        f"{', …' if len(others) > 4 else ''}): copy or link the one HAWCStab2 ran to "
+        f"{cmb.with_suffix('.opt').name}"
+        if others
+        else ""
+    )
     raise SpecError(
         f"the points are wind speeds, and neither {cmb.with_suffix('.opt').name} nor "
         f"{cmb.with_suffix('.pwr').name} (nor a folder's only .opt) gives the rotor speed at "
-        "them",
+        f"them{which}",
         source=str(cmb),
     )
 
