@@ -133,8 +133,10 @@ def _opened(p: Path, options: ReadOptions) -> tuple[Path, str, str]:
     """The file, its text (none for Campbell results, which their reader reads) and its
     format, the options checked against that format."""
     results_files = p.is_dir() or p.suffix.lower() == ".lin"  # read by their reader alone
-    text = "" if results_files else read_text(p)
+    text = "" if results_files else read_text(p, ansi=True)
     kind = detect(p, text)
+    if kind in ("wtvib", "windio") and not text.isascii():
+        read_text(p)  # YAML is UTF-8: refused as such where it is not
     _check_options(p, kind, options)
     return p, text, kind
 
@@ -165,16 +167,8 @@ def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, A
         from . import campbell_table
 
         data = campbell_table.to_spec_data(p, text, options.blades, rpm)
-    elif kind == "elastodyn":
-        from . import elastodyn
-
-        data = elastodyn.to_spec_data(
-            p, text, options.clamped_base, speed_given=rpm is not None, deck_dofs=options.deck_dofs
-        )
-    elif kind == "hawc2":
-        from . import hawc2
-
-        data = hawc2.to_spec_data(p, text)
+    elif kind in ("elastodyn", "hawc2"):
+        data = _model_data(p, text, kind, options)
     elif kind == "windio":
         from . import windio
 
@@ -185,6 +179,30 @@ def _to_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, A
         data = doc.data
     speed_given = rpm is not None or options.rated is not None
     return _with_speed(data, rpm, options.rated) if speed_given else data
+
+
+def _model_data(p: Path, text: str, kind: str, options: ReadOptions) -> dict[str, Any]:
+    """A deck set's or a HAWC2 model's spec data, with the names of the files it read as
+    Windows reads them (:mod:`.paths`) in its assumptions."""
+    from . import paths
+
+    with paths.recording() as windows_names:
+        if kind == "hawc2":
+            from . import hawc2
+
+            data = hawc2.to_spec_data(p, text)
+        else:
+            from . import elastodyn
+
+            data = elastodyn.to_spec_data(
+                p,
+                text,
+                options.clamped_base,
+                speed_given=options.rpm is not None,
+                deck_dofs=options.deck_dofs,
+            )
+    data.setdefault("assumptions", []).extend(windows_names)
+    return data
 
 
 def load(path: str | Path, options: ReadOptions = ReadOptions()) -> Spec:
@@ -312,7 +330,7 @@ def _soil_profile(path: Path | None) -> dict[str, Any] | None:
     from ..spec.tower import SoilProfile
     from . import hawc2_soil
 
-    text = read_text(Path(path))
+    text = read_text(Path(path), ansi=True)
     if hawc2_soil.looks_like(text):  # HAWC2's distributed springs (its soil data file)
         return hawc2_soil.profile(Path(path))
     doc = load_document(Path(path), text)

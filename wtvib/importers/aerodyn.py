@@ -72,7 +72,7 @@ def blade_stations(path: Path, hub_radius: float) -> dict[str, Any]:
     """The AeroDyn blade file's stations (radius = HubRad + BlSpn: precone neglected)."""
     deck = parse(path)
     n = _count(deck, "NumBlNds", MAX_STATIONS)
-    lines = read_text(path).splitlines()
+    lines = read_text(path, ansi=True).splitlines()
     head = next(
         (i for i, ln in enumerate(lines) if ln.split()[:1] == ["BlSpn"]),
         None,
@@ -116,7 +116,7 @@ def blade_stations(path: Path, hub_radius: float) -> dict[str, Any]:
 def polar(path: Path, cm_column: int = 0) -> dict[str, list[float]]:
     """The first table of an AirfoilInfo file: α [deg], C_L, C_D — and C_M from column
     ``cm_column`` (1-based: AeroDyn's InCol_Cm; 0: none)."""
-    lines = read_text(path).splitlines()
+    lines = read_text(path, ansi=True).splitlines()
     at = next((i for i, ln in enumerate(lines) if ln.split()[1:2] == ["NumAlf"]), None)
     if at is None:
         raise SpecError("NumAlf is missing (not an AirfoilInfo file?)", source=str(path))
@@ -157,7 +157,7 @@ def negative_drag(name: str, table: dict[str, list[float]]) -> str | None:
 def _airfoil_files(deck: Deck) -> list[Path]:
     """AFNames: the first on its key's line, the rest on the lines after it."""
     n = _count(deck, "NumAFfiles", MAX_AIRFOILS)
-    lines = read_text(deck.path).splitlines()
+    lines = read_text(deck.path, ansi=True).splitlines()
     if "AFNames" not in deck.values:
         raise SpecError("AFNames (the aerofoil files) is missing", source=str(deck.path))
     line = deck.values["AFNames"][1]
@@ -221,7 +221,7 @@ def separation_time(path: Path, model: int) -> float:
     transits]: T_f0, and for the Beddoes–Leishman models T_f0 + T_p (their f″ follows the
     pressure lag: one pole stands for the two, :mod:`wtvib.numerics.unsteady`); AeroDyn's
     defaults where the file has no unsteady data or says "default"."""
-    lines = read_text(path).splitlines()
+    lines = read_text(path, ansi=True).splitlines()
     end = next((i for i, ln in enumerate(lines) if ln.split()[1:2] == ["NumAlf"]), len(lines))
 
     def value(key: str, default: float) -> float:

@@ -98,7 +98,7 @@ def blade(fst: Deck) -> Blade:
 
 def _key_points(main: Deck) -> tuple[np.ndarray, np.ndarray, float]:
     """Span positions (kp_zr), initial twist [deg] and the largest offset off the z axis."""
-    lines = read_text(main.path).splitlines()
+    lines = read_text(main.path, ansi=True).splitlines()
     head = next((i for i, line in enumerate(lines) if "kp_zr" in line.split()), None)
     if head is None:
         raise SpecError("BeamDyn file of an unknown layout: no kp_zr table", source=str(main.path))
@@ -142,7 +142,7 @@ def _key_points(main: Deck) -> tuple[np.ndarray, np.ndarray, float]:
 def _stations(bld: Deck) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """η, K and M of every station of a BeamDyn blade file."""
     count = bld.whole("station_total", low=2, high=MAX_STATIONS)
-    lines = read_text(bld.path).splitlines()
+    lines = read_text(bld.path, ansi=True).splitlines()
     start = next(
         (i for i, line in enumerate(lines) if "DISTRIBUTED PROPERTIES" in line.upper()), None
     )
@@ -232,7 +232,7 @@ def _damping(bld: Deck) -> tuple[float, float] | None:
     """Flapwise and edgewise μ of stiffness-proportional damping (damp_type 1)."""
     if bld.num("damp_type", default=0) != 1:
         return None
-    lines = read_text(bld.path).splitlines()
+    lines = read_text(bld.path, ansi=True).splitlines()
     head = next((i for i, line in enumerate(lines) if line.split()[:1] == ["mu1"]), None)
     if head is None:
         return None

@@ -13,6 +13,7 @@ import numpy as np
 
 from ..errors import SpecError
 from ..spec import read_text
+from .paths import is_file, locate
 
 #: A number as Fortran reads one: ASCII digits only (Python's float() also takes "8_7.6",
 #: Arabic-Indic and full-width digits, "inf" and "nan", which no OpenFAST input holds).
@@ -283,7 +284,7 @@ def _tokens(line: str) -> list[str]:
 
 def parse(path: Path, text: str | None = None) -> Deck:
     """Read a FAST/ElastoDyn-style input file: ``value Key - description`` lines and tables."""
-    text = read_text(path) if text is None else text
+    text = read_text(path, ansi=True) if text is None else text
     values: dict[str, tuple[str, int]] = {}
     tables: dict[str, tuple[list[str], np.ndarray]] = {}
     table_lines: dict[str, int] = {}
@@ -351,9 +352,10 @@ def _row(path: Path, header: list[str], cells: list[str], line: int) -> list[flo
 
 
 def beside(base: Path, name: str) -> Path:
-    """A file a deck names, resolved beside it (symlinks followed); a name that cannot be
+    """A file a deck names, resolved beside it (symlinks followed), the name read as Windows
+    reads it where no file has it as written (:func:`.paths.locate`); a name that cannot be
     resolved (a symlink loop, a name too long) as given, for the reader to refuse."""
-    path = base.parent / name
+    path = locate(base.parent, name)
     try:
         return path.resolve()
     except (OSError, RuntimeError):  # RuntimeError: a symlink loop (Python < 3.13)
@@ -368,12 +370,8 @@ def finite(text: str, line: int, path: Path) -> float:
     return value
 
 
-def present(path: Path) -> bool:
-    """Whether a named file is there (a name the file system cannot hold is not)."""
-    try:
-        return path.is_file()
-    except OSError:
-        return False
+#: Whether a named file is there (a name the file system cannot hold is not).
+present = is_file
 
 
 def _file(deck: Deck, *keys: str) -> Path:

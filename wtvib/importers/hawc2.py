@@ -482,6 +482,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "hub_inertia_kgm2": hub_inertia,
         },
         "assumptions": [
+            *top.notes,
             *_assembly_notes(path, chain, downwind, above),
             statement,
             *([drivetrain_note] if drivetrain_note else []),

@@ -37,7 +37,7 @@ def looks_like(text: str) -> bool:
 
 def profile(path: Path) -> dict[str, Any]:
     """The lateral set as a soil profile (``soil`` layers, as ``check --soil`` takes)."""
-    lines = read_text(path).splitlines()
+    lines = read_text(path, ansi=True).splitlines()
     i = 1
     while i < len(lines):
         if lines[i].strip().startswith("#") and i + 1 < len(lines):

@@ -19,6 +19,7 @@ import numpy as np
 from ..errors import SpecError
 from ..spec import read_text
 from .deck import _NUMBER
+from .paths import is_file, locate, note
 
 #: The deepest continue_in_file nesting read (a file that names itself would not end).
 MAX_INCLUDES = 20
@@ -104,6 +105,8 @@ class Block:
     title: str = ""
     commands: list[Command] = field(default_factory=list)
     blocks: list["Block"] = field(default_factory=list)
+    #: what reading the file took as HAWC2 takes it (the file's top block only)
+    notes: list[str] = field(default_factory=list)
 
     def get(self, key: str) -> Command | None:
         return next((c for c in self.commands if c.key == key), None)
@@ -137,6 +140,7 @@ def root_folder(htc: Path) -> Path:
     htc's own folder and the ROOT_SEARCH above it that holds a ``data/`` folder (the
     IEA-10's ``hawcstab2/steadystate_modal.htc`` names ``./data/…`` of the folder above);
     else the htc's own."""
+    htc = htc.absolute()  # `wtvib check model.htc` run in the htc/ folder
     for folder in htc.parents:
         if folder.name.lower() == "htc":
             return folder.parent
@@ -148,17 +152,25 @@ def root_folder(htc: Path) -> Path:
 
 def resolve(name: str, root: Path, beside: Path, cmd: Command, suffix: str = "") -> Path:
     """A file the model names: relative to the model's folder, else beside the file that
-    names it; SpecError naming the command where neither holds it. With ``suffix`` the
+    names it, else relative to one of the ROOT_SEARCH folders above that (noted: wetb's own
+    test models keep their htc files in ``htcfiles/``, their data in a ``data/`` beside it);
+    SpecError naming the command where none holds it. With ``suffix`` the
     name is a stem (WAMIT's results: ``stem.1``, ``stem.hst``): the stem returned where the
     file stem + suffix is."""
-    path = Path(name.strip('"').replace("\\", "/"))
-    for candidate in (path,) if path.is_absolute() else (root / path, beside / path):
-        try:
-            if candidate.with_name(candidate.name + suffix).is_file():
-                return candidate
-        except OSError:  # a name the file system cannot hold
-            break
-    looked = str(root) if root == beside else f"{root} and {beside}"
+    name = name.strip('"')
+    beside = beside.absolute()
+    folders = list(dict.fromkeys((root, beside, *beside.parents[:ROOT_SEARCH])))
+    for folder in folders:
+        found = locate(folder, name + suffix)
+        if is_file(found):
+            if folder not in (root, beside):
+                note(
+                    f"the model's files found relative to {folder}, not to {root}, the "
+                    "folder wtvib takes HAWC2 to run the model in (the one holding its htc/ "
+                    "folder, or its data/)"
+                )
+            return found.with_name(found.name[: len(found.name) - len(suffix)])
+    looked = ", ".join(map(str, folders))
     raise SpecError(
         f"{cmd.key} names {name!r}, which does not exist (looked in {looked})",
         line=cmd.line,
@@ -187,7 +199,7 @@ def _read(path: Path, root: Path, stack: list[Block], depth: int) -> None:
             f"continue_in_file nests more than {MAX_INCLUDES} deep (a file that names itself?)",
             source=str(path),
         )
-    for number, raw in enumerate(read_text(path).splitlines(), start=1):
+    for number, raw in enumerate(read_text(path, ansi=True).splitlines(), start=1):
         text, sep, rest = raw.partition(";")
         tokens = text.split()
         if not tokens:
@@ -202,13 +214,7 @@ def _read(path: Path, root: Path, stack: list[Block], depth: int) -> None:
             stack[-1].blocks.append(block)
             stack.append(block)
         elif key == "end":
-            name = tokens[1].lower() if len(tokens) > 1 else ""
-            if len(stack) == 1 or (name and stack[-1].name != name):
-                expected = stack[-1].name if len(stack) > 1 else "no block"
-                raise SpecError(
-                    f"end {name} where {expected} is open", line=number, source=str(path)
-                )
-            stack.pop()
+            _end(tokens[1].lower() if len(tokens) > 1 else "", stack, path, number)
         elif key == "continue_in_file":
             cmd = Command(key, tuple(tokens[1:]), path, number)
             if not cmd.values:
@@ -218,12 +224,31 @@ def _read(path: Path, root: Path, stack: list[Block], depth: int) -> None:
             stack[-1].commands.append(Command(key, tuple(tokens[1:]), path, number))
 
 
+def _end(name: str, stack: list[Block], path: Path, number: int) -> None:
+    """``end name``: closes the innermost open block. A name that is no open block's is a
+    misspelt end (DTU's own htc files have ``begin tower_shadow_potential_2; … end
+    tower_shadow_potential;``), which HAWC2 and wetb's reader take as the innermost's end: so
+    does wtvib, and says so. One that names an enclosing block leaves the blocks inside it
+    without an end: refused."""
+    if len(stack) == 1 or (name and name in (b.name for b in stack[1:-1])):
+        expected = stack[-1].name if len(stack) > 1 else "no block"
+        raise SpecError(f"end {name} where {expected} is open", line=number, source=str(path))
+    if name and stack[-1].name != name:
+        stack[0].notes.append(
+            f"{path.name} line {number}: 'end {name}' read as the end of block "
+            f"{stack[-1].name} (begun on line {stack[-1].line}), as HAWC2 reads it"
+        )
+    stack.pop()
+
+
 # ------------------------------------------------------------------------------------------
 # st, ae, pc, opt
 
 
 def _numeric_rows(path: Path) -> list[tuple[int, list[str]]]:
-    return [(i, ln.split()) for i, ln in enumerate(read_text(path).splitlines(), start=1)]
+    return [
+        (i, ln.split()) for i, ln in enumerate(read_text(path, ansi=True).splitlines(), start=1)
+    ]
 
 
 def _floats(cells: list[str], path: Path, line: int, count: int | None = None) -> list[float]:

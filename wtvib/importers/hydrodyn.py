@@ -175,7 +175,7 @@ def _members(hd: Deck, rho: float, refz: float) -> _Members:
     from .deck import counted
     from .subdyn import _fills
 
-    text = read_text(hd.path)
+    text = read_text(hd.path, ansi=True)
     joints = counted(hd, text, ("NJoints",), "Jointzi")
     members = counted(hd, text, ("NMembers",), "MJointID1")
     props = counted(hd, text, ("NPropSets", "NPropSetsCyl"), "PropD")
@@ -260,7 +260,7 @@ def _wamit_rows(path: Path, named: Naming, columns: int) -> list[tuple[list[floa
             source=str(named.source),
         )
     rows = []
-    for number, line in enumerate(read_text(path).splitlines(), start=1):
+    for number, line in enumerate(read_text(path, ansi=True).splitlines(), start=1):
         cells = line.split()
         if not cells:
             continue
@@ -325,7 +325,7 @@ def wamit_hydrostatic(path: Path, rho: float, g: float, length: float, named: Na
 
 def _matrix(hd: Deck, key: str) -> np.ndarray:
     """A 6×6 matrix input (``AddCLin``): its key on the first row, five rows after."""
-    lines = read_text(hd.path).splitlines()
+    lines = read_text(hd.path, ansi=True).splitlines()
     start = next((n for n, line in enumerate(lines) if key in line.split()), None)
     if start is None:
         return np.zeros((6, 6))

@@ -142,7 +142,7 @@ def _line_type(
 def _map_system(path: Path, depth: float, rho: float, g: float) -> Any:
     import moorpy as mp
 
-    lines = read_text(path).splitlines()
+    lines = read_text(path, ansi=True).splitlines()
 
     def number(text: str, line: int) -> float:
         return -depth if text.lower() == "depth" else finite(text, line, path)
@@ -215,7 +215,7 @@ def _add_point(system: Any, role: str, r: Any) -> int:
 def _moordyn_system(path: Path, depth: float) -> Any:
     import moorpy as mp
 
-    read_text(path)  # its size and encoding checked as every input's
+    read_text(path)  # its size and encoding checked (MoorPy reads it as UTF-8)
     try:
         system = mp.System(file=str(path), depth=depth)
     except Exception as exc:  # MoorPy's own reader: any failure is the file's

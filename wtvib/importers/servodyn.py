@@ -362,7 +362,7 @@ def discon(path: Path) -> dict[str, tuple[float, int]]:
     lines): value and line. One of them that is not a finite number is a SpecError naming
     file and line."""
     out: dict[str, tuple[float, int]] = {}
-    for number, line in enumerate(read_text(path).splitlines(), start=1):
+    for number, line in enumerate(read_text(path, ansi=True).splitlines(), start=1):
         value, _, rest = line.partition("!")
         names, parts = rest.split(), value.split()
         if len(parts) != 1 or not names or names[0] not in DISCON_KEYS:

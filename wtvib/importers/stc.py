@@ -72,13 +72,16 @@ def _names(servo: Deck, key: str, count: int) -> list[Path]:
         return []
     line = servo.values[key][1] if key in servo.values else None
     if line is None:  # several names: the key is not the second token of its line
-        text = read_text(servo.path).splitlines()
+        text = read_text(servo.path, ansi=True).splitlines()
         line = next(
             (i + 1 for i, t in enumerate(text) if key in _tokens(t)[count : count + 1]), None
         )
     if line is None:
         raise SpecError(f"{key} is not in the file", source=str(servo.path))
-    names = [t.strip('"') for t in _tokens(read_text(servo.path).splitlines()[line - 1])[:count]]
+    names = [
+        t.strip('"')
+        for t in _tokens(read_text(servo.path, ansi=True).splitlines()[line - 1])[:count]
+    ]
     out = []
     for name in names:
         path = beside(servo.path, name)
@@ -167,7 +170,7 @@ def _spring(stc: Deck, axis: str) -> float:
 def _force_table(stc: Deck) -> np.ndarray:
     """The StC SPRING FORCES TABLE (X, F_X, Y, F_Y, Z, F_Z), its NKInpSt rows."""
     rows = stc.whole("NKInpSt", low=2, high=10_000)
-    lines = read_text(stc.path).splitlines()
+    lines = read_text(stc.path, ansi=True).splitlines()
     start = next((i for i, t in enumerate(lines) if "SPRING FORCES TABLE" in t.upper()), None)
     if start is None:
         raise SpecError("Use_F_TBL is on but there is no spring force table", source=str(stc.path))

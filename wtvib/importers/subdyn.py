@@ -78,7 +78,7 @@ def monopile(fst: Deck, interface_z: float) -> Monopile | str:
     """The SubDyn monopile of a deck set, or why it is not one (a sentence for the
     report's warning)."""
     sd = parse(_file(fst, "SubFile"))
-    text = read_text(sd.path)
+    text = read_text(sd.path, ansi=True)
     joints = counted(sd, text, ("NJoints",), "JointZss")
     members = counted(sd, text, ("NMembers",), "MJointID1")
     props = counted(sd, text, ("NPropSets", "NPropSetsCyl"), "XsecD")
@@ -433,7 +433,7 @@ def water(fst: Deck, pile: Monopile) -> Water | str:
     sea = sea_state(fst)
     if sea is not None:
         sea.inherited.update(env)
-    text = read_text(hd.path)
+    text = read_text(hd.path, ansi=True)
     rho = sea_setting(hd, sea, "WtrDens", WATER_DENSITY)
     swl = sea_setting(hd, sea, "MSL2SWL", 0.0)
     joints = counted(hd, text, ("NJoints",), "Jointzi")

@@ -87,15 +87,29 @@ def file_fingerprint(path: str | FsPath) -> str:
     return digest.hexdigest()
 
 
-def read_text(path: str | FsPath, *, max_bytes: int | None = None) -> str:
-    """A text file's content, refusing missing, oversized, binary or non-UTF-8 files."""
+def read_text(path: str | FsPath, *, max_bytes: int | None = None, ansi: bool = False) -> str:
+    """A text file's content, refusing missing, oversized, binary or non-UTF-8 files.
+
+    ``ansi``: a file of a Fortran code's fixed format (an OpenFAST or HAWC2 input), which a
+    Windows editor saves in its ANSI code page (cp1252): where it is not UTF-8 it is read
+    as that. Its values are ASCII — the bytes UTF-8 refuses are its comments' (DTU's htc
+    files: "stig øye method", "måske") — and a value that is not ASCII is refused by the
+    reader of its field. YAML is UTF-8 (YAML 1.2, §5.2): never read so."""
     p = FsPath(path)
     raw = read_bytes(p, max_bytes=max_bytes)
+    if raw[:2] in (b"\xff\xfe", b"\xfe\xff"):  # UTF-16 with its byte-order mark (YAML 1.2
+        try:  # §5.2; Windows PowerShell 5's `>`)
+            return raw.decode("utf-16")
+        except UnicodeDecodeError as exc:
+            raise SpecError(f"not UTF-16 text (byte {exc.start})", source=str(p)) from None
     if b"\x00" in raw:
-        raise SpecError("binary file, not a YAML text file", source=str(p))
+        kind = "a text file" if ansi else "a YAML text file"
+        raise SpecError(f"binary file, not {kind}", source=str(p))
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
+        if ansi:
+            return raw.decode("cp1252", errors="replace")
         line = raw[: exc.start].count(b"\n") + 1
         raise SpecError("not UTF-8 text", line=line, source=str(p)) from None
 

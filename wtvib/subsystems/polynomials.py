@@ -791,7 +791,7 @@ def corrected(result: Shapes) -> dict[str, str]:
     out = {}
     for file, rows in by_file.items():
         try:
-            text = read_text(Path(file))
+            text = read_text(Path(file), ansi=True)
         except OSError as exc:
             raise SpecError(
                 f"cannot read it again to write it: {exc.strerror}", source=file
