@@ -950,13 +950,19 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
     )
 
 
+#: The DTU Wind Energy controller, by its type2_dll's name or file: named
+#: ``dtu_we_controller`` since 2015, ``risoe_controller`` before (the same init constants:
+#: 1 rated power [kW], 2 minimum and 3 rated rotor speed [rad/s]; DTU 10 MW RWT v1 htc).
+DTU_CONTROLLER = ("dtu_we_controller", "risoe_controller")
+
+
 def _controller(top: Block) -> dict[int, float]:
     dll = top.block("dll")
     if dll is None:
         return {}
     for t2 in dll.each("type2_dll"):
-        name = t2.get("name")
-        if name is not None and "dtu_we_controller" in " ".join(name.values).lower():
+        said = " ".join(" ".join(c.values) for c in (t2.get("name"), t2.get("filename")) if c)
+        if any(known in said.lower() for known in DTU_CONTROLLER):
             init = t2.block("init")
             if init is None:
                 return {}
