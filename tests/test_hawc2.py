@@ -694,3 +694,38 @@ def test_the_blades_damping_aniso_damps_their_bending_about_x_flapwise(model):
     ratios = {m.id: m.damping_ratio for m in report.modes if m.subsystem == "blade"}
     for name in ("blade.flap1", "blade.edge1"):
         assert ratios[name] == pytest.approx(0.03 / (2 * math.pi), rel=0.05), name
+
+
+@pytest.mark.parametrize(
+    "name, filename",
+    [
+        ("dtu_we_controller", "./control/dtu_we_controller.dll"),
+        # wetb's DTU10MWRef6.0_IOS model (PyPI wetb 0.1.33): the old name, the new file
+        ("risoe_controller", "./control/dtu_we_controller.dll"),
+        # the DTU 10 MW RWT v1's htc: the controller before 2015, the same init constants
+        ("risoe_controller", "./control/risoe_controller.dll"),
+        ("my_controller", "./control/dtu_we_controller.dll"),
+    ],
+)
+def test_the_dtu_controller_is_known_by_its_name_or_its_file(model, name, filename):
+    """Without operational data the speed range is the controller's constants 2 and 3
+    (0.524 / 0.792 rad/s in the IEA-15's htc: 5.004 / 7.563 rpm), whatever the type2_dll's
+    name says where its file is the DTU controller's, and under its name before 2015."""
+    (model.parents[1] / "data" / "IEA_15MW_RWT_Onshore.opt").unlink()
+    _edit(model, "name dtu_we_controller ;", f"name {name} ;")
+    _edit(model, "filename  ./control/dtu_we_controller.dll ;", f"filename  {filename} ;")
+    from wtvib.importers import load
+
+    speed = load(model).rotor.speed
+    assert speed.min_rpm == pytest.approx(0.524 * 30 / math.pi, abs=1e-6)  # kept to 6 decimals
+    assert speed.max_rpm == pytest.approx(0.792 * 30 / math.pi, abs=1e-6)
+
+
+def test_a_type2_dll_that_is_no_dtu_controller_gives_no_speed_range(model):
+    (model.parents[1] / "data" / "IEA_15MW_RWT_Onshore.opt").unlink()
+    _edit(model, "name dtu_we_controller ;", "name my_controller ;")
+    _edit(model, "filename  ./control/dtu_we_controller.dll ;", "filename  ./control/mine.dll ;")
+    with pytest.raises(SpecError, match="no operating range"):
+        from wtvib.importers import load
+
+        load(model)
