@@ -147,6 +147,11 @@ def _edit(path: Path, old: str, new: str) -> None:
         ("bodies", "concentrated_mass  1  0.00   0.00    0.00    28249   0.00          0.00"
          "           0.00    ;", "concentrated_mass  1  0.00 ;",
          "concentrated_mass: value 3 must be a number (got nothing: the"),
+        # a tower or blade on the model's rigid subset (wetb's test.htc: the DTU 10 MW's
+        # tower on its E 2.1e17 Pa "stiff" subset, audited as a 266 Hz tower)
+        ("htc", "set 1 1 ;", "set 1 3 ;", "body tower: its st subset has a modulus of"),
+        ("st", "1.8877163007300e+10", "1.8877163007300e+16",
+         "body blade1: its st subset has a modulus of 1.89e+16 Pa"),
         # a load-case template's tag (the IEA-22's htc/_master DLB file)
         ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    [tz]     0    ;",
          "is a template's tag, [tz], not a number"),

@@ -334,12 +334,41 @@ def _chain(bodies: dict[str, Body], structure: Block, embedded: set[str]) -> _Ch
 # The spec's parts
 
 
+#: Stiffer than any material [Pa] (diamond's Young's modulus about 1.1e12, steel's 2.1e11):
+#: the mark of a body made rigid on purpose — HAWC2 models keep a "stiff" subset beside
+#: each flexible one, E and G raised a millionfold (the DTU 10 MW's tower set 1 subset 2:
+#: E 2.1e17 Pa).
+MAX_MODULUS_PA = 1e13
+
+
+def _flexible(body: Body) -> None:
+    """A tower's or a blade's st subset as the body bends in service; one line naming the
+    subset where it is one of the model's rigid ones (its modes at hundreds of hertz would
+    be audited as the turbine's, as implausible frequencies)."""
+    if body.fpm:
+        return
+    st = {k: body.st[:, i] for i, k in enumerate(ST)}
+    stiffest = float(max(np.max(st["E"]), np.max(st["G"])))
+    if stiffest > MAX_MODULUS_PA:
+        timo = body.block.block("timoschenko_input")
+        cmd = timo.need("set") if timo is not None else None
+        raise SpecError(
+            f"body {body.name}: its st subset has a modulus of {stiffest:.3g} Pa, stiffer "
+            "than any material (steel 2.1e11): a subset that makes the body rigid (HAWC2's "
+            "'stiff' subsets); a vibration audit needs the body flexible — select its "
+            "flexible subset",
+            line=cmd.line if cmd is not None else body.block.line,
+            source=str(cmd.file if cmd is not None else body.block.file),
+        )
+
+
 def _tower(chain: _Chain) -> tuple[dict[str, Any], float, np.ndarray]:
     """The tower's distributed properties (every tower body stacked from the base), its
     height and the global position of its top."""
     heights, mass, ei_fa, ei_ss, gj, polar = [], [], [], [], [], []
     offset = 0.0
     for body in chain.tower:
+        _flexible(body)
         st = body.st
         r = st[:, 0]
         if body.fpm:
@@ -381,6 +410,7 @@ def _blade(chain: _Chain) -> tuple[dict[str, Any], np.ndarray, np.ndarray, float
     """Blade 1's table: span along its centre line, mass, flap and edge stiffness about the
     principal axes, the principal axes' twist in wtvib's sense, torsion."""
     body = chain.blades[0]
+    _flexible(body)
     st = body.st
     c2 = body.c2
     z_c2 = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1))])
