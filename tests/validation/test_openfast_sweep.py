@@ -8,21 +8,28 @@ OpenFAST 5.0.0 (OpenFAST/openfast ``dev`` @ 70694f1f0, built here), run on r-tes
 they were made — ``make_decks.py`` — and the ``.lin`` files, read here by wtvib's MBC3,
 which reproduces openfast_toolbox's on every root of r-test's files: test_openfast_lin.py).
 The decks keep OpenFAST's aerodynamics where wtvib's model is: quasi-steady aerofoils, the
-induction in equilibrium with the motion (BEMT without dynamic wake), no tower influence —
-one model, two codes. ElastoDyn's blades do not twist, nor do wtvib's modes.
+induction in equilibrium with the motion (BEMT without dynamic wake), no tower influence, no
+skewed wake (AeroDyn's ``Skew_Mod`` −1, its setting "for linearization") — one model, two
+codes. ElastoDyn's blades do not twist, nor do wtvib's modes.
 
 Measured at OpenFAST's operating points (wtvib / OpenFAST), the backward and forward
-edgewise whirls: 0.016 / 0.016, 0.014 / 0.014 at 8 m/s; 0.021 / 0.020, 0.017 / 0.016 at
-10 m/s; 0.024 / 0.022, 0.018 / 0.017 at 11 m/s; 0.025 / 0.023, 0.019 / 0.018 at rated
-(11.4 m/s); 0.009 / 0.013, 0.008 / 0.008 at 16 m/s; 0.010 / 0.012, 0.009 / 0.008 at 20 m/s
-— with AeroDyn's last blade node loaded as AeroDyn loads it (before, left unloaded: 0.010
-/ 0.013 at 16 m/s, 0.010 / 0.008 at 20 m/s). The flap family (ζ 0.46–0.82) within
-−3 … +5 %. The first tower pair in operation: the fore-aft, which the rotor's thrust damps,
-+6.1 … +9.6 % (ζ 0.065–0.079), the side-side −19 … −4 % (ζ 0.006–0.013: OPEN — wtvib's
-side-side aerodynamic damping is below OpenFAST's, and below HAWCStab2's on the IEA-15,
-test_hawc2.test_the_iea15_aeroelastic_damping_against_hawcstab2; not yet traced, not the
-tower's drag, which neither model here has). This is the third code for the near-rated
-edge damping of the IEA-22
+edgewise whirls: 0.016 / 0.017, 0.014 / 0.013 at 8 m/s; 0.021 / 0.021, 0.017 / 0.015 at
+10 m/s; 0.024 / 0.023, 0.018 / 0.016 at 11 m/s; 0.025 / 0.024, 0.019 / 0.017 at rated
+(11.4 m/s); 0.009 / 0.012, 0.008 / 0.008 at 16 m/s; 0.010 / 0.012, 0.009 / 0.008 at 20 m/s.
+The flap family (ζ 0.45–0.82) within −3 … +5 %. The first tower pair in operation: the
+fore-aft, which the rotor's thrust damps, +6.4 … +8.9 % (ζ 0.066–0.079), the side-side
+−9.5 … −2.5 % (ζ 0.005–0.012). The side-side was −19 … −4 % against the same decks with
+r-test's ``Skew_Mod`` 1 (the sets until 2026-12-07): AeroDyn's skewed-wake model answers the
+tower top's sideways velocity at once with Pitt and Peters' redistribution of the induction,
+a yaw-wise cyclic load on the blades (their sine flap in OpenFAST's side-side mode three
+times their cosine, in wtvib's 0.4 times) that damps the mode by 0.0004 more at 8 m/s
+(0.00587 against 0.00547) — traced by OpenFAST runs of the 8 m/s deck with one switch
+changed each: its blades' flap DOFs off, or the skew model off, bring OpenFAST's side-side
+to wtvib's (within 3 %); the pre-cone, the drive train's flexibility, the generator's
+inertia and the edgewise DOF do not, and doubling the generator law's slope adds the same
+damping in both codes (+0.00080, +0.00077). A wake that follows a 3 s oscillation at once
+is an upper bound; wtvib has no skewed wake, OpenFAST's documentation throws the cross-flow
+away for linearisation. This is the third code for the near-rated edge damping of the IEA-22
 (test_hawc2.py: wtvib 1.8–3.4 times OpenFAST's BeamDyn model and HAWC2 at 10–12 m/s): on a
 turbine whose blades do not twist, wtvib's edge damping at rated is OpenFAST's.
 """
@@ -121,15 +128,17 @@ def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
         if name.startswith("blade.flap1"):  # ζ 0.45–0.82: within 8 %
             assert zeta == pytest.approx(z, rel=0.08), (case, name, zeta, z)
         elif name in ("blade.edge1.backward", "blade.edge1.forward"):  # ζ 0.008–0.021
-            # measured −32 … +12 %: at 16 m/s the backward whirl 0.68 of OpenFAST's (0.80
+            # measured −31 … +15 %: at 16 m/s the backward whirl 0.69 of OpenFAST's (0.80
             # while wtvib left AeroDyn's last node unloaded, which OpenFAST loads: its own
             # whirls damp 1.13 times as much without it, test_rtest_models.
-            # test_aerodyn_loads_its_blades_last_node), the forward at 20 m/s +12 % (+23 %)
+            # test_aerodyn_loads_its_blades_last_node), the forward at rated +15 % (with
+            # OpenFAST's skewed wake, −32 … +12 %)
             assert 0.65 <= zeta / z <= 1.2, (case, name, zeta, z)
-        elif name == "tower.fa1":  # ζ 0.065–0.079: measured +6.1 … +9.6 %
+        elif name == "tower.fa1":  # ζ 0.066–0.079: measured +6.4 … +8.9 %
             assert 1.0 <= zeta / z <= 1.15, (case, name, zeta, z)
-        elif name == "tower.ss1":  # ζ 0.006–0.013: OPEN, held as measured, −19 … −4 %
-            assert 0.7 <= zeta / z <= 1.0, (case, name, zeta, z)
+        elif name == "tower.ss1":  # ζ 0.005–0.012: measured −9.5 … −2.5 % (the module's
+            # docstring: −19 … −4 % against OpenFAST's skewed wake)
+            assert 0.88 <= zeta / z <= 1.02, (case, name, zeta, z)
     assert checked >= 10, checked
 
 
