@@ -105,6 +105,8 @@ def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
         (b"", "the file is empty"),
         (b"# only a comment\n", "the file is empty"),
         (b"rotor: [1, 2\n", "not valid YAML"),
+        # a tab indenting a line: YAML's own words do not say it is one
+        (b"wtvib: 1\nturbine:\n\tname: x\n", "a tab: YAML indents with spaces only"),
         (b"\x89PNG\r\n\x1a\n\x00\x00binary", "binary file"),
         (b"wtvib: 1\nturbine: {name: \xff\xfe}\n", "not UTF-8"),
         (b"- just\n- a list\n", "expected a mapping"),

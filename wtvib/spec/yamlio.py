@@ -261,6 +261,8 @@ def parse(text: str, source: str | None = None) -> Document:
         problem = exc.problem or exc.context or "invalid YAML"
         if exc.context and exc.context_mark and exc.problem:
             problem += f" ({exc.context} on line {exc.context_mark.line + 1})"
+        if _tab_before(text, mark):
+            problem += " — a tab: YAML indents with spaces only"
         raise SpecError(f"not valid YAML: {problem}", line=line, source=source) from None
     except yaml.YAMLError as exc:
         raise SpecError(f"not valid YAML: {exc}", source=source) from None
@@ -274,6 +276,15 @@ def parse(text: str, source: str | None = None) -> Document:
     data = walker.convert(node, ())
     redefined = tuple(dict.fromkeys(getattr(loader, "redefined", ())))
     return Document(data, walker.lines, source, redefined)
+
+
+def _tab_before(text: str, mark: Any) -> bool:
+    """Whether the line of a YAML error holds a tab up to the error's column (YAML's own
+    words, "found character that cannot start any token", do not say it is one)."""
+    if mark is None:
+        return False
+    lines = text.splitlines()
+    return mark.line < len(lines) and "\t" in lines[mark.line][: mark.column + 1]
 
 
 class _Walker:
