@@ -781,19 +781,8 @@ def in_operation(
     return out, _notes(spec, cpl, heavy, shift, out, skipped)
 
 
-def _notes(
-    spec: Spec,
-    cpl: Coupled | None,
-    heavy: float,
-    shift: float,
-    out: Mapping[str, list[Mode]],
-    skipped: Mapping[str, list[str]],
-) -> tuple[str, ...]:
-    """What the report says of the damping in operation: the operating points, the
-    aerodynamic model, the coupled modes (``shift``: how far their |λ| departs from the
-    judged curves), where a first-order estimate stood in, the modes left structural."""
-    sch = sections(spec).schedule
-    notes = [*sch.assumptions, _statement(spec, sch)]
+def _model_words(spec: Spec) -> str:
+    """The report's sentence on the aerodynamic model of the damping in operation."""
     lift = (
         "the lift's response lagged by the shed wake (Jones's approximation of Wagner's "
         "function at each section's 2W/c; the quasi-steady damping is kept beside it in the "
@@ -812,7 +801,7 @@ def _notes(
         if spec.aerodynamics.dynamic_stall
         else "no dynamic stall: past stall the lift follows the static polar at once"
     )
-    notes.append(
+    return (
         "Aerodynamic damping: blade-element forces linearised at each operating point with "
         f"{induction_words(spec)} ({stall}), lift and drag slopes over "
         f"±{bem.SLOPE_STEP_DEG:g}°, {lift}; aerodynamic stiffness (tilt, yaw, torsion) and "
@@ -821,6 +810,22 @@ def _notes(
         "side-side tower mode more: 7 % on the NREL 5-MW at 8 m/s); total damping = "
         "aerodynamic + the mode's structural ratio."
     )
+
+
+def _notes(
+    spec: Spec,
+    cpl: Coupled | None,
+    heavy: float,
+    shift: float,
+    out: Mapping[str, list[Mode]],
+    skipped: Mapping[str, list[str]],
+) -> tuple[str, ...]:
+    """What the report says of the damping in operation: the operating points, the
+    aerodynamic model, the coupled modes (``shift``: how far their |λ| departs from the
+    judged curves), where a first-order estimate stood in, the modes left structural."""
+    sch = sections(spec).schedule
+    notes = [*sch.assumptions, _statement(spec, sch), _model_words(spec)]
+    assert spec.aerodynamics is not None
     if sch.solution.elastic_twist is not None:
         notes.append(BENDING_ONLY)
     if cpl is not None:
