@@ -4,6 +4,12 @@ simple variable-speed law) trimmed by OpenFAST's CalcSteady at other winds, its 
 brought to OpenFAST 5.0's format.
 
     python tests/data/openfast_sweep/make_decks.py R_TEST/glue-codes/openfast OUT WIND [WIND …]
+    python tests/data/openfast_sweep/make_decks.py --frozen R_TEST/glue-codes/openfast OUT …
+
+``--frozen``: the same deck sets with AeroDyn's wake frozen for the linearisation
+(``DBEMT_Mod`` −1, "Frozen Wake for linearization"), named ``ED_<wind>_frozen``: wtvib reads
+that as its frozen induction — the induction it holds for its own specs and windIO files —
+where ``DBEMT_Mod`` 0 is its induction in equilibrium with the motion.
 
 What changes from the r-test deck, and why:
 
@@ -153,12 +159,12 @@ def _servodyn5(text: str, pitch: float) -> str:
     return "\n".join(_insert(lines, new, after="TPCOn")) + "\n"
 
 
-def make(r_test: Path, out: Path, wind: float) -> Path:
+def make(r_test: Path, out: Path, wind: float, frozen: bool = False) -> Path:
     """The deck set at ``wind`` [m/s] in ``out``/ED_<wind> (its ``../5MW_Baseline`` names
-    r-test's files beside it)."""
+    r-test's files beside it); ``frozen``: the wake frozen, ``out``/ED_<wind>_frozen."""
     rpm, pitch, trim = POINTS[wind]
     src = r_test / CASE
-    name = f"ED_{wind:g}"
+    name = f"ED_{wind:g}" + ("_frozen" if frozen else "")
     d = out / name
     if d.exists():
         shutil.rmtree(d)
@@ -184,7 +190,7 @@ def make(r_test: Path, out: Path, wind: float) -> Path:
     (d / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat").write_text(_elastodyn5(ed))
     ad = (src / "NRELOffshrBsline5MW_Onshore_AeroDyn.dat").read_text()
     for key, value in (
-        ("DBEMT_Mod", "0"),
+        ("DBEMT_Mod", "-1" if frozen else "0"),
         ("UA_Mod", "0"),
         ("TwrPotent", "0"),
         ("TwrShadow", "0"),
@@ -201,5 +207,6 @@ def make(r_test: Path, out: Path, wind: float) -> Path:
 
 
 if __name__ == "__main__":
-    for w in sys.argv[3:]:
-        print(make(Path(sys.argv[1]), Path(sys.argv[2]), float(w)))
+    args = [a for a in sys.argv[1:] if a != "--frozen"]
+    for w in args[2:]:
+        print(make(Path(args[0]), Path(args[1]), float(w), frozen="--frozen" in sys.argv))
