@@ -148,8 +148,8 @@ def test_the_operating_range_is_openfasts(decks, tmp_path, wind):
 #: The frozen wake's bounds (lowest, highest wtvib/OpenFAST − 1 of the natural frequency;
 #: of ζ), each with what was measured over the six winds.
 FROZEN = {
-    # the flap family, ζ 0.44–0.85: |λ| of so damped a root moves with the aerodynamic
-    # stiffness neither model has in full — measured −5.8 … +1.9 % (rated), ζ −10 … +8 %
+    # the flap family, ζ 0.44–0.85: measured −5.8 … +1.9 % (the backward whirl at rated, ζ
+    # 0.75 — not traced; with the induction in equilibrium −3.2 … +1.3 %), ζ −10 … +8 %
     "blade.flap1": ((-0.07, 0.03), (0.88, 1.10)),
     # ζ 0.007–0.022: measured −36 … +10 % (backward, 16 m/s), −17 … +38 % (forward, 20 m/s)
     "blade.edge1.backward": ((-0.03, 0.03), (0.6, 1.15)),
@@ -167,8 +167,7 @@ def test_the_frozen_wake_is_openfasts_frozen_wake(decks, tmp_path, wind):
     its frozen induction: the flap family's damping −10 … +8 %, the first tower pair's as
     with the induction in equilibrium. The equilibrium's own comparison is tighter on the
     flap family (−3 … +5 %): with the wake frozen the flap's natural frequency at rated
-    falls 5.8 % below OpenFAST's (the backward whirl, ζ 0.75), a root so damped that the
-    aerodynamic stiffness wtvib leaves out moves its |λ|."""
+    falls 5.8 % below OpenFAST's (the backward whirl, ζ 0.75; not traced — OPEN)."""
     case = f"ED_{wind:g}_frozen"
     ref = _openfast(case, tmp_path)
     ours = _wtvib(decks / case / f"{case}.fst", ref.rpm, wind)
