@@ -141,7 +141,7 @@ def test_a_separation_time_a_model_cannot_have_names_file_and_line(
     ("old", "new", "induction"),
     [
         # the reference file (OpenFAST 3.5 keys): Wake_Mod 1 with DBEMT_Mod 2 — a dynamic wake
-        (None, None, "frozen"),
+        (None, None, "dynamic"),
         ("          2   DBEMT_Mod", "          0   DBEMT_Mod", "equilibrium"),
         ("          2   DBEMT_Mod", "         -1   DBEMT_Mod", "frozen"),
     ],
@@ -149,8 +149,9 @@ def test_a_separation_time_a_model_cannot_have_names_file_and_line(
 def test_the_induction_follows_the_decks_wake_model(shared, tmp_path, old, new, induction):
     """How the induction answers the blades' motion, as the deck's AeroDyn asks: in
     equilibrium with it where its BEMT has no dynamic wake (DBEMT_Mod 0, OpenFAST's default,
-    as in the IEA-22 deck), frozen with a dynamic wake (DBEMT_Mod 1–3) or for linearisation
-    (−1). Older files (WakeMod, FrozenWake): tests of aerodyn.induction below."""
+    as in the IEA-22 deck), held by a dynamic wake (DBEMT_Mod 1–3: the last node keeps
+    a = 1), frozen for linearisation (−1: the induced velocity held at every node). Older
+    files (WakeMod, FrozenWake): tests of aerodyn.induction below."""
     from tests.conftest import edited_reference
     from wtvib import importers
 
@@ -168,9 +169,12 @@ def test_the_induction_follows_the_decks_wake_model(shared, tmp_path, old, new, 
     [
         ("1 WakeMod\nFalse FrozenWake", "equilibrium"),  # AeroDyn 15 before OpenFAST 3.5
         ("1 WakeMod\nTrue FrozenWake", "frozen"),
-        ("2 WakeMod", "frozen"),  # DBEMT
+        ("2 WakeMod", "dynamic"),  # DBEMT
+        ("2 WakeMod\nTrue FrozenWake", "frozen"),
+        ("0 WakeMod", "frozen"),  # no induction at all
         ("1 Wake_Mod\n0 DBEMT_Mod", "equilibrium"),
-        ("1 Wake_Mod\n3 DBEMT_Mod", "frozen"),
+        ("1 Wake_Mod\n3 DBEMT_Mod", "dynamic"),
+        ("1 Wake_Mod\n-1 DBEMT_Mod", "frozen"),
     ],
 )
 def test_the_wake_models_of_every_aerodyn_version(tmp_path, lines, induction):

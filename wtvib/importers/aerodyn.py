@@ -245,21 +245,29 @@ def separation_time(path: Path, model: int) -> float:
 def induction(ad: Deck) -> tuple[str, str]:
     """How the AeroDyn file has the wake's induction answer the blades' motion, and why:
     ``equilibrium`` where its BEMT has no dynamic wake (Wake_Mod 1 with DBEMT_Mod 0; older
-    files: WakeMod 1 without FrozenWake), ``frozen`` where it asks for a dynamic wake
+    files: WakeMod 1 without FrozenWake), ``dynamic`` where it asks for a dynamic wake
     (DBEMT_Mod 1–3, WakeMod 2 — its time constant, seconds, holds the induction still over
-    a flap mode's period) or a frozen wake (DBEMT_Mod −1, FrozenWake True). AeroDyn input
-    documentation (Wake_Mod, DBEMT_Mod; FrozenWake in AeroDyn 15 before OpenFAST 3.5)."""
+    a flap mode's period; its last node keeps a = 1), ``frozen`` for a frozen wake
+    (DBEMT_Mod −1, FrozenWake True: the induced velocity held at every node, the last one's
+    flow turned by its motion too — OpenFAST 5's linearisations of the NREL 5-MW with it
+    damp the flap family as wtvib's so within −4 … +5 %, −10 … +8 % with the last node's
+    normal inflow held) and any other wake. AeroDyn input documentation (Wake_Mod,
+    DBEMT_Mod; FrozenWake in AeroDyn 15 before OpenFAST 3.5)."""
     if "Wake_Mod" in ad.values:  # OpenFAST 3.5 and later
         wake = ad.whole("Wake_Mod", low=0)
         dbemt = int(ad.num("DBEMT_Mod", default=0)) if "DBEMT_Mod" in ad.values else 0
         if wake == 1 and dbemt == 0:
             return "equilibrium", "Wake_Mod 1 and DBEMT_Mod 0 (BEMT without dynamic wake)"
-        return "frozen", f"Wake_Mod {wake}, DBEMT_Mod {dbemt} (a dynamic or frozen wake)"
+        if wake == 1 and dbemt > 0:
+            return "dynamic", f"Wake_Mod 1, DBEMT_Mod {dbemt} (a dynamic wake)"
+        return "frozen", f"Wake_Mod {wake}, DBEMT_Mod {dbemt} (a frozen wake)"
     if "WakeMod" in ad.values:  # AeroDyn 15 before OpenFAST 3.5
         wake = ad.whole("WakeMod", low=0)
         frozen = ad.flag("FrozenWake") if "FrozenWake" in ad.values else False
         if wake == 1 and not frozen:
             return "equilibrium", "WakeMod 1 without FrozenWake (BEMT without dynamic wake)"
+        if wake == 2 and not frozen:
+            return "dynamic", "WakeMod 2 (a dynamic wake)"
         return "frozen", f"WakeMod {wake}" + (", FrozenWake" if frozen else "")
     return "frozen", "no wake model named"
 

@@ -269,13 +269,16 @@ class Aerodynamics(_Strict):
         "or 7).",
     )
 
-    induction: Literal["frozen", "equilibrium"] = Field(
+    induction: Literal["frozen", "dynamic", "equilibrium"] = Field(
         "frozen",
         description="How the wake's induction answers a blade's vibration: 'frozen', not at "
-        "all (the induction lags the motion by the wake's time constant, many periods of a "
-        "flap mode: dynamic inflow, OpenFAST's DBEMT or frozen-wake linearisation); "
-        "'equilibrium', at once — each section's momentum balance re-solved with its "
-        "motion (AeroDyn's BEMT without dynamic wake, DBEMT_Mod 0): less flap damping.",
+        "all — the induced velocity held, every section's flow turned by its motion "
+        "(OpenFAST's frozen-wake linearisation, DBEMT_Mod −1); 'dynamic', as frozen over a "
+        "vibration's period (the induction lags the motion by the wake's time constant, many "
+        "periods of a flap mode: OpenFAST's DBEMT_Mod 1–3), except where the induction is "
+        "fixed (fixed_tip_induction: AeroDyn's last node keeps a = 1, its normal inflow 0 "
+        "whatever the motion); 'equilibrium', at once — each section's momentum balance "
+        "re-solved with its motion (AeroDyn's BEMT without dynamic wake, DBEMT_Mod 0).",
     )
     steady_torsion: bool = Field(
         True,
