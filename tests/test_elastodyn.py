@@ -2,6 +2,7 @@
 
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -148,6 +149,48 @@ def test_a_bad_controller_input_is_one_line_with_file_and_line(tmp_path, discon,
     with pytest.raises(elastodyn.SpecError, match=message) as err:
         servodyn.operation(main, servo)
     assert err.value.line == line and str(err.value.source).endswith("DISCON.IN")
+
+
+#: The DTU Wind Energy controller's input as OpenFAST's DISCON interface hands it (the IEA-15
+#: Monopile_wDTUcontroller deck's control/DISCON.IN, ROSCO 2.10 test cases: its first lines).
+DTU_INIT = """begin init ;
+; Overall parameters
+constant  1    15000.0        ; Rated power [kW]
+constant  2    0.524          ; Minimum rotor (LSS) speed [rad/s]
+constant  3    0.792          ; Rated rotor (LSS) speed [rad/s]
+constant  4    21586451.33303 ; Maximum allowable generator torque [Nm]
+"""
+
+
+def test_the_dtu_controller_s_input_gives_the_operating_range(tmp_path):
+    """A deck set whose Bladed-style DLL is the DTU Wind Energy controller: its constants 2
+    and 3 are the rotor's minimum and rated speed [rad/s], no gearbox between (0.524 and
+    0.792 rad/s: 5.004–7.563 rpm, as the IEA-15's HAWC2 model's same constants give) —
+    the deck was audited at its initial RotSpeed, warned, before."""
+    (tmp_path / "DISCON.IN").write_text(DTU_INIT)
+    servo = elastodyn.parse(tmp_path / "s.dat", '5 VSContrl -\n"DISCON.IN" DLL_InFile -\n')
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    found = servodyn.operation(main, servo)
+    assert found.speed is not None and not found.initial and not found.warnings
+    assert found.speed["min_rpm"] == pytest.approx(0.524 * 30 / math.pi, rel=1e-12)
+    assert found.speed["max_rpm"] == pytest.approx(0.792 * 30 / math.pi, rel=1e-12)
+    assert found.control["rated_power_kw"] == 15000.0
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "message"),
+    [
+        ("0.524 ", "abc ", "constant 2 must be a finite number"),
+        ("0.524 ", "0.9 ", "constant 2 (minimum rotor speed 0.9 rad/s) must lie between 0"),
+    ],
+)
+def test_a_bad_dtu_controller_input_is_one_line(tmp_path, old, new, message):
+    (tmp_path / "DISCON.IN").write_text(DTU_INIT.replace(old, new))
+    servo = elastodyn.parse(tmp_path / "s.dat", '5 VSContrl -\n"DISCON.IN" DLL_InFile -\n')
+    main = elastodyn.parse(tmp_path / "d.dat", DECK)
+    with pytest.raises(elastodyn.SpecError, match=re.escape(message)) as err:
+        servodyn.operation(main, servo)
+    assert err.value.line == 4 and str(err.value.source).endswith("DISCON.IN")
 
 
 def test_a_switch_must_be_a_whole_number(tmp_path):

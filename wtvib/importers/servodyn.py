@@ -26,6 +26,7 @@ FAST User's Guide (NREL/EL-500-38230); OpenFAST ServoDyn input-file documentatio
 """
 
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -141,6 +142,9 @@ def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
     rated = ctrl.get("VS_RefSpd", ctrl.get("PC_RefSpd"))
     found = Operation(None, "", control=control, controller_file=dll.name)
     if low is None or rated is None:
+        dtu = dtu_constants(dll)
+        if 2 in dtu and 3 in dtu:  # the DTU Wind Energy controller's init block
+            return _dtu(found, dtu, dll, servo)
         fallback = _initial(main, f"{dll.name} gives no VS_MinOMSpd and VS_RefSpd", control)
         fallback.controller_file = dll.name
         return fallback
@@ -164,6 +168,59 @@ def _dll(main: Deck, servo: Deck, regulation: str, pitch: float) -> Operation:
     )
     _exclusion(found, ctrl, dll.name)
     return found
+
+
+def _dtu(found: Operation, dtu: dict[int, tuple[float, int]], dll: Path, servo: Deck) -> Operation:
+    """The operating range of the DTU Wind Energy controller's input (the IEA-15's
+    ``Monopile_wDTUcontroller`` deck: ``constant 2`` and ``3``, the minimum and rated rotor
+    speed [rad/s], on the low-speed shaft; ``constant 1`` the rated power [kW]) — as a HAWC2
+    model's type2_dll gives them (importers.hawc2)."""
+    (low, line), (high, _) = dtu[2], dtu[3]
+    if not 0 < low < high:
+        raise SpecError(
+            f"constant 2 (minimum rotor speed {low:g} rad/s) must lie between 0 and constant 3 "
+            f"(rated rotor speed {high:g} rad/s)",
+            line=line,
+            source=str(dll),
+        )
+    if 1 in dtu and dtu[1][0] > 0:
+        found.control["rated_power_kw"] = dtu[1][0]
+    rpm_of = 30 / math.pi
+    found.speed = {
+        "min_rpm": low * rpm_of,
+        "max_rpm": high * rpm_of,
+        "source": f"{dll.name} (the DTU Wind Energy controller's constants 2 and 3)",
+    }
+    found.note = (
+        f"Operating range {low * rpm_of:.4g}–{high * rpm_of:.4g} rpm from {dll.name}, the DTU "
+        f"Wind Energy controller's input named by {servo.path.name} (constants 2 and 3: "
+        f"{low:g} and {high:g} rad/s, the rotor's minimum and rated speed)."
+    )
+    return found
+
+
+#: A DTU Wind Energy controller input's ``constant N value`` line.
+_CONSTANT = re.compile(r"^\s*constant\s+(\d+)\s+(\S+?)\s*(?:;|$)", re.IGNORECASE)
+
+
+def dtu_constants(path: Path) -> dict[int, tuple[float, int]]:
+    """The ``constant N value ;`` lines of a DTU Wind Energy controller's input (its HAWC2
+    ``init`` block, or the file OpenFAST's DISCON interface hands it): value and line; one
+    whose value is not a finite number a SpecError naming file and line."""
+    out: dict[int, tuple[float, int]] = {}
+    for number, line in enumerate(read_text(path, ansi=True).splitlines(), start=1):
+        found = _CONSTANT.match(line)
+        if found is None:
+            continue
+        key, text = int(found.group(1)), found.group(2)
+        if not _NUMBER.match(text):
+            raise SpecError(
+                f"constant {key} must be a finite number (got {text!r})",
+                line=number,
+                source=str(path),
+            )
+        out.setdefault(key, (float(text.replace("D", "E").replace("d", "e")), number))
+    return out
 
 
 def _exclusion(found: Operation, ctrl: dict[str, tuple[float, int]], name: str) -> None:
