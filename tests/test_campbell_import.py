@@ -144,6 +144,28 @@ def test_points_at_one_speed_merge_to_the_mean_frequency_and_lowest_damping():
     assert spread == pytest.approx(0.1)
 
 
+def test_every_per_point_list_of_a_linearisation_merges():
+    """An OpenFAST linearisation's modes carry their damped frequency, whirl and energy share
+    per point too. ROSCO 2.10's 240 linearisations of the IEA-15 semisubmersible (20 winds,
+    five of them at the rated 7.56 rpm) were refused as "damped_frequency_hz has 20 values
+    but rpm has 16": the merge left those lists whole."""
+    m = {
+        "rpm": [6.0, 9.6, 9.6],
+        "frequency_hz": [1.0, 2.0, 2.2],
+        "damped_frequency_hz": [0.9, 1.8, 2.0],
+        "damping_ratio": [0.1, 0.05, 0.02],
+        "whirl": ["", "backward", "forward"],
+        "wind_m_s": [5.0, 11.0, 15.0],
+        "share": [0.9, 0.8, 0.7],
+        "description": "a mode",
+    }
+    merge_speeds(m)
+    assert all(len(m[k]) == 2 for k in m if k != "description")
+    assert m["damped_frequency_hz"] == pytest.approx([0.9, 1.9])
+    assert m["whirl"] == ["", "backward"] and m["share"] == [0.9, 0.8]
+    assert m["description"] == "a mode"
+
+
 def test_azimuths_too_few_or_uneven_for_mbc3_are_a_warning(tmp_path):
     """The stored linearisation is three of OpenFAST's 36 azimuths (0.4°, 120°, 330°): MBC3's
     average does not cancel the rotor's periodic terms over them, and the import says so.

@@ -108,10 +108,18 @@ def _document(
     }
 
 
+#: A result mode's per-point lists merged as the mean of a speed's points; ``AT_LOWEST``:
+#: taken at the point of lowest damping; any other per-point list: at the first point.
+MEANS = ("frequency_hz", "damped_frequency_hz")
+AT_LOWEST = ("damping_ratio", "wind_m_s")
+
+
 def merge_speeds(m: dict[str, Any]) -> float:
     """Merge a result mode's points that share a rotor speed (a rated speed held over several
-    winds) into one: the mean frequency, the lowest damping (with its wind), the first whirl.
-    Returns the largest relative spread of the merged frequencies (0 if none merged)."""
+    winds) into one: the mean frequency (natural and damped), the lowest damping (with its
+    wind), the first point's whirl and every other per-point list's (an OpenFAST
+    linearisation's energy share). Returns the largest relative spread of the merged
+    frequencies (0 if none merged)."""
     rpm = m["rpm"]
     order = sorted(range(len(rpm)), key=lambda i: (rpm[i], i))
     groups: list[list[int]] = []
@@ -121,20 +129,18 @@ def merge_speeds(m: dict[str, Any]) -> float:
         else:
             groups.append([i])
     spread = 0.0
-    out: dict[str, list[Any]] = {
-        k: [] for k in ("rpm", "frequency_hz", "damping_ratio", "whirl", "wind_m_s") if k in m
-    }
+    per_point = [k for k, v in m.items() if isinstance(v, list) and len(v) == len(rpm)]
+    out: dict[str, list[Any]] = {k: [] for k in per_point}
     for g in groups:
         f = [m["frequency_hz"][i] for i in g]
         assert min(f) > 0, "the readers refuse frequencies that are not positive"
         spread = max(spread, (max(f) - min(f)) / min(f))
         low = min(g, key=lambda i: m["damping_ratio"][i]) if "damping_ratio" in m else g[0]
-        out["rpm"].append(rpm[g[0]])
-        out["frequency_hz"].append(sum(f) / len(f))
-        for key in ("damping_ratio", "wind_m_s"):
-            if key in out:
-                out[key].append(m[key][low])
-        if "whirl" in out:
-            out["whirl"].append(m["whirl"][g[0]])
+        for key in per_point:
+            values = [m[key][i] for i in g]
+            if key in MEANS:
+                out[key].append(sum(values) / len(values))
+            else:
+                out[key].append(m[key][low] if key in AT_LOWEST else values[0])
     m.update(out)
     return spread
