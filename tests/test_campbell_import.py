@@ -200,3 +200,22 @@ def test_a_cmb_among_several_opt_files_is_told_which_to_name(tmp_path):
     assert result.exit_code == 2
     assert "the folder has 2 .opt files (a.opt, b.opt): copy or link" in result.output
     assert "to run.opt" in result.output
+
+
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("run.opt", "HAWCStab2's operational data"),
+        ("run.pwr", "HAWCStab2's steady-state results"),
+        ("run.amp", "HAWCStab2's modal amplitudes"),
+        ("run_u10000.ind", "HAWCStab2's induction and loads"),
+        ("blade.st", "a HAWC2 structural (st) file"),
+    ],
+)
+def test_a_hawcstab2_or_hawc2_part_file_is_named_for_what_it_is(tmp_path, name, words):
+    """wetb's test data (PyPI wetb 0.1.33, prepost/tests/data) hold HAWCStab2's .opt, .pwr
+    and .ind files beside its .cmb: each was "not a format wtvib reads"; each is said for
+    what it is and which file to give."""
+    path = write(tmp_path, " 0.5E+01  0.1E+01  0.2E+01\n", name)
+    result = runner.invoke(app, ["check", str(path), "--no-plot"])
+    assert result.exit_code == 2 and words in result.output, result.output

@@ -60,6 +60,8 @@ def detect(path: Path, text: str) -> str:
     keys = set(_DECK_KEY.findall(text))
     if keys & {"TwrFile", "EDFile", "NumBl"}:
         return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
+    if suffix in _HAWC_PARTS:
+        raise SpecError(_HAWC_PARTS[suffix], source=str(path))
     part = next((name for name, marks in _DECK_PARTS if keys & set(marks)), None)
     if part is not None:
         raise SpecError(
@@ -76,6 +78,22 @@ _WTVIB_KEY = re.compile(r"^wtvib\s*:", re.MULTILINE)
 _DECK_KEY = re.compile(r"^[ \t]*\S+[ \t]+([A-Za-z_][A-Za-z0-9_()]*)(?=\s|$)", re.MULTILINE)
 
 #: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
+#: HAWC2's and HAWCStab2's files other than the htc and the .cmb, by suffix: what each is
+#: and how wtvib reads it.
+_HAWC_PARTS = {
+    ".opt": "HAWCStab2's operational data (wind, pitch, rotor speed): wtvib reads it with "
+    "the .cmb of the same name (or a folder's only .opt), or through the htc that names it "
+    "— give the .cmb or the .htc",
+    ".pwr": "HAWCStab2's steady-state results (power, thrust, rotor speed per wind): wtvib "
+    "reads their rotor speeds with the .cmb of the same name — give the .cmb",
+    ".amp": "HAWCStab2's modal amplitudes: wtvib reads them with the .cmb of the same name "
+    "— give the .cmb",
+    ".ind": "HAWCStab2's induction and loads along the blade at one wind: not a turbine "
+    "description nor a Campbell result — give the .htc (or the .cmb)",
+    ".st": "a HAWC2 structural (st) file: wtvib reads it through the htc that names it — "
+    "give the .htc",
+}
+
 _DECK_PARTS = (
     ("AeroDyn", ("AFNames", "ADBlFile", "NumBlNds")),
     ("ServoDyn", ("PCMode", "VSContrl", "DLL_FileName")),
