@@ -734,3 +734,17 @@ def test_a_type2_dll_that_is_no_dtu_controller_gives_no_speed_range(model):
         from wtvib.importers import load
 
         load(model)
+
+
+def test_a_dtu_controller_s_minimum_above_its_rated_speed_is_named_by_line(model):
+    """The HAWC2 model's constants as an OpenFAST deck's DTU-controller input's
+    (servodyn.dtu_speeds, one check for both): the line of constant 2, not the spec's
+    rotor.speed."""
+    (model.parents[1] / "data" / "IEA_15MW_RWT_Onshore.opt").unlink()
+    _one_line(
+        model,
+        model,
+        "constant   2  0.524 ",
+        "constant   2  0.9 ",
+        "IEA_15MW_RWT_Onshore.htc:132: constant 2 (minimum rotor speed 0.9 rad/s) must lie",
+    )

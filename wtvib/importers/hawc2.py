@@ -48,6 +48,7 @@ from .hawc2_floater import Floater
 from .hawc2_floater import find as find_floater
 from .hawc2_floater import platform as floating_platform
 from .htc import Block, Command
+from .servodyn import dtu_speeds
 
 #: The 19 columns of a classical st set and what they are.
 ST = ("r", "m", "x_cg", "y_cg", "ri_x", "ri_y", "x_sh", "y_sh", "E", "G", "I_x", "I_y", "I_p",
@@ -935,7 +936,7 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
     opt = _operational_data(top, root)
     control: dict[str, Any] = {"regulation": "pitch"}
     if 1 in constants:
-        control["rated_power_kw"] = constants[1]
+        control["rated_power_kw"] = constants[1].number(1)
     if opt is not None:
         opt_path, table, how = opt
         rpm = table[:, 2]
@@ -961,11 +962,12 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
             "rpm where its rotor turns.",
         )
     if 2 in constants and 3 in constants:
-        lo, hi = constants[2] * 30 / math.pi, constants[3] * 30 / math.pi
+        low = constants[2]
+        lo, hi = dtu_speeds(low.number(1), constants[3].number(1), low.line, str(low.file))
         source = "the DTU Wind Energy controller's constants 2 and 3 (rad/s)"
         speed = {"min_rpm": round(lo, 6), "max_rpm": round(hi, 6), "source": source}
-        if 49 in constants and constants[49] > 0:
-            control["tip_speed_ratio"] = constants[49]
+        if 49 in constants and constants[49].number(1) > 0:
+            control["tip_speed_ratio"] = constants[49].number(1)
         return (
             speed,
             control,
@@ -986,7 +988,9 @@ def _operation(top: Block, root: Path, path: Path) -> tuple[dict[str, Any], dict
 DTU_CONTROLLER = ("dtu_we_controller", "risoe_controller")
 
 
-def _controller(top: Block) -> dict[int, float]:
+def _controller(top: Block) -> dict[int, Command]:
+    """The DTU Wind Energy controller's init constants, by number (empty: no such
+    controller)."""
     dll = top.block("dll")
     if dll is None:
         return {}
@@ -996,9 +1000,10 @@ def _controller(top: Block) -> dict[int, float]:
             init = t2.block("init")
             if init is None:
                 return {}
-            return {
-                int(c.number(0)): c.number(1) for c in init.all("constant") if len(c.values) >= 2
-            }
+            given = [c for c in init.all("constant") if len(c.values) >= 2]
+            for c in given:
+                c.number(1)  # each a number, read or not (a load-case template's tag refused)
+            return {int(c.number(0)): c for c in given}
     return {}
 
 

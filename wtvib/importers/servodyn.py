@@ -33,7 +33,7 @@ from typing import Any
 
 from ..errors import SpecError
 from ..spec import read_text
-from .deck import _NUMBER, Deck, _file, beside, parse, present
+from .deck import _NUMBER, Deck, _file, _fortran, beside, parse, present
 
 #: OpenFAST's decks mark an input they do not use with 9999.9 (or 9998/9999).
 UNUSED = 9998.0
@@ -176,27 +176,35 @@ def _dtu(found: Operation, dtu: dict[int, tuple[float, int]], dll: Path, servo: 
     speed [rad/s], on the low-speed shaft; ``constant 1`` the rated power [kW]) — as a HAWC2
     model's type2_dll gives them (importers.hawc2)."""
     (low, line), (high, _) = dtu[2], dtu[3]
+    low_rpm, high_rpm = dtu_speeds(low, high, line, str(dll))
+    if 1 in dtu and dtu[1][0] > 0:
+        found.control["rated_power_kw"] = dtu[1][0]
+    found.speed = {
+        "min_rpm": low_rpm,
+        "max_rpm": high_rpm,
+        "source": f"{dll.name} (the DTU Wind Energy controller's constants 2 and 3)",
+    }
+    found.note = (
+        f"Operating range {low_rpm:.4g}–{high_rpm:.4g} rpm from {dll.name}, the DTU "
+        f"Wind Energy controller's input named by {servo.path.name} (constants 2 and 3: "
+        f"{low:g} and {high:g} rad/s, the rotor's minimum and rated speed)."
+    )
+    return found
+
+
+def dtu_speeds(low: float, high: float, line: int | None, source: str) -> tuple[float, float]:
+    """The DTU Wind Energy controller's constants 2 and 3 — the rotor's minimum and rated
+    speed [rad/s], on the low-speed shaft — in rpm, read from an OpenFAST deck's controller
+    input or a HAWC2 model's type2_dll alike; one line naming constant 2's line where they
+    are not 0 < minimum < rated."""
     if not 0 < low < high:
         raise SpecError(
             f"constant 2 (minimum rotor speed {low:g} rad/s) must lie between 0 and constant 3 "
             f"(rated rotor speed {high:g} rad/s)",
             line=line,
-            source=str(dll),
+            source=source,
         )
-    if 1 in dtu and dtu[1][0] > 0:
-        found.control["rated_power_kw"] = dtu[1][0]
-    rpm_of = 30 / math.pi
-    found.speed = {
-        "min_rpm": low * rpm_of,
-        "max_rpm": high * rpm_of,
-        "source": f"{dll.name} (the DTU Wind Energy controller's constants 2 and 3)",
-    }
-    found.note = (
-        f"Operating range {low * rpm_of:.4g}–{high * rpm_of:.4g} rpm from {dll.name}, the DTU "
-        f"Wind Energy controller's input named by {servo.path.name} (constants 2 and 3: "
-        f"{low:g} and {high:g} rad/s, the rotor's minimum and rated speed)."
-    )
-    return found
+    return low * 30 / math.pi, high * 30 / math.pi
 
 
 #: A DTU Wind Energy controller input's ``constant N value`` line.
@@ -213,13 +221,14 @@ def dtu_constants(path: Path) -> dict[int, tuple[float, int]]:
         if found is None:
             continue
         key, text = int(found.group(1)), found.group(2)
-        if not _NUMBER.match(text):
+        value = float(_fortran(text)) if _NUMBER.match(text) else math.nan
+        if not math.isfinite(value):  # 1e999 matches a number and overflows
             raise SpecError(
                 f"constant {key} must be a finite number (got {text!r})",
                 line=number,
                 source=str(path),
             )
-        out.setdefault(key, (float(text.replace("D", "E").replace("d", "e")), number))
+        out.setdefault(key, (value, number))
     return out
 
 
