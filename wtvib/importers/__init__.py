@@ -77,7 +77,6 @@ _WTVIB_KEY = re.compile(r"^wtvib\s*:", re.MULTILINE)
 #: The key of an OpenFAST ``value Key - description`` line (the second token).
 _DECK_KEY = re.compile(r"^[ \t]*\S+[ \t]+([A-Za-z_][A-Za-z0-9_()]*)(?=\s|$)", re.MULTILINE)
 
-#: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
 #: HAWC2's and HAWCStab2's files other than the htc and the .cmb, by suffix: what each is
 #: and how wtvib reads it.
 _HAWC_PARTS = {
@@ -94,6 +93,7 @@ _HAWC_PARTS = {
     "give the .htc",
 }
 
+#: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
 _DECK_PARTS = (
     ("AeroDyn", ("AFNames", "ADBlFile", "NumBlNds")),
     ("ServoDyn", ("PCMode", "VSContrl", "DLL_FileName")),

@@ -218,10 +218,7 @@ def rotor_speeds(
                     source=str(side),
                 )
             return rpm, points, [str(side)]
-    try:
-        others = sorted(p.name for p in cmb.parent.iterdir() if p.suffix.lower() == ".opt")
-    except OSError:
-        others = []
+    others = [p.name for p in _opt_files(cmb)]
     which = (
         f"; the folder has {len(others)} .opt files ({', '.join(others[:4])}"
         f"{', …' if len(others) > 4 else ''}): copy or link the one HAWCStab2 ran to "
@@ -246,11 +243,17 @@ def _beside(cmb: Path, suffix: str) -> Path | None:
         return own
     if suffix != ".opt":
         return None
-    try:
-        found = sorted(p for p in cmb.parent.iterdir() if p.suffix.lower() == ".opt")
-    except OSError:
-        return None
+    found = _opt_files(cmb)
     return found[0] if len(found) == 1 else None
+
+
+def _opt_files(cmb: Path) -> list[Path]:
+    """The operational data files in a .cmb's folder, by name (none where it cannot be
+    listed)."""
+    try:
+        return sorted(p for p in cmb.parent.iterdir() if p.suffix.lower() == ".opt")
+    except OSError:
+        return []
 
 
 def names_from_amp(
