@@ -250,7 +250,7 @@ def induction(ad: Deck) -> tuple[str, str]:
     a flap mode's period; its last node keeps a = 1), ``frozen`` for a frozen wake
     (DBEMT_Mod −1, FrozenWake True: the induced velocity held at every node, the last one's
     flow turned by its motion too — OpenFAST 5's linearisations of the NREL 5-MW with it
-    damp the flap family as wtvib's so within −4 … +5 %, −10 … +8 % with the last node's
+    damp the flap family as wtvib's so within −3.7 … +5.5 %, −10 … +8 % with the last node's
     normal inflow held) and any other wake. AeroDyn input documentation (Wake_Mod,
     DBEMT_Mod; FrozenWake in AeroDyn 15 before OpenFAST 3.5)."""
     if "Wake_Mod" in ad.values:  # OpenFAST 3.5 and later
