@@ -271,10 +271,15 @@ def test_given_operating_points_are_solved_at_and_checked_against_the_speeds(wri
     assert sch.region == ("partial load",) * 2 + ("full load",) * 3
     assert any("a published table" in a for a in sch.assumptions)
     # the region-2 tip-speed ratio: the median of the points below the top speed; the rated
-    # wind where it reaches the top speed (30 rpm), before the first point there (11 m/s)
+    # wind where the first pitched point's power (11 m/s) is reached from 8 m/s, the power
+    # growing as V³ — not before the tip-speed ratio reaches the top speed (30 rpm)
     lam = np.array([18, 26]) * np.pi / 30 * 20.0 / np.array([5.0, 8.0])
     assert sch.tip_speed_ratio == pytest.approx(float(np.median(lam)), rel=1e-12)
-    assert sch.rated_wind == pytest.approx(30 * np.pi / 30 * 20.0 / np.median(lam), rel=1e-12)
+    power = sch.solution.power
+    cube = 8.0 * float(power[2] / power[1]) ** (1 / 3)
+    reached = 30 * np.pi / 30 * 20.0 / float(np.median(lam))
+    assert sch.rated_wind == pytest.approx(min(max(cube, reached), 11.0), rel=1e-12)
+    assert reached < sch.rated_wind < 11.0
     with pytest.raises(SpecError) as err:
         load_spec(write_spec(small + aero + GIVEN.format(top=45)))
     assert "operating point 5 turns at 45 rpm, outside the rotor's operating speeds" in str(

@@ -980,8 +980,8 @@ def _statement(spec: Spec, sch: bem.Schedule) -> str:
     twist = _twist_words(spec, sch)
     if given is not None:
         text += (
-            f"rated wind {sch.rated_wind:.3g} m/s (where that tip-speed ratio reaches the top "
-            "rotor speed)"
+            f"rated wind {sch.rated_wind:.3g} m/s (where the power the pitch holds at the "
+            "top rotor speed is reached)"
             if sch.rated_wind is not None
             else f"{c.regulation} regulation"
         )

@@ -785,8 +785,8 @@ def _method(r: Rotor) -> str:
 def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
     """The schedule at the model's own operating points (``control.operating_points``): the
     BEM solved there; the region-2 tip-speed ratio is the median of the points below the
-    top rotor speed, the rated wind where it reaches that speed (pitch regulation; at most
-    the lowest given wind at it), full load at the points at the top speed from there."""
+    top rotor speed; with pitch regulation, full load at the points the pitch holds at the
+    top speed (:func:`_given_rated`)."""
     aero = spec.aerodynamics
     assert aero is not None and aero.control.operating_points is not None
     c = aero.control
@@ -801,13 +801,11 @@ def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
     rated_wind = None
     region = ["stall" if c.regulation == "stall" else "partial load"] * len(winds)
     if c.regulation == "pitch":
-        # where the region-2 tip-speed ratio reaches the top speed, at most the lowest
-        # given wind at it (between the points: the IEA-22's 11 m/s still tracks, 12 m/s
-        # is at the top speed — 11.5 m/s)
-        first = float(winds[np.argmax(top)])
-        rated_wind = min(first, float(omega.max() * r.tip_radius / tsr)) if any(~top) else first
+        reached = min(float(winds[np.argmax(top)]), float(omega.max() * r.tip_radius / tsr))
+        pitch = np.asarray(pts.pitch_deg, float)
+        rated_wind = _given_rated(winds, pitch, top, sol.power, reached)
         region = [
-            "full load" if t and v >= rated_wind else "partial load"
+            "full load" if rated_wind is not None and t and v >= rated_wind else "partial load"
             for v, t in zip(winds, top, strict=True)
         ]
     rated_kw = c.rated_power_kw or spec.turbine.rated_power_kw
@@ -831,6 +829,36 @@ def _given(spec: Spec, r: Rotor, notes: list[str]) -> Schedule:
         p_rated,
         tuple(notes),
     )
+
+
+#: A given point pitches where its pitch stands this far above the fine pitch (its lowest
+#: below the top speed) [deg]: the pitch controller's work, not a table's rounding.
+PITCHED_DEG = 0.1
+
+
+def _given_rated(
+    winds: Array, pitch: Array, top: NDArray[np.bool_], power: Array, reached: float
+) -> float | None:
+    """The rated wind of a model's own operating points: where the power the pitch holds at
+    the top speed (its first pitched point's) is reached — from the last point below it,
+    the power growing as V³ (a constant power coefficient; a rotor held at its top speed
+    below rated, the IEA-10's 8.7 rpm from 9 to 10.5 m/s at the fine pitch, grows a little
+    slower), within the two points and not before the rotor reaches its top speed
+    (``reached``: where the region-2 tip-speed ratio does, at most the lowest wind at it).
+    None where no point pitches."""
+    fine = float(np.min(pitch[~top])) if np.any(~top) else float(np.min(pitch))
+    pitched = np.nonzero(top & (pitch > fine + PITCHED_DEG))[0]
+    if not len(pitched):
+        return None
+    k = int(pitched[0])
+    if k == 0:
+        return float(winds[0])
+    lo, hi = float(winds[k - 1]), float(winds[k])
+    if power[k - 1] > 0 and power[k] > power[k - 1]:
+        estimate = lo * float(power[k] / power[k - 1]) ** (1 / 3)
+    else:
+        estimate = hi
+    return float(np.clip(max(estimate, reached), lo, hi))
 
 
 #: The rated wind: RATED_ROUNDS grids of RATED_GRID winds, each inside the cell of the one

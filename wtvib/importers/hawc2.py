@@ -475,8 +475,8 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     above = float(top_pos[2] - apex[2])
     blade_mass = float(np.trapezoid(bmass, span))
     j_blades = n_blades * float(np.trapezoid(bmass * (hub_radius + span) ** 2, span))
-    parts, hub_mass, hub_inertia, gen_inertia = _head_parts(chain, top_pos)
-    drivetrain, drivetrain_note = _drivetrain(chain.shaft, j_blades, hub_inertia, gen_inertia)
+    parts, hub_mass, inertias = _head_parts(chain, top_pos)
+    drivetrain, drivetrain_note = _drivetrain(chain.shaft, j_blades, inertias)
     parts.append(Part("blades", n_blades * blade_mass, downwind, above, j_blades / 2, j_blades,
                       j_blades / 2))  # fmt: skip
     speed, control, statement = _operation(top, root, path)
@@ -510,7 +510,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             "apex_downwind_m": round(downwind, 6),
             "apex_above_top_m": round(above, 6),
             "hub_mass_kg": hub_mass,
-            "hub_inertia_kgm2": hub_inertia,
+            "hub_inertia_kgm2": inertias.hub,
         },
         "assumptions": [
             *top.notes,
@@ -606,11 +606,12 @@ RIGID_SHAFT_HZ = 1000.0
 
 
 def _drivetrain(
-    shaft: Body, j_blades: float, hub_inertia: float, gen_inertia: float
+    shaft: Body, j_blades: float, inertias: "_ShaftInertias"
 ) -> tuple[dict[str, Any], str | None]:
     """The drive train: the blades on a rigid hub, the shaft's torsion to the generator;
-    and what the import made of a rigid shaft or of a shaft with no generator inertia."""
-    shaft_k = _shaft_stiffness(shaft)
+    and what the import made of a rigid shaft, of a generator partway along the shaft or of
+    a shaft with no generator inertia."""
+    hub_inertia, gen_inertia = inertias.hub, inertias.generator
     if not hub_inertia + gen_inertia > 0:
         raise SpecError(
             f"body {shaft.name}: no inertia about the shaft (no concentrated_mass with one): "
@@ -628,15 +629,25 @@ def _drivetrain(
         )
         chain = [blades, {"name": "hub", "inertia_kgm2": inertia}]
         return {"chain": chain, "shafts": [{"stiffness_nm_rad": None}]}, note
+    shaft_k = inertias.stiffness
     torsion_hz = math.sqrt(shaft_k * (1 / hub_inertia + 1 / gen_inertia)) / (2 * math.pi)
     rigid = torsion_hz > RIGID_SHAFT_HZ
-    note = (
-        f"Drive train: the shaft {shaft.name} taken as rigid (G·I_p/L = {shaft_k:.3g} N·m/rad "
-        f"would put the generator against the hub at {torsion_hz:.3g} Hz: a rigid body as "
-        "HAWC2 models write one)."
-        if rigid
-        else None
-    )
+    if rigid:
+        note = (
+            f"Drive train: the shaft {shaft.name} taken as rigid (G·I_p/L = {shaft_k:.3g} "
+            f"N·m/rad would put the generator against the hub at {torsion_hz:.3g} Hz: a rigid "
+            "body as HAWC2 models write one)."
+        )
+    elif inertias.partway:
+        note = (
+            f"Drive train: generator-side inertia sits partway along the shaft {shaft.name} "
+            f"({inertias.partway} of its {shaft.length:.3g} m) and turns against the hub's "
+            f"({hub_inertia:.4g} kg·m²) through the shaft between them: "
+            f"{shaft_k:.3g} N·m/rad (∫dr/GJ from its place to the hub's end), "
+            f"{torsion_hz:.3g} Hz."
+        )
+    else:
+        note = None
     shafts = [
         {"stiffness_nm_rad": None},
         {"stiffness_nm_rad": None}
@@ -813,26 +824,54 @@ def _plain(value: Any) -> Any:
     return value
 
 
-def _head_parts(chain: _Chain, top: np.ndarray) -> tuple[list[Part], float, float, float]:
+@dataclass(frozen=True)
+class _ShaftInertias:
+    """The polar inertias a shaft carries, parted into the hub's (rigidly joined to the
+    shaft's last node, where the hubs sit) and the generator side's, and the shaft's
+    torsional stiffness between them [N·m/rad]; ``partway`` says where a generator-side
+    inertia nearer the hub's end than the other sits (empty where none does)."""
+
+    hub: float
+    generator: float
+    stiffness: float
+    partway: str
+
+
+def _head_parts(chain: _Chain, top: np.ndarray) -> tuple[list[Part], float, _ShaftInertias]:
     """The tower head's parts (downwind x, up z from the tower top): every concentrated
-    mass on the bodies above the tower and on the shaft; the hub's mass and polar inertia
-    (the shaft's masses nearer its last node, where the hubs sit), the generator's inertia
-    about the shaft (those nearer its first node: the IEA-15's massless generator inertia,
-    the IEA-22's generator rotor, bearings and brake, each placed along the shaft by its
-    offset)."""
+    mass on the bodies above the tower and on the shaft; the hub's mass and the shaft's
+    inertias about its axis (:class:`_ShaftInertias`): the hub's are the shaft's masses
+    nearer its last node and rigidly joined to it (a torsion on the shaft between them
+    above :data:`RIGID_SHAFT_HZ`), the generator's the others — the IEA-15's massless
+    generator inertia at the shaft's first node, the IEA-22's generator rotor, bearings and
+    brake along its rigid shaft, the IEA-10's generator rotor partway along its flexible
+    one — each placed along the shaft by its offset; the shaft's stiffness is the
+    generator side's inertia over Σ J·c, c each inertia's torsional compliance to the hub's
+    end (exact for one generator inertia)."""
     parts: list[Part] = []
-    hub_mass = hub_inertia = gen_inertia = 0.0
-    hub_end, far_end = chain.shaft.at("last"), chain.shaft.at("1")
-    for body in (*chain.head, chain.shaft):
+    shaft = chain.shaft
+    hub_mass = hub_inertia = gen_inertia = weighted = 0.0
+    partway: list[str] = []
+    hub_end, far_end = shaft.at("last"), shaft.at("1")
+    for body in (*chain.head, shaft):
         for node, (x, y, z, m, ixx, iyy, izz) in body.masses:
-            pos = body.origin + body.frame @ (body.node(str(node)) + np.array([x, y, z]))
-            inertia = body.frame @ np.diag([ixx, iyy, izz]) @ body.frame.T
-            if body is chain.shaft:
-                if np.linalg.norm(pos - hub_end) <= np.linalg.norm(pos - far_end):
+            local = body.node(str(node)) + np.array([x, y, z])
+            pos = body.origin + body.frame @ local
+            spin = izz  # about the body's z: the shaft's axis on the shaft
+            if body is shaft:
+                along = _place_on(shaft, local)
+                compliance = _compliance(shaft, along)
+                near = np.linalg.norm(pos - hub_end) <= np.linalg.norm(pos - far_end)
+                if near and compliance * izz * (2 * math.pi * RIGID_SHAFT_HZ) ** 2 <= 1.0:
                     hub_mass += m
                     hub_inertia += izz
-                else:
+                else:  # the drive train turns it: its spin is not the head's (roll)
                     gen_inertia += izz
+                    weighted += izz * compliance
+                    spin = 0.0
+                    if near and izz > 0:
+                        partway.append(f"{izz:.4g} kg·m² at {along:.3g} m")
+            inertia = body.frame @ np.diag([ixx, iyy, spin]) @ body.frame.T
             parts.append(
                 Part(
                     f"{body.name} mass at node {node}",
@@ -850,7 +889,19 @@ def _head_parts(chain: _Chain, top: np.ndarray) -> tuple[list[Part], float, floa
                           float(top[2] - mid[2])))  # fmt: skip
     hub_body_mass = sum(_mass_of(h) for h in chain.hubs)
     hub_mass += hub_body_mass
-    return parts, hub_mass, hub_inertia, gen_inertia
+    stiffness = gen_inertia / weighted if weighted > 0 else math.inf
+    return parts, hub_mass, _ShaftInertias(hub_inertia, gen_inertia, stiffness, ", ".join(partway))
+
+
+def _place_on(shaft: Body, local: np.ndarray) -> float:
+    """A point's place along a straight shaft from its first node [m] (body coordinates),
+    within the shaft."""
+    start, end = shaft.c2[0, :3], shaft.c2[-1, :3]
+    axis = end - start
+    length = float(np.linalg.norm(axis))
+    if length <= 0:
+        return 0.0
+    return float(np.clip(np.dot(local - start, axis) / length, 0.0, length))
 
 
 def _tilt(shaft: Body) -> float:
@@ -858,8 +909,11 @@ def _tilt(shaft: Body) -> float:
     return math.degrees(math.asin(min(1.0, abs(axis[2]) / max(np.linalg.norm(axis), 1e-12))))
 
 
-def _shaft_stiffness(shaft: Body) -> float:
-    """The shaft's torsional stiffness between its ends: GJ/L (G·I_p of its st set)."""
+def _compliance(shaft: Body, start: float) -> float:
+    """The shaft's torsional compliance from ``start`` [m along it] to its last node,
+    ∫ dr/GJ [rad/(N·m)], GJ (G·I_p of its st set) linear in r between the st's rows as HAWC2
+    interpolates them — exact on each interval (its length over the logarithmic mean of GJ
+    at its ends)."""
     st = shaft.st
     gj = st[:, 9] * st[:, 12] if not shaft.fpm else st[:, 29]
     length = shaft.length
@@ -869,7 +923,14 @@ def _shaft_stiffness(shaft: Body) -> float:
             line=shaft.block.line,
             source=str(shaft.block.file),
         )
-    return float(1.0 / np.trapezoid(1.0 / gj, np.linspace(0, length, len(gj))))
+    r = np.asarray(st[:, 0], float)
+    grid = np.unique(np.clip(np.concatenate([r, [start, length]]), start, length))
+    g = np.interp(grid, r, gj)
+    lo, hi = g[:-1], g[1:]
+    log_ratio = np.log(hi / lo)
+    flat = np.abs(log_ratio) < 1e-9
+    mean = np.where(flat, 0.5 * (lo + hi), (hi - lo) / np.where(flat, 1.0, log_ratio))
+    return float(np.sum(np.diff(grid) / mean))
 
 
 #: A main body's damping commands, each with Mx My Mz Kx Ky Kz (the first given is read).

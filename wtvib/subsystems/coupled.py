@@ -686,7 +686,7 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
             # (the rotor's azimuth a degree of freedom: ElastoDyn's GenDOF on), on the
             # grid's spring, or held with the rotor's speed (locked: GenDOF off)
             notes.append("the drive shaft rigid: no drive-train torsion")
-        if len(rest) >= 2:
+        if rest:  # one mass too: a rotor free on its bearing (held only where locked)
             sub = spec.model_copy(
                 update={
                     "drivetrain": dt.model_copy(
@@ -699,7 +699,7 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
             size = chain_m.shape[0]
             coupling, own = reduced.coupling[:size], reduced.own[:size]
             if size == 0:  # one rigid mass, held: the rotor turns at its speed
-                pass
+                hub_polar = cm.hub_inertia_kgm2 or rest[0].inertia_kgm2
             elif cm.hub_inertia_kgm2 is None:  # the hub's own (a rigid shaft merges more)
                 hub_polar = (
                     float(chain_m[0, 0])
@@ -716,8 +716,6 @@ def _chain(spec: Spec, condition: str, notes: list[str]) -> _Chain:
                 chain_m[0, 0] += delta
                 coupling[0] += delta
                 own[0] += delta
-        elif rest and cm.hub_inertia_kgm2 is None:
-            hub_polar = rest[0].inertia_kgm2
     if chain_m.shape[0] == 0:
         notes.append("no flexible drive train: the rotor is held on the nacelle")
     return _Chain(chain_m, chain_k, chain_d, own, coupling, hub_polar)
