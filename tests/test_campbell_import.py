@@ -202,6 +202,38 @@ def test_a_cmb_among_several_opt_files_is_told_which_to_name(tmp_path):
     assert "to run.opt" in result.output
 
 
+#: The heads of files that sit beside the models in IEAWindTask37/IEA-3.4-130-RWT and
+#: IEA-10.0-198-RWT, as they are written there (an st file whose name ends in .dat, ROSCO's
+#: controller input and performance table, BeamDyn's blade file)
+ST_ROWS = "$1 2\n" + "  0.0" * 19 + "\n"
+ROSCO = "! Controller parameter input file\n1   ! F_LPFType  - {1: first-order}\n"
+PERFORMANCE = "# ----- Rotor performance tables for the WEIS Turbine wind turbine -----\n"
+BEAMDYN_BLADE = (
+    " ------- BEAMDYN V1.00.* INDIVIDUAL BLADE INPUT FILE ---------\n Test Format 1\n"
+    " ---------------------- BLADE PARAMETERS -----------------\n"
+    "21   station_total    - Number of blade input stations (-)\n"
+    " 1   damp_type        - Damping type: 0: no damping; 1: damped\n"
+)
+
+
+@pytest.mark.parametrize(
+    ("name", "text", "words"),
+    [
+        ("tower_st.dat", "#1 Tower\n r m x_cg\n" + ST_ROWS, "a HAWC2 structural (st) file"),
+        ("IEA-3.4-130-RWT_DISCON.IN", ROSCO, "a ROSCO controller input (DISCON)"),
+        ("IEA-3.4-130-RWT_Cp_Ct_Cq.txt", PERFORMANCE, "a rotor performance table"),
+        ("IEA-3.4-130-RWT_BeamDyn_Blade.dat", BEAMDYN_BLADE, "an OpenFAST BeamDyn blade file"),
+    ],
+)
+def test_a_file_beside_a_model_is_named_by_its_text(tmp_path, name, text, words):
+    """The IEA-3.4's and IEA-10's repositories hold, beside their models, files whose names
+    do not say what they are; each was "not a format wtvib reads" and is said for what it
+    is and which file to give (exit 2, one line)."""
+    path = write(tmp_path, text, name)
+    result = runner.invoke(app, ["check", str(path), "--no-plot"])
+    assert result.exit_code == 2 and words in result.output, result.output
+
+
 @pytest.mark.parametrize(
     ("name", "words"),
     [

@@ -152,6 +152,25 @@ def _edit(path: Path, old: str, new: str) -> None:
         ("htc", "set 1 1 ;", "set 1 3 ;", "body tower: its st subset has a modulus of"),
         ("st", "1.8877163007300e+10", "1.8877163007300e+16",
          "body blade1: its st subset has a modulus of 1.89e+16 Pa"),
+        # a concentrated mass no turbine has: a negative inertia about the shaft took the
+        # generator's from the hub's ("no inertia about the shaft"), node 0 was the first
+        ("bodies", "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 -1836784",
+         "concentrated_mass: inertia Izz [kg·m²] -1.83678e+06 is outside 0"),
+        ("bodies", "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass  0  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass: node 0 is outside 1"),
+        ("bodies", "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass  1  0.0 0.0 0.0 -5.0 0.0 0.0 1836784",
+         "concentrated_mass: mass [kg] -5 is outside 0"),
+        # a node the body does not have (placed at its last node, silently)
+        ("bodies", "concentrated_mass  1  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass  3  0.0 0.0 0.0 0.0 0.0 0.0 1836784",
+         "concentrated_mass: node 3 is outside 1 … 2"),
+        ("orientation", "mbdy1  tower last;", "mbdy1  tower 99;",
+         "mbdy1: node 99 of body tower, which has"),
+        ("bodies", "node_distribution     c2_def ;", "node_distribution     spline ;",
+         "node_distribution: 'spline' is not c2_def or uniform"),
         # a load-case template's tag (the IEA-22's htc/_master DLB file)
         ("htc", "sec    2    0    0    -15.0     0    ;", "sec    2    0    0    [tz]     0    ;",
          "is a template's tag, [tz], not a number"),
@@ -295,6 +314,49 @@ def test_a_generator_partway_along_a_flexible_shaft_turns_through_the_shaft_betw
     k = spec.drivetrain.shafts[1].stiffness_nm_rad
     assert k == pytest.approx(SHAFT_GJ / 2.0, rel=1e-9)
     assert any("partway along the shaft" in a and "at 4.13 m" in a for a in spec.assumptions)
+
+
+def test_a_uniform_node_distribution_puts_its_nodes_at_equal_distances(model):
+    """``node_distribution uniform N``: N nodes at equal distances along the centre line
+    (not the c2_def sections): the IEA-15's generator inertia on node 2 of a shaft with
+    three uniform nodes (the hub's mass moved to node 3, the last) sits at its middle,
+    3.06 m of 6.13, and turns against the hub through the half shaft beyond it
+    (k = GJ/3.065 m)."""
+    from wtvib.importers import load
+
+    bodies = model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
+    text = bodies.read_text()
+    start = text.index("name        shaft ;")
+    at = text.index("node_distribution", start)
+    end = text.index(";", at)
+    bodies.write_text(text[:at] + "node_distribution uniform 3 " + text[end:])
+    _edit(bodies, SHAFT, SHAFT.replace("mass  1", "mass  2"))
+    _edit(
+        bodies, "concentrated_mass  2  0.0 0.0 0.0 69131", "concentrated_mass  3  0.0 0.0 0.0 69131"
+    )
+    spec = load(model)
+    k = spec.drivetrain.shafts[1].stiffness_nm_rad
+    assert k == pytest.approx(SHAFT_GJ / (6.129880124703066 / 2), rel=1e-9)
+    assert any("at 3.06 m" in a for a in spec.assumptions)
+
+
+def test_a_shaft_s_torsion_is_integrated_as_hawc2_interpolates_its_st(model):
+    """GJ linear in r between the st file's rows, as HAWC2 interpolates them: the IEA-15's
+    shaft with its I_p doubled at the second row (r = 5.118 m; the body is 6.13 m long, the
+    last row's GJ held beyond it) — compliance L·ln(g₂/g₁)/(g₂ − g₁) + 1.012 m/g₂ exactly
+    (a trapezoid of 1/GJ over the rows is 7.2 % more compliant)."""
+    from wtvib.importers import load
+
+    st = model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_Shaft_st.dat"
+    rows = st.read_text().splitlines()
+    second = next(i for i, r in enumerate(rows) if r.startswith("5.118"))
+    rows[second] = rows[second].replace("3.9532", "7.9064", 1)
+    st.write_text("\n".join(rows) + "\n")
+    spec = load(model)
+    g1, g2 = SHAFT_GJ, 2 * SHAFT_GJ
+    length = 6.129880124703066
+    compliance = 5.118 * math.log(g2 / g1) / (g2 - g1) + (length - 5.118) / g2
+    assert spec.drivetrain.shafts[1].stiffness_nm_rad == pytest.approx(1 / compliance, rel=1e-9)
 
 
 def test_a_rigid_shaft_s_modes_do_not_depend_on_where_its_inertia_sits(model):

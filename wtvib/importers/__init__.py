@@ -62,6 +62,9 @@ def detect(path: Path, text: str) -> str:
         return "elastodyn"  # ElastoDyn deck, FAST v7 .fst, or an OpenFAST .fst naming one
     if suffix in _HAWC_PARTS:
         raise SpecError(_HAWC_PARTS[suffix], source=str(path))
+    known = next((what for what, mark in _KNOWN_BY_TEXT if mark.search(text[:20_000])), None)
+    if known is not None:
+        raise SpecError(known, source=str(path))
     part = next((name for name, marks in _DECK_PARTS if keys & set(marks)), None)
     if part is not None:
         raise SpecError(
@@ -93,6 +96,25 @@ _HAWC_PARTS = {
     "give the .htc",
 }
 
+#: Files a turbine's repository holds beside its models, told by their text (first match
+#: wins): what each is and what to give instead.
+_KNOWN_BY_TEXT = (
+    (
+        _HAWC_PARTS[".st"],
+        re.compile(r"^\s*\$\d+\s+\d+.*\n(?:\s*[-+0-9.eE]+){19}", re.M),
+    ),
+    (
+        "a ROSCO controller input (DISCON): wtvib reads its speeds through the deck set "
+        "whose ServoDyn names it — give the .fst (or the ElastoDyn deck)",
+        re.compile(r"!\s*(?:F_LPFType|VS_ControlMode|PC_ControlMode)\b"),
+    ),
+    (
+        "a rotor performance table (C_p, C_t, C_q over tip-speed ratio and pitch): not a "
+        "turbine description — give the deck set (.fst) or the model it belongs to",
+        re.compile(r"^#.*Rotor performance tables", re.M | re.I),
+    ),
+)
+
 #: Keys that tell the other files of an OpenFAST deck set apart (first match wins).
 _DECK_PARTS = (
     ("AeroDyn", ("AFNames", "ADBlFile", "NumBlNds")),
@@ -102,6 +124,7 @@ _DECK_PARTS = (
     ("InflowWind", ("WindType",)),
     ("aerofoil (AeroDyn polar)", ("NumAlf", "InterpOrd")),
     ("BeamDyn", ("QuasiStaticInit", "member_total", "kp_total")),
+    ("BeamDyn blade", ("station_total", "damp_type")),
     ("HydroDyn", ("PotMod", "PotFile")),
     ("SubDyn", ("FEMMod", "NReact", "SttcSolve")),
     ("SeaState", ("WaveHs", "WaveTp")),

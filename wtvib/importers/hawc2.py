@@ -73,16 +73,19 @@ class Body:
     origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
     frame: np.ndarray = field(default_factory=lambda: np.eye(3))
     placed: bool = False
+    #: the body's nodes (body frame): its c2_def sections, or ``uniform N``'s N points
+    nodes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
 
     @property
     def length(self) -> float:
         return float(np.sum(np.linalg.norm(np.diff(self.c2[:, :3], axis=0), axis=1)))
 
     def node(self, which: str) -> np.ndarray:
-        """A node's position in the body's frame (``last`` or its 1-based number)."""
-        i = len(self.c2) - 1 if which == "last" else int(float(which)) - 1
-        i = min(max(i, 0), len(self.c2) - 1)
-        return self.c2[i, :3]
+        """A node's position in the body's frame (``last`` or its 1-based number, which the
+        reader has checked against the body's nodes)."""
+        points = self.nodes if len(self.nodes) else self.c2[:, :3]
+        i = len(points) - 1 if which == "last" else int(float(which)) - 1
+        return np.asarray(points[min(max(i, 0), len(points) - 1)])
 
     def at(self, which: str) -> np.ndarray:
         """A node's global position."""
@@ -159,11 +162,45 @@ def _body(name: str, b: Block, root: Path) -> Body:
     fpm = fpm_cmd is not None and fpm_cmd.number(0) == 1
     set_cmd = timo.need("set")
     st = htc.read_st(path, int(set_cmd.number(0)), int(set_cmd.number(1)), 30 if fpm else len(ST))
-    masses = [(int(c.number(0)), np.array(c.first(7, 1))) for c in b.all("concentrated_mass")]
+    nodes = _nodes(b, c2)
+    masses = [_concentrated(c, len(nodes)) for c in b.all("concentrated_mass")]
     damp = next((cmd for cmd in map(b.get, DAMPING) if cmd is not None), None)
     damping = tuple(damp.first(6)) if damp is not None else (0.0,) * 6
     by = damp.key if damp is not None else DAMPING[0]
-    return Body(name, b, c2, st, fpm, masses, damping, by)
+    return Body(name, b, c2, st, fpm, masses, damping, by, nodes=nodes)
+
+
+def _nodes(b: Block, c2: np.ndarray) -> np.ndarray:
+    """A main body's nodes in its frame, as its ``node_distribution`` puts them: at the
+    c2_def sections (``c2_def``, and where none is given), or ``uniform N`` — N nodes at
+    equal distances along the centre line."""
+    cmd = b.get("node_distribution")
+    kind = cmd.text(0).lower() if cmd is not None and cmd.values else "c2_def"
+    if kind == "c2_def":
+        return np.asarray(c2[:, :3])
+    if kind != "uniform" or cmd is None:
+        raise SpecError(
+            f"node_distribution: {kind!r} is not c2_def or uniform", line=b.line, source=str(b.file)
+        )
+    count = int(cmd.within(1, 2, 1e4, "node_distribution uniform: the number of nodes"))
+    steps = np.linalg.norm(np.diff(c2[:, :3], axis=0), axis=1)
+    along = np.concatenate([[0.0], np.cumsum(steps)])
+    at = np.linspace(0.0, along[-1], count)
+    return np.stack([np.interp(at, along, c2[:, k]) for k in range(3)], axis=1)
+
+
+def _concentrated(cmd: Command, nodes: int) -> tuple[int, np.ndarray]:
+    """A ``concentrated_mass`` command on a body of ``nodes`` nodes: its node, offset
+    (x, y, z) [m], mass [kg] and inertias about its body's axes [kg·m²] — a node the body
+    does not have, a negative mass or inertia, or a value no turbine has, one line naming
+    the command."""
+    node = int(cmd.within(0, 1, nodes, "concentrated_mass: node"))
+    offset = [cmd.within(i, -1e4, 1e4, f"concentrated_mass: offset {a} [m]")
+              for i, a in zip((1, 2, 3), "xyz", strict=True)]  # fmt: skip
+    mass = cmd.within(4, 0.0, 1e9, "concentrated_mass: mass [kg]")
+    inertia = [cmd.within(i, 0.0, 1e13, f"concentrated_mass: inertia I{a} [kg·m²]")
+               for i, a in zip((5, 6, 7), ("xx", "yy", "zz"), strict=True)]  # fmt: skip
+    return node, np.array([*offset, mass, *inertia])
 
 
 def _place(bodies: dict[str, Body], orientation: Block) -> None:
@@ -189,15 +226,15 @@ def _place(bodies: dict[str, Body], orientation: Block) -> None:
             frame = parent.frame.copy()
             for a in rel.all("mbdy2_eulerang") + rel.all("body2_eulerang"):
                 frame = frame @ _rotation(a.first(3))
-            child.origin = parent.at(_node_ref(first, "last")) - frame @ child.node(
-                _node_ref(second, "1")
+            child.origin = parent.at(_node_ref(first, "last", parent)) - frame @ child.node(
+                _node_ref(second, "1", child)
             )
             child.frame, child.placed = frame, True
 
 
-def _node_ref(cmd: Command, default: str) -> str:
+def _node_ref(cmd: Command, default: str, body: Body) -> str:
     """The node a ``mbdy1``/``mbdy2`` command names after the body: ``last`` or its
-    number (1 and up), or one line naming file and line."""
+    number (1 up to the body's nodes), or one line naming file and line."""
     if len(cmd.values) < 2:
         return default
     which = cmd.values[1].lower()
@@ -206,6 +243,12 @@ def _node_ref(cmd: Command, default: str) -> str:
     if not which.isascii() or not which.isdigit() or int(which) < 1:
         raise SpecError(
             f"{cmd.key}: node {cmd.values[1]!r} is not 'last' or a node number (1, 2, …)",
+            line=cmd.line,
+            source=str(cmd.file),
+        )
+    if int(which) > len(body.nodes):
+        raise SpecError(
+            f"{cmd.key}: node {int(which)} of body {body.name}, which has {len(body.nodes)}",
             line=cmd.line,
             source=str(cmd.file),
         )
