@@ -359,6 +359,23 @@ def test_a_shaft_s_torsion_is_integrated_as_hawc2_interpolates_its_st(model):
     assert spec.drivetrain.shafts[1].stiffness_nm_rad == pytest.approx(1 / compliance, rel=1e-9)
 
 
+def test_a_generator_no_turbine_has_is_warned(model):
+    """The IEA-3.4's HAWC2 model (IEAWindTask37/IEA-3.4-130-RWT) turns 2,866 kg·m² on its
+    shaft's generator side, 0.008 % of its blades' — a geared generator given at its own
+    speed, not on the low-speed shaft (its OpenFAST deck: GenIner 1,056 kg·m² × 97² =
+    9.9e6); direct drives carry 0.6–2 % (the IEA-15's own 1.84e6 kg·m², 0.6 %: not
+    warned). Audited as written, warned."""
+    from wtvib.importers import load
+
+    assert not any("generator side" in w for w in load(model).warnings)
+    bodies = model.parents[2] / "IEA-15-240-RWT" / "IEA_15MW_RWT_WTG_bodies_noFPM.htc"
+    _edit(bodies, SHAFT, SHAFT.replace("1836784", "2866"))
+    spec = load(model)
+    assert any(
+        "the generator side of the shaft shaft turns 2,866 kg·m²" in w for w in spec.warnings
+    )
+
+
 def test_a_rigid_shaft_s_modes_do_not_depend_on_where_its_inertia_sits(model):
     """On a rigid shaft the generator and the hub turn as one: the IEA-15 with its generator
     inertia at the hub's end (one mass: the blades against it) and at the shaft's first node
@@ -487,6 +504,50 @@ def test_oye_s_model_in_attached_flow_damps_as_the_static_lift(model):
     oye, static = damping(1), damping(0)
     for name in oye:
         np.testing.assert_allclose(oye[name], static[name], rtol=0.05, err_msg=name)
+
+
+@pytest.fixture
+def monopile(tmp_path: Path) -> Path:
+    """The IEA-15's HAWC2 monopile model (its own folder's files beside the onshore
+    archive's WTG files)."""
+    for name in ("iea15_onshore.tar.gz", "iea15_monopile.tar.gz"):
+        with tarfile.open(DATA / name) as tar:
+            tar.extractall(tmp_path, filter="data")
+    return tmp_path / "HAWC2/IEA-15-240-RWT-Monopile/htc/IEA_15MW_RWT_Monopile.htc"
+
+
+EMBEDDED = "IEA_15MW_RWT_Embeddedmonopile_st.dat"
+
+
+@pytest.mark.parametrize(
+    "where, old, new, words",
+    [
+        # the st's A so large for its I that no tube has both
+        ("st", "1.7290E+00", "3.7290E+01", "is no steel tube wtvib can stand on the soil"),
+        ("htc", "datafile  ./soil/IEA_15MW_Soil.dat;", "datafile  ./soil/gone.dat;",
+         "datafile names './soil/gone.dat', which does not exist"),
+        ("htc", "mbdy_name  embedded_monopile;", "mbdy_name  embedded_pile;",
+         "mbdy_name names the body 'embedded_pile', which the model does not have"),
+    ],
+)  # fmt: skip
+def test_a_broken_soil_block_is_one_line(monopile, where, old, new, words):
+    """The pile on the model's own soil: what it cannot stand on is one line, exit 2."""
+    target = monopile if where == "htc" else monopile.parents[1] / "data" / EMBEDDED
+    _one_line(monopile, target, old, new, words)
+
+
+def test_a_pile_on_two_soil_elements_is_said_clamped(monopile):
+    """Two soil elements (wtvib stands one pile on one soil): clamped at the mudline and
+    said, as before the model's own soil was read."""
+    from wtvib.importers import load
+
+    text = monopile.read_text()
+    start, end = text.index("begin soil_element;"), text.index("end soil_element;")
+    element = text[start : end + len("end soil_element;")]
+    monopile.write_text(text.replace(element, element + "\n" + element))
+    spec = load(monopile)
+    assert spec.tower.foundation is None or spec.tower.foundation.kind == "clamped"
+    assert any("pile in the soil" in w for w in spec.warnings)
 
 
 @pytest.fixture

@@ -520,6 +520,7 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
     j_blades = n_blades * float(np.trapezoid(bmass * (hub_radius + span) ** 2, span))
     parts, hub_mass, inertias = _head_parts(chain, top_pos)
     drivetrain, drivetrain_note = _drivetrain(chain.shaft, j_blades, inertias)
+    light = _light_generator(chain.shaft, inertias.generator, j_blades)
     parts.append(Part("blades", n_blades * blade_mass, downwind, above, j_blades / 2, j_blades,
                       j_blades / 2))  # fmt: skip
     speed, control, statement = _operation(top, root, path)
@@ -562,6 +563,8 @@ def to_spec_data(path: Path, text: str) -> dict[str, Any]:
             *([drivetrain_note] if drivetrain_note else []),
         ],
     }
+    if light:
+        data["warnings"] = [light]
     _support(data, top, root, (chain, embedded, bodies))
     aerodynamics = _aerodynamics(top, root, chain, control)
     if aerodynamics is not None:
@@ -583,6 +586,23 @@ def _support(
     added, hydro_left = _added_mass(top, chain)
     if added is not None:
         data["tower"]["added_mass"] = added
+    soil = top.block("soil")
+    elements = soil.each("soil_element") if soil is not None else []
+    if chain.floater is None and len(elements) == 1:  # the pile on the model's own soil
+        from .hawc2_soil import pile_on_soil
+
+        pile = _named(bodies, elements[0].need("mbdy_name"))
+        if pile.fpm:
+            raise SpecError(
+                f"soil_element: the body {pile.name}'s st set is fully populated: wtvib stands "
+                "a pile given by its classical st (E, I, A) on the soil",
+                line=elements[0].line,
+                source=str(elements[0].file),
+            )
+        foundation, note = pile_on_soil(elements[0], pile.st, pile.length, root)
+        data["tower"]["foundation"] = foundation
+        data["assumptions"].append(note)
+        embedded = set()
     beside: list[str] = []
     if chain.floater is not None:
         structure = top.block("new_htc_structure")
@@ -602,7 +622,7 @@ def _support(
             hydro_left = []
     warnings = _support_warnings(embedded, hydro_left) + beside
     if warnings:
-        data["warnings"] = warnings
+        data.setdefault("warnings", []).extend(warnings)
 
 
 def _beside_the_chain(
@@ -636,9 +656,8 @@ def _model_chain(top: Block, root: Path, path: Path) -> tuple["_Chain", set[str]
         raise SpecError("no orientation block", line=structure.line, source=str(path))
     _place(bodies, orientation)
     soil = top.block("soil")
-    embedded = {
-        e.need("mbdy_name").text(0).lower() for e in (soil.each("soil_element") if soil else [])
-    }
+    elements = soil.each("soil_element") if soil else []
+    embedded = {_named(bodies, e.need("mbdy_name")).name for e in elements}
     return _chain(bodies, structure, embedded), embedded, bodies
 
 
@@ -703,6 +722,26 @@ def _drivetrain(
         {"name": "generator", "inertia_kgm2": gen_inertia},
     ]
     return {"chain": chain, "shafts": shafts}, note
+
+
+#: A generator side lighter than this share of the blades' polar inertia is no generator a
+#: turbine has (direct drives carry 0.6–2 %: the IEA-15's, IEA-10's, IEA-22's; a geared
+#: generator on the low-speed shaft, its inertia times the ratio squared, 10–35 %).
+LIGHT_GENERATOR = 1e-3
+
+
+def _light_generator(shaft: Body, generator: float, j_blades: float) -> str | None:
+    """A warning where the shaft's generator side is suspiciously light (HAWC2 models give
+    a geared generator's inertia on the low-speed shaft: the DTU 10 MW's 'generator
+    equivalent slow shaft', 3.751e6 kg·m²)."""
+    if not 0 < generator < LIGHT_GENERATOR * j_blades:
+        return None
+    return (
+        f"drivetrain: the generator side of the shaft {shaft.name} turns {generator:,.4g} "
+        f"kg·m², {100 * generator / j_blades:.2g} % of the blades' {j_blades:,.3g} — a geared "
+        "generator's inertia belongs on the low-speed shaft times the gear ratio squared; "
+        "the drive train's modes are the model's as written"
+    )
 
 
 def _assembly_notes(path: Path, chain: "_Chain", downwind: float, above: float) -> list[str]:

@@ -14,11 +14,15 @@ are not used (wtvib's tower bends on its foundation; torsion on the soil is held
 """
 
 import itertools
+import math
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..errors import SpecError
 from ..spec import read_text
+from . import htc
 from .deck import finite
 
 #: HAWC2's soil files give forces in kN.
@@ -92,3 +96,42 @@ def _layers(path: Path, lines: list[str], at: int) -> list[dict[str, Any]]:
         }
         for k in range(len(z) - 1)
     ]
+
+
+def pile_on_soil(
+    element: htc.Block, st: np.ndarray, length: float, root: Path
+) -> tuple[dict[str, Any], str]:
+    """A HAWC2 model's embedded pile on its own soil: the ``soil_element`` block's body
+    (its classical st set ``st``, ``length`` [m] from its tip to the mudline) as wtvib's
+    pile — a steel tube whose diameter and wall give the st's I and A at the mudline
+    (D² = 8I/A + 2A/π, d² = 8I/A − 2A/π), E from the st — standing on the ``datafile``'s
+    lateral springs (:func:`profile`); the foundation block and the statement of it. A pile
+    whose I and A no tube has is one line naming the element."""
+    body = element.need("mbdy_name").text(0)
+    data = element.need("datafile")
+    path = htc.resolve(data.text(0), root, data.file.parent, data)
+    row = st[int(np.argmax(st[:, 0]))]  # the st row nearest the mudline (the body's end)
+    e, i_x, area = float(row[8]), float(row[10]), float(row[15])
+    outer2, inner2 = 8 * i_x / area + 2 * area / math.pi, 8 * i_x / area - 2 * area / math.pi
+    if not (e > 0 and i_x > 0 and area > 0 and inner2 > 0):
+        raise SpecError(
+            f"soil_element: the body {body}'s st (I_x {i_x:g} m⁴, A {area:g} m²) is no steel "
+            "tube wtvib can stand on the soil",
+            line=element.line,
+            source=str(element.file),
+        )
+    diameter = math.sqrt(outer2)
+    wall = 0.5 * (diameter - math.sqrt(inner2))
+    pile = {
+        "embedded_length_m": length,
+        "diameter_m": diameter,
+        "wall_thickness_m": wall,
+        "youngs_modulus_pa": e,
+    }
+    note = (
+        f"The pile below the mudline ({body}, {length:.3g} m: a tube {diameter:.3g} m across "
+        f"with a {1e3 * wall:.3g} mm wall, from its st's I and A) stands on the model's own "
+        f"soil springs ({data.text(0)}: the lateral set's initial slopes as E_py), with lower- "
+        "and upper-bound soil half and twice as stiff."
+    )
+    return {"kind": "soil", "pile": pile, **profile(path)}, note
