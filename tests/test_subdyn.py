@@ -70,7 +70,8 @@ def test_a_jacket_is_not_a_monopile_and_the_deck_says_what_it_is(files, tmp_path
         (REACTION, REACTION + "\n" + REACTION.replace("   1 ", "   2 ", 1)),
     )
     assert subdyn.monopile(fst, 10.0) == (
-        "its SubDyn substructure has 2 reaction and 1 interface joints — not a monopile"
+        "its SubDyn substructure has 2 reaction and 1 interface joints — not a monopile (nor "
+        "one on springs along it: each reaction joint free, with an SSI file)"
     )
 
 
@@ -93,6 +94,96 @@ def test_an_ssi_file_puts_the_pile_head_on_its_springs(files, tmp_path):
     f = pile.foundation
     assert (f["kind"], f["lateral_n_m"], f["rocking_nm_rad"]) == ("springs", 5.04e8, 1.35e10)
     assert (f["coupling_n"], f["torsional_nm_rad"]) == (-1.98e9, 7.0e8)
+
+
+FOOS = "IEA-10.0-198-RWT.fst"
+
+
+@pytest.fixture(scope="module")
+def foos(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """OWI-Lab's FOOS IEA-10 deck set (tests/data/openfast_decks/foos_iea10.tar.gz): a
+    monopile on 100 reaction joints, each with the SSI file of its 0.5 m of soil (PISA's
+    initial stiffness: lateral and rotational springs)."""
+    root = tmp_path_factory.mktemp("foos")
+    with tarfile.open(DATA / "foos_iea10.tar.gz") as tar:
+        tar.extractall(root, filter="data")
+    return root
+
+
+def test_a_pile_on_springs_along_it_stands_on_them_at_the_mudline(foos):
+    """The FOOS IEA-10's monopile was "not a monopile" (100 reaction joints) and its tower
+    clamped at the transition piece, 10 m above the sea (first fore-aft 0.37 Hz). Its pile
+    stands on its springs: from the highest (z = −23.5 m, the seabed at 23.35 m) up it is
+    the tower's lower part; below, the springs' Kxx, Ktyty, Kxty and Ktztz condense to the
+    mudline (:func:`subdyn._condensed`, checked against Hetényi in
+    tests/validation/test_soil.py); the pile's mass below is said. The tower then bends at
+    0.254 Hz, 12 % below the same turbine clamped at that mudline (0.288 Hz) — a soil's
+    share of a monopile's first bending (5–15 %, as the IEA-15's on its HAWC2 springs:
+    tests/validation/test_soil_hawc2.py)."""
+    from wtvib import audit, importers
+
+    fst = deck.parse(foos / FOOS)
+    pile = subdyn.monopile(fst, 10.0)
+    assert isinstance(pile, subdyn.Monopile)
+    assert pile.base == pytest.approx(-23.5)
+    f = pile.foundation
+    assert f["kind"] == "springs" and f["coupling_n"] < 0
+    assert f["lateral_n_m"] * f["rocking_nm_rad"] > f["coupling_n"] ** 2
+    assert any("100 reaction joints" in n and "is left out" in n for n in pile.notes)
+    spec = importers.load(foos / FOOS)
+    ours = {m.id: m.frequency_hz for m in audit.run(spec).modes}
+    from wtvib.spec.tower import Foundation
+
+    clamp = spec.tower.model_copy(update={"foundation": Foundation()})
+    held = spec.model_copy(update={"tower": clamp})
+    clamped = {m.id: m.frequency_hz for m in audit.run(held).modes}
+    for name in ("tower.fa1", "tower.ss1"):
+        assert 0.8 * clamped[name] < ours[name] < 0.95 * clamped[name], name
+
+
+def _foos_edited(foos: Path, tmp_path: Path, target: str, old: str, new: str) -> deck.Deck:
+    """The FOOS deck set copied with one file edited."""
+    import shutil
+
+    root = tmp_path / "foos"
+    shutil.copytree(foos, root)
+    path = root / target
+    text = path.read_text()
+    assert old in text, old
+    path.write_text(text.replace(old, new, 1))
+    return deck.parse(root / FOOS)
+
+
+SD = "08_SubDyn/owi_IEA-10.0-198-RWT_SubDyn.dat"
+
+
+@pytest.mark.parametrize(
+    ("target", "old", "new", "message"),
+    [
+        (SD, '"ssi/IEA-10.0-198-RWT_pisa_JointID_5.txt"', '"ssi/gone.txt"',
+         "SSIfile names 'ssi/gone.txt', which does not exist"),
+        # a spring of negative stiffness (it left the condensed head positive: accepted)
+        ("08_SubDyn/ssi/IEA-10.0-198-RWT_pisa_JointID_1.txt", "4.48E+09				Kxx",
+         "-4.48E+14				Kxx", "Kxx -4.48e\\+14: a spring of negative stiffness"),
+        ("08_SubDyn/ssi/IEA-10.0-198-RWT_pisa_JointID_1.txt", "0.00E+00				Kxty",
+         "9.00E+10				Kxty", "more coupling than Kxx"),
+    ],
+)  # fmt: skip
+def test_a_broken_pile_on_springs_is_one_line(foos, tmp_path, target, old, new, message):
+    fst = _foos_edited(foos, tmp_path, target, old, new)
+    with pytest.raises(SpecError, match=message):
+        subdyn.monopile(fst, 10.0)
+
+
+def test_springs_along_a_pile_with_a_locked_joint_are_no_pile_on_springs(foos, tmp_path):
+    """A reaction joint with a locked DOF among the springs: not a pile on springs (the
+    reason said, the tower clamped at its base, as before)."""
+    row = "  3          0           0           0           0           0           0"
+    fst = _foos_edited(
+        foos, tmp_path, SD, row, row.replace("0           0   ", "1           0   ", 1)
+    )
+    found = subdyn.monopile(fst, 10.0)
+    assert isinstance(found, str) and "nor one on springs along it" in found
 
 
 @pytest.mark.parametrize(

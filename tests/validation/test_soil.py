@@ -46,6 +46,61 @@ def test_a_stiff_short_pile_moves_as_a_rigid_body():
     assert h.rocking == pytest.approx(k * length**3 / 3, rel=1e-4)
 
 
+def _lumped(
+    length: float, k: float, step: float, ei: float, rotation: float = 0.0, coupling: float = 0.0
+) -> tuple[Any, ...]:
+    """A uniform pile (z up, head at z = 0) on springs k·step (lateral) and rotation·step
+    (rocking) at nodes ``step`` apart (half at its ends), as SubDyn's reaction joints with
+    their SSI files hold one, condensed to its head (importers.subdyn._condensed)."""
+    import numpy as np
+
+    from wtvib.importers import subdyn
+
+    at = np.linspace(-length, 0.0, round(length / step) + 1)
+    n = len(at)
+    stations = (at, np.full(n, 1e4), np.full(n, ei), np.full(n, 0.8 * ei), np.full(n, 1e3))
+    springs = np.zeros((n, 4))
+    springs[:, 0] = k * step
+    springs[:, 1] = rotation * step
+    springs[:, 2] = coupling * step
+    springs[[0, -1], :3] = springs[[0, -1], :3] / 2
+    springs[:, 3] = 1e8 * step
+    return subdyn._condensed(at, stations, springs, "test")
+
+
+def test_springs_along_a_pile_are_hetenyis_beam_and_the_soil_model_s():
+    """A SubDyn monopile on a reaction joint with its SSI file every 0.5 m of its embedded
+    length (OWI-Lab's FOOS IEA-10), condensed to the mudline: a long uniform pile on
+    springs k·Δ is Hetényi's semi-infinite beam within 1e-3 (measured 1e-4), and wtvib's
+    soil model of the same pile on the continuous modulus k (subsystems.soil.head_stiffness,
+    validated above and against pyBModes) within 2e-3 — three computations, one head."""
+    p, k = pile(80.0, d=2.0, t=0.02), 2.0e7
+    ei = E * math.pi / 64 * (2.0**4 - 1.96**4)
+    beta = (k / (4 * ei)) ** 0.25
+    (lateral, rocking, coupling, _), _ = _lumped(80.0, k, 0.5, ei)
+    assert lateral == pytest.approx(4 * ei * beta**3, rel=1e-3)
+    assert coupling == pytest.approx(-2 * ei * beta**2, rel=1e-3)
+    assert rocking == pytest.approx(2 * ei * beta, rel=1e-3)
+    h = soil.head_stiffness(p, uniform(k, 80.0), elements=120)
+    assert (lateral, coupling, rocking) == pytest.approx(
+        (h.lateral, h.coupling, h.rocking), rel=2e-3
+    )
+
+
+def test_rotational_and_coupling_springs_along_a_stiff_pile():
+    """PISA's distributed moment springs (the FOOS IEA-10's Ktyty at every reaction joint)
+    and an SSI file's coupling Kxty: a pile much stiffer than its soil moves as a rigid
+    body (w = u₀ + θz below its head, z < 0), the springs' energy ½∫(k w² + 2c w θ + k_θ θ²)
+    dz gives K_L = kL, K_LR = −kL²/2 + cL, K_R = kL³/3 + k_θL − cL² (within 1e-3: the
+    springs lumped every 10 cm; measured 3e-5)."""
+    ei = E * math.pi / 64 * (8.0**4 - 7.4**4)
+    k, k_theta, c, length = 1.0e6, 4.0e7, 2.0e6, 5.0
+    (lateral, rocking, coupling, _), _ = _lumped(length, k, 0.1, ei, rotation=k_theta, coupling=c)
+    assert lateral == pytest.approx(k * length, rel=1e-3)
+    assert coupling == pytest.approx(-k * length**2 / 2 + c * length, rel=1e-3)
+    assert rocking == pytest.approx(k * length**3 / 3 + k_theta * length - c * length**2, rel=1e-3)
+
+
 def test_sand_modulus_grows_linearly_with_depth_at_the_api_rate():
     """Sand: E_py = k(φ′)·z; the fit of the API/DNV curve gives 21 MN/m³ at φ′ = 35°."""
     assert soil.sand_subgrade_n_m3(35.0) == pytest.approx(21.0e6, rel=2e-3)

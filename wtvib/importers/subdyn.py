@@ -111,16 +111,22 @@ def monopile(fst: Deck, interface_z: float) -> Monopile | str:
             strict=True,
         )
     }
-    if len(react.rows) != 1 or len(interf.rows) != 1:
+    spread = len(react.rows) > 1 and _along_the_pile(sd, react, xyz)
+    if len(interf.rows) != 1 or (len(react.rows) != 1 and not spread):
         return (
             f"its SubDyn substructure has {len(react.rows)} reaction and {len(interf.rows)} "
             "interface joints — not a monopile"
-        )
-    chain = _chain(members, react.ids("RJointID")[0], interf.ids("IJointID")[0], xyz)
+            + (" (nor one on springs along it: each reaction joint free, with an SSI file)"
+               if len(react.rows) > 1 else "")
+        )  # fmt: skip
+    base = min(react.ids("RJointID"), key=lambda j: xyz[j][2])
+    chain = _chain(members, base, interf.ids("IJointID")[0], xyz)
     if isinstance(chain, str):
         return chain
     sections = _sections(props)
     z, mass, ei, gj, polar = _stations(chain, members, sections, xyz, sd)
+    if spread:
+        return _on_springs(fst, sd, text, react, (z, mass, ei, gj, polar), xyz, interface_z)
     top = z[-1]
     notes = [
         f"Monopile from SubDyn ({sd.path.name}): {len(chain)} circular members from the "
@@ -137,6 +143,23 @@ def monopile(fst: Deck, interface_z: float) -> Monopile | str:
     foundation = _reaction(sd, react, notes)
     x0, y0, _ = xyz[react.ids("RJointID")[0]]
     return Monopile(z, mass, ei, gj, polar, point_masses, foundation, (x0, y0), notes, warnings)
+
+
+def _along_the_pile(sd: Deck, react: Table, xyz: dict[int, tuple[float, float, float]]) -> bool:
+    """Whether several reaction joints are springs along one vertical pile (OWI-Lab's
+    FOOS IEA-10: one per 0.5 m of its embedded length, each free with an SSI file): every
+    one on one axis, every DOF free, every one with an SSI file."""
+    flags = ("RctTDXss", "RctTDYss", "RctTDZss", "RctRDXss", "RctRDYss", "RctRDZss")
+    if not react.has("SSIfile") or not all(react.has(f) for f in flags):
+        return False
+    ids = react.ids("RJointID")
+    if any(j not in xyz for j in ids):
+        return False
+    x0, y0, _ = xyz[ids[0]]
+    free = all(all(v == 0 for v in react.numbers(f)) for f in flags)
+    files = all(t.lower() not in ("", "none", "unused") for t in react.texts("SSIfile"))
+    axis = all(math.hypot(xyz[j][0] - x0, xyz[j][1] - y0) <= AXIS_TOLERANCE_M for j in ids)
+    return free and files and axis
 
 
 def _chain(
@@ -182,6 +205,135 @@ def _chain(
     if any(b <= a for a, b in itertools.pairwise(heights)):
         return "its SubDyn monopile does not rise from the reaction joint to the interface joint"
     return order
+
+
+def _on_springs(
+    fst: Deck,
+    sd: Deck,
+    text: str,
+    react: Table,
+    stations: tuple[np.ndarray, ...],
+    xyz: dict[int, tuple[float, float, float]],
+    interface_z: float,
+) -> "Monopile":
+    """A pile on springs along its embedded length (a reaction joint with its SSI file
+    at every spring): above the highest spring — the mudline — the pile is the tower's
+    lower part; below it, a beam on the springs, statically condensed to the mudline's
+    lateral, rocking and coupling stiffness (each plane's fore-aft springs) and torsion.
+    Its mass below the mudline is left out (the condensation is static), said."""
+    z, mass, ei, gj, polar = stations
+    ids = sorted(react.ids("RJointID"), key=lambda j: xyz[j][2])
+    paths = dict(zip(react.ids("RJointID"), react.texts("SSIfile"), strict=True))
+    at = np.array([xyz[j][2] for j in ids])
+    on_pile = set(np.round(z, 6))
+    springs = []
+    for j in ids:
+        line = react.lines[react.ids("RJointID").index(j)]
+        if round(xyz[j][2], 6) not in on_pile:
+            raise SpecError(f"reaction joint {j} is on no member of the pile", line=line,
+                            source=str(sd.path))  # fmt: skip
+        path = beside(sd.path, paths[j])
+        if not path.is_file():
+            raise SpecError(f"SSIfile names {paths[j]!r}, which does not exist", line=line,
+                            source=str(sd.path))  # fmt: skip
+        springs.append(_springs(parse(path)))
+    k = np.array(springs)
+    mudline = float(at[-1])
+    head, guyan = _condensed(at, stations, k, sd.path)
+    keep = z >= mudline - 1e-9
+    notes = [
+        f"Monopile from SubDyn ({sd.path.name}): the pile from the mudline (its highest "
+        f"spring, z = {mudline:g} m) to the interface joint at z = {z[-1]:g} m, under the "
+        "ElastoDyn tower (thin-walled tubes, E, G and ρ of each section).",
+        f"The pile below the mudline ({mudline - at[0]:.3g} m, to z = {at[0]:g} m) stands on "
+        f"the SSI files' springs at its {len(ids)} reaction joints (their Kxx, Ktyty, Kxty "
+        "and Ktztz, the fore-aft plane's in both), condensed statically to the mudline: "
+        f"lateral {head[0]:.4g} N/m, rocking {head[1]:.4g} N·m/rad, coupling {head[2]:.4g} "
+        f"N, torsion {head[3]:.4g} N·m/rad; its mass below the mudline "
+        f"({float(np.trapezoid(mass[~keep], z[~keep])):,.0f} kg, of which the springs' "
+        f"static shape carries {guyan:,.0f} kg to the mudline) is left out.",
+    ]
+    warnings = []
+    if abs(z[-1] - interface_z) > 0.01:
+        warnings.append(
+            f"tower.foundation: SubDyn's interface joint is at z = {z[-1]:g} m but "
+            f"ElastoDyn's TowerBsHt is {interface_z:g} m: the pile is joined to the tower at "
+            "TowerBsHt"
+        )
+    masses = [(h, m) for h, m in _point_masses(sd, text, xyz, notes) if h >= mudline - 1e-9]
+    foundation: dict[str, Any] = {"kind": "springs", "lateral_n_m": head[0],
+                                  "rocking_nm_rad": head[1], "coupling_n": head[2]}  # fmt: skip
+    if head[3] > 0:
+        foundation["torsional_nm_rad"] = head[3]
+    x0, y0, _ = xyz[ids[0]]
+    cut = (z[keep], mass[keep], ei[keep], gj[keep], polar[keep])
+    return Monopile(*cut, masses, foundation, (x0, y0), notes, warnings)
+
+
+def _springs(deck: Deck) -> list[float]:
+    """One SSI file's Kxx, Ktyty, Kxty and Ktztz — a negative spring, or a coupling the
+    two it couples cannot hold, one line naming the file and the entry."""
+    k = {key: deck.num(key, default=0.0) for key in ("Kxx", "Ktyty", "Kxty", "Ktztz")}
+    for key in ("Kxx", "Ktyty", "Ktztz"):
+        if k[key] < 0:
+            raise SpecError(f"{key} {k[key]:g}: a spring of negative stiffness",
+                            line=deck.values[key][1], source=str(deck.path))  # fmt: skip
+    if k["Kxty"] ** 2 > k["Kxx"] * k["Ktyty"]:
+        raise SpecError(
+            f"Kxty {k['Kxty']:g}: more coupling than Kxx {k['Kxx']:g} and Ktyty "
+            f"{k['Ktyty']:g} can hold (Kxty² ≤ Kxx·Ktyty)",
+            line=deck.values["Kxty"][1],
+            source=str(deck.path),
+        )
+    return [k["Kxx"], k["Ktyty"], k["Kxty"], k["Ktztz"]]
+
+
+#: The smallest head stiffness, relative to the largest element stiffness, that a static
+#: condensation keeps to about four digits in double precision (its rounding ε/ratio,
+#: ε ≈ 2.2e-16: measured 5e-6 at a ratio of 1.8e-11, tests/validation/test_soil.py).
+PRECISION = 1e-12
+
+
+def _condensed(
+    at: np.ndarray, stations: tuple[np.ndarray, ...], k: np.ndarray, path: Any
+) -> tuple[tuple[float, float, float, float], float]:
+    """The stiffness at the top of a beam on springs: the pile's Euler–Bernoulli and
+    torsion elements between the springs' heights ``at`` (its stations' EI, GJ and mass
+    per length, Gauss-integrated), springs ``k`` (rows Kxx, Ktyty, Kxty, Ktztz) at the
+    nodes, everything below the top node condensed out: (lateral, rocking, coupling,
+    torsion), and the lateral mass the static shape of a unit head displacement carries
+    (Guyan's), for the statement."""
+    from ..numerics import beam
+
+    z, mass, ei, gj, polar = stations
+    n = len(at)
+    x, _ = beam.gauss_points(at)
+    kb, mb = beam.assemble_bending(at, np.interp(x, z, ei), np.interp(x, z, mass))
+    w, t = np.arange(0, 2 * n, 2), np.arange(1, 2 * n, 2)
+    kb[w, w] += k[:, 0]
+    kb[t, t] += k[:, 1]
+    kb[w, t] += k[:, 2]
+    kb[t, w] += k[:, 2]
+    kt, _ = beam.assemble_torsion(at, np.interp(x, z, gj), np.interp(x, z, polar))
+    kt[np.arange(n), np.arange(n)] += k[:, 3]
+    try:
+        shape = np.vstack([-np.linalg.solve(kb[:-2, :-2], kb[:-2, -2:]), np.eye(2)])
+        lat = shape.T @ kb @ shape
+        tor = kt[-1:, -1:] - kt[-1:, :-1] @ np.linalg.solve(kt[:-1, :-1], kt[:-1, -1:])
+    except np.linalg.LinAlgError:
+        raise SpecError("the SSI files' springs do not hold the pile (its condensed stiffness "
+                        "is singular)", source=str(path)) from None  # fmt: skip
+    # the condensation subtracts element stiffnesses of order max(diag K) to leave the
+    # head's: beyond PRECISION of them the difference is rounding, not the soil
+    if not lat[0, 0] > PRECISION * float(np.max(np.abs(np.diag(kb)))):
+        raise SpecError("the SSI files' springs are too soft against the pile to condense "
+                        "to the mudline in double precision", source=str(path))  # fmt: skip
+    if not (lat[0, 0] > 0 and lat[1, 1] > 0 and lat[0, 1] ** 2 < lat[0, 0] * lat[1, 1]):
+        raise SpecError("the SSI files' springs do not hold the pile head (its condensed "
+                        "lateral and rocking stiffness is not positive)",
+                        source=str(path))  # fmt: skip
+    guyan = float((shape.T @ mb @ shape)[0, 0])
+    return (float(lat[0, 0]), float(lat[1, 1]), float(lat[0, 1]), float(tor[0, 0])), guyan
 
 
 def _sections(props: Table) -> dict[int, tuple[float, float, float, float, float]]:
