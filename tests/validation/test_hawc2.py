@@ -43,20 +43,23 @@ DATA = Path(__file__).resolve().parents[1] / "data"
 IEA15 = "HAWC2/IEA-15-240-RWT-Onshore/htc/IEA_15MW_RWT_Onshore.htc"
 
 
+def _unpacked(factory: pytest.TempPathFactory, archive: str, htc: str) -> Path:
+    """A model archive of tests/data/hawc2 unpacked in a scratch folder: its htc file."""
+    root = factory.mktemp(archive.split(".")[0])
+    with tarfile.open(DATA / "hawc2" / archive) as tar:
+        tar.extractall(root, filter="data")
+    return root / htc
+
+
 @pytest.fixture(scope="module")
 def iea15(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("hawc2")
-    with tarfile.open(DATA / "hawc2" / "iea15_onshore.tar.gz") as tar:
-        tar.extractall(root, filter="data")
-    return root / IEA15
+    return _unpacked(tmp_path_factory, "iea15_onshore.tar.gz", IEA15)
 
 
 @pytest.fixture(scope="module")
 def iea22(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("hawc2_22")
-    with tarfile.open(DATA / "hawc2" / "iea22_monopile.tar.gz") as tar:
-        tar.extractall(root, filter="data")
-    return root / "HAWC2/IEA-22-280-RWT-Monopile/htc/iea_22mw_rwt_steps.htc"
+    htc = "HAWC2/IEA-22-280-RWT-Monopile/htc/iea_22mw_rwt_steps.htc"
+    return _unpacked(tmp_path_factory, "iea22_monopile.tar.gz", htc)
 
 
 @pytest.fixture(scope="module")
@@ -159,10 +162,7 @@ def test_the_iea15_hawc2_model_against_hawcstab2(iea15, hs2_iea15):
 
 @pytest.fixture(scope="module")
 def iea10(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    root = tmp_path_factory.mktemp("hawc2_10")
-    with tarfile.open(DATA / "hawc2" / "iea10.tar.gz") as tar:
-        tar.extractall(root, filter="data")
-    return root / "hawc2/htc/dlc12_wsp08_wdir000_s1003.htc"
+    return _unpacked(tmp_path_factory, "iea10.tar.gz", "hawc2/htc/dlc12_wsp08_wdir000_s1003.htc")
 
 
 def _notch_hz(htc_file: Path) -> float:
