@@ -101,7 +101,8 @@ _HAWC_PARTS = {
 _KNOWN_BY_TEXT = (
     (
         _HAWC_PARTS[".st"],
-        re.compile(r"^\s*\$\d+\s+\d+.*\n(?:\s*[-+0-9.eE]+){19}", re.M),
+        # numbers parted by whitespace (not a pattern that may split one number many ways)
+        re.compile(r"^[ \t]*\$\d+[ \t]+\d+.*\n[ \t]*[-+0-9.eE]+(?:\s+[-+0-9.eE]+){18}", re.M),
     ),
     (
         "a ROSCO controller input (DISCON): wtvib reads its speeds through the deck set "
