@@ -295,6 +295,34 @@ def test_wisdem_s_options_files_are_left_out_of_a_batch_and_said(tmp_path):
     assert "other.yaml" in [p.name for p in batch.discover_all([tmp_path])[0]]
 
 
+def test_a_repository_s_hidden_folders_and_tool_configuration_are_left_out_and_said(tmp_path):
+    """A turbine's repository as it is cloned (IEAWindTask37/IEA-10.0-198-RWT and
+    IEA-3.4-130-RWT keep a .travis.yml beside their turbines): its hidden folders (.git,
+    .github) are not searched and its tools' YAML files (Travis CI, a conda environment, a
+    GitHub workflow) are not audited — each said with why; ``check`` on one says what it
+    is, exit 2. A spec that merely has a 'language' key is still a turbine's."""
+    shutil.copy(TURBINES / "mod-2.yaml", tmp_path / "turbine.yaml")
+    configs = {
+        ".travis.yml": "language: python\npython:\n  - 3.8\ninstall:\n  - pip install .\n",
+        "environment.yml": "name: rwt\nchannels:\n  - conda-forge\ndependencies:\n  - numpy\n",
+    }
+    for name, text in configs.items():
+        (tmp_path / name).write_text(text)
+    for hidden in (".git", ".github/workflows"):
+        (tmp_path / hidden).mkdir(parents=True)
+        (tmp_path / hidden / "ci.yml").write_text("on: [push]\njobs:\n  test: {}\n")
+    found, skipped = batch.discover_all([tmp_path])
+    assert [p.name for p in found] == ["turbine.yaml"]
+    why = {Path(p).name: w for p, w in skipped}
+    assert why[".git"] == why[".github"] == "a hidden folder (a tool's), not searched"
+    assert why[".travis.yml"] == why["environment.yml"]
+    assert "a tool's configuration" in why[".travis.yml"]
+    result = CliRunner().invoke(app, ["check", str(tmp_path / ".travis.yml")])
+    assert result.exit_code == 2 and "a tool's configuration" in result.stderr
+    (tmp_path / "other.yaml").write_text("language: en\nturbine: {name: x}\n")
+    assert "other.yaml" in [p.name for p in batch.discover_all([tmp_path])[0]]
+
+
 def test_a_deck_set_s_elastodyn_file_is_audited_with_it_not_again_alone(tmp_path):
     """A folder of OpenFAST cases (r-test's 5MW_Land_Linear_Aero, with the 5MW_Baseline
     files it names; tests/data/openfast_decks/rtest_aero.tar.gz) holds the .fst and the

@@ -204,6 +204,22 @@ def _options_file(data: dict[str, Any]) -> bool:
 #: YAML files that sit beside turbines and are none, by what they are
 ROSCO_TUNING = "a ROSCO controller tuning file, not a turbine"
 IEA_RESULTS = "another tool's results in the IEA Wind systems' format, not a turbine"
+TOOL_CONFIG = (
+    "a tool's configuration (continuous integration, environment, documentation), not a turbine"
+)
+
+#: The top-level keys of the configuration files turbine repositories keep (Travis CI,
+#: GitHub Actions, conda environments, MkDocs, pre-commit, Docker Compose): each set is one
+#: file kind's, all of whose keys it has.
+_CONFIG_KEYS = (
+    {"language", "script"},
+    {"language", "install"},
+    {"jobs", "on"},
+    {"channels", "dependencies"},
+    {"site_name"},
+    {"repos"},
+    {"services", "version"},
+)
 
 
 def _kind(keys: set[str], results: bool) -> str | None:
@@ -215,6 +231,8 @@ def _kind(keys: set[str], results: bool) -> str | None:
         return ROSCO_TUNING
     if keys == {"cases"} and results:
         return IEA_RESULTS
+    if "wtvib" not in keys and any(marks <= keys for marks in _CONFIG_KEYS):
+        return TOOL_CONFIG
     return None
 
 
@@ -229,6 +247,8 @@ def _another_yaml(data: dict[str, Any]) -> str | None:
         deck = params.get("FAST_InputFile") if isinstance(params, dict) else None
         named = f" ({deck})" if isinstance(deck, str) else ""
         return f"{kind}: audit the OpenFAST deck set it tunes{named}"
+    if kind == TOOL_CONFIG:
+        return f"{kind}: wtvib audits a turbine's description"
     if kind == IEA_RESULTS:
         return (
             f"{kind} (cases of configuration and outputs): wtvib audits a turbine's "

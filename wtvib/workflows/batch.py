@@ -160,7 +160,9 @@ def _search(folder: Path) -> tuple[list[Path], list[tuple[str, str]]]:
         unreadable.append(Path(exc.filename) if exc.filename else folder)
 
     for root, dirs, files in os.walk(folder, onerror=refused):
-        dirs.sort()
+        hidden = [d for d in dirs if d.startswith(".")]  # .git, .github: a tool's, said
+        left += [(str(Path(root) / d), "a hidden folder (a tool's), not searched") for d in hidden]
+        dirs[:] = sorted(d for d in dirs if not d.startswith("."))
         for q in sorted(Path(root) / f for f in files):
             try:
                 regular = q.is_file()
