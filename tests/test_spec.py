@@ -121,6 +121,17 @@ def test_quick_pass_bands_are_pairs_of_speeds(write_spec):
             b"cases:\n  - configuration: {wind_speed: 3.0}\n    outputs: {Damping_ratio: [0.1]}\n",
             "another tool's results in the IEA Wind systems' format",
         ),
+        # windIO's plant files (IEAWindTask37/IEA-Wind-740-10-ROWP): a turbine's power
+        # and thrust curves, a farm that includes its turbine, a wind resource
+        (
+            b"name: IEA 10MW\nperformance: {rated_power: 1.0e7}\nhub_height: 119.0\n"
+            b"rotor_diameter: 198.0\n",
+            "a wind-plant file .* not a turbine's structure",
+        ),
+        (b"name: farm\nturbines: !include t.yaml\n", "windIO's plant files"),
+        (b"name: r\nwind_resource: {sector_probability: {data: [1.0]}}\n", "a wind-plant file"),
+        # a repository's CI configuration (the IEA-10's .travis.yml)
+        (b"language: python\ninstall:\n  - pip install .\n", "a tool's configuration"),
         (b"wtvib: 7\n", "unsupported spec format version 7"),
     ],
 )

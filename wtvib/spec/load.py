@@ -204,6 +204,21 @@ def _options_file(data: dict[str, Any]) -> bool:
 #: YAML files that sit beside turbines and are none, by what they are
 ROSCO_TUNING = "a ROSCO controller tuning file, not a turbine"
 IEA_RESULTS = "another tool's results in the IEA Wind systems' format, not a turbine"
+PLANT = (
+    "a wind-plant file (windIO's plant schema or a wake model's input: a turbine's power and "
+    "thrust curves, a farm, its site or wind resource), not a turbine's structure"
+)
+#: The top-level keys of the wind-plant files (IEAWindTask37/IEA-Wind-740-10-ROWP: windIO's
+#: plant turbine, farm, site, resource and system files; FLORIS's input): each set is one
+#: kind's, all of whose keys it has.
+_PLANT_KEYS = (
+    {"performance", "hub_height", "rotor_diameter"},
+    {"wind_resource"},
+    {"layouts", "turbines"},
+    {"site", "wind_farm"},
+    {"boundaries", "energy_resource"},
+    {"flow_field", "wake"},
+)
 TOOL_CONFIG = (
     "a tool's configuration (continuous integration, environment, documentation), not a turbine"
 )
@@ -231,8 +246,12 @@ def _kind(keys: set[str], results: bool) -> str | None:
         return ROSCO_TUNING
     if keys == {"cases"} and results:
         return IEA_RESULTS
-    if "wtvib" not in keys and any(marks <= keys for marks in _CONFIG_KEYS):
+    if "wtvib" in keys or "components" in keys:  # a turbine's, as far as the keys say
+        return None
+    if any(marks <= keys for marks in _CONFIG_KEYS):
         return TOOL_CONFIG
+    if any(marks <= keys for marks in _PLANT_KEYS):
+        return PLANT
     return None
 
 
@@ -247,8 +266,11 @@ def _another_yaml(data: dict[str, Any]) -> str | None:
         deck = params.get("FAST_InputFile") if isinstance(params, dict) else None
         named = f" ({deck})" if isinstance(deck, str) else ""
         return f"{kind}: audit the OpenFAST deck set it tunes{named}"
-    if kind == TOOL_CONFIG:
-        return f"{kind}: wtvib audits a turbine's description"
+    if kind in (TOOL_CONFIG, PLANT):
+        return (
+            f"{kind}: wtvib audits a turbine's description (a windIO turbine file, an "
+            "OpenFAST deck set, a HAWC2 model or a wtvib spec)"
+        )
     if kind == IEA_RESULTS:
         return (
             f"{kind} (cases of configuration and outputs): wtvib audits a turbine's "

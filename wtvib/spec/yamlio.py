@@ -87,6 +87,19 @@ class _TooLongError(ValueError):
     """An integer of more digits than any value needs (converting one is costly)."""
 
 
+#: What a tag's refusal adds where the tag says what the file is.
+_TAG_HINTS = {
+    "!include": " — windIO's plant files (a wind farm, its site and energy resource) "
+    "include others so; wtvib audits a turbine's description (a windIO turbine file, an "
+    "OpenFAST deck set, a HAWC2 model or a wtvib spec)",
+}
+
+
+def _tag_refused(tag: str) -> str:
+    """The message of a refused YAML tag."""
+    return f"the tag {tag!r} is not allowed" + _TAG_HINTS.get(tag, "")
+
+
 def core_plain(text: str) -> Any:
     """A plain scalar's value by the YAML 1.2 core schema (null, bool, int, float, or the
     text itself: 1:30, 0_5, on and 1e5-as-text surprises of YAML 1.1 do not happen)."""
@@ -325,7 +338,7 @@ class _Walker:
             return self._mapping(node, path)
         if isinstance(node, yaml.SequenceNode):
             if node.tag != _SEQ_TAG:
-                raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+                raise self.fail(_tag_refused(node.tag), path, node)
             return [self.convert(item, (*path, i)) for i, item in enumerate(node.value)]
         if isinstance(node, yaml.ScalarNode) and not node.style:  # plain: None or ""
             return self._plain(node, path)
@@ -338,7 +351,7 @@ class _Walker:
         """A plain (unquoted) scalar by the YAML 1.2 core schema: 1.6e7 is a number, 1:30,
         0_5 and on are text (which the spec then refuses where a number or flag goes)."""
         if node.tag not in _IMPLICIT:
-            raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+            raise self.fail(_tag_refused(node.tag), path, node)
         try:
             return core_plain(node.value)
         except _TooLongError as exc:
@@ -346,7 +359,7 @@ class _Walker:
 
     def _mapping(self, node: yaml.MappingNode, path: Path) -> dict[Hashable, Any]:
         if node.tag != _MAP_TAG:
-            raise self.fail(f"the tag {node.tag!r} is not allowed", path, node)
+            raise self.fail(_tag_refused(node.tag), path, node)
         own = sum(1 for k, _ in node.value if k.tag != "tag:yaml.org,2002:merge")
         try:
             self.loader.flatten_mapping(node)  # resolves YAML merge keys (<<)
