@@ -43,6 +43,22 @@ def _edit(path: Path, old: str, new: str) -> None:
     path.write_text(text.replace(old, new, 1))
 
 
+def test_a_last_node_at_a_many_digit_tip_radius_is_the_rotor_s_tip(deck: Path):
+    """WISDEM writes TipRad to 17 digits and AeroDyn's last node at TipRad − HubRad
+    (NREL/BAR_Designs' BAR_USC: TipRad 102.82618258545716): the rotor's diameter, twice
+    TipRad, was rounded to six digits — 205.652 — and the deck refused ("the last station
+    at 102.826 m lies beyond the rotor radius 102.826 m"). Twice TipRad keeps ten digits."""
+    _edit(deck / "NRELOffshrBsline5MW_Onshore_ElastoDyn.dat", "         63   TipRad",
+          "  63.000182585   TipRad")  # fmt: skip
+    _edit(deck / "NRELOffshrBsline5MW_AeroDyn_blade.dat", "6.1499900E+01 -3.2815226E-04",
+          "6.1500182585E+01 -3.2815226E-04")  # fmt: skip
+    spec = load(deck / "NREL-5MW.fst")
+    # ten digits, as every number read from a deck (5e-10 at most)
+    assert spec.turbine.rotor_diameter_m == pytest.approx(2 * 63.000182585, rel=1e-9)
+    assert spec.aerodynamics is not None
+    assert spec.aerodynamics.stations.radius_m[-1] == pytest.approx(63.000182585, rel=1e-12)
+
+
 @pytest.mark.parametrize(
     ("file", "old", "new", "said"),
     [

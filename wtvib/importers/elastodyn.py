@@ -365,7 +365,9 @@ def _turbine_block(main: Deck, path: Path, tip: float, head: dict[str, Any]) -> 
     """The spec's turbine block: the deck's name, rotor diameter and hub height."""
     return {
         "name": path.stem.replace("_ElastoDyn", ""),
-        "rotor_diameter_m": _value(2 * tip, "2 × TipRad", "derived"),
+        # twice TipRad is exact: kept to the deck's digits (six would put the rotor's tip
+        # inside AeroDyn's last node at TipRad − HubRad: BAR_USC's TipRad 102.82618…)
+        "rotor_diameter_m": _value(2 * tip, "2 × TipRad", "derived", digits=10),
         "hub_height_m": _value(
             main.num("TowerHt") + head["hub_above_top"],
             "TowerHt + Twr2Shft + OverHang·sin(ShftTilt)",
@@ -691,7 +693,7 @@ def _blade_section(main: Deck, bl: "_BladeTable", length: float, hub_r: float) -
     if tip_mass > 0:
         structure["tip_mass_kg"] = tip_mass
     return {
-        "length_m": _value(length, "TipRad − HubRad", "derived"),
+        "length_m": _value(length, "TipRad − HubRad", "derived", digits=10),  # ≤ TipRad
         "mass_kg": _value(float(np.trapezoid(bl.mass, bl.span)), bl.mass_source, "derived"),
         **({"damping_ratio": bl.damping} if bl.damping is not None else {}),
         **(_mu(bl) if bl.mu is not None else {}),
@@ -1321,11 +1323,14 @@ def _list(a: np.ndarray) -> list[float]:
     return [float(f"{v:.10g}") for v in a]
 
 
-def _value(value: float, note: str, provenance: str = "published") -> dict[str, Any]:
+def _value(
+    value: float, note: str, provenance: str = "published", digits: int | None = None
+) -> dict[str, Any]:
     """A spec quantity read from the deck (``note``: the keys it comes from)."""
     # a value computed from the deck's numbers (derived) keeps the deck's precision,
     # six digits: TowerHt + Twr2Shft + OverHang·sin(ShftTilt) is 90.0, not 90.00000339
-    digits = 6 if provenance == "derived" else 10
+    if digits is None:
+        digits = 6 if provenance == "derived" else 10
     return {
         "value": float(f"{value:.{digits}g}"),
         "provenance": provenance,
