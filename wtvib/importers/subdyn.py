@@ -126,19 +126,14 @@ def monopile(fst: Deck, interface_z: float) -> Monopile | str:
     sections = _sections(props)
     z, mass, ei, gj, polar = _stations(chain, members, sections, xyz, sd)
     if spread:
-        return _on_springs(fst, sd, text, react, (z, mass, ei, gj, polar), xyz, interface_z)
+        return _on_springs(sd, text, react, (z, mass, ei, gj, polar), xyz, interface_z)
     top = z[-1]
     notes = [
         f"Monopile from SubDyn ({sd.path.name}): {len(chain)} circular members from the "
         f"reaction joint at z = {z[0]:g} m to the interface joint at z = {top:g} m, under the "
         "ElastoDyn tower (thin-walled tubes, E, G and ρ of each section)."
     ]
-    warnings = []
-    if abs(top - interface_z) > 0.01:
-        warnings.append(
-            f"tower.foundation: SubDyn's interface joint is at z = {top:g} m but ElastoDyn's "
-            f"TowerBsHt is {interface_z:g} m: the pile is joined to the tower at TowerBsHt"
-        )
+    warnings = _joined(top, interface_z)
     point_masses = _point_masses(sd, text, xyz, notes)
     foundation = _reaction(sd, react, notes)
     x0, y0, _ = xyz[react.ids("RJointID")[0]]
@@ -207,8 +202,17 @@ def _chain(
     return order
 
 
+def _joined(top: float, interface_z: float) -> list[str]:
+    """The warning where SubDyn's interface joint is not at ElastoDyn's TowerBsHt."""
+    if abs(top - interface_z) <= 0.01:
+        return []
+    return [
+        f"tower.foundation: SubDyn's interface joint is at z = {top:g} m but ElastoDyn's "
+        f"TowerBsHt is {interface_z:g} m: the pile is joined to the tower at TowerBsHt"
+    ]
+
+
 def _on_springs(
-    fst: Deck,
     sd: Deck,
     text: str,
     react: Table,
@@ -253,13 +257,7 @@ def _on_springs(
         f"({float(np.trapezoid(mass[~keep], z[~keep])):,.0f} kg, of which the springs' "
         f"static shape carries {guyan:,.0f} kg to the mudline) is left out.",
     ]
-    warnings = []
-    if abs(z[-1] - interface_z) > 0.01:
-        warnings.append(
-            f"tower.foundation: SubDyn's interface joint is at z = {z[-1]:g} m but "
-            f"ElastoDyn's TowerBsHt is {interface_z:g} m: the pile is joined to the tower at "
-            "TowerBsHt"
-        )
+    warnings = _joined(float(z[-1]), interface_z)
     masses = [(h, m) for h, m in _point_masses(sd, text, xyz, notes) if h >= mudline - 1e-9]
     foundation: dict[str, Any] = {"kind": "springs", "lateral_n_m": head[0],
                                   "rocking_nm_rad": head[1], "coupling_n": head[2]}  # fmt: skip
