@@ -47,6 +47,7 @@ from . import htc
 from .hawc2_floater import Floater
 from .hawc2_floater import find as find_floater
 from .hawc2_floater import platform as floating_platform
+from .hawc2_soil import pile_on_soil
 from .htc import Block, Command
 from .servodyn import dtu_speeds
 
@@ -589,8 +590,6 @@ def _support(
     soil = top.block("soil")
     elements = soil.each("soil_element") if soil is not None else []
     if chain.floater is None and len(elements) == 1:  # the pile on the model's own soil
-        from .hawc2_soil import pile_on_soil
-
         pile = _named(bodies, elements[0].need("mbdy_name"))
         if pile.fpm:
             raise SpecError(

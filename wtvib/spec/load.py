@@ -21,7 +21,7 @@ from .checks import (
 )
 from .messages import _spec_error
 from .turbine import Spec
-from .yamlio import Document, Path, format_path, parse
+from .yamlio import AUDITED, Document, Path, format_path, parse
 
 FORMAT_VERSION = 1
 
@@ -267,10 +267,7 @@ def _another_yaml(data: dict[str, Any]) -> str | None:
         named = f" ({deck})" if isinstance(deck, str) else ""
         return f"{kind}: audit the OpenFAST deck set it tunes{named}"
     if kind in (TOOL_CONFIG, PLANT):
-        return (
-            f"{kind}: wtvib audits a turbine's description (a windIO turbine file, an "
-            "OpenFAST deck set, a HAWC2 model or a wtvib spec)"
-        )
+        return f"{kind}: {AUDITED}"
     if kind == IEA_RESULTS:
         return (
             f"{kind} (cases of configuration and outputs): wtvib audits a turbine's "

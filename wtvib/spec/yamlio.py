@@ -87,11 +87,16 @@ class _TooLongError(ValueError):
     """An integer of more digits than any value needs (converting one is costly)."""
 
 
+#: What wtvib audits, as the messages on files it does not audit name it.
+AUDITED = (
+    "wtvib audits a turbine's description (a windIO turbine file, an OpenFAST deck set, a "
+    "HAWC2 model or a wtvib spec)"
+)
+
 #: What a tag's refusal adds where the tag says what the file is.
 _TAG_HINTS = {
     "!include": " — windIO's plant files (a wind farm, its site and energy resource) "
-    "include others so; wtvib audits a turbine's description (a windIO turbine file, an "
-    "OpenFAST deck set, a HAWC2 model or a wtvib spec)",
+    f"include others so; {AUDITED}",
 }
 
 
